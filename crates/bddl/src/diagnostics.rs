@@ -1,0 +1,201 @@
+//! Located messages about a BDDL source: what is wrong, where, and how bad.
+//!
+//! Every stage (lexer, parser, checker) reports problems as [`Diagnostic`]s that point at a byte
+//! range of a [`Source`]. Rendering turns them into `file:line:column` headers with the offending
+//! line underlined, so a person can fix a definition without guessing.
+
+use codespan_reporting::diagnostic as cs;
+use codespan_reporting::files::SimpleFile;
+use codespan_reporting::term;
+use std::fmt;
+use std::ops::Range;
+
+/// A byte range in a [`Source`]'s text.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Span {
+    pub start: u32,
+    pub end: u32,
+}
+
+impl Span {
+    pub fn new(start: usize, end: usize) -> Self {
+        Span {
+            start: start as u32,
+            end: end as u32,
+        }
+    }
+
+    /// The smallest span covering both.
+    pub fn to(self, other: Span) -> Span {
+        Span {
+            start: self.start.min(other.start),
+            end: self.end.max(other.end),
+        }
+    }
+
+    pub fn range(self) -> Range<usize> {
+        self.start as usize..self.end as usize
+    }
+}
+
+/// A named text that diagnostics point into.
+#[derive(Clone, Debug)]
+pub struct Source {
+    pub name: String,
+    pub text: String,
+}
+
+impl Source {
+    pub fn new(name: impl Into<String>, text: impl Into<String>) -> Self {
+        Source {
+            name: name.into(),
+            text: text.into(),
+        }
+    }
+
+    /// One-based line and column (in characters) of a byte offset.
+    pub fn line_col(&self, offset: u32) -> (usize, usize) {
+        let offset = (offset as usize).min(self.text.len());
+        let before = &self.text[..floor_char_boundary(&self.text, offset)];
+        let line = before.matches('\n').count() + 1;
+        let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+        let col = before[line_start..].chars().count() + 1;
+        (line, col)
+    }
+}
+
+fn floor_char_boundary(text: &str, mut i: usize) -> usize {
+    while !text.is_char_boundary(i) {
+        i -= 1;
+    }
+    i
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Severity {
+    Warning,
+    Error,
+}
+
+/// One problem found in a source.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Diagnostic {
+    pub severity: Severity,
+    pub message: String,
+    pub span: Span,
+    /// Short text shown under the underline.
+    pub label: String,
+    /// Extra lines: hints, the reason a rule exists.
+    pub notes: Vec<String>,
+}
+
+impl Diagnostic {
+    pub fn error(span: Span, message: impl Into<String>) -> Self {
+        Diagnostic {
+            severity: Severity::Error,
+            message: message.into(),
+            span,
+            label: String::new(),
+            notes: Vec::new(),
+        }
+    }
+
+    pub fn warning(span: Span, message: impl Into<String>) -> Self {
+        Diagnostic {
+            severity: Severity::Warning,
+            ..Diagnostic::error(span, message)
+        }
+    }
+
+    pub fn with_label(mut self, label: impl Into<String>) -> Self {
+        self.label = label.into();
+        self
+    }
+
+    pub fn with_note(mut self, note: impl Into<String>) -> Self {
+        self.notes.push(note.into());
+        self
+    }
+
+    pub fn is_error(&self) -> bool {
+        self.severity == Severity::Error
+    }
+
+    /// `file:line:col: error: message` followed by the underlined excerpt and notes.
+    pub fn render(&self, source: &Source) -> String {
+        let (line, col) = source.line_col(self.span.start);
+        let file = SimpleFile::new(&source.name, &source.text);
+        let severity = match self.severity {
+            Severity::Error => cs::Severity::Error,
+            Severity::Warning => cs::Severity::Warning,
+        };
+        let start = floor_char_boundary(
+            &source.text,
+            (self.span.start as usize).min(source.text.len()),
+        );
+        let end = floor_char_boundary(
+            &source.text,
+            (self.span.end as usize).min(source.text.len()),
+        );
+        let diagnostic = cs::Diagnostic::new(severity)
+            .with_message(&self.message)
+            .with_labels(vec![
+                cs::Label::primary((), start..end.max(start)).with_message(&self.label),
+            ])
+            .with_notes(self.notes.clone());
+        // Writing into a String cannot fail; on the impossible error the header alone remains.
+        let out = term::emit_into_string(&term::Config::default(), &file, &diagnostic)
+            .unwrap_or_default();
+        // codespan's own first line repeats the message; ours leads with file:line:col instead.
+        let excerpt = out.split_once('\n').map_or("", |(_, rest)| rest);
+        format!(
+            "{}:{line}:{col}: {}\n{excerpt}",
+            source.name,
+            self.summary()
+        )
+    }
+
+    fn summary(&self) -> String {
+        match self.severity {
+            Severity::Error => format!("error: {}", self.message),
+            Severity::Warning => format!("warning: {}", self.message),
+        }
+    }
+}
+
+/// The diagnostics of one source, in the order found.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Diagnostics(pub Vec<Diagnostic>);
+
+impl Diagnostics {
+    pub fn push(&mut self, d: Diagnostic) {
+        self.0.push(d);
+    }
+    pub fn has_errors(&self) -> bool {
+        self.0.iter().any(Diagnostic::is_error)
+    }
+    pub fn errors(&self) -> impl Iterator<Item = &Diagnostic> {
+        self.0.iter().filter(|d| d.is_error())
+    }
+    pub fn warnings(&self) -> impl Iterator<Item = &Diagnostic> {
+        self.0.iter().filter(|d| !d.is_error())
+    }
+    pub fn render(&self, source: &Source) -> String {
+        self.0.iter().map(|d| d.render(source)).collect()
+    }
+}
+
+/// A source together with the errors that stopped it from being read; what the loaders return.
+#[derive(Clone, Debug)]
+pub struct SourceErrors {
+    pub source: Source,
+    pub diagnostics: Diagnostics,
+}
+
+impl fmt::Display for SourceErrors {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.diagnostics.render(&self.source).trim_end())
+    }
+}
+
+impl std::error::Error for SourceErrors {}

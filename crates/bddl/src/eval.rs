@@ -1,0 +1,125 @@
+//! The bridge to a world: a [`PredicateOracle`] answers whether a ground atom holds now.
+//!
+//! A simulator implements the oracle over its objects (after binding instances to them); this
+//! module also provides [`FactSet`], a closed-world set of true atoms, used by tests, the CLI's
+//! `eval` and the benchmarks.
+
+use crate::activity::{Activity, Atom};
+use crate::predicate::Predicate;
+use serde::Deserialize;
+use std::collections::BTreeSet;
+
+/// Answers the truth of ground atoms in the current state.
+pub trait PredicateOracle {
+    fn holds(&self, atom: Atom) -> bool;
+}
+
+impl<F: Fn(Atom) -> bool> PredicateOracle for F {
+    fn holds(&self, atom: Atom) -> bool {
+        self(atom)
+    }
+}
+
+/// A state as the set of atoms that are true; every other atom is false.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct FactSet {
+    facts: BTreeSet<Atom>,
+}
+
+impl PredicateOracle for FactSet {
+    fn holds(&self, atom: Atom) -> bool {
+        self.facts.contains(&atom)
+    }
+}
+
+impl FromIterator<Atom> for FactSet {
+    fn from_iter<I: IntoIterator<Item = Atom>>(iter: I) -> Self {
+        FactSet {
+            facts: iter.into_iter().collect(),
+        }
+    }
+}
+
+#[derive(Debug, thiserror::Error, PartialEq, Eq)]
+pub enum StateError {
+    #[error(
+        "the state is not JSON of the form {{\"facts\": [[\"ontop\", \"a.n.01_1\", \"b.n.01_1\"], ...]}}: {0}"
+    )]
+    Json(String),
+    #[error("fact {index} ({fact}): {reason}")]
+    Fact {
+        index: usize,
+        fact: String,
+        reason: String,
+    },
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct StateFile {
+    facts: Vec<Vec<String>>,
+}
+
+impl FactSet {
+    pub fn insert(&mut self, atom: Atom) -> bool {
+        self.facts.insert(atom)
+    }
+
+    pub fn remove(&mut self, atom: Atom) -> bool {
+        self.facts.remove(&atom)
+    }
+
+    pub fn len(&self) -> usize {
+        self.facts.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.facts.is_empty()
+    }
+
+    pub fn iter(&self) -> impl Iterator<Item = Atom> + '_ {
+        self.facts.iter().copied()
+    }
+
+    /// Reads `{"facts": [["ontop", "apple.n.01_1", "table.n.02_1"], ["cooked", "apple.n.01_1"]]}`,
+    /// resolving names against the activity. Each bad fact is named by its position.
+    pub fn from_json(activity: &Activity, text: &str) -> Result<FactSet, StateError> {
+        let file: StateFile =
+            serde_json::from_str(text).map_err(|e| StateError::Json(e.to_string()))?;
+        let mut facts = FactSet::default();
+        for (index, fact) in file.facts.iter().enumerate() {
+            let fail = |reason: String| StateError::Fact {
+                index,
+                fact: format!("{fact:?}"),
+                reason,
+            };
+            let Some((name, args)) = fact.split_first() else {
+                return Err(fail("empty fact".into()));
+            };
+            let predicate = Predicate::from_name(&name.to_lowercase())
+                .filter(|p| *p != Predicate::InRoom)
+                .ok_or_else(|| fail(format!("unknown predicate `{name}`")))?;
+            if args.len() != predicate.arity() {
+                return Err(fail(format!(
+                    "`{predicate}` takes {} argument(s), {} given",
+                    predicate.arity(),
+                    args.len()
+                )));
+            }
+            let ids = args
+                .iter()
+                .map(|a| {
+                    activity
+                        .instance_named(&a.to_lowercase())
+                        .ok_or_else(|| fail(format!("`{a}` is not an object of {}", activity.name)))
+                })
+                .collect::<Result<Vec<_>, _>>()?;
+            facts.insert(Atom {
+                predicate,
+                subject: ids[0],
+                object: ids.get(1).copied(),
+            });
+        }
+        Ok(facts)
+    }
+}

@@ -1,0 +1,390 @@
+//! `behavior bddl ...`: check definitions, evaluate goals on states, list options, statistics and
+//! the timing run used for the side-by-side comparison with the reference implementation.
+
+use anyhow::{Context, Result, bail};
+use behavior_bddl::data::{self, DataDir, Knowledge};
+use behavior_bddl::options::options;
+use behavior_bddl::{Activity, FactSet, GroundGoal, Optimizer, Source};
+use clap::Subcommand;
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+#[derive(Subcommand)]
+pub enum BddlCommand {
+    /// Check definition files and print located diagnostics; exit status 1 if any has an error.
+    Check {
+        /// Problem files to check (default: all official activities).
+        paths: Vec<PathBuf>,
+    },
+    /// One row per official activity: objects, init literals, goal volume, success and Q at init.
+    Stats {
+        #[arg(long)]
+        json: bool,
+    },
+    /// Evaluate a goal on a state: success, Q, volume and each top-level conjunct.
+    Eval {
+        /// A problem file, or the name of an official activity.
+        file: String,
+        /// JSON: {"facts": [["ontop", "apple.n.01_1", "table.n.02_1"], ["cooked", "apple.n.01_1"]]}.
+        #[arg(long, value_name = "STATE.json")]
+        state: PathBuf,
+        #[arg(long)]
+        json: bool,
+    },
+    /// List a goal's options (its disjunctive normal form), smallest first.
+    Options {
+        /// A problem file, or the name of an official activity.
+        file: String,
+        /// How many options to print.
+        #[arg(long, default_value_t = 20)]
+        limit: usize,
+    },
+    /// Time goal evaluation and Q on each official activity's initial state.
+    Bench {
+        #[arg(long)]
+        json: bool,
+        /// One short measurement per activity instead of seven.
+        #[arg(long)]
+        quick: bool,
+        /// Comma-separated activity names (default: all).
+        #[arg(long, value_delimiter = ',')]
+        activities: Vec<String>,
+    },
+}
+
+pub fn run(command: BddlCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
+    let data = DataDir::locate(data_dir, |message| eprintln!("{message}"))?;
+    let knowledge = data.knowledge()?;
+    match command {
+        BddlCommand::Check { paths } => check(&data, &knowledge, &paths),
+        BddlCommand::Stats { json } => stats(&data, &knowledge, json),
+        BddlCommand::Eval { file, state, json } => eval(&data, &knowledge, &file, &state, json),
+        BddlCommand::Options { file, limit } => list_options(&data, &knowledge, &file, limit),
+        BddlCommand::Bench {
+            json,
+            quick,
+            activities,
+        } => bench(&data, &knowledge, json, quick, &activities),
+    }
+}
+
+/// A path if one exists there, else an official activity name.
+fn source_of(data: &DataDir, file: &str) -> Result<Source> {
+    let path = Path::new(file);
+    if path.exists() {
+        return Ok(data::read_source(path)?);
+    }
+    data.problem_source(file)
+        .with_context(|| format!("`{file}` is neither a file nor an official activity"))
+}
+
+fn load(knowledge: &Knowledge, source: &Source) -> Result<Activity> {
+    let (activity, warnings) = knowledge.load(source)?;
+    if !warnings.0.is_empty() {
+        eprint!("{}", warnings.render(source));
+    }
+    Ok(activity)
+}
+
+fn check(data: &DataDir, knowledge: &Knowledge, paths: &[PathBuf]) -> Result<ExitCode> {
+    let paths: Vec<PathBuf> = if paths.is_empty() {
+        data.activities()?
+            .iter()
+            .map(|a| data.problem_path(a))
+            .collect()
+    } else {
+        paths.to_vec()
+    };
+    let (mut errors, mut warnings, mut failed_files) = (0, 0, 0);
+    for path in &paths {
+        let source = match data::read_source(path) {
+            Ok(source) => source,
+            Err(e) => {
+                println!("{e}");
+                errors += 1;
+                failed_files += 1;
+                continue;
+            }
+        };
+        let diagnostics = match knowledge.load(&source) {
+            Ok((_, warnings)) => warnings,
+            Err(e) => {
+                failed_files += 1;
+                e.diagnostics
+            }
+        };
+        errors += diagnostics.errors().count();
+        warnings += diagnostics.warnings().count();
+        print!("{}", diagnostics.render(&source));
+    }
+    println!(
+        "checked {} file(s): {} with errors, {errors} error(s), {warnings} warning(s)",
+        paths.len(),
+        failed_files
+    );
+    Ok(if errors > 0 {
+        ExitCode::FAILURE
+    } else {
+        ExitCode::SUCCESS
+    })
+}
+
+#[derive(Serialize)]
+struct StatsRow {
+    activity: String,
+    objects: usize,
+    init_literals: usize,
+    volume: Option<u64>,
+    success_at_init: bool,
+    q_at_init: Option<f64>,
+}
+
+fn stats(data: &DataDir, knowledge: &Knowledge, json: bool) -> Result<ExitCode> {
+    let mut rows = Vec::new();
+    for name in data.activities()? {
+        let activity = load(knowledge, &data.problem_source(&name)?)?;
+        let goal = GroundGoal::new(&activity);
+        let optimizer = Optimizer::new(&goal);
+        let state: FactSet = activity.initial_facts().into_iter().collect();
+        rows.push(StatsRow {
+            activity: name,
+            objects: activity.instances.len(),
+            init_literals: activity.init.len(),
+            volume: optimizer.volume(),
+            success_at_init: goal.holds(&state),
+            q_at_init: optimizer.q(&state).map(|q| q.to_f64()),
+        });
+    }
+    if json {
+        println!("{}", serde_json::to_string_pretty(&rows)?);
+        return Ok(ExitCode::SUCCESS);
+    }
+    println!(
+        "{:<42} {:>7} {:>5} {:>6} {:>7} {:>6}",
+        "activity", "objects", "init", "volume", "success", "Q"
+    );
+    for r in &rows {
+        println!(
+            "{:<42} {:>7} {:>5} {:>6} {:>7} {:>6}",
+            r.activity,
+            r.objects,
+            r.init_literals,
+            r.volume.map_or("-".into(), |v| v.to_string()),
+            r.success_at_init,
+            r.q_at_init.map_or("-".into(), |q| format!("{q:.3}")),
+        );
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+#[derive(Serialize)]
+struct ConjunctReport {
+    formula: String,
+    holds: bool,
+}
+
+#[derive(Serialize)]
+struct EvalReport {
+    success: bool,
+    q: Option<f64>,
+    /// Q as an exact fraction, e.g. "2/7".
+    q_exact: Option<String>,
+    volume: Option<u64>,
+    conjuncts: Vec<ConjunctReport>,
+}
+
+fn eval(
+    data: &DataDir,
+    knowledge: &Knowledge,
+    file: &str,
+    state_path: &Path,
+    json: bool,
+) -> Result<ExitCode> {
+    let source = source_of(data, file)?;
+    let activity = load(knowledge, &source)?;
+    let text = std::fs::read_to_string(state_path)
+        .with_context(|| format!("cannot read {}", state_path.display()))?;
+    let state = FactSet::from_json(&activity, &text)
+        .with_context(|| format!("{}", state_path.display()))?;
+    let goal = GroundGoal::new(&activity);
+    let optimizer = Optimizer::new(&goal);
+    let q = optimizer.q(&state);
+    let report = EvalReport {
+        success: goal.holds(&state),
+        q: q.map(|q| q.to_f64()),
+        q_exact: q.map(|q| q.to_string()),
+        volume: optimizer.volume(),
+        conjuncts: activity
+            .goal
+            .iter()
+            .zip(goal.conjuncts_hold(&state))
+            .map(|(c, holds)| ConjunctReport {
+                formula: one_line(&source.text[c.span.range()]),
+                holds,
+            })
+            .collect(),
+    };
+    if json {
+        println!("{}", serde_json::to_string_pretty(&report)?);
+        return Ok(ExitCode::SUCCESS);
+    }
+    println!("activity  {}", activity.name);
+    println!("success   {}", report.success);
+    match q {
+        Some(q) => println!("Q         {:.6} ({q})", q.to_f64()),
+        None => println!("Q         undefined: the goal has no consistent option"),
+    }
+    match report.volume {
+        Some(v) => println!("volume    {v}"),
+        None => println!("volume    undefined: the goal has no consistent option"),
+    }
+    println!("conjuncts");
+    for (i, c) in report.conjuncts.iter().enumerate() {
+        let mark = if c.holds { "holds" } else { "fails" };
+        println!("  {i:>3} {mark}  {}", c.formula);
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Collapses whitespace so a multi-line formula prints on one line.
+fn one_line(text: &str) -> String {
+    let joined = text.split_whitespace().collect::<Vec<_>>().join(" ");
+    joined.replace("( ", "(").replace(" )", ")")
+}
+
+fn list_options(
+    data: &DataDir,
+    knowledge: &Knowledge,
+    file: &str,
+    limit: usize,
+) -> Result<ExitCode> {
+    let source = source_of(data, file)?;
+    let activity = load(knowledge, &source)?;
+    let goal = GroundGoal::new(&activity);
+    match Optimizer::new(&goal).volume() {
+        Some(volume) => println!("{}: volume {volume}", activity.name),
+        None => {
+            println!(
+                "{}: the goal has no consistent option; it can never hold",
+                activity.name
+            );
+            return Ok(ExitCode::SUCCESS);
+        }
+    }
+    let mut shown = 0;
+    for (i, option) in options(&goal).take(limit).enumerate() {
+        let literals: Vec<String> = option.iter().map(|&l| activity.show_literal(l)).collect();
+        println!("option {} ({} literals)", i + 1, option.len());
+        for l in literals {
+            println!("    {l}");
+        }
+        shown += 1;
+    }
+    if shown == limit {
+        println!("(first {limit} shown; --limit N for more)");
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+#[derive(Serialize)]
+struct BenchRow {
+    activity: String,
+    goal_eval_ns: f64,
+    q_ns: f64,
+    success: bool,
+    q: Option<f64>,
+}
+
+fn bench(
+    data: &DataDir,
+    knowledge: &Knowledge,
+    json: bool,
+    quick: bool,
+    only: &[String],
+) -> Result<ExitCode> {
+    let names = if only.is_empty() {
+        data.activities()?
+    } else {
+        only.to_vec()
+    };
+    let mut rows = Vec::new();
+    for name in names {
+        let activity = load(knowledge, &data.problem_source(&name)?)?;
+        let goal = GroundGoal::new(&activity);
+        let optimizer = Optimizer::new(&goal);
+        let state: FactSet = activity.initial_facts().into_iter().collect();
+        let goal_eval_ns = median_ns(quick, || goal.holds(&state));
+        let q_ns = median_ns(quick, || optimizer.q(&state));
+        rows.push(BenchRow {
+            activity: name,
+            goal_eval_ns,
+            q_ns,
+            success: goal.holds(&state),
+            q: optimizer.q(&state).map(|q| q.to_f64()),
+        });
+    }
+    if json {
+        println!("{}", serde_json::to_string_pretty(&rows)?);
+        return Ok(ExitCode::SUCCESS);
+    }
+    println!("{:<42} {:>12} {:>12}", "activity", "goal eval ns", "Q ns");
+    for r in &rows {
+        println!(
+            "{:<42} {:>12.0} {:>12.0}",
+            r.activity, r.goal_eval_ns, r.q_ns
+        );
+    }
+    let median = |mut v: Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v.get(v.len() / 2).copied().unwrap_or(f64::NAN)
+    };
+    println!(
+        "median over activities: goal eval {:.0} ns, Q {:.0} ns",
+        median(rows.iter().map(|r| r.goal_eval_ns).collect()),
+        median(rows.iter().map(|r| r.q_ns).collect()),
+    );
+    if rows.is_empty() {
+        bail!("no activity was measured");
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Median time per call over repeats that each last at least 20 ms (1 ms when `quick`), with the
+/// calls per repeat found by doubling.
+fn median_ns<T>(quick: bool, mut f: impl FnMut() -> T) -> f64 {
+    let (target, repeats) = if quick { (1e-3, 1) } else { (20e-3, 7) };
+    let mut calls = 1u64;
+    loop {
+        let start = Instant::now();
+        for _ in 0..calls {
+            std::hint::black_box(f());
+        }
+        if start.elapsed().as_secs_f64() >= target {
+            break;
+        }
+        calls *= 2;
+    }
+    let mut samples: Vec<f64> = (0..repeats)
+        .map(|_| {
+            let start = Instant::now();
+            for _ in 0..calls {
+                std::hint::black_box(f());
+            }
+            start.elapsed().as_secs_f64() * 1e9 / calls as f64
+        })
+        .collect();
+    samples.sort_by(f64::total_cmp);
+    samples[samples.len() / 2]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::one_line;
+
+    #[test]
+    fn formulas_print_on_one_line() {
+        assert_eq!(one_line("(and \n   (ontop a b)\n  )"), "(and (ontop a b))");
+    }
+}

@@ -1,0 +1,197 @@
+//! Tests on the 100 official BEHAVIOR-100 definitions (fetched from PyPI on first use, see
+//! `behavior_bddl::data`), compared with the reference implementation's recorded outputs in
+//! `../shared/reference/bddl-1.0.1-conformance.json`.
+
+mod common;
+
+use behavior_bddl::data::{DataDir, Knowledge};
+use behavior_bddl::options::options;
+use behavior_bddl::{Activity, FactSet, GroundGoal, Optimizer, Source};
+use serde_json::Value;
+use std::path::PathBuf;
+
+fn data() -> DataDir {
+    DataDir::locate(None, |m| eprintln!("{m}")).expect("official data")
+}
+
+fn all_activities() -> (DataDir, Knowledge, Vec<(String, Source, Activity)>) {
+    let data = data();
+    let knowledge = data.knowledge().unwrap();
+    let activities = data
+        .activities()
+        .unwrap()
+        .into_iter()
+        .map(|name| {
+            let source = data.problem_source(&name).unwrap();
+            let (activity, _) = knowledge.load(&source).unwrap_or_else(|e| panic!("{e}"));
+            (name, source, activity)
+        })
+        .collect();
+    (data, knowledge, activities)
+}
+
+fn conformance() -> Value {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../../shared/reference/bddl-1.0.1-conformance.json");
+    let text = std::fs::read_to_string(&path)
+        .unwrap_or_else(|e| panic!("the conformance file {} is needed: {e}", path.display()));
+    serde_json::from_str(&text).unwrap()
+}
+
+#[test]
+fn all_100_official_definitions_parse_and_check_without_errors_or_warnings() {
+    let data = data();
+    let knowledge = data.knowledge().unwrap();
+    let names = data.activities().unwrap();
+    assert_eq!(names.len(), 100);
+    for name in names {
+        let source = data.problem_source(&name).unwrap();
+        let (_, warnings) = knowledge.load(&source).unwrap_or_else(|e| panic!("{e}"));
+        // A warning here would be a finding about the official data; there are none.
+        assert!(warnings.0.is_empty(), "{}", warnings.render(&source));
+    }
+}
+
+#[test]
+fn volume_q_and_success_at_init_match_the_reference_on_all_100() {
+    let reference = conformance();
+    let (_, _, activities) = all_activities();
+    for (name, _, activity) in &activities {
+        let expected = &reference["activities"][name];
+        let goal = GroundGoal::new(activity);
+        let optimizer = Optimizer::new(&goal);
+        let state: FactSet = activity.initial_facts().into_iter().collect();
+        assert_eq!(
+            optimizer.volume(),
+            expected["volume"].as_u64(),
+            "{name}: volume"
+        );
+        let q = optimizer.q(&state).unwrap().to_f64();
+        assert!(
+            (q - expected["q_at_init"].as_f64().unwrap()).abs() < 1e-12,
+            "{name}: Q {q}"
+        );
+        assert_eq!(
+            goal.holds(&state),
+            expected["success_at_init"].as_bool().unwrap(),
+            "{name}"
+        );
+        let satisfied = goal.conjuncts_hold(&state);
+        let listed: Vec<bool> = (0..satisfied.len())
+            .map(|i| {
+                expected["goal_status_at_init"]["satisfied"]
+                    .as_array()
+                    .unwrap()
+                    .contains(&Value::from(i))
+            })
+            .collect();
+        assert_eq!(
+            satisfied, listed,
+            "{name}: top-level conditions satisfied at init"
+        );
+    }
+}
+
+#[test]
+fn every_official_goal_agrees_with_enumeration_on_random_states() {
+    let (_, _, activities) = all_activities();
+    let mut compared = 0;
+    for (name, _, activity) in &activities {
+        let formula = activity.goal_formula();
+        let Some(all) = common::dnf(activity, &formula, &mut Vec::new(), true) else {
+            continue; // more options than the naive enumeration can hold
+        };
+        compared += 1;
+        let goal = GroundGoal::new(activity);
+        let optimizer = Optimizer::new(&goal);
+        for seed in 0..20 {
+            let truth = common::random_truth(seed);
+            let (volume, q) = common::volume_and_q(&all, &truth);
+            assert_eq!(optimizer.volume().map(|v| v as usize), volume, "{name}");
+            let ours = optimizer.q(&truth).map(|r| (r.num, r.den));
+            let expected = q.map(|(s, n)| {
+                let r = behavior_bddl::Ratio::new(s, n);
+                (r.num, r.den)
+            });
+            assert_eq!(ours, expected, "{name}, seed {seed}");
+            let direct = common::holds(activity, &formula, &mut Vec::new(), &truth);
+            assert_eq!(goal.holds(&truth), direct, "{name}, seed {seed}");
+        }
+    }
+    assert!(
+        compared >= 90,
+        "only {compared} activities were small enough to enumerate"
+    );
+}
+
+#[test]
+fn options_are_listed_smallest_first_and_start_at_the_volume() {
+    let (_, _, activities) = all_activities();
+    for (name, _, activity) in &activities {
+        let goal = GroundGoal::new(activity);
+        let volume = Optimizer::new(&goal).volume().unwrap() as usize;
+        let first: Vec<_> = options(&goal).take(50).collect();
+        assert_eq!(first[0].len(), volume, "{name}");
+        assert!(first.windows(2).all(|w| w[0].len() <= w[1].len()), "{name}");
+    }
+}
+
+/// Every truncation (at a stride) and many seeded byte mutations of every official file are
+/// checked without a panic; each either loads or yields located errors.
+#[test]
+fn no_truncation_or_mutation_of_an_official_file_panics() {
+    let (_, knowledge, activities) = all_activities();
+    let mut rng = 0x2545_f491_4f6c_dd1du64;
+    let mut next = move || {
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        rng
+    };
+    let alphabet = b"()?-;_ \n0123456789abcdefnotandorforallexistsforn:\xff\xc3";
+    let mut rejected = 0;
+    for (name, source, _) in &activities {
+        let bytes = source.text.as_bytes();
+        let mut variants: Vec<Vec<u8>> = (0..bytes.len())
+            .step_by(13)
+            .map(|cut| bytes[..cut].to_vec())
+            .collect();
+        for _ in 0..60 {
+            let mut m = bytes.to_vec();
+            for _ in 0..1 + next() % 4 {
+                let at = next() as usize % m.len();
+                match next() % 3 {
+                    0 => m[at] = alphabet[next() as usize % alphabet.len()],
+                    1 => {
+                        m.remove(at);
+                    }
+                    _ => m.insert(at, alphabet[next() as usize % alphabet.len()]),
+                }
+            }
+            variants.push(m);
+        }
+        for variant in variants {
+            match behavior_bddl::data::source_from_bytes(name.clone(), variant) {
+                Ok(source) => {
+                    if let Err(e) = knowledge.load(&source) {
+                        rejected += 1;
+                        assert!(e.diagnostics.has_errors());
+                        let shown = e.to_string();
+                        assert!(
+                            shown.starts_with(name.as_str()) && shown.contains("error"),
+                            "{shown}"
+                        );
+                    }
+                }
+                Err(e) => {
+                    rejected += 1;
+                    assert!(e.to_string().contains("not valid UTF-8"));
+                }
+            }
+        }
+    }
+    assert!(
+        rejected > 10_000,
+        "mutations should mostly be rejected, {rejected} were"
+    );
+}

@@ -1,0 +1,316 @@
+//! End-to-end tests of the `behavior bddl` commands, run as a user would run them.
+
+#[path = "../../bddl/tests/common/mod.rs"]
+mod common;
+
+use behavior_bddl::data::DataDir;
+use behavior_bddl::{Activity, Atom};
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn behavior(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_behavior"))
+        .args(args)
+        .output()
+        .expect("the behavior binary runs")
+}
+
+fn stdout(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stdout).into_owned()
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli-tests");
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
+}
+
+fn conformance() -> Value {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../../shared/reference/bddl-1.0.1-conformance.json");
+    serde_json::from_str(&std::fs::read_to_string(path).expect("conformance file")).unwrap()
+}
+
+#[test]
+fn stats_json_lists_the_100_activities_with_exact_volumes() {
+    let output = behavior(&["bddl", "stats", "--json"]);
+    assert!(output.status.success());
+    let rows: Vec<Value> = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(rows.len(), 100);
+    let reference = conformance();
+    for row in &rows {
+        let keys: Vec<&str> = row
+            .as_object()
+            .unwrap()
+            .keys()
+            .map(String::as_str)
+            .collect();
+        assert_eq!(
+            keys,
+            [
+                "activity",
+                "init_literals",
+                "objects",
+                "q_at_init",
+                "success_at_init",
+                "volume"
+            ]
+        );
+        let name = row["activity"].as_str().unwrap();
+        assert_eq!(
+            row["volume"], reference["activities"][name]["volume"],
+            "{name}"
+        );
+    }
+    let lunches = rows
+        .iter()
+        .find(|r| r["activity"] == "packing_lunches")
+        .unwrap();
+    assert_eq!(lunches["objects"], 19);
+    assert_eq!(lunches["init_literals"], 19);
+    assert_eq!(lunches["volume"], 12);
+}
+
+fn write_state(activity: &Activity, atoms: &[Atom], path: &Path) {
+    let facts: Vec<Vec<String>> = atoms
+        .iter()
+        .map(|a| {
+            let mut fact = vec![
+                a.predicate.name().to_string(),
+                activity.instance(a.subject).name.clone(),
+            ];
+            fact.extend(a.object.map(|o| activity.instance(o).name.clone()));
+            fact
+        })
+        .collect();
+    std::fs::write(path, serde_json::json!({ "facts": facts }).to_string()).unwrap();
+}
+
+/// Random states over each activity's goal atoms; the binary's success, Q and volume must equal
+/// a naive enumeration of the options.
+#[test]
+fn eval_agrees_with_an_independent_exact_evaluation_on_random_states() {
+    let data = DataDir::locate(None, |_| ()).unwrap();
+    let knowledge = data.knowledge().unwrap();
+    let activities = [
+        "packing_lunches",
+        "setting_up_candles",
+        "cleaning_sneakers",
+        "sorting_groceries",
+        "serving_hors_d_oeuvres",
+        "putting_away_toys",
+        "polishing_silver",
+        "cleaning_up_the_kitchen_only",
+    ];
+    let mut checked = 0;
+    for name in activities {
+        let (activity, _) = knowledge.load(&data.problem_source(name).unwrap()).unwrap();
+        let formula = activity.goal_formula();
+        let options =
+            common::dnf(&activity, &formula, &mut Vec::new(), true).expect("small enough");
+        let mut atoms: Vec<Atom> = options.iter().flatten().map(|l| l.atom).collect();
+        atoms.sort();
+        atoms.dedup();
+        for seed in 0..6u64 {
+            let truth = common::random_truth(seed * 7919 + 1);
+            let state: Vec<Atom> = atoms.iter().copied().filter(|&a| truth(a)).collect();
+            let is_true = |a: Atom| state.contains(&a);
+            let path = scratch(&format!("{name}-{seed}.json"));
+            write_state(&activity, &state, &path);
+            let output = behavior(&[
+                "bddl",
+                "eval",
+                name,
+                "--state",
+                path.to_str().unwrap(),
+                "--json",
+            ]);
+            assert!(
+                output.status.success(),
+                "{}",
+                String::from_utf8_lossy(&output.stderr)
+            );
+            let report: Value = serde_json::from_slice(&output.stdout).unwrap();
+            let (volume, q) = common::volume_and_q(&options, &is_true);
+            let success = common::holds(&activity, &formula, &mut Vec::new(), &is_true);
+            assert_eq!(report["success"], success, "{name} {seed}");
+            assert_eq!(
+                report["volume"].as_u64(),
+                volume.map(|v| v as u64),
+                "{name}"
+            );
+            let (s, n) = q.unwrap();
+            let q_reported = report["q"].as_f64().unwrap();
+            assert!(
+                (q_reported - s as f64 / n as f64).abs() < 1e-12,
+                "{name} {seed}: {q_reported} vs {s}/{n}"
+            );
+            assert_eq!(
+                report["conjuncts"].as_array().unwrap().len(),
+                activity.goal.len()
+            );
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 48);
+}
+
+#[test]
+fn eval_reports_each_conjunct_and_rejects_a_bad_state() {
+    let state = scratch("lunches.json");
+    std::fs::write(
+        &state,
+        r#"{"facts": [["inside", "apple.n.01_1", "carton.n.02_1"], ["inside", "banana.n.02_1", "carton.n.02_2"]]}"#,
+    )
+    .unwrap();
+    let output = behavior(&[
+        "bddl",
+        "eval",
+        "packing_lunches",
+        "--state",
+        state.to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(output.status.success());
+    let report: Value = serde_json::from_slice(&output.stdout).unwrap();
+    let holds: Vec<bool> = report["conjuncts"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c["holds"].as_bool().unwrap())
+        .collect();
+    assert_eq!(holds, [false, false, false, false, true, true]);
+    assert_eq!(report["success"], false);
+    // Two positive literals and two true negations ("not inside" holds) of a 12-literal option.
+    assert_eq!(report["q_exact"], "1/3");
+
+    std::fs::write(&state, r#"{"facts": [["ontop", "apple.n.01_1"]]}"#).unwrap();
+    let output = behavior(&[
+        "bddl",
+        "eval",
+        "packing_lunches",
+        "--state",
+        state.to_str().unwrap(),
+    ]);
+    assert_eq!(output.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        err.contains("fact 0") && err.contains("`ontop` takes 2 argument(s), 1 given"),
+        "{err}"
+    );
+}
+
+#[test]
+fn check_reports_located_errors_and_exits_1() {
+    let bad = scratch("bad.bddl");
+    std::fs::write(
+        &bad,
+        "(define (problem bad_0) (:domain igibson)\n  (:objects apple.n.01_1 - apple.n.01 table.n.02_1 - table.n.02)\n  (:init (ontop apple.n.01_1 table.n.02_1))\n  (:goal (and (ontopp ?apple.n.01_1 ?table.n.02_1) (cooked ?pear.n.01_1))))\n",
+    )
+    .unwrap();
+    let unbalanced = scratch("unbalanced.bddl");
+    std::fs::write(
+        &unbalanced,
+        "(define (problem x_0)\n  (:domain igibson)\n  (:objects a.n.01_1 - a.n.01\n",
+    )
+    .unwrap();
+    let binary = scratch("binary.bddl");
+    std::fs::write(&binary, b"(define \xff\xfe)").unwrap();
+    let output = behavior(&[
+        "bddl",
+        "check",
+        bad.to_str().unwrap(),
+        unbalanced.to_str().unwrap(),
+        binary.to_str().unwrap(),
+    ]);
+    assert_eq!(output.status.code(), Some(1));
+    let out = stdout(&output);
+    let bad_name = bad.display().to_string();
+    assert!(
+        out.contains(&format!(
+            "{bad_name}:4:16: error: unknown predicate `ontopp`"
+        )),
+        "{out}"
+    );
+    assert!(
+        out.contains(&format!(
+            "{bad_name}:4:60: error: undeclared instance `?pear.n.01_1`"
+        )),
+        "{out}"
+    );
+    assert!(out.contains("^^^^^^"), "{out}");
+    assert!(
+        out.contains(&format!(
+            "{}:3:3: error: unclosed `(`",
+            unbalanced.display()
+        )),
+        "{out}"
+    );
+    assert!(
+        out.contains(&format!(
+            "{}:1:9: error: the file is not valid UTF-8",
+            binary.display()
+        )),
+        "{out}"
+    );
+    assert!(out.contains("checked 3 file(s): 3 with errors"), "{out}");
+}
+
+#[test]
+fn check_accepts_an_unfamiliar_valid_file_and_warns_about_abilities() {
+    let file = scratch("custom.bddl");
+    std::fs::write(
+        &file,
+        "; a definition written by a user\n(define (problem toasting_bread_0) (:domain igibson)\n (:objects bread.n.01_1 - bread.n.01 table.n.02_1 - table.n.02 floor.n.01_1 - floor.n.01 agent.n.01_1 - agent.n.01)\n (:init (ontop bread.n.01_1 table.n.02_1) (inroom table.n.02_1 kitchen) (inroom floor.n.01_1 kitchen) (onfloor agent.n.01_1 floor.n.01_1))\n (:goal (and (cooked ?bread.n.01_1) (sliced ?table.n.02_1))))\n",
+    )
+    .unwrap();
+    let output = behavior(&["bddl", "check", file.to_str().unwrap()]);
+    let out = stdout(&output);
+    assert!(output.status.success(), "{out}");
+    assert!(
+        out.contains(
+            "warning: `sliced` applied to `table.n.02_1`, but synset `table.n.02` is not sliceable"
+        ),
+        "{out}"
+    );
+    assert!(
+        out.contains("checked 1 file(s): 0 with errors, 0 error(s), 1 warning(s)"),
+        "{out}"
+    );
+}
+
+#[test]
+fn check_without_paths_checks_the_100_official_definitions() {
+    let output = behavior(&["bddl", "check"]);
+    assert!(output.status.success());
+    assert!(
+        stdout(&output).contains("checked 100 file(s): 0 with errors, 0 error(s), 0 warning(s)")
+    );
+}
+
+#[test]
+fn options_lists_the_smallest_first() {
+    let output = behavior(&["bddl", "options", "setting_up_candles", "--limit", "3"]);
+    assert!(output.status.success());
+    let out = stdout(&output);
+    assert!(
+        out.starts_with("setting_up_candles_0: volume 6\noption 1 (6 literals)\n"),
+        "{out}"
+    );
+    assert_eq!(out.matches("option ").count(), 3);
+    assert!(out.contains("(first 3 shown"));
+}
+
+#[test]
+fn a_bad_data_directory_is_a_clear_error() {
+    let empty = scratch("empty-data");
+    std::fs::create_dir_all(&empty).unwrap();
+    let output = behavior(&["--data-dir", empty.to_str().unwrap(), "bddl", "stats"]);
+    assert_eq!(output.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        err.contains("is not a bddl data directory: hierarchy_owned.json is missing"),
+        "{err}"
+    );
+}

@@ -7,7 +7,6 @@
 use crate::activity::{Activity, Atom};
 use crate::predicate::Predicate;
 use serde::Deserialize;
-use std::collections::BTreeSet;
 
 /// Answers the truth of ground atoms in the current state.
 pub trait PredicateOracle {
@@ -21,22 +20,26 @@ impl<F: Fn(Atom) -> bool> PredicateOracle for F {
 }
 
 /// A state as the set of atoms that are true; every other atom is false.
+///
+/// Kept as a sorted vector: states are small (tens of facts) and read far more often than
+/// written, and a binary search over contiguous atoms beats a tree or a hash here.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct FactSet {
-    facts: BTreeSet<Atom>,
+    facts: Vec<Atom>,
 }
 
 impl PredicateOracle for FactSet {
     fn holds(&self, atom: Atom) -> bool {
-        self.facts.contains(&atom)
+        self.facts.binary_search(&atom).is_ok()
     }
 }
 
 impl FromIterator<Atom> for FactSet {
     fn from_iter<I: IntoIterator<Item = Atom>>(iter: I) -> Self {
-        FactSet {
-            facts: iter.into_iter().collect(),
-        }
+        let mut facts: Vec<Atom> = iter.into_iter().collect();
+        facts.sort_unstable();
+        facts.dedup();
+        FactSet { facts }
     }
 }
 
@@ -61,12 +64,26 @@ struct StateFile {
 }
 
 impl FactSet {
+    /// Makes `atom` true; false if it already was.
     pub fn insert(&mut self, atom: Atom) -> bool {
-        self.facts.insert(atom)
+        match self.facts.binary_search(&atom) {
+            Ok(_) => false,
+            Err(at) => {
+                self.facts.insert(at, atom);
+                true
+            }
+        }
     }
 
+    /// Makes `atom` false; false if it already was.
     pub fn remove(&mut self, atom: Atom) -> bool {
-        self.facts.remove(&atom)
+        match self.facts.binary_search(&atom) {
+            Ok(at) => {
+                self.facts.remove(at);
+                true
+            }
+            Err(_) => false,
+        }
     }
 
     pub fn len(&self) -> usize {
@@ -77,6 +94,7 @@ impl FactSet {
         self.facts.is_empty()
     }
 
+    /// The true atoms, in sorted order.
     pub fn iter(&self) -> impl Iterator<Item = Atom> + '_ {
         self.facts.iter().copied()
     }

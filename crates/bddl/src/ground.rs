@@ -129,12 +129,14 @@ impl GroundGoal {
         self.node_holds(self.root, &|a| oracle.holds(self.atom(a)))
     }
 
-    /// Whether each top-level conjunct holds.
-    pub fn conjuncts_hold(&self, oracle: &impl PredicateOracle) -> Vec<bool> {
+    /// Whether each top-level conjunct holds, in order (evaluated as the iterator advances).
+    pub fn conjuncts_hold<'a>(
+        &'a self,
+        oracle: &'a impl PredicateOracle,
+    ) -> impl Iterator<Item = bool> + 'a {
         self.conjuncts
             .iter()
-            .map(|&c| self.node_holds(c, &|a| oracle.holds(self.atom(a))))
-            .collect()
+            .map(move |&c| self.node_holds(c, &|a| oracle.holds(self.atom(a))))
     }
 
     /// The truth of every atom, by [`AtomId`].

@@ -76,7 +76,7 @@ fn volume_q_and_success_at_init_match_the_reference_on_all_100() {
             expected["success_at_init"].as_bool().unwrap(),
             "{name}"
         );
-        let satisfied = goal.conjuncts_hold(&state);
+        let satisfied: Vec<bool> = goal.conjuncts_hold(&state).collect();
         let listed: Vec<bool> = (0..satisfied.len())
             .map(|i| {
                 expected["goal_status_at_init"]["satisfied"]

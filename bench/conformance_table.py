@@ -16,13 +16,13 @@ BIN = "target/release/behavior"
 # ../shared/reference/bddl-1.0-reference.md); pinned by crates/bddl/tests/reference_emulation.rs.
 CAPPED = {
     "assembling_gift_baskets": "forpairs: first 10 permutations",
-    "clearing_the_table_after_dinner": "forall/forn: 20 product tuples",
+    "clearing_the_table_after_dinner": "truncated_product: 20 tuples",
     "filling_a_Christmas_stocking": "forpairs: first 10 permutations",
-    "laying_wood_floors": "forall/forn: 20 product tuples",
-    "putting_away_toys": "forall/forn: 20 product tuples",
+    "laying_wood_floors": "truncated_product: 20 tuples",
+    "putting_away_toys": "truncated_product: 20 tuples",
     "serving_hors_d_oeuvres": "forpairs: first 10 permutations",
-    "sorting_groceries": "forall/forn: 20 product tuples",
-    "sorting_mail": "forall/forn: 20 product tuples",
+    "sorting_groceries": "truncated_product: 20 tuples",
+    "sorting_mail": "truncated_product: 20 tuples",
 }
 
 

@@ -25,6 +25,10 @@ pub const ROOM_TYPES: [&str; 11] = [
     "closet",
 ];
 
+/// Goals that ground to more nodes than this are rejected: they would exhaust memory, and no
+/// household activity comes near (the largest official goal, `packing_picnics`, grounds to 112).
+pub const MAX_GROUND_NODES: u64 = 5_000_000;
+
 /// Index of an object instance (`apple.n.01_1`) in its activity, in `:objects` order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct InstanceId(pub u32);
@@ -271,6 +275,24 @@ pub fn check(problem: &ProblemFile, context: CheckContext) -> (Option<Activity>,
         .map(|f| checker.goal(f).map(|goal| Conjunct { goal, span: f.span }))
         .collect();
     let goal: Option<Vec<Conjunct>> = goal.into_iter().collect();
+    if let Some(goal) = &goal {
+        let nodes = goal
+            .iter()
+            .map(|c| ground_size(&c.goal, &checker.categories))
+            .fold(1u64, u64::saturating_add);
+        if nodes > MAX_GROUND_NODES {
+            checker.diagnostics.push(
+                Diagnostic::error(
+                    problem.goal.span,
+                    format!(
+                        "the goal grounds to about {nodes} formulas over these objects, more than the limit of {MAX_GROUND_NODES}"
+                    ),
+                )
+                .with_label("nested quantifiers multiply")
+                .with_note("split the goal or declare fewer instances"),
+            );
+        }
+    }
     let activity = goal.map(|goal| Activity {
         name: problem.name.text.clone(),
         domain: problem.domain.text.clone(),
@@ -280,6 +302,25 @@ pub fn check(problem: &ProblemFile, context: CheckContext) -> (Option<Activity>,
         goal,
     });
     (activity, checker.diagnostics)
+}
+
+/// How many nodes grounding `goal` creates (an upper bound, saturating).
+fn ground_size(goal: &Goal, categories: &[Category]) -> u64 {
+    let count = |c: &CategoryId| categories[c.0 as usize].instances.len() as u64;
+    let size = |g: &Goal| ground_size(g, categories);
+    1u64.saturating_add(match goal {
+        Goal::Atom { .. } => 0,
+        Goal::Not(g) => size(g),
+        Goal::And(gs) | Goal::Or(gs) => gs.iter().map(size).fold(0, u64::saturating_add),
+        Goal::Imply(a, b) => size(a).saturating_add(size(b)),
+        Goal::Iff(a, b) => size(a).saturating_add(size(b)).saturating_mul(2),
+        Goal::Forall(c, g) | Goal::Exists(c, g) | Goal::ForN(_, c, g) => {
+            count(c).saturating_mul(size(g))
+        }
+        Goal::ForPairs(a, b, g) | Goal::ForNPairs(_, a, b, g) => {
+            count(a).saturating_mul(count(b)).saturating_mul(size(g))
+        }
+    })
 }
 
 struct Checker<'a> {
@@ -745,6 +786,23 @@ mod tests {
             "{rendered}"
         );
         assert!(rendered.contains("^^^^"), "{rendered}");
+    }
+
+    #[test]
+    fn a_goal_too_large_to_ground_is_an_error() {
+        let objects: Vec<String> = (1..=40).map(|i| format!("apple.n.01_{i}")).collect();
+        let objects = format!("{} - apple.n.01", objects.join(" "));
+        let mut goal = "(cooked ?v0)".to_string();
+        for depth in 0..5 {
+            goal = format!("(forall (?v{depth} - apple.n.01) {goal})");
+        }
+        let e = errors(&problem(&objects, "", &goal));
+        assert_eq!(
+            e,
+            [
+                "the goal grounds to about 105025642 formulas over these objects, more than the limit of 5000000"
+            ]
+        );
     }
 
     #[test]

@@ -152,17 +152,6 @@ impl<'g> Optimizer<'g> {
         self.maximize(objective).map(|best| best.size)
     }
 
-    /// The largest number of literals in a consistent option (used to bound enumeration).
-    pub fn max_size(&self) -> Option<u64> {
-        let none = vec![false; self.goal.atoms.len()];
-        let objective = Objective {
-            truth: &none,
-            hit: 0,
-            base: 1,
-        };
-        self.maximize(objective).map(|best| best.size)
-    }
-
     /// The smallest (or with `largest`, the largest) option size of every node, ignoring
     /// consistency; `None` for a node without options.
     pub(crate) fn unrestricted_sizes(&self, largest: bool) -> Vec<Option<u64>> {

@@ -25,8 +25,8 @@ pub const ROOM_TYPES: [&str; 11] = [
     "closet",
 ];
 
-/// Goals that ground to more nodes than this are rejected: they would exhaust memory, and no
-/// household activity comes near (the largest official goal, `packing_picnics`, grounds to 112).
+/// Goals that ground to more nodes than this are rejected: they would exhaust memory or time, and
+/// no household activity comes near (the largest official goal, `packing_picnics`, grounds to 112).
 pub const MAX_GROUND_NODES: u64 = 5_000_000;
 
 /// Index of an object instance (`apple.n.01_1`) in its activity, in `:objects` order.
@@ -278,17 +278,20 @@ pub fn check(problem: &ProblemFile, context: CheckContext) -> (Option<Activity>,
     if let Some(goal) = &goal {
         let nodes = goal
             .iter()
-            .map(|c| ground_size(&c.goal, &checker.categories))
+            .map(|c| ground_cost(&c.goal, &checker.categories, true))
             .fold(1u64, u64::saturating_add);
         if nodes > MAX_GROUND_NODES {
             checker.diagnostics.push(
                 Diagnostic::error(
                     problem.goal.span,
                     format!(
-                        "the goal grounds to about {nodes} formulas over these objects, more than the limit of {MAX_GROUND_NODES}"
+                        "the goal is too large to ground over these objects: about {nodes} formulas (limit {MAX_GROUND_NODES})"
                     ),
                 )
                 .with_label("nested quantifiers multiply")
+                .with_note(
+                    "a negated pair quantifier also counts the ways to cover N−1 of its rows and columns",
+                )
                 .with_note("split the goal or declare fewer instances"),
             );
         }
@@ -304,23 +307,58 @@ pub fn check(problem: &ProblemFile, context: CheckContext) -> (Option<Activity>,
     (activity, checker.diagnostics)
 }
 
-/// How many nodes grounding `goal` creates (an upper bound, saturating).
-fn ground_size(goal: &Goal, categories: &[Category]) -> u64 {
+/// How much grounding `goal` (or its negation, when `positive` is false) creates: its nodes, plus,
+/// for a negated pair quantifier, the row-and-column covers its options range over. An upper
+/// bound, saturating.
+fn ground_cost(goal: &Goal, categories: &[Category], positive: bool) -> u64 {
     let count = |c: &CategoryId| categories[c.0 as usize].instances.len() as u64;
-    let size = |g: &Goal| ground_size(g, categories);
+    let cost = |g: &Goal, positive: bool| ground_cost(g, categories, positive);
     1u64.saturating_add(match goal {
         Goal::Atom { .. } => 0,
-        Goal::Not(g) => size(g),
-        Goal::And(gs) | Goal::Or(gs) => gs.iter().map(size).fold(0, u64::saturating_add),
-        Goal::Imply(a, b) => size(a).saturating_add(size(b)),
-        Goal::Iff(a, b) => size(a).saturating_add(size(b)).saturating_mul(2),
+        Goal::Not(g) => cost(g, !positive),
+        Goal::And(gs) | Goal::Or(gs) => gs
+            .iter()
+            .map(|g| cost(g, positive))
+            .fold(0, u64::saturating_add),
+        Goal::Imply(a, b) => cost(a, !positive).saturating_add(cost(b, positive)),
+        Goal::Iff(a, b) => [cost(a, true), cost(a, false), cost(b, true), cost(b, false)]
+            .into_iter()
+            .fold(0, u64::saturating_add),
         Goal::Forall(c, g) | Goal::Exists(c, g) | Goal::ForN(_, c, g) => {
-            count(c).saturating_mul(size(g))
+            count(c).saturating_mul(cost(g, positive))
         }
         Goal::ForPairs(a, b, g) | Goal::ForNPairs(_, a, b, g) => {
-            count(a).saturating_mul(count(b)).saturating_mul(size(g))
+            let (rows, cols) = (count(a), count(b));
+            let n = match goal {
+                Goal::ForNPairs(n, ..) => u64::from(*n),
+                _ => rows.min(cols),
+            };
+            let cells = rows.saturating_mul(cols);
+            let covers = if !positive && n >= 1 && n <= rows.min(cols) {
+                binomial(rows + cols, n - 1).saturating_mul(cells)
+            } else {
+                0
+            };
+            cells
+                .saturating_mul(cost(g, positive))
+                .saturating_add(covers)
         }
     })
+}
+
+fn binomial(n: u64, k: u64) -> u64 {
+    if k > n {
+        return 0;
+    }
+    let mut result: u64 = 1;
+    for i in 0..k.min(n - k) {
+        // Exact at every step: the running product of i+1 consecutive numbers divides by (i+1)!.
+        result = match result.checked_mul(n - i) {
+            Some(r) => r / (i + 1),
+            None => return u64::MAX,
+        };
+    }
+    result
 }
 
 struct Checker<'a> {
@@ -800,9 +838,30 @@ mod tests {
         assert_eq!(
             e,
             [
-                "the goal grounds to about 105025642 formulas over these objects, more than the limit of 5000000"
+                "the goal is too large to ground over these objects: about 105025642 formulas (limit 5000000)"
             ]
         );
+        // 20 × 20 cells are few, but their negation ranges over C(40, 19) row-and-column covers.
+        let apples: Vec<String> = (1..=20).map(|i| format!("apple.n.01_{i}")).collect();
+        let tables: Vec<String> = (1..=20).map(|i| format!("table.n.02_{i}")).collect();
+        let objects = format!(
+            "{} - apple.n.01 {} - table.n.02",
+            apples.join(" "),
+            tables.join(" ")
+        );
+        let pairs = "(forpairs (?apple.n.01 - apple.n.01) (?table.n.02 - table.n.02) (ontop ?apple.n.01 ?table.n.02))";
+        assert!(load(&problem(&objects, "", pairs)).is_ok());
+        let e = errors(&problem(&objects, "", &format!("(not {pairs})")));
+        assert!(e[0].starts_with("the goal is too large to ground"), "{e:?}");
+    }
+
+    #[test]
+    fn binomials() {
+        assert_eq!(binomial(5, 2), 10);
+        assert_eq!(binomial(40, 19), 131_282_408_400);
+        assert_eq!(binomial(3, 0), 1);
+        assert_eq!(binomial(3, 5), 0);
+        assert_eq!(binomial(1000, 500), u64::MAX);
     }
 
     #[test]

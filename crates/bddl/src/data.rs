@@ -206,6 +206,21 @@ pub fn read_source(path: &Path) -> Result<Source, DataError> {
 
 /// Makes a [`Source`] from raw bytes, rejecting invalid UTF-8 with a located diagnostic.
 pub fn source_from_bytes(name: String, bytes: Vec<u8>) -> Result<Source, SourceErrors> {
+    if bytes.len() >= u32::MAX as usize {
+        // Spans are 32-bit; no definition comes near 4 GiB.
+        let mut diagnostics = Diagnostics::default();
+        diagnostics.push(crate::diagnostics::Diagnostic::error(
+            crate::diagnostics::Span::new(0, 0),
+            format!(
+                "the file is {} bytes; definitions must be under 4 GiB",
+                bytes.len()
+            ),
+        ));
+        return Err(SourceErrors {
+            source: Source::new(name, String::new()),
+            diagnostics,
+        });
+    }
     match String::from_utf8(bytes) {
         Ok(text) => Ok(Source::new(name, text)),
         Err(e) => {

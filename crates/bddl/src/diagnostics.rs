@@ -180,9 +180,26 @@ impl Diagnostics {
     pub fn warnings(&self) -> impl Iterator<Item = &Diagnostic> {
         self.0.iter().filter(|d| !d.is_error())
     }
+    /// Renders the first [`Diagnostics::SHOWN`] diagnostics and counts the rest: a file that is
+    /// wrong everywhere gets a readable report in bounded time.
     pub fn render(&self, source: &Source) -> String {
-        self.0.iter().map(|d| d.render(source)).collect()
+        let mut out: String = self
+            .0
+            .iter()
+            .take(Self::SHOWN)
+            .map(|d| d.render(source))
+            .collect();
+        if self.0.len() > Self::SHOWN {
+            out.push_str(&format!(
+                "{}: ... and {} more diagnostic(s)\n",
+                source.name,
+                self.0.len() - Self::SHOWN
+            ));
+        }
+        out
     }
+
+    pub const SHOWN: usize = 50;
 }
 
 /// A source together with the errors that stopped it from being read; what the loaders return.
@@ -199,3 +216,27 @@ impl fmt::Display for SourceErrors {
 }
 
 impl std::error::Error for SourceErrors {}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn renders_location_excerpt_and_caps_the_count() {
+        let source = Source::new("f.bddl", "(a\n  (bad x))");
+        let d = Diagnostic::error(Span::new(6, 9), "unknown predicate `bad`").with_label("here");
+        let shown = d.render(&source);
+        assert!(
+            shown.starts_with("f.bddl:2:4: error: unknown predicate `bad`\n"),
+            "{shown}"
+        );
+        assert!(shown.contains("^^^ here"), "{shown}");
+        let many = Diagnostics(vec![d; Diagnostics::SHOWN + 10]);
+        let shown = many.render(&source);
+        assert_eq!(shown.matches("error:").count(), Diagnostics::SHOWN);
+        assert!(
+            shown.ends_with("f.bddl: ... and 10 more diagnostic(s)\n"),
+            "{shown}"
+        );
+    }
+}

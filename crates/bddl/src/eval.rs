@@ -104,7 +104,7 @@ impl FactSet {
     pub fn from_json(activity: &Activity, text: &str) -> Result<FactSet, StateError> {
         let file: StateFile =
             serde_json::from_str(text).map_err(|e| StateError::Json(e.to_string()))?;
-        let mut facts = FactSet::default();
+        let mut facts = Vec::with_capacity(file.facts.len());
         for (index, fact) in file.facts.iter().enumerate() {
             let fail = |reason: String| StateError::Fact {
                 index,
@@ -115,8 +115,12 @@ impl FactSet {
                 return Err(fail("empty fact".into()));
             };
             let predicate = Predicate::from_name(&name.to_lowercase())
-                .filter(|p| *p != Predicate::InRoom)
                 .ok_or_else(|| fail(format!("unknown predicate `{name}`")))?;
+            if predicate == Predicate::InRoom {
+                return Err(fail(
+                    "`inroom` is fixed by the scene, not a state fact".into(),
+                ));
+            }
             if args.len() != predicate.arity() {
                 return Err(fail(format!(
                     "`{predicate}` takes {} argument(s), {} given",
@@ -132,12 +136,12 @@ impl FactSet {
                         .ok_or_else(|| fail(format!("`{a}` is not an object of {}", activity.name)))
                 })
                 .collect::<Result<Vec<_>, _>>()?;
-            facts.insert(Atom {
+            facts.push(Atom {
                 predicate,
                 subject: ids[0],
                 object: ids.get(1).copied(),
             });
         }
-        Ok(facts)
+        Ok(facts.into_iter().collect())
     }
 }

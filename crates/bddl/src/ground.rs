@@ -91,24 +91,6 @@ impl GroundGoal {
         }
     }
 
-    /// Grounds any formula of the activity (used for single conjuncts and tests).
-    pub fn of_formula(activity: &Activity, goal: &Goal) -> GroundGoal {
-        let mut builder = Builder {
-            activity,
-            nodes: Vec::new(),
-            atoms: Vec::new(),
-            atom_ids: HashMap::new(),
-            env: Vec::new(),
-        };
-        let root = builder.ground(goal, true);
-        GroundGoal {
-            nodes: builder.nodes,
-            atoms: builder.atoms,
-            conjuncts: vec![root],
-            root,
-        }
-    }
-
     pub fn node(&self, id: NodeId) -> &Node {
         &self.nodes[id.0 as usize]
     }

@@ -62,12 +62,18 @@ fn exact<'g>(goal: &'g GroundGoal, sizes: Rc<Sizes>, id: NodeId, size: usize) ->
     let all = |groups: Box<dyn Iterator<Item = Vec<NodeId>> + 'g>| -> Options<'g> {
         let sizes = sizes.clone();
         Box::new(
-            groups.flat_map(move |group| conjunction(goal, sizes.clone(), Rc::new(group), 0, size)),
+            groups.flat_map(move |group| match Group::new(group, &sizes) {
+                Some(group) => {
+                    let end = group.nodes.len();
+                    conjunction(goal, sizes.clone(), Rc::new(group), 0, end, size)
+                }
+                None => Box::new(std::iter::empty()),
+            }),
         )
     };
     match goal.node(id) {
         Node::Lit(lit) => Box::new((size == 1).then(|| vec![*lit]).into_iter()),
-        Node::And(children) => conjunction(goal, sizes, Rc::new(children.clone()), 0, size),
+        Node::And(children) => all(Box::new(std::iter::once(children.clone()))),
         Node::Or(children) => {
             let children = children.clone();
             Box::new(
@@ -107,47 +113,69 @@ fn exact<'g>(goal: &'g GroundGoal, sizes: Rc<Sizes>, id: NodeId, size: usize) ->
     }
 }
 
-/// The options of the conjunction of `children[start..]` with exactly `size` literals.
+/// Nodes to be conjoined, with prefix sums of their size ranges.
+struct Group {
+    nodes: Vec<NodeId>,
+    /// `min[i]`, `max[i]`: total smallest and largest size of `nodes[..i]`.
+    min: Vec<usize>,
+    max: Vec<usize>,
+}
+
+impl Group {
+    /// `None` when some node has no option at all (then neither has the conjunction).
+    fn new(nodes: Vec<NodeId>, sizes: &Sizes) -> Option<Group> {
+        let (mut min, mut max) = (vec![0], vec![0]);
+        for &n in &nodes {
+            let (lo, hi) = sizes.range(n)?;
+            min.push(min.last()? + lo);
+            max.push(max.last()? + hi);
+        }
+        Some(Group { nodes, min, max })
+    }
+}
+
+/// The options of the conjunction of `group.nodes[start..end]` with exactly `size` literals,
+/// splitting the range in halves so the nesting of iterators stays logarithmic in its length.
 fn conjunction<'g>(
     goal: &'g GroundGoal,
     sizes: Rc<Sizes>,
-    children: Rc<Vec<NodeId>>,
+    group: Rc<Group>,
     start: usize,
+    end: usize,
     size: usize,
 ) -> Options<'g> {
-    let Some(&first) = children.get(start) else {
-        return Box::new((size == 0).then(Vec::new).into_iter());
-    };
-    let mut rest = (0usize, 0usize);
-    for &c in &children[start + 1..] {
-        let Some((lo, hi)) = sizes.range(c) else {
-            return Box::new(std::iter::empty());
-        };
-        rest = (rest.0 + lo, rest.1 + hi);
-    }
-    let Some((lo, hi)) = sizes.range(first) else {
-        return Box::new(std::iter::empty());
-    };
-    let from = lo.max(size.saturating_sub(rest.1));
-    let to = hi.min(size.saturating_sub(rest.0));
-    if from > to || size < rest.0 {
+    let span = |a: usize, b: usize| (group.min[b] - group.min[a], group.max[b] - group.max[a]);
+    let (lo, hi) = span(start, end);
+    if !(lo..=hi).contains(&size) {
         return Box::new(std::iter::empty());
     }
-    Box::new((from..=to).flat_map(move |head_size| {
-        let (sizes, children) = (sizes.clone(), children.clone());
-        exact(goal, sizes.clone(), first, head_size).flat_map(move |head| {
-            conjunction(
-                goal,
-                sizes.clone(),
-                children.clone(),
-                start + 1,
-                size - head_size,
-            )
-            .map(move |tail| {
-                let mut option = head.clone();
-                option.extend(tail);
-                option
-            })
-        })
+    match end - start {
+        0 => return Box::new(std::iter::once(Vec::new())),
+        1 => return exact(goal, sizes, group.nodes[start], size),
+        _ => {}
+    }
+    let mid = start + (end - start) / 2;
+    let ((left_lo, left_hi), (right_lo, right_hi)) = (span(start, mid), span(mid, end));
+    let from = left_lo.max(size.saturating_sub(right_hi));
+    let to = left_hi.min(size.saturating_sub(right_lo));
+    Box::new((from..=to).flat_map(move |left_size| {
+        let (sizes, group) = (sizes.clone(), group.clone());
+        conjunction(goal, sizes.clone(), group.clone(), start, mid, left_size).flat_map(
+            move |left| {
+                conjunction(
+                    goal,
+                    sizes.clone(),
+                    group.clone(),
+                    mid,
+                    end,
+                    size - left_size,
+                )
+                .map(move |right| {
+                    let mut option = left.clone();
+                    option.extend(right);
+                    option
+                })
+            },
+        )
     }))
 }

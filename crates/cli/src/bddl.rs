@@ -283,16 +283,15 @@ fn list_options(
             return Ok(ExitCode::SUCCESS);
         }
     }
-    let mut shown = 0;
-    for (i, option) in options(&goal).take(limit).enumerate() {
+    let mut listed = options(&goal);
+    for (i, option) in listed.by_ref().take(limit).enumerate() {
         let literals: Vec<String> = option.iter().map(|&l| activity.show_literal(l)).collect();
         println!("option {} ({} literals)", i + 1, option.len());
         for l in literals {
             println!("    {l}");
         }
-        shown += 1;
     }
-    if shown == limit {
+    if listed.next().is_some() {
         println!("(first {limit} shown; --limit N for more)");
     }
     Ok(ExitCode::SUCCESS)

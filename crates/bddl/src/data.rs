@@ -16,7 +16,6 @@
 use crate::activity::{Activity, CheckContext};
 use crate::ast::DomainFile;
 use crate::diagnostics::{Diagnostics, Source, SourceErrors};
-use crate::parser;
 use crate::taxonomy::{Taxonomy, TaxonomyError};
 use std::fs;
 use std::io;
@@ -158,12 +157,7 @@ impl DataDir {
 
     pub fn domain(&self) -> Result<DomainFile, DataError> {
         let source = read_source(&self.domain_path())?;
-        parser::parse_domain(&source.text).map_err(|diagnostics| {
-            DataError::Source(SourceErrors {
-                source,
-                diagnostics,
-            })
-        })
+        Ok(crate::domain::load_domain(&source)?.0)
     }
 
     /// Loads everything needed to check definitions.

@@ -3,7 +3,8 @@
 //!
 //! The pipeline, one module per step:
 //! [`data`] finds the official definitions → [`sexpr`] reads text → [`parser`] builds the
-//! [`ast`] → [`activity`] checks it against the [`taxonomy`] and the [`predicate`] vocabulary →
+//! [`ast`] → [`activity`] checks it against the [`taxonomy`] and the [`predicate`] vocabulary
+//! ([`domain`] checks domain files against the same vocabulary) →
 //! [`ground`] grounds the goal over the activity's instances → [`eval`], [`optimize`] and
 //! [`options`] evaluate success, Q, volume and list options against a [`eval::PredicateOracle`].
 //!
@@ -31,6 +32,7 @@ pub mod activity;
 pub mod ast;
 pub mod data;
 pub mod diagnostics;
+pub mod domain;
 pub mod eval;
 pub mod ground;
 pub mod matching;

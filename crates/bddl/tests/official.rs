@@ -195,3 +195,39 @@ fn no_truncation_or_mutation_of_an_official_file_panics() {
         "mutations should mostly be rejected, {rejected} were"
     );
 }
+
+/// The official taxonomy, on the facts the reference's own taxonomy tests check.
+#[test]
+fn the_official_taxonomy_folds_into_a_dag_with_abilities() {
+    use behavior_bddl::taxonomy::Ability;
+    let taxonomy = data().taxonomy().unwrap();
+    let id = |name: &str| taxonomy.get(name).unwrap_or_else(|| panic!("{name}"));
+    assert_eq!(taxonomy.len(), 757); // 756 synsets in the file, plus agent.n.01
+    let stove = id("stove.n.01");
+    assert!(taxonomy.has_ability(stove, Ability::HeatSource));
+    assert!(!taxonomy.has_ability(stove, Ability::Burnable));
+    let parents: Vec<&str> = taxonomy
+        .synset(stove)
+        .parents
+        .iter()
+        .map(|&p| taxonomy.name(p))
+        .collect();
+    assert_eq!(parents, ["kitchen_appliance.n.01"]);
+    let home = id("home_appliance.n.01");
+    let below = taxonomy.descendants(home);
+    assert!(below.contains(&id("kitchen_appliance.n.01")) && below.contains(&stove));
+    assert!(
+        taxonomy
+            .ancestors(id("kitchen_appliance.n.01"))
+            .contains(&id("entity.n.01"))
+    );
+    assert!(taxonomy.is_a(id("apple.n.01"), id("fruit.n.01")));
+    assert!(!taxonomy.is_leaf(id("kitchen_appliance.n.01")));
+    let apple = taxonomy
+        .ability(id("apple.n.01"), Ability::Cookable)
+        .unwrap();
+    assert!(apple["cook_temperature"].as_f64().unwrap() > 0.0);
+    assert!(taxonomy.synset(id("agent.n.01")).parents == [taxonomy.root()]);
+    // Some synsets sit under several parents.
+    assert!(taxonomy.ids().any(|s| taxonomy.synset(s).parents.len() > 1));
+}

@@ -3,6 +3,7 @@
 
 use anyhow::{Context, Result, bail};
 use behavior_bddl::data::{self, DataDir, Knowledge};
+use behavior_bddl::domain::{is_domain_text, load_domain};
 use behavior_bddl::options::options;
 use behavior_bddl::{Activity, FactSet, GroundGoal, Optimizer, Source};
 use clap::Subcommand;
@@ -15,7 +16,7 @@ use std::time::Instant;
 pub enum BddlCommand {
     /// Check definition files and print located diagnostics; exit status 1 if any has an error.
     Check {
-        /// Problem files to check (default: all official activities).
+        /// Problem or domain files to check (default: all official activities and the domain).
         paths: Vec<PathBuf>,
     },
     /// One row per official activity: objects, init literals, goal volume, success and Q at init.
@@ -95,10 +96,13 @@ fn load(knowledge: &Knowledge, source: &Source) -> Result<Activity> {
 
 fn check(data: &DataDir, knowledge: &Knowledge, paths: &[PathBuf]) -> Result<ExitCode> {
     let paths: Vec<PathBuf> = if paths.is_empty() {
-        data.activities()?
+        let mut all: Vec<PathBuf> = data
+            .activities()?
             .iter()
             .map(|a| data.problem_path(a))
-            .collect()
+            .collect();
+        all.push(data.domain_path());
+        all
     } else {
         paths.to_vec()
     };
@@ -113,13 +117,15 @@ fn check(data: &DataDir, knowledge: &Knowledge, paths: &[PathBuf]) -> Result<Exi
                 continue;
             }
         };
-        let diagnostics = match knowledge.load(&source) {
-            Ok((_, warnings)) => warnings,
-            Err(e) => {
-                failed_files += 1;
-                e.diagnostics
-            }
+        let loaded = if is_domain_text(&source.text) {
+            load_domain(&source).map(|(_, warnings)| warnings)
+        } else {
+            knowledge.load(&source).map(|(_, warnings)| warnings)
         };
+        let diagnostics = loaded.unwrap_or_else(|e| {
+            failed_files += 1;
+            e.diagnostics
+        });
         errors += diagnostics.errors().count();
         warnings += diagnostics.warnings().count();
         print!("{}", diagnostics.render(&source));

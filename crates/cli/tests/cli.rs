@@ -281,11 +281,11 @@ fn check_accepts_an_unfamiliar_valid_file_and_warns_about_abilities() {
 }
 
 #[test]
-fn check_without_paths_checks_the_100_official_definitions() {
+fn check_without_paths_checks_the_100_official_definitions_and_the_domain() {
     let output = behavior(&["bddl", "check"]);
     assert!(output.status.success());
     assert!(
-        stdout(&output).contains("checked 100 file(s): 0 with errors, 0 error(s), 0 warning(s)")
+        stdout(&output).contains("checked 101 file(s): 0 with errors, 0 error(s), 0 warning(s)")
     );
 }
 
@@ -312,5 +312,25 @@ fn a_bad_data_directory_is_a_clear_error() {
     assert!(
         err.contains("is not a bddl data directory: hierarchy_owned.json is missing"),
         "{err}"
+    );
+}
+
+#[test]
+fn check_recognizes_a_domain_file() {
+    let domain = scratch("domain_custom.bddl");
+    std::fs::write(
+        &domain,
+        "(define (domain custom)\n  (:requirements :strips)\n  (:predicates (inside ?a ?b) (ontop ?a)))\n",
+    )
+    .unwrap();
+    let output = behavior(&["bddl", "check", domain.to_str().unwrap()]);
+    assert_eq!(output.status.code(), Some(1));
+    let out = stdout(&output);
+    assert!(
+        out.contains(&format!(
+            "{}:3:32: error: `ontop` takes 2 parameter(s), declared with 1",
+            domain.display()
+        )),
+        "{out}"
     );
 }

@@ -328,7 +328,7 @@ fn check_recognizes_a_domain_file() {
     let out = stdout(&output);
     assert!(
         out.contains(&format!(
-            "{}:3:32: error: `ontop` takes 2 parameter(s), declared with 1",
+            "{}:3:31: error: `ontop` takes 2 parameter(s), declared with 1",
             domain.display()
         )),
         "{out}"

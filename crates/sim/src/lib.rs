@@ -1,0 +1,29 @@
+//! The BEHAVIOR world: objects made of rigid bodies with compound colliders, rooms and floors,
+//! rigid-body physics (rapier3d, z up, SI units), the step pipeline, snapshots, and the BDDL
+//! predicates computed from them.
+//!
+//! It implements the BDDL [`behavior_bddl::PredicateOracle`] through [`oracle::BoundWorld`]; it
+//! knows nothing of BDDL text, activities' goals, homes, assets or rendering.
+//!
+//! ```
+//! use behavior_sim::world::{ObjectSpec, Part, Primitive, World};
+//! use rapier3d::math::Vector;
+//!
+//! let mut world = World::default();
+//! let slab = Primitive::Box { half_extents: Vector::new(0.5, 0.5, 0.05) };
+//! let table = world.add(ObjectSpec::new("table_1", "table.n.02", vec![Part::new(slab)]).fixed()).unwrap();
+//! let ball = Primitive::Sphere { radius: 0.04 };
+//! let apple = world.add(ObjectSpec::new("apple_1", "apple.n.01", vec![Part::new(ball)]).at(Vector::new(0.0, 0.0, 0.3))).unwrap();
+//! for _ in 0..60 {
+//!     world.step();
+//! }
+//! assert!(world.ontop(apple, table));
+//! ```
+
+pub mod kinematics;
+pub mod oracle;
+pub mod states;
+pub mod world;
+
+pub use oracle::BoundWorld;
+pub use world::{ObjectId, ObjectSpec, Part, Primitive, Room, Snapshot, Substeps, World};

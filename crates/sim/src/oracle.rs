@@ -1,0 +1,50 @@
+//! The world answers BDDL predicates: activity instances bound to objects, and each atom computed
+//! by the world's geometry or read from its states.
+
+use crate::world::{ObjectId, World};
+use behavior_bddl::{Atom, InstanceId, Predicate, PredicateOracle};
+
+/// A world seen through an activity's bindings: `bindings[i]` is the object of instance `i`.
+/// Floors (`floor.n.01_k`) are bound to room floor objects; an unbound instance satisfies nothing.
+pub struct BoundWorld<'a> {
+    pub world: &'a World,
+    pub bindings: &'a [Option<ObjectId>],
+}
+
+impl BoundWorld<'_> {
+    fn object(&self, instance: InstanceId) -> Option<ObjectId> {
+        self.bindings.get(instance.0 as usize).copied().flatten()
+    }
+}
+
+impl PredicateOracle for BoundWorld<'_> {
+    fn holds(&self, atom: Atom) -> bool {
+        let Some(a) = self.object(atom.subject) else {
+            return false;
+        };
+        let b = atom.object.and_then(|o| self.object(o));
+        let w = self.world;
+        match (atom.predicate, b) {
+            (Predicate::OnTop, Some(b)) => w.ontop(a, b),
+            (Predicate::Inside, Some(b)) => w.inside(a, b),
+            (Predicate::Under, Some(b)) => w.under(a, b),
+            (Predicate::NextTo, Some(b)) => w.nextto(a, b),
+            (Predicate::Touching, Some(b)) => w.touching(a, b),
+            (Predicate::OnFloor, Some(b)) => w.onfloor(a, b),
+            (p, _) if p.arity() == 1 => w.state(a, p),
+            _ => false,
+        }
+    }
+}
+
+impl World {
+    /// A stored unary state (see [`crate::states`]).
+    pub fn state(&self, id: ObjectId, predicate: Predicate) -> bool {
+        self.states[id.0 as usize].get(predicate)
+    }
+
+    /// Sets a unary state; `false` if `predicate` is not unary.
+    pub fn set_state(&mut self, id: ObjectId, predicate: Predicate, value: bool) -> bool {
+        self.states[id.0 as usize].set(predicate, value)
+    }
+}

@@ -1,0 +1,125 @@
+//! One small physical scene per kinematic predicate. Objects are dropped and left to settle, then
+//! the predicate is read from geometry.
+
+mod common;
+
+use behavior_sim::World;
+use common::*;
+
+#[test]
+fn ontop_an_apple_dropped_on_a_plate_on_a_table() {
+    let mut world = World::default();
+    two_room_floor(&mut world);
+    let table = table(&mut world, -1.0, 0.0);
+    let plate = plate(&mut world, v(-1.0, 0.0, 0.80));
+    let apple = apple(&mut world, "apple_1", v(-1.0, 0.0, 1.0));
+    settle(&mut world, 2.0);
+    assert!(world.ontop(apple, plate));
+    assert!(
+        !world.ontop(apple, table),
+        "the apple rests on the plate, not the table"
+    );
+    assert!(world.ontop(plate, table));
+    assert!(!world.ontop(plate, apple) && !world.ontop(table, plate));
+    assert!(world.is_sleeping(apple), "a settled scene sleeps");
+}
+
+#[test]
+fn touching_only_what_is_in_contact() {
+    let mut world = World::default();
+    two_room_floor(&mut world);
+    let table = table(&mut world, -1.0, 0.0);
+    let plate = plate(&mut world, v(-1.0, 0.0, 0.80));
+    let apple = apple(&mut world, "apple_1", v(-1.0, 0.0, 1.0));
+    settle(&mut world, 2.0);
+    assert!(world.touching(apple, plate) && world.touching(plate, apple));
+    assert!(world.touching(plate, table));
+    assert!(!world.touching(apple, table));
+    assert!(!world.touching(apple, apple));
+}
+
+#[test]
+fn inside_an_apple_dropped_into_a_bin_and_not_one_beside_it() {
+    let mut world = World::default();
+    two_room_floor(&mut world);
+    let bin = open_box(&mut world, 1.0, 1.0);
+    let inner = apple(&mut world, "apple_1", v(1.0, 1.0, 0.6));
+    let outer = apple(&mut world, "apple_2", v(1.6, 1.0, 0.3));
+    settle(&mut world, 2.0);
+    assert!(world.inside(inner, bin));
+    assert!(!world.inside(outer, bin));
+    assert!(!world.inside(bin, inner));
+    assert!(world.ontop(inner, bin), "it rests on the bin's bottom");
+}
+
+#[test]
+fn under_a_ball_below_a_table_top() {
+    let mut world = World::default();
+    let (kitchen_floor, _) = two_room_floor(&mut world);
+    let table = table(&mut world, -1.0, 0.0);
+    let below = apple(&mut world, "apple_1", v(-1.0, 0.1, 0.1));
+    let beside = apple(&mut world, "apple_2", v(-3.0, 0.0, 0.1));
+    settle(&mut world, 1.0);
+    assert!(world.under(below, table));
+    assert!(!world.under(beside, table));
+    assert!(!world.under(table, below));
+    assert!(
+        !world.under(below, kitchen_floor),
+        "the floor is below, not above"
+    );
+}
+
+#[test]
+fn nextto_two_apples_close_together_and_not_far_apart() {
+    let mut world = World::default();
+    two_room_floor(&mut world);
+    let a = apple(&mut world, "apple_1", v(-1.0, 2.0, 0.05));
+    let b = apple(&mut world, "apple_2", v(-1.0, 2.1, 0.05));
+    let far = apple(&mut world, "apple_3", v(-1.0, 3.5, 0.05));
+    settle(&mut world, 1.0);
+    assert!(world.nextto(a, b) && world.nextto(b, a));
+    assert!(!world.nextto(a, far));
+}
+
+#[test]
+fn onfloor_in_the_room_where_the_object_lies() {
+    let mut world = World::default();
+    let (kitchen, living) = two_room_floor(&mut world);
+    let table = table(&mut world, -1.0, 0.0);
+    let dropped = apple(&mut world, "apple_1", v(-2.0, -2.0, 0.3));
+    let on_table = apple(&mut world, "apple_2", v(-1.0, 0.0, 1.0));
+    settle(&mut world, 2.0);
+    assert!(world.onfloor(dropped, kitchen));
+    assert!(!world.onfloor(dropped, living));
+    assert!(
+        !world.onfloor(on_table, kitchen),
+        "resting on the table, not the floor"
+    );
+    assert_eq!(world.room_of(dropped), Some("kitchen"));
+    assert_eq!(world.room_of(table), Some("kitchen"));
+}
+
+#[test]
+fn bad_object_specs_are_errors_not_panics() {
+    use behavior_sim::{ObjectSpec, Part, Primitive};
+    let mut world = World::default();
+    let nan = ObjectSpec::new(
+        "x",
+        "apple.n.01",
+        vec![Part::new(Primitive::Sphere { radius: f32::NAN })],
+    );
+    assert!(world.add(nan).is_err());
+    assert!(
+        world
+            .add(ObjectSpec::new("y", "apple.n.01", vec![]))
+            .is_err()
+    );
+    let far = ObjectSpec::new(
+        "z",
+        "apple.n.01",
+        vec![Part::new(Primitive::Sphere { radius: 0.1 })],
+    )
+    .at(v(f32::INFINITY, 0.0, 0.0));
+    assert!(world.add(far).is_err());
+    assert_eq!(world.objects().len(), 0);
+}

@@ -20,7 +20,7 @@
 //!
 //! Ray casts collect up to [`MAX_HITS`] objects per ray, as iGibson's do.
 
-use crate::world::{ObjectId, World};
+use crate::world::{DROP_TAG, ObjectId, World};
 use rapier3d::math::Vector;
 use rapier3d::parry::bounding_volume::BoundingVolume;
 use rapier3d::parry::query;
@@ -165,8 +165,11 @@ impl World {
         range: f32,
     ) -> Vec<ObjectId> {
         let ray = Ray::new(origin, dir);
-        let own = self.object(from).body;
-        let filter = QueryFilter::default().exclude_rigid_body(own);
+        let own = u128::from(from.0);
+        let others = |_, c: &rapier3d::geometry::Collider| {
+            c.user_data != own && c.user_data != DROP_TAG && c.is_enabled()
+        };
+        let filter = QueryFilter::default().predicate(&others);
         let mut hits: Vec<(f32, ObjectId)> = self
             .physics
             .intersect_ray(ray, range, true, filter)

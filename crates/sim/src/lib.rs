@@ -20,10 +20,20 @@
 //! assert!(world.ontop(apple, table));
 //! ```
 
+pub mod articulation;
 pub mod kinematics;
 pub mod oracle;
+pub mod particles;
+pub mod slicing;
 pub mod states;
+pub mod temperature;
+pub mod toggling;
+pub mod water;
 pub mod world;
 
 pub use oracle::BoundWorld;
-pub use world::{ObjectId, ObjectSpec, Part, Primitive, Room, Snapshot, Substeps, World};
+pub use states::StateError;
+pub use world::{
+    JointKind, LinkSpec, ObjectId, ObjectSpec, Part, PointKind, Primitive, Room, Snapshot,
+    Substeps, World,
+};

@@ -36,15 +36,3 @@ impl PredicateOracle for BoundWorld<'_> {
         }
     }
 }
-
-impl World {
-    /// A stored unary state (see [`crate::states`]).
-    pub fn state(&self, id: ObjectId, predicate: Predicate) -> bool {
-        self.states[id.0 as usize].get(predicate)
-    }
-
-    /// Sets a unary state; `false` if `predicate` is not unary.
-    pub fn set_state(&mut self, id: ObjectId, predicate: Predicate, value: bool) -> bool {
-        self.states[id.0 as usize].set(predicate, value)
-    }
-}

@@ -4,16 +4,25 @@
 //! Units are metres, kilograms and seconds; z points up. One [`World::step`] is one action step
 //! of 1/30 s, run as physics substeps of 1/300 s (or 1/120 s, see [`Substeps`]).
 
-use crate::states::UnaryStates;
-use rapier3d::dynamics::{CCDSolver, RigidBodyBuilder, RigidBodyHandle};
-use rapier3d::geometry::{ColliderBuilder, ColliderHandle};
+use crate::states::ObjectState;
+use crate::water::WaterStream;
+use behavior_bddl::taxonomy::{Ability, AbilityParams, ParamValue};
+use rapier3d::dynamics::{
+    CCDSolver, GenericJoint, ImpulseJointHandle, PrismaticJointBuilder, RevoluteJointBuilder,
+    RigidBodyBuilder, RigidBodyHandle,
+};
+use rapier3d::geometry::{Collider, ColliderBuilder, ColliderHandle};
 use rapier3d::math::{Pose, Rotation, Vector};
 use rapier3d::parry::bounding_volume::BoundingVolume;
 use rapier3d::pipeline::{CollisionPipeline, PhysicsPipeline, PhysicsWorld};
 use rapier3d::prelude::Aabb;
+use std::collections::BTreeMap;
 
 /// One action step, in seconds.
 pub const STEP_SECONDS: f32 = 1.0 / 30.0;
+
+/// `user_data` of water drops' colliders, which belong to no object.
+pub const DROP_TAG: u128 = u128::MAX;
 
 /// Index of an object in its [`World`], stable for the world's life.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -68,6 +77,60 @@ pub struct ObjectSpec {
     /// 1/s. Stands in for rolling resistance: household objects are not perfect spheres, and
     /// without it a round object nudged on a flat plate rolls away for ever.
     pub angular_damping: f32,
+    /// What the object can do or undergo, with the parameters (from the taxonomy).
+    pub abilities: BTreeMap<Ability, AbilityParams>,
+    /// Named points in the object's frame: heating element, toggle button, water outlet.
+    pub points: Vec<(PointKind, Vector)>,
+    /// Moving parts: doors and drawers, each on one joint to the object's body.
+    pub links: Vec<LinkSpec>,
+}
+
+/// Where an ability acts, as a point in the object's frame.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum PointKind {
+    /// A heat source's element (stove burner): objects within its distance threshold heat up.
+    HeatingElement,
+    /// Touched by a hand for a few steps, it toggles the object on or off.
+    ToggleButton,
+    /// Where a water source's drops come out.
+    WaterOutlet,
+}
+
+/// A door or drawer of an object: its parts (in the object's frame, as when closed) and the joint
+/// that moves it. Joint position 0 is closed; `range` is fully open (radians or metres).
+#[derive(Clone, Debug)]
+pub struct LinkSpec {
+    pub name: String,
+    pub parts: Vec<Part>,
+    pub joint: JointKind,
+    /// A point on the joint axis, in the object's frame.
+    pub anchor: Vector,
+    /// The joint axis, in the object's frame; opening turns or slides positively about it.
+    pub axis: Vector,
+    pub range: f32,
+    /// Velocity damping factor of the joint (a motor with target velocity 0).
+    pub damping: f32,
+    pub density: f32,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum JointKind {
+    Revolute,
+    Prismatic,
+}
+
+/// A built link: its body, colliders and joint.
+#[derive(Clone, Debug)]
+pub struct Link {
+    pub name: String,
+    pub body: RigidBodyHandle,
+    pub colliders: Vec<ColliderHandle>,
+    pub joint: ImpulseJointHandle,
+    pub kind: JointKind,
+    pub anchor: Vector,
+    /// Unit length.
+    pub axis: Vector,
+    pub range: f32,
 }
 
 impl ObjectSpec {
@@ -81,6 +144,9 @@ impl ObjectSpec {
             density: 500.0,
             friction: 0.7,
             angular_damping: 1.0,
+            abilities: BTreeMap::new(),
+            points: Vec::new(),
+            links: Vec::new(),
         }
     }
 
@@ -93,6 +159,23 @@ impl ObjectSpec {
         self.fixed = true;
         self
     }
+
+    /// Adds an ability with its parameters, e.g. `(Cookable, &[("cook_temperature", 70)])`.
+    pub fn ability(mut self, ability: Ability, params: &[(&str, ParamValue)]) -> ObjectSpec {
+        let params = params.iter().map(|(k, v)| (k.to_string(), *v)).collect();
+        self.abilities.insert(ability, params);
+        self
+    }
+
+    pub fn point(mut self, kind: PointKind, position: Vector) -> ObjectSpec {
+        self.points.push((kind, position));
+        self
+    }
+
+    pub fn link(mut self, link: LinkSpec) -> ObjectSpec {
+        self.links.push(link);
+        self
+    }
 }
 
 #[derive(Clone, Debug)]
@@ -101,7 +184,43 @@ pub struct Object {
     pub category: String,
     pub fixed: bool,
     pub body: RigidBodyHandle,
+    /// Every collider of the object, its links' included.
     pub colliders: Vec<ColliderHandle>,
+    pub abilities: BTreeMap<Ability, AbilityParams>,
+    pub points: Vec<(PointKind, Vector)>,
+    pub links: Vec<Link>,
+}
+
+impl Object {
+    pub fn has(&self, ability: Ability) -> bool {
+        self.abilities.contains_key(&ability)
+    }
+
+    /// A numeric parameter of an ability, or `default` when the ability lists none.
+    pub fn param(&self, ability: Ability, name: &str, default: f32) -> f32 {
+        self.abilities
+            .get(&ability)
+            .and_then(|p| p.get(name))
+            .and_then(|v| v.as_f64())
+            .map_or(default, |v| v as f32)
+    }
+
+    /// A boolean parameter of an ability, or `default`.
+    pub fn flag(&self, ability: Ability, name: &str, default: bool) -> bool {
+        self.abilities
+            .get(&ability)
+            .and_then(|p| p.get(name))
+            .and_then(|v| v.as_bool())
+            .unwrap_or(default)
+    }
+
+    /// The first named point of a kind, in the object's frame.
+    pub fn point(&self, kind: PointKind) -> Option<Vector> {
+        self.points
+            .iter()
+            .find(|(k, _)| *k == kind)
+            .map(|(_, p)| *p)
+    }
 }
 
 /// A room of a home: its type (`kitchen`), its instance number among rooms of that type, its
@@ -152,7 +271,10 @@ pub struct World {
     pub(crate) physics: PhysicsWorld,
     objects: Vec<Object>,
     rooms: Vec<Room>,
-    pub(crate) states: Vec<UnaryStates>,
+    pub(crate) states: Vec<ObjectState>,
+    /// Hand points reported by the embodiment, for toggling.
+    pub(crate) hands: Vec<Vector>,
+    pub(crate) water: Vec<WaterStream>,
     steps: u64,
     substeps: Substeps,
 }
@@ -186,6 +308,8 @@ impl Clone for World {
             objects: self.objects.clone(),
             rooms: self.rooms.clone(),
             states: self.states.clone(),
+            hands: self.hands.clone(),
+            water: self.water.clone(),
             steps: self.steps,
             substeps: self.substeps,
         }
@@ -206,6 +330,8 @@ impl World {
             objects: Vec::new(),
             rooms: Vec::new(),
             states: Vec::new(),
+            hands: Vec::new(),
+            water: Vec::new(),
             steps: 0,
             substeps,
         }
@@ -240,21 +366,74 @@ impl World {
         .angular_damping(spec.angular_damping)
         .user_data(u128::from(id.0))
         .build();
-        let body = self.physics.insert_body(body);
-        let mut colliders = Vec::with_capacity(spec.parts.len());
-        for part in &spec.parts {
-            let builder = collider(part.primitive)
-                .ok_or_else(|| bad("a part has a non-positive or non-finite size"))?;
-            if !pose_is_finite(&part.offset) {
-                return Err(bad("a part's offset is not finite"));
+        let builders = colliders_of(&spec.parts, spec.density, spec.friction, id)
+            .ok_or_else(|| bad("a part has a non-positive or non-finite size or offset"))?;
+        // Validate every link before touching the physics, so a bad spec leaves no trace.
+        let mut link_builders = Vec::with_capacity(spec.links.len());
+        for link in &spec.links {
+            let ok = link.range.is_finite()
+                && link.range > 0.0
+                && link.damping.is_finite()
+                && link.damping >= 0.0
+                && link.density.is_finite()
+                && link.density > 0.0
+                && link.anchor.is_finite()
+                && link.axis.is_finite()
+                && link.axis.length() > 1e-6
+                && !link.parts.is_empty();
+            match colliders_of(&link.parts, link.density, spec.friction, id) {
+                Some(parts) if ok => link_builders.push(parts),
+                _ => return Err(bad(&format!("link `{}` is malformed", link.name))),
             }
-            let built = builder
-                .position(part.offset)
-                .density(spec.density)
-                .friction(spec.friction)
+        }
+        let body = self.physics.insert_body(body);
+        let mut colliders: Vec<ColliderHandle> = builders
+            .into_iter()
+            .map(|c| self.physics.insert_collider(c, Some(body)))
+            .collect();
+        let mut links = Vec::with_capacity(spec.links.len());
+        for (link, builders) in spec.links.iter().zip(link_builders) {
+            let link_body = RigidBodyBuilder::dynamic()
+                .pose(spec.pose)
+                .angular_damping(spec.angular_damping)
                 .user_data(u128::from(id.0))
                 .build();
-            colliders.push(self.physics.insert_collider(built, Some(body)));
+            let link_body = self.physics.insert_body(link_body);
+            let link_colliders: Vec<ColliderHandle> = builders
+                .into_iter()
+                .map(|c| self.physics.insert_collider(c, Some(link_body)))
+                .collect();
+            colliders.extend_from_slice(&link_colliders);
+            let axis = link.axis.normalize();
+            let joint: GenericJoint = match link.joint {
+                JointKind::Revolute => RevoluteJointBuilder::new(axis)
+                    .local_anchor1(link.anchor)
+                    .local_anchor2(link.anchor)
+                    .limits([0.0, link.range])
+                    .motor_velocity(0.0, link.damping)
+                    .contacts_enabled(false)
+                    .build()
+                    .into(),
+                JointKind::Prismatic => PrismaticJointBuilder::new(axis)
+                    .local_anchor1(link.anchor)
+                    .local_anchor2(link.anchor)
+                    .limits([0.0, link.range])
+                    .motor_velocity(0.0, link.damping)
+                    .contacts_enabled(false)
+                    .build()
+                    .into(),
+            };
+            let joint = self.physics.insert_impulse_joint(body, link_body, joint);
+            links.push(Link {
+                name: link.name.clone(),
+                body: link_body,
+                colliders: link_colliders,
+                joint,
+                kind: link.joint,
+                anchor: link.anchor,
+                axis,
+                range: link.range,
+            });
         }
         self.objects.push(Object {
             name: spec.name,
@@ -262,8 +441,14 @@ impl World {
             fixed: spec.fixed,
             body,
             colliders,
+            abilities: spec.abilities,
+            points: spec.points,
+            links,
         });
-        self.states.push(UnaryStates::default());
+        self.states.push(ObjectState::default());
+        if self.object(id).has(Ability::WaterSource) {
+            self.add_water_stream(id);
+        }
         Ok(id)
     }
 
@@ -343,10 +528,26 @@ impl World {
         aabb
     }
 
-    /// Advances one action step: the physics substeps, then the state rules.
+    /// Advances one action step: the physics substeps (watching slicers' contact forces), then
+    /// the state rules once: water, toggles, temperature, cleaning, slicing.
     pub fn step(&mut self) {
+        let mut pressed: Vec<ObjectId> = Vec::new();
         for _ in 0..self.substeps.count() {
             self.physics.step();
+            for id in self.pressed_by_slicers() {
+                if !pressed.contains(&id) {
+                    pressed.push(id);
+                }
+            }
+        }
+        self.update_water();
+        self.update_toggles();
+        self.update_temperatures(STEP_SECONDS);
+        self.update_cleaning();
+        pressed.sort();
+        for id in pressed {
+            // A sliceable object always accepts slicing; an error here would be a bug in add().
+            let _ = self.set_sliced(id, true);
         }
         self.steps += 1;
     }
@@ -380,6 +581,29 @@ impl World {
 
 fn pose_is_finite(pose: &Pose) -> bool {
     pose.translation.is_finite() && pose.rotation.is_finite()
+}
+
+/// Colliders for parts, tagged with the object's id; `None` if a part is malformed.
+fn colliders_of(
+    parts: &[Part],
+    density: f32,
+    friction: f32,
+    id: ObjectId,
+) -> Option<Vec<Collider>> {
+    parts
+        .iter()
+        .map(|part| {
+            let builder = collider(part.primitive)?;
+            pose_is_finite(&part.offset).then(|| {
+                builder
+                    .position(part.offset)
+                    .density(density)
+                    .friction(friction)
+                    .user_data(u128::from(id.0))
+                    .build()
+            })
+        })
+        .collect()
 }
 
 fn collider(primitive: Primitive) -> Option<ColliderBuilder> {

@@ -27,7 +27,7 @@ fn a_goal_is_evaluated_on_the_physical_scene() {
     let table = table(&mut world, -1.0, 0.0);
     let plate = plate(&mut world, v(-1.0, 0.0, 0.80));
     let first = apple(&mut world, "apple_1", v(-1.03, 0.0, 1.0));
-    let second = apple(&mut world, "apple_2", v(-2.0, -2.0, 0.3));
+    let second = sliceable_apple(&mut world, "apple_2", v(-2.0, -2.0, 0.3));
     settle(&mut world, 2.0);
     // Instances in :objects order: apple 1, apple 2, plate, table, floor.
     let bindings = [
@@ -65,7 +65,7 @@ fn a_goal_is_evaluated_on_the_physical_scene() {
         )
         .unwrap();
     settle(&mut world, 2.0);
-    assert!(world.set_state(second, Predicate::Sliced, true));
+    world.set_state(second, Predicate::Sliced, true).unwrap();
     assert_eq!(
         status(&world),
         (true, vec![true, true, true], "1/1".to_string())

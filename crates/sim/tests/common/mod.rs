@@ -93,6 +93,28 @@ pub fn apple(world: &mut World, name: &str, at: Vector) -> ObjectId {
     world.add(spec).unwrap()
 }
 
+pub fn sliceable_apple(world: &mut World, name: &str, at: Vector) -> ObjectId {
+    use behavior_bddl::taxonomy::{Ability, ParamValue};
+    let mut spec = ObjectSpec::new(
+        name,
+        "apple.n.01",
+        vec![Part::new(Primitive::Sphere { radius: 0.04 })],
+    )
+    .at(at)
+    .ability(Ability::Sliceable, &[])
+    .ability(
+        Ability::Cookable,
+        &[("cook_temperature", ParamValue::Number(70.0))],
+    )
+    .ability(
+        Ability::Burnable,
+        &[("burn_temperature", ParamValue::Number(200.0))],
+    )
+    .ability(Ability::Freezable, &[]);
+    spec.density = 800.0;
+    world.add(spec).unwrap()
+}
+
 /// An open-top box (a bin): 0.5 m wide, 0.4 m tall, 2 cm walls, standing on the floor at (x, y).
 pub fn open_box(world: &mut World, x: f32, y: f32) -> ObjectId {
     let (h, t) = (0.2, 0.01);

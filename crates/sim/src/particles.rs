@@ -1,0 +1,179 @@
+//! Dust and stains as particles on surfaces, and cleaning.
+//!
+//! Making an object dusty (or stained) places 20 particles on its upward-facing surfaces, found by
+//! casting rays down onto it on a jittered grid over its footprint; they are fixed in the object's
+//! frame and move with it. The object is dusty while more than 50 % of the particles ever placed
+//! remain (75 % for floors), as in iGibson 2.0 (§1.6; iGibson also uses side faces).
+//!
+//! Each step, a cleaning tool that touches a dirty object removes the particles inside its box,
+//! grown by 1 cm; stains only come off when the tool is soaked.
+
+use crate::states::StateError;
+use crate::world::{ObjectId, World};
+use behavior_bddl::Predicate;
+use behavior_bddl::taxonomy::{Ability, FLOOR_SYNSET};
+use rapier3d::math::Vector;
+use rapier3d::parry::bounding_volume::BoundingVolume;
+
+pub const PARTICLES_PER_SET: usize = 20;
+/// Fewer successful placements than this and the setter fails (iGibson's minimum).
+pub const MIN_PARTICLES: usize = 5;
+pub const CLEAN_THRESHOLD: f32 = 0.5;
+pub const FLOOR_CLEAN_THRESHOLD: f32 = 0.75;
+/// How far beyond its box a cleaning tool wipes (m).
+pub const WIPE_MARGIN: f32 = 0.01;
+
+/// Particles of one kind on one object, in the object's frame.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ParticleSet {
+    pub points: Vec<Vector>,
+    /// How many were placed when the set was last made.
+    pub placed: usize,
+}
+
+impl World {
+    fn particles(&self, id: ObjectId, predicate: Predicate) -> &ParticleSet {
+        let s = self.object_state(id);
+        if predicate == Predicate::Dusty {
+            &s.dust
+        } else {
+            &s.stain
+        }
+    }
+
+    fn particles_mut(&mut self, id: ObjectId, predicate: Predicate) -> &mut ParticleSet {
+        let s = &mut self.states[id.0 as usize];
+        if predicate == Predicate::Dusty {
+            &mut s.dust
+        } else {
+            &mut s.stain
+        }
+    }
+
+    /// Particles of an object in world coordinates.
+    pub fn particle_positions(&self, id: ObjectId, predicate: Predicate) -> Vec<Vector> {
+        let pose = self.pose(id);
+        self.particles(id, predicate)
+            .points
+            .iter()
+            .map(|&p| pose.transform_point(p))
+            .collect()
+    }
+
+    pub(crate) fn is_dirty(&self, id: ObjectId, predicate: Predicate) -> bool {
+        let set = self.particles(id, predicate);
+        let threshold = if self.object(id).category == FLOOR_SYNSET {
+            FLOOR_CLEAN_THRESHOLD
+        } else {
+            CLEAN_THRESHOLD
+        };
+        set.placed > 0 && set.points.len() as f32 > threshold * set.placed as f32
+    }
+
+    pub(crate) fn set_dirty(
+        &mut self,
+        id: ObjectId,
+        predicate: Predicate,
+        dirty: bool,
+    ) -> Result<(), StateError> {
+        if !dirty {
+            *self.particles_mut(id, predicate) = ParticleSet::default();
+            return Ok(());
+        }
+        let points = self.sample_top_surface(id, predicate as u64);
+        if points.len() < MIN_PARTICLES {
+            return Err(StateError::Unsupported {
+                object: self.object(id).name.clone(),
+                predicate,
+                value: true,
+                reason: format!(
+                    "only {} of {PARTICLES_PER_SET} particles found a surface facing up",
+                    points.len()
+                ),
+            });
+        }
+        let placed = points.len();
+        *self.particles_mut(id, predicate) = ParticleSet { points, placed };
+        Ok(())
+    }
+
+    /// Up to [`PARTICLES_PER_SET`] points on the object's surfaces that face up, in its frame.
+    fn sample_top_surface(&self, id: ObjectId, salt: u64) -> Vec<Vector> {
+        let aabb = self.aabb(id);
+        let pose = self.pose(id);
+        let (cols, rows) = (5, 4);
+        let mut points = Vec::new();
+        for k in 0..cols * rows {
+            // A fixed jitter per cell (a hash of object, kind and cell) keeps placement repeatable.
+            let h = splitmix(u64::from(id.0) << 32 ^ salt << 16 ^ k as u64);
+            let (jx, jy) = (
+                (h & 0xffff) as f32 / 65535.0,
+                (h >> 16 & 0xffff) as f32 / 65535.0,
+            );
+            let fx = ((k % cols) as f32 + 0.1 + 0.8 * jx) / cols as f32;
+            let fy = ((k / cols) as f32 + 0.1 + 0.8 * jy) / rows as f32;
+            let x = aabb.mins.x + fx * (aabb.maxs.x - aabb.mins.x);
+            let y = aabb.mins.y + fy * (aabb.maxs.y - aabb.mins.y);
+            let top = Vector::new(x, y, aabb.maxs.z + 0.01);
+            let colliders = &self.object(id).colliders;
+            let hit = colliders
+                .iter()
+                .filter_map(|&c| {
+                    let c = &self.physics.colliders[c];
+                    let ray = rapier3d::prelude::Ray::new(top, -Vector::Z);
+                    let range = aabb.maxs.z - aabb.mins.z + 0.02;
+                    c.shape()
+                        .cast_ray_and_get_normal(c.position(), &ray, range, true)
+                        .filter(|hit| hit.normal.z > 0.5)
+                        .map(|hit| hit.time_of_impact)
+                })
+                .min_by(f32::total_cmp);
+            if let Some(t) = hit {
+                let world = top - Vector::Z * t;
+                points.push(pose.inverse_transform_point(world));
+            }
+        }
+        points
+    }
+
+    /// One step of cleaning: every cleaning tool wipes what it touches.
+    pub(crate) fn update_cleaning(&mut self) {
+        let tools: Vec<ObjectId> = self
+            .objects()
+            .filter(|(_, o)| o.has(Ability::CleaningTool))
+            .map(|(id, _)| id)
+            .collect();
+        for tool in tools {
+            let area = self.aabb(tool).loosened(WIPE_MARGIN);
+            let soaked = self.object_state(tool).soaked;
+            for i in 0..self.states.len() {
+                let dirty = ObjectId(i as u32);
+                let s = &self.states[i];
+                if dirty == tool || (s.dust.points.is_empty() && s.stain.points.is_empty()) {
+                    continue;
+                }
+                if !self.touching(tool, dirty) {
+                    continue;
+                }
+                let pose = self.pose(dirty);
+                let kinds: &[Predicate] = if soaked {
+                    &[Predicate::Dusty, Predicate::Stained]
+                } else {
+                    &[Predicate::Dusty]
+                };
+                for &kind in kinds {
+                    self.particles_mut(dirty, kind)
+                        .points
+                        .retain(|&p| !area.contains_local_point(pose.transform_point(p)));
+                }
+            }
+        }
+    }
+}
+
+fn splitmix(mut x: u64) -> u64 {
+    x = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    x = (x ^ (x >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    x = (x ^ (x >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    x ^ (x >> 31)
+}

@@ -1,0 +1,126 @@
+//! `sliced`: a slicer pressing a sliceable object with more than 10 N replaces it by two halves.
+//!
+//! The force is read from the contact impulses of each physics substep (iGibson 2.0 §1.7 reads the
+//! normal force of the slicer link's contacts). The whole object is then disabled (it leaves the
+//! simulation and the ray casts, but keeps its id, its last pose and its states), and two halves
+//! — the two halves of its bounding box, split across its longest horizontal side — appear in its
+//! place as new objects that inherit its states. Slicing cannot be undone.
+
+use crate::states::StateError;
+use crate::world::{ObjectId, ObjectSpec, Part, Primitive, World};
+use behavior_bddl::Predicate;
+use behavior_bddl::taxonomy::Ability;
+use rapier3d::math::{Pose, Vector};
+
+/// Newtons.
+pub const SLICE_FORCE: f32 = 10.0;
+
+impl World {
+    /// Sliceable objects pressed by a slicer with more than [`SLICE_FORCE`] in the last substep.
+    pub(crate) fn pressed_by_slicers(&self) -> Vec<ObjectId> {
+        let dt = self.physics.integration_parameters.dt;
+        let mut pressed = Vec::new();
+        for (slicer, object) in self.objects() {
+            if !object.has(Ability::Slicer) {
+                continue;
+            }
+            for &c in &object.colliders {
+                for pair in self.physics.narrow_phase.contact_pairs_with(c) {
+                    let other = if pair.collider1 == c {
+                        pair.collider2
+                    } else {
+                        pair.collider1
+                    };
+                    let Some(other) = self.physics.colliders.get(other) else {
+                        continue;
+                    };
+                    let id = ObjectId(other.user_data as u32);
+                    if other.user_data == crate::world::DROP_TAG
+                        || id == slicer
+                        || id.0 as usize >= self.states.len()
+                    {
+                        continue;
+                    }
+                    let sliceable =
+                        self.object(id).has(Ability::Sliceable) && !self.object_state(id).sliced;
+                    if sliceable
+                        && pair.total_impulse_magnitude() / dt > SLICE_FORCE
+                        && !pressed.contains(&id)
+                    {
+                        pressed.push(id);
+                    }
+                }
+            }
+        }
+        pressed.sort();
+        pressed
+    }
+
+    /// The two halves made when an object was sliced.
+    pub fn halves(&self, id: ObjectId) -> Option<[ObjectId; 2]> {
+        self.object_state(id).halves
+    }
+
+    pub(crate) fn set_sliced(&mut self, id: ObjectId, sliced: bool) -> Result<(), StateError> {
+        let state = self.object_state(id);
+        if state.sliced == sliced {
+            return Ok(());
+        }
+        if !sliced {
+            return Err(StateError::Unsupported {
+                object: self.object(id).name.clone(),
+                predicate: Predicate::Sliced,
+                value: false,
+                reason: "slicing cannot be undone".into(),
+            });
+        }
+        let object = self.object(id);
+        let aabb = self.aabb(id);
+        let half = (aabb.maxs - aabb.mins) * 0.5;
+        let center = aabb.center();
+        let mass = self.physics.bodies[object.body].mass();
+        // Split across the longer horizontal side.
+        let along = if half.x >= half.y {
+            Vector::X
+        } else {
+            Vector::Y
+        };
+        let piece = half - along * (half.dot(along) * 0.5);
+        let volume = 8.0 * piece.x * piece.y * piece.z;
+        let mut specs = Vec::new();
+        for (k, sign) in [(1, -1.0f32), (2, 1.0)] {
+            let mut spec = ObjectSpec::new(
+                &format!("{}_half_{k}", object.name),
+                &object.category,
+                vec![Part::new(Primitive::Box {
+                    half_extents: piece,
+                })],
+            );
+            spec.pose = Pose::from_translation(center + along * (sign * half.dot(along) * 0.5));
+            spec.density = (mass * 0.5 / volume).max(1.0);
+            spec.abilities = object.abilities.clone();
+            spec.abilities.remove(&Ability::Sliceable);
+            specs.push(spec);
+        }
+        let inherited = self.object_state(id).clone();
+        let mut halves = [id; 2];
+        for (k, spec) in specs.into_iter().enumerate() {
+            let half_id = self.add(spec).map_err(|e| StateError::Unsupported {
+                object: self.object(id).name.clone(),
+                predicate: Predicate::Sliced,
+                value: true,
+                reason: e.to_string(),
+            })?;
+            let mut s = inherited.clone();
+            s.halves = None;
+            self.states[half_id.0 as usize] = s;
+            halves[k] = half_id;
+        }
+        let body = self.object(id).body;
+        self.physics.bodies[body].set_enabled(false);
+        let s = &mut self.states[id.0 as usize];
+        s.sliced = true;
+        s.halves = Some(halves);
+        Ok(())
+    }
+}

@@ -1,0 +1,106 @@
+//! Temperature: heat sources and sinks, and the decay toward room temperature.
+//!
+//! Each step (1/30 s) an object with a temperature state (cookable, burnable or freezable) is
+//! pulled toward every active source that reaches it, `T += (T_source − T) · rate · dt`, each
+//! computed from the old temperature; an object no source reaches decays toward 23 °C at
+//! 0.02 /s. A source reaches an object when its heating element is within its distance
+//! threshold of the object's centre, or, for sources that need it inside (ovens, microwaves,
+//! fridges), when the object is inside it. A source is active when it is toggled on (if it needs
+//! to be) and closed (if it needs to be). Constants and per-synset parameters are iGibson 2.0's
+//! (`../shared/reference/igibson-2.0-reference.md` §1.4), read from the taxonomy's abilities.
+
+use crate::world::{ObjectId, PointKind, World};
+use behavior_bddl::taxonomy::Ability;
+
+pub const ROOM_TEMPERATURE: f32 = 23.0;
+/// Per second, toward room temperature, when no source reaches the object.
+pub const DECAY_RATE: f32 = 0.02;
+pub const DEFAULT_COOK_TEMPERATURE: f32 = 70.0;
+pub const DEFAULT_BURN_TEMPERATURE: f32 = 200.0;
+pub const DEFAULT_FREEZE_TEMPERATURE: f32 = 0.0;
+/// Defaults of a heat source whose ability lists no parameters.
+pub const DEFAULT_SOURCE_TEMPERATURE: f32 = 200.0;
+pub const DEFAULT_HEATING_RATE: f32 = 0.04;
+pub const DEFAULT_DISTANCE_THRESHOLD: f32 = 0.2;
+
+/// What a source does to objects this step.
+struct Source {
+    id: ObjectId,
+    temperature: f32,
+    rate: f32,
+    /// The element's world position and reach, or `None` when the object must be inside.
+    element: Option<(rapier3d::math::Vector, f32)>,
+}
+
+impl World {
+    fn active_sources(&self) -> Vec<Source> {
+        let mut sources = Vec::new();
+        for (id, object) in self.objects() {
+            let Some(ability) = [Ability::HeatSource, Ability::ColdSource]
+                .into_iter()
+                .find(|&a| object.has(a))
+            else {
+                continue;
+            };
+            let needs_on = object.flag(ability, "requires_toggled_on", false);
+            let needs_closed = object.flag(ability, "requires_closed", false);
+            let needs_inside = object.flag(ability, "requires_inside", false);
+            if (needs_on && !self.object_state(id).toggled_on) || (needs_closed && self.is_open(id))
+            {
+                continue;
+            }
+            let element = if needs_inside {
+                None
+            } else {
+                // Without an element there is nothing to heat from (as in iGibson).
+                let Some(point) = object.point(PointKind::HeatingElement) else {
+                    continue;
+                };
+                let reach = object.param(ability, "distance_threshold", DEFAULT_DISTANCE_THRESHOLD);
+                Some((self.pose(id).transform_point(point), reach))
+            };
+            sources.push(Source {
+                id,
+                temperature: object.param(ability, "temperature", DEFAULT_SOURCE_TEMPERATURE),
+                rate: object.param(ability, "heating_rate", DEFAULT_HEATING_RATE),
+                element,
+            });
+        }
+        sources
+    }
+
+    /// One step of the temperature rule.
+    pub(crate) fn update_temperatures(&mut self, dt: f32) {
+        let sources = self.active_sources();
+        for i in 0..self.states.len() {
+            let id = ObjectId(i as u32);
+            let object = self.object(id);
+            if ![Ability::Cookable, Ability::Burnable, Ability::Freezable]
+                .into_iter()
+                .any(|a| object.has(a))
+            {
+                continue;
+            }
+            let old = self.states[i].temperature;
+            let center = self.aabb(id).center();
+            let mut new = old;
+            let mut reached = false;
+            for source in sources.iter().filter(|s| s.id != id) {
+                let reaches = match source.element {
+                    Some((at, reach)) => (center - at).length() <= reach,
+                    None => self.inside(id, source.id),
+                };
+                if reaches {
+                    new += (source.temperature - old) * source.rate * dt;
+                    reached = true;
+                }
+            }
+            if !reached {
+                new += (ROOM_TEMPERATURE - old) * DECAY_RATE * dt;
+            }
+            let s = &mut self.states[i];
+            s.temperature = new;
+            s.max_temperature = s.max_temperature.max(new);
+        }
+    }
+}

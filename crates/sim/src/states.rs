@@ -94,6 +94,11 @@ pub enum StateError {
 }
 
 impl World {
+    /// An object's current temperature (°C).
+    pub fn temperature(&self, id: ObjectId) -> f32 {
+        self.object_state(id).temperature
+    }
+
     pub(crate) fn object_state(&self, id: ObjectId) -> &ObjectState {
         &self.states[id.0 as usize]
     }

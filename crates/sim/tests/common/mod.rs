@@ -139,3 +139,141 @@ pub fn settle(world: &mut World, seconds: f32) {
         world.step();
     }
 }
+
+use behavior_bddl::taxonomy::{Ability, ParamValue};
+use behavior_sim::{JointKind, LinkSpec, PointKind};
+
+pub fn num(x: f32) -> ParamValue {
+    ParamValue::Number(f64::from(x))
+}
+
+pub fn yes(b: bool) -> ParamValue {
+    ParamValue::Bool(b)
+}
+
+/// A stove: a 0.6 m cube with a burner at the centre of its top, heating as the taxonomy's
+/// `stove.n.01` (500 °C, rate 0.02 /s, 0.2 m reach, needs to be toggled on), with a knob button.
+pub fn stove(world: &mut World, x: f32, y: f32) -> ObjectId {
+    let spec = ObjectSpec::new(
+        "stove_1",
+        "stove.n.01",
+        vec![Part::at(cuboid(0.3, 0.3, 0.45), v(0.0, 0.0, 0.45))],
+    )
+    .at(v(x, y, 0.0))
+    .fixed()
+    .ability(
+        Ability::HeatSource,
+        &[
+            ("temperature", num(500.0)),
+            ("heating_rate", num(0.02)),
+            ("distance_threshold", num(0.2)),
+            ("requires_toggled_on", yes(true)),
+            ("requires_closed", yes(false)),
+            ("requires_inside", yes(false)),
+        ],
+    )
+    .ability(Ability::Toggleable, &[])
+    .point(PointKind::HeatingElement, v(0.0, 0.0, 0.9))
+    .point(PointKind::ToggleButton, v(0.3, 0.0, 0.8));
+    world.add(spec).unwrap()
+}
+
+/// A fridge: an insulated box 0.7 × 0.7 × 1.2 m with a door on a hinge along its front-left
+/// edge, cooling as `electric_refrigerator.n.01` (−18 °C, rate 0.02 /s, closed and inside).
+pub fn fridge(world: &mut World, x: f32, y: f32) -> ObjectId {
+    let (w, d, h, t) = (0.35, 0.35, 1.2, 0.02);
+    let parts = vec![
+        Part::at(cuboid(w, d, t), v(0.0, 0.0, t)),
+        Part::at(cuboid(w, d, t), v(0.0, 0.0, h - t)),
+        Part::at(cuboid(t, d, h / 2.0), v(-w + t, 0.0, h / 2.0)),
+        Part::at(cuboid(t, d, h / 2.0), v(w - t, 0.0, h / 2.0)),
+        Part::at(cuboid(w, t, h / 2.0), v(0.0, d - t, h / 2.0)),
+    ];
+    let door = LinkSpec {
+        name: "door".into(),
+        parts: vec![Part::at(cuboid(w, t, h / 2.0), v(0.0, -d - t, h / 2.0))],
+        joint: JointKind::Revolute,
+        anchor: v(-w, -d - t, 0.0),
+        axis: v(0.0, 0.0, -1.0),
+        range: 2.0,
+        damping: 5.0,
+        density: 300.0,
+    };
+    let spec = ObjectSpec::new("fridge_1", "electric_refrigerator.n.01", parts)
+        .at(v(x, y, 0.0))
+        .fixed()
+        .link(door)
+        .ability(Ability::Openable, &[])
+        .ability(
+            Ability::ColdSource,
+            &[
+                ("temperature", num(-18.0)),
+                ("heating_rate", num(0.02)),
+                ("requires_toggled_on", yes(false)),
+                ("requires_closed", yes(true)),
+                ("requires_inside", yes(true)),
+            ],
+        );
+    world.add(spec).unwrap()
+}
+
+/// A sink basin with a faucet outlet 0.35 m above its bottom, toggled by a button.
+pub fn sink(world: &mut World, x: f32, y: f32) -> ObjectId {
+    let (w, h, t) = (0.3, 0.25, 0.02);
+    let parts = vec![
+        Part::at(cuboid(w, w, t), v(0.0, 0.0, 0.6 + t)),
+        Part::at(cuboid(t, w, h / 2.0), v(-w + t, 0.0, 0.6 + h / 2.0)),
+        Part::at(cuboid(t, w, h / 2.0), v(w - t, 0.0, 0.6 + h / 2.0)),
+        Part::at(cuboid(w, t, h / 2.0), v(0.0, -w + t, 0.6 + h / 2.0)),
+        Part::at(cuboid(w, t, h / 2.0), v(0.0, w - t, 0.6 + h / 2.0)),
+        Part::at(cuboid(0.05, 0.05, 0.3), v(0.0, 0.0, 0.3)),
+    ];
+    let spec = ObjectSpec::new("sink_1", "sink.n.01", parts)
+        .at(v(x, y, 0.0))
+        .fixed()
+        .ability(Ability::WaterSource, &[])
+        .ability(Ability::Toggleable, &[])
+        .point(PointKind::WaterOutlet, v(0.0, 0.0, 1.0))
+        .point(PointKind::ToggleButton, v(0.0, w, 0.9));
+    world.add(spec).unwrap()
+}
+
+/// A 30 × 30 cm rag, 1 cm thick: soakable, a cleaning tool.
+pub fn rag(world: &mut World, at: Vector) -> ObjectId {
+    let spec = ObjectSpec::new(
+        "rag_1",
+        "rag.n.01",
+        vec![Part::new(cuboid(0.15, 0.15, 0.005))],
+    )
+    .at(at)
+    .ability(Ability::Soakable, &[])
+    .ability(Ability::CleaningTool, &[]);
+    world.add(spec).unwrap()
+}
+
+/// A stainable, dustyable plate.
+pub fn dirty_plate(world: &mut World, at: Vector) -> ObjectId {
+    let disc = Primitive::Cylinder {
+        radius: 0.12,
+        half_height: 0.01,
+    };
+    let mut spec = ObjectSpec::new("plate_1", "plate.n.04", vec![Part::new(disc)])
+        .at(at)
+        .ability(Ability::Stainable, &[])
+        .ability(Ability::Dustyable, &[]);
+    spec.density = 2000.0;
+    world.add(spec).unwrap()
+}
+
+/// A kitchen knife lying flat, blade down: a slicer.
+pub fn knife(world: &mut World, at: Vector) -> ObjectId {
+    let mut spec = ObjectSpec::new(
+        "knife_1",
+        "carving_knife.n.01",
+        vec![Part::new(cuboid(0.12, 0.01, 0.02))],
+    )
+    .at(at)
+    .ability(Ability::Slicer, &[]);
+    spec.density = 7800.0;
+    world.add(spec).unwrap()
+}

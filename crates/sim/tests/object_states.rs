@@ -1,0 +1,232 @@
+//! One small physical scene per object-state rule; test names carry the predicate they check.
+
+mod common;
+
+use behavior_bddl::Predicate;
+use behavior_sim::World;
+use common::*;
+
+#[test]
+fn cooked_then_burnt_on_a_lit_stove_at_the_thresholds_and_cooling_afterwards() {
+    let mut world = World::default();
+    two_room_floor(&mut world);
+    let stove = stove(&mut world, -1.0, 0.0);
+    let apple = sliceable_apple(&mut world, "apple_1", v(-1.0, 0.0, 1.0));
+    settle(&mut world, 1.0);
+    assert!(world.ontop(apple, stove));
+    // Off, nothing happens.
+    settle(&mut world, 5.0);
+    assert!(!world.state(apple, Predicate::Cooked));
+    world.set_state(stove, Predicate::ToggledOn, true).unwrap();
+    let (mut cooked_at, mut burnt_at) = (None, None);
+    for step in 0..30 * 60 {
+        let before = world.temperature(apple);
+        world.step();
+        if cooked_at.is_none() && world.state(apple, Predicate::Cooked) {
+            cooked_at = Some((step, before, world.temperature(apple)));
+        }
+        if burnt_at.is_none() && world.state(apple, Predicate::Burnt) {
+            burnt_at = Some((step, before, world.temperature(apple)));
+        }
+    }
+    let (cook_step, below, above) = cooked_at.expect("the apple cooks");
+    assert!(below < 70.0 && above >= 70.0, "{below} → {above}");
+    let (burn_step, below, above) = burnt_at.expect("the apple burns");
+    assert!(below < 200.0 && above >= 200.0, "{below} → {above}");
+    assert!(cook_step < burn_step);
+    // 500 °C at 0.02 /s from 23 °C: 70 °C after ln(477/430)/0.02 ≈ 5.2 s, 200 °C after ≈ 23.4 s.
+    assert!((150..160).contains(&cook_step), "{cook_step}");
+    assert!((695..710).contains(&burn_step), "{burn_step}");
+    // Off again: the apple cools toward 23 °C but stays cooked and burnt.
+    world.set_state(stove, Predicate::ToggledOn, false).unwrap();
+    let hot = world.temperature(apple);
+    settle(&mut world, 20.0);
+    assert!(world.temperature(apple) < hot - 50.0);
+    assert!(world.state(apple, Predicate::Cooked) && world.state(apple, Predicate::Burnt));
+}
+
+#[test]
+fn cooked_setter_keeps_the_temperature_history_consistent() {
+    let mut world = World::default();
+    let apple = sliceable_apple(&mut world, "apple_1", v(0.0, 0.0, 1.0));
+    world.set_state(apple, Predicate::Cooked, true).unwrap();
+    assert!(world.state(apple, Predicate::Cooked) && !world.state(apple, Predicate::Burnt));
+    world.set_state(apple, Predicate::Burnt, true).unwrap();
+    world.set_state(apple, Predicate::Cooked, false).unwrap();
+    assert!(!world.state(apple, Predicate::Cooked) && !world.state(apple, Predicate::Burnt));
+    let plate = plate(&mut world, v(1.0, 0.0, 1.0));
+    let err = world.set_state(plate, Predicate::Cooked, true).unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        "plate_1 (plate.n.04) cannot be cooked: it lacks the `cookable` ability"
+    );
+}
+
+#[test]
+fn frozen_and_inside_in_a_closed_fridge_but_not_with_the_door_open() {
+    let mut world = World::default();
+    two_room_floor(&mut world);
+    let fridge = fridge(&mut world, -2.0, 0.0);
+    let apple = sliceable_apple(&mut world, "apple_1", v(-2.0, 0.0, 0.3));
+    settle(&mut world, 1.0);
+    assert!(world.inside(apple, fridge));
+    assert!(!world.state(fridge, Predicate::Open));
+    // −18 °C at 0.02 /s from 23 °C crosses 0 °C after ln(41/18)/0.02 ≈ 41 s.
+    settle(&mut world, 40.0);
+    assert!(!world.state(apple, Predicate::Frozen));
+    settle(&mut world, 2.0);
+    assert!(
+        world.state(apple, Predicate::Frozen),
+        "{}",
+        world.temperature(apple)
+    );
+    // With the door open the fridge does not cool, and the apple thaws toward 23 °C.
+    world.set_state(fridge, Predicate::Open, true).unwrap();
+    settle(&mut world, 5.0);
+    assert!(
+        !world.state(apple, Predicate::Frozen),
+        "{}",
+        world.temperature(apple)
+    );
+    let frozen_setter = sliceable_apple(&mut world, "apple_2", v(2.0, 0.0, 0.1));
+    world
+        .set_state(frozen_setter, Predicate::Frozen, true)
+        .unwrap();
+    assert!(world.state(frozen_setter, Predicate::Frozen));
+}
+
+#[test]
+fn open_when_the_door_is_beyond_five_percent_of_its_range() {
+    let mut world = World::default();
+    two_room_floor(&mut world);
+    let fridge = fridge(&mut world, -2.0, 0.0);
+    settle(&mut world, 0.5);
+    assert!(world.joint_position(fridge, 0).abs() < 1e-3);
+    world.set_joint_position(fridge, 0, 0.04 * 2.0);
+    settle(&mut world, 0.5);
+    assert!(
+        !world.state(fridge, Predicate::Open),
+        "{}",
+        world.joint_position(fridge, 0)
+    );
+    world.set_joint_position(fridge, 0, 0.06 * 2.0);
+    settle(&mut world, 0.5);
+    assert!(
+        world.state(fridge, Predicate::Open),
+        "{}",
+        world.joint_position(fridge, 0)
+    );
+    world.set_state(fridge, Predicate::Open, false).unwrap();
+    assert!(!world.state(fridge, Predicate::Open));
+    world.set_state(fridge, Predicate::Open, true).unwrap();
+    settle(&mut world, 1.0);
+    assert!(
+        (world.joint_position(fridge, 0) - 2.0).abs() < 0.05,
+        "{}",
+        world.joint_position(fridge, 0)
+    );
+    let apple = sliceable_apple(&mut world, "apple_1", v(2.0, 0.0, 0.1));
+    assert!(world.set_state(apple, Predicate::Open, true).is_err());
+}
+
+#[test]
+fn toggled_on_after_a_hand_stays_five_steps_at_the_button() {
+    let mut world = World::default();
+    let stove = stove(&mut world, 0.0, 0.0);
+    let button = v(0.35, 0.0, 0.8);
+    world.set_hand_points(&[button]);
+    for _ in 0..4 {
+        world.step();
+    }
+    assert!(!world.state(stove, Predicate::ToggledOn));
+    world.step();
+    assert!(world.state(stove, Predicate::ToggledOn));
+    // Holding on does not toggle again; leaving and coming back does.
+    for _ in 0..20 {
+        world.step();
+    }
+    assert!(world.state(stove, Predicate::ToggledOn));
+    world.set_hand_points(&[v(2.0, 0.0, 0.8)]);
+    world.step();
+    world.set_hand_points(&[button]);
+    for _ in 0..5 {
+        world.step();
+    }
+    assert!(!world.state(stove, Predicate::ToggledOn));
+    // Too far from the button (0.15 m): nothing.
+    world.set_hand_points(&[v(0.45, 0.0, 0.8)]);
+    for _ in 0..10 {
+        world.step();
+    }
+    assert!(!world.state(stove, Predicate::ToggledOn));
+}
+
+#[test]
+fn soaked_a_rag_under_a_running_faucet() {
+    let mut world = World::default();
+    two_room_floor(&mut world);
+    let sink = sink(&mut world, -1.0, 0.0);
+    let rag = rag(&mut world, v(-1.0, 0.15, 0.7));
+    let dry = rag(&mut world, v(-2.5, 0.0, 0.1));
+    settle(&mut world, 1.0);
+    assert!(world.inside(rag, sink) || world.ontop(rag, sink));
+    settle(&mut world, 2.0);
+    assert!(!world.state(rag, Predicate::Soaked), "the tap is off");
+    world.set_state(sink, Predicate::ToggledOn, true).unwrap();
+    settle(&mut world, 2.0);
+    assert!(!world.drops().is_empty());
+    assert!(world.state(rag, Predicate::Soaked));
+    assert!(!world.state(dry, Predicate::Soaked));
+}
+
+#[test]
+fn stained_only_a_soaked_rag_cleans_and_dusty_any_rag_does() {
+    let mut world = World::default();
+    two_room_floor(&mut world);
+    let table = table(&mut world, -1.0, 0.0);
+    let plate = dirty_plate(&mut world, v(-1.0, 0.0, 0.8));
+    settle(&mut world, 1.0);
+    assert!(world.ontop(plate, table));
+    world.set_state(plate, Predicate::Stained, true).unwrap();
+    world.set_state(plate, Predicate::Dusty, true).unwrap();
+    assert!(world.state(plate, Predicate::Stained) && world.state(plate, Predicate::Dusty));
+    assert!(world.particle_positions(plate, Predicate::Stained).len() >= 10);
+    // A dry rag laid over the plate takes the dust but not the stains.
+    let rag = rag(&mut world, v(-1.0, 0.0, 0.8));
+    settle(&mut world, 1.0);
+    assert!(world.touching(rag, plate));
+    assert!(!world.state(plate, Predicate::Dusty));
+    assert!(world.state(plate, Predicate::Stained));
+    // Soaked, it takes the stains too.
+    world.set_state(rag, Predicate::Soaked, true).unwrap();
+    world.step();
+    assert!(!world.state(plate, Predicate::Stained));
+    assert!(
+        world.set_state(table, Predicate::Dusty, true).is_err(),
+        "a plain table is not dustyable here"
+    );
+}
+
+#[test]
+fn sliced_a_knife_dropped_onto_a_tomato() {
+    let mut world = World::default();
+    two_room_floor(&mut world);
+    let table = table(&mut world, -1.0, 0.0);
+    let tomato = sliceable_apple(&mut world, "tomato_1", v(-1.0, 0.0, 0.8));
+    settle(&mut world, 1.0);
+    world.set_state(tomato, Predicate::Cooked, true).unwrap();
+    // Resting on a table is no slicing.
+    assert!(!world.state(tomato, Predicate::Sliced));
+    let knife = knife(&mut world, v(-1.0, 0.0, 1.2));
+    settle(&mut world, 1.0);
+    assert!(world.state(tomato, Predicate::Sliced));
+    let [a, b] = world.halves(tomato).unwrap();
+    assert!(
+        world.state(a, Predicate::Cooked) && world.state(b, Predicate::Cooked),
+        "halves inherit states"
+    );
+    assert!(!world.state(knife, Predicate::Sliced));
+    settle(&mut world, 1.0);
+    assert!(world.ontop(a, table) || world.ontop(b, table));
+    assert!(world.set_state(tomato, Predicate::Sliced, false).is_err());
+}

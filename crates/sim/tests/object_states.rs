@@ -167,7 +167,7 @@ fn soaked_a_rag_under_a_running_faucet() {
     two_room_floor(&mut world);
     let sink = sink(&mut world, -1.0, 0.0);
     let rag = rag(&mut world, v(-1.0, 0.15, 0.7));
-    let dry = rag(&mut world, v(-2.5, 0.0, 0.1));
+    let dry = common::rag(&mut world, v(-2.5, 0.0, 0.1));
     settle(&mut world, 1.0);
     assert!(world.inside(rag, sink) || world.ontop(rag, sink));
     settle(&mut world, 2.0);

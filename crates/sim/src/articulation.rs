@@ -52,6 +52,8 @@ impl World {
         body.set_position(base * local, true);
         body.set_linvel(Vector::ZERO, true);
         body.set_angvel(Vector::ZERO, true);
+        self.moved(id);
+        self.refresh();
     }
 
     pub fn is_open(&self, id: ObjectId) -> bool {

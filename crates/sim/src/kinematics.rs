@@ -18,13 +18,19 @@
 //!   is the floor's room.
 //! - `inroom(a, type)`: the room at the centre of `a`'s box has that type.
 //!
-//! Ray casts collect up to [`MAX_HITS`] objects per ray, as iGibson's do.
+//! A ray "hits" an object when it meets any of its colliders, whatever lies between (iGibson
+//! collects the first 10 objects along each ray, which comes to the same in household scenes), so
+//! a predicate depends on its two objects only.
+//!
+//! Values are memoized per pair and kept until either object moves: after a step, an object
+//! whose body (or a link's) is awake counts as moved, and so does one that is teleported. A
+//! settled scene therefore answers every predicate from the cache.
 
-use crate::world::{DROP_TAG, ObjectId, World};
+use crate::world::{ObjectId, World};
+use behavior_bddl::Predicate;
 use rapier3d::math::Vector;
 use rapier3d::parry::bounding_volume::BoundingVolume;
 use rapier3d::parry::query;
-use rapier3d::pipeline::QueryFilter;
 use rapier3d::prelude::Ray;
 
 /// Colliders closer than this touch (m). Resting contacts sit within rapier's contact margin.
@@ -34,9 +40,48 @@ pub const SUPPORT_COS: f32 = std::f32::consts::FRAC_1_SQRT_2;
 pub const VERTICAL_RANGE: f32 = 5.0;
 pub const HORIZONTAL_RANGE: f32 = 1.0;
 pub const HORIZONTAL_DIRECTIONS: usize = 16;
-pub const MAX_HITS: usize = 10;
 
 impl World {
+    pub fn touching(&self, a: ObjectId, b: ObjectId) -> bool {
+        self.cached(Predicate::Touching, a, b, || self.compute_touching(a, b))
+    }
+
+    pub fn ontop(&self, a: ObjectId, b: ObjectId) -> bool {
+        self.cached(Predicate::OnTop, a, b, || self.compute_ontop(a, b))
+    }
+
+    pub fn under(&self, a: ObjectId, b: ObjectId) -> bool {
+        self.cached(Predicate::Under, a, b, || self.compute_under(a, b))
+    }
+
+    pub fn inside(&self, a: ObjectId, b: ObjectId) -> bool {
+        self.cached(Predicate::Inside, a, b, || self.compute_inside(a, b))
+    }
+
+    pub fn nextto(&self, a: ObjectId, b: ObjectId) -> bool {
+        self.cached(Predicate::NextTo, a, b, || self.compute_nextto(a, b))
+    }
+
+    /// A memoized predicate: valid while neither object has moved (see [`World::motion`]).
+    fn cached(
+        &self,
+        predicate: Predicate,
+        a: ObjectId,
+        b: ObjectId,
+        compute: impl FnOnce() -> bool,
+    ) -> bool {
+        let stamp = (self.motion(a), self.motion(b));
+        let key = (predicate, a, b);
+        if let Some(&(value, seen)) = self.cache.borrow().get(&key)
+            && seen == stamp
+        {
+            return value;
+        }
+        let value = compute();
+        self.cache.borrow_mut().insert(key, (value, stamp));
+        value
+    }
+
     /// The collider pairs of two objects whose boxes come within `margin`.
     fn near_pairs(
         &self,
@@ -55,7 +100,7 @@ impl World {
         })
     }
 
-    pub fn touching(&self, a: ObjectId, b: ObjectId) -> bool {
+    fn compute_touching(&self, a: ObjectId, b: ObjectId) -> bool {
         a != b
             && self.near_pairs(a, b, TOUCH_DISTANCE).any(|(x, y)| {
                 query::distance(x.position(), x.shape(), y.position(), y.shape())
@@ -64,7 +109,7 @@ impl World {
     }
 
     /// Whether `b` supports `a` (see the module docs).
-    pub fn ontop(&self, a: ObjectId, b: ObjectId) -> bool {
+    fn compute_ontop(&self, a: ObjectId, b: ObjectId) -> bool {
         a != b
             && self.near_pairs(a, b, TOUCH_DISTANCE).any(|(x, y)| {
                 // normal2 is `y`'s outward normal at the contact: up when `y` carries `x`.
@@ -79,28 +124,19 @@ impl World {
             })
     }
 
-    pub fn under(&self, a: ObjectId, b: ObjectId) -> bool {
+    fn compute_under(&self, a: ObjectId, b: ObjectId) -> bool {
         if a == b {
             return false;
         }
         let aabb = self.aabb(a);
         let c = aabb.center();
-        let up = self.ray_hits(
-            a,
-            Vector::new(c.x, c.y, aabb.maxs.z),
-            Vector::Z,
-            VERTICAL_RANGE,
-        );
-        let down = self.ray_hits(
-            a,
-            Vector::new(c.x, c.y, aabb.mins.z),
-            -Vector::Z,
-            VERTICAL_RANGE,
-        );
-        up.contains(&b) && !down.contains(&b)
+        let top = Vector::new(c.x, c.y, aabb.maxs.z);
+        let bottom = Vector::new(c.x, c.y, aabb.mins.z);
+        self.ray_hits(b, top, Vector::Z, VERTICAL_RANGE)
+            && !self.ray_hits(b, bottom, -Vector::Z, VERTICAL_RANGE)
     }
 
-    pub fn inside(&self, a: ObjectId, b: ObjectId) -> bool {
+    fn compute_inside(&self, a: ObjectId, b: ObjectId) -> bool {
         if a == b {
             return false;
         }
@@ -113,14 +149,13 @@ impl World {
         let surrounded = [Vector::X, Vector::Y, Vector::Z]
             .into_iter()
             .filter(|&axis| {
-                self.ray_hits(a, center, axis, reach).contains(&b)
-                    && self.ray_hits(a, center, -axis, reach).contains(&b)
+                self.ray_hits(b, center, axis, reach) && self.ray_hits(b, center, -axis, reach)
             })
             .count();
         surrounded >= 2
     }
 
-    pub fn nextto(&self, a: ObjectId, b: ObjectId) -> bool {
+    fn compute_nextto(&self, a: ObjectId, b: ObjectId) -> bool {
         if a == b {
             return false;
         }
@@ -139,8 +174,7 @@ impl World {
         (0..HORIZONTAL_DIRECTIONS).any(|k| {
             let angle = k as f32 * std::f32::consts::TAU / HORIZONTAL_DIRECTIONS as f32;
             let dir = Vector::new(angle.cos(), angle.sin(), 0.0);
-            self.ray_hits(from, center, dir, HORIZONTAL_RANGE)
-                .contains(&target)
+            self.ray_hits(target, center, dir, HORIZONTAL_RANGE)
         })
     }
 
@@ -156,36 +190,14 @@ impl World {
         self.room_at(c.x, c.y).map(|r| r.kind.as_str())
     }
 
-    /// The first [`MAX_HITS`] objects other than `from` along a ray, nearest first.
-    pub fn ray_hits(
-        &self,
-        from: ObjectId,
-        origin: Vector,
-        dir: Vector,
-        range: f32,
-    ) -> Vec<ObjectId> {
+    /// Whether a ray hits `target` within `range`. Rays are tested against the target's own
+    /// colliders, so what lies between does not matter and the result needs no query structure
+    /// (it is right even just after a teleport).
+    pub fn ray_hits(&self, target: ObjectId, origin: Vector, dir: Vector, range: f32) -> bool {
         let ray = Ray::new(origin, dir);
-        let own = u128::from(from.0);
-        let others = |_, c: &rapier3d::geometry::Collider| {
-            c.user_data != own && c.user_data != DROP_TAG && c.is_enabled()
-        };
-        let filter = QueryFilter::default().predicate(&others);
-        let mut hits: Vec<(f32, ObjectId)> = self
-            .physics
-            .intersect_ray(ray, range, true, filter)
-            .map(|(_, collider, hit)| (hit.time_of_impact, ObjectId(collider.user_data as u32)))
-            .collect();
-        // Ties broken by id so the result never depends on the tree's traversal order.
-        hits.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)));
-        let mut objects: Vec<ObjectId> = Vec::with_capacity(MAX_HITS);
-        for (_, id) in hits {
-            if !objects.contains(&id) {
-                objects.push(id);
-                if objects.len() == MAX_HITS {
-                    break;
-                }
-            }
-        }
-        objects
+        self.object(target).colliders.iter().any(|&c| {
+            let c = &self.physics.colliders[c];
+            c.is_enabled() && c.shape().intersects_ray(c.position(), &ray, range)
+        })
     }
 }

@@ -118,6 +118,8 @@ impl World {
         }
         let body = self.object(id).body;
         self.physics.bodies[body].set_enabled(false);
+        self.moved(id);
+        self.refresh();
         let s = &mut self.states[id.0 as usize];
         s.sliced = true;
         s.halves = Some(halves);

@@ -6,6 +6,7 @@
 
 use crate::states::ObjectState;
 use crate::water::WaterStream;
+use behavior_bddl::Predicate;
 use behavior_bddl::taxonomy::{Ability, AbilityParams, ParamValue};
 use rapier3d::dynamics::{
     CCDSolver, GenericJoint, ImpulseJointHandle, PrismaticJointBuilder, RevoluteJointBuilder,
@@ -16,7 +17,8 @@ use rapier3d::math::{Pose, Rotation, Vector};
 use rapier3d::parry::bounding_volume::BoundingVolume;
 use rapier3d::pipeline::{CollisionPipeline, PhysicsPipeline, PhysicsWorld};
 use rapier3d::prelude::Aabb;
-use std::collections::BTreeMap;
+use std::cell::RefCell;
+use std::collections::{BTreeMap, HashMap};
 
 /// One action step, in seconds.
 pub const STEP_SECONDS: f32 = 1.0 / 30.0;
@@ -275,9 +277,15 @@ pub struct World {
     /// Hand points reported by the embodiment, for toggling.
     pub(crate) hands: Vec<Vector>,
     pub(crate) water: Vec<WaterStream>,
+    /// Per object: how many times it has moved (see [`World::motion`]).
+    motion: Vec<u64>,
+    /// Memoized binary predicates with the motion counts they were computed at.
+    pub(crate) cache: RefCell<HashMap<PredicateKey, (bool, (u64, u64))>>,
     steps: u64,
     substeps: Substeps,
 }
+
+pub(crate) type PredicateKey = (Predicate, ObjectId, ObjectId);
 
 impl Default for World {
     fn default() -> Self {
@@ -310,6 +318,8 @@ impl Clone for World {
             states: self.states.clone(),
             hands: self.hands.clone(),
             water: self.water.clone(),
+            motion: self.motion.clone(),
+            cache: RefCell::new(self.cache.borrow().clone()),
             steps: self.steps,
             substeps: self.substeps,
         }
@@ -332,6 +342,8 @@ impl World {
             states: Vec::new(),
             hands: Vec::new(),
             water: Vec::new(),
+            motion: Vec::new(),
+            cache: RefCell::new(HashMap::new()),
             steps: 0,
             substeps,
         }
@@ -446,9 +458,11 @@ impl World {
             links,
         });
         self.states.push(ObjectState::default());
+        self.motion.push(0);
         if self.object(id).has(Ability::WaterSource) {
             self.add_water_stream(id);
         }
+        self.refresh();
         Ok(id)
     }
 
@@ -511,6 +525,8 @@ impl World {
         body.set_position(pose, true);
         body.set_linvel(Vector::ZERO, true);
         body.set_angvel(Vector::ZERO, true);
+        self.moved(id);
+        self.refresh();
         Ok(())
     }
 
@@ -540,6 +556,7 @@ impl World {
                 }
             }
         }
+        self.note_motion();
         self.update_water();
         self.update_toggles();
         self.update_temperatures(STEP_SECONDS);
@@ -550,6 +567,38 @@ impl World {
             let _ = self.set_sliced(id, true);
         }
         self.steps += 1;
+    }
+
+    /// How many times an object has moved: a step in which its body or a link was awake, or a
+    /// teleport. Memoized predicates are valid while the counts of their objects are unchanged.
+    pub fn motion(&self, id: ObjectId) -> u64 {
+        self.motion[id.0 as usize]
+    }
+
+    /// Moves colliders with their teleported bodies now rather than at the next step, so that
+    /// predicates see the change at once. (Running the collision pipeline here instead would
+    /// consume rapier's record of changed bodies and keep new bodies from ever waking.)
+    pub(crate) fn refresh(&mut self) {
+        let physics = &mut self.physics;
+        physics
+            .bodies
+            .propagate_modified_body_positions_to_colliders(&mut physics.colliders);
+    }
+
+    pub(crate) fn moved(&mut self, id: ObjectId) {
+        self.motion[id.0 as usize] += 1;
+    }
+
+    fn note_motion(&mut self) {
+        for (i, object) in self.objects.iter().enumerate() {
+            let awake = |b: RigidBodyHandle| {
+                let body = &self.physics.bodies[b];
+                body.is_enabled() && !body.is_fixed() && !body.is_sleeping()
+            };
+            if awake(object.body) || object.links.iter().any(|l| awake(l.body)) {
+                self.motion[i] += 1;
+            }
+        }
     }
 
     pub fn snapshot(&self) -> Snapshot {

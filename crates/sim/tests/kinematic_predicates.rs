@@ -123,3 +123,32 @@ fn bad_object_specs_are_errors_not_panics() {
     assert!(world.add(far).is_err());
     assert_eq!(world.objects().len(), 0);
 }
+
+#[test]
+fn ontop_memo_survives_sleep_and_is_invalidated_by_motion() {
+    let mut world = World::default();
+    two_room_floor(&mut world);
+    let table = table(&mut world, -1.0, 0.0);
+    let apple = apple(&mut world, "apple_1", v(-1.0, 0.0, 0.9));
+    settle(&mut world, 3.0);
+    assert!(world.ontop(apple, table));
+    let count = world.motion(apple);
+    settle(&mut world, 1.0);
+    assert_eq!(
+        world.motion(apple),
+        count,
+        "a sleeping apple does not count as moving"
+    );
+    assert!(world.ontop(apple, table));
+    world
+        .set_pose(
+            apple,
+            rapier3d::math::Pose::from_translation(v(-3.0, 0.0, 0.04)),
+        )
+        .unwrap();
+    assert!(
+        !world.ontop(apple, table),
+        "a teleport invalidates the memo"
+    );
+    assert!(world.touching(apple, world.object_named("floor_kitchen").unwrap()));
+}

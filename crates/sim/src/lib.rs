@@ -21,6 +21,7 @@
 //! ```
 
 pub mod articulation;
+pub mod bench_scene;
 pub mod kinematics;
 pub mod oracle;
 pub mod particles;

@@ -109,6 +109,7 @@ impl World {
             if let Some(d) = stream.drops.iter().position(|d| d.age.is_none()) {
                 stream.steps_since_drop = 0;
                 stream.drops[d].age = Some(0);
+                self.quiet = false;
                 let body = &mut self.physics.bodies[stream.drops[d].body];
                 body.set_enabled(true);
                 body.set_position(Pose::from_translation(outlet), true);

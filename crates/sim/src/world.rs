@@ -10,7 +10,7 @@ use behavior_bddl::Predicate;
 use behavior_bddl::taxonomy::{Ability, AbilityParams, ParamValue};
 use rapier3d::dynamics::{
     CCDSolver, GenericJoint, ImpulseJointHandle, PrismaticJointBuilder, RevoluteJointBuilder,
-    RigidBodyBuilder, RigidBodyHandle,
+    RigidBodyActivation, RigidBodyBuilder, RigidBodyHandle,
 };
 use rapier3d::geometry::{Collider, ColliderBuilder, ColliderHandle};
 use rapier3d::math::{Pose, Rotation, Vector};
@@ -281,6 +281,9 @@ pub struct World {
     motion: Vec<u64>,
     /// Memoized binary predicates with the motion counts they were computed at.
     pub(crate) cache: RefCell<HashMap<PredicateKey, (bool, (u64, u64))>>,
+    /// The last physics step left every body asleep and nothing has changed since, so further
+    /// substeps would change nothing: they are skipped until something wakes.
+    pub(crate) quiet: bool,
     steps: u64,
     substeps: Substeps,
 }
@@ -320,6 +323,7 @@ impl Clone for World {
             water: self.water.clone(),
             motion: self.motion.clone(),
             cache: RefCell::new(self.cache.borrow().clone()),
+            quiet: self.quiet,
             steps: self.steps,
             substeps: self.substeps,
         }
@@ -344,6 +348,7 @@ impl World {
             water: Vec::new(),
             motion: Vec::new(),
             cache: RefCell::new(HashMap::new()),
+            quiet: false,
             steps: 0,
             substeps,
         }
@@ -530,6 +535,22 @@ impl World {
         Ok(())
     }
 
+    /// Lets resting bodies sleep (the default) or keeps every body simulated, for benchmarks of
+    /// an awake scene.
+    pub fn set_sleeping_allowed(&mut self, allowed: bool) {
+        for (_, body) in self.physics.bodies.iter_mut() {
+            if body.is_dynamic() {
+                *body.activation_mut() = if allowed {
+                    RigidBodyActivation::active()
+                } else {
+                    RigidBodyActivation::cannot_sleep()
+                };
+                body.wake_up(true);
+            }
+        }
+        self.quiet = false;
+    }
+
     pub fn is_sleeping(&self, id: ObjectId) -> bool {
         self.physics.bodies[self.object(id).body].is_sleeping()
     }
@@ -548,13 +569,16 @@ impl World {
     /// the state rules once: water, toggles, temperature, cleaning, slicing.
     pub fn step(&mut self) {
         let mut pressed: Vec<ObjectId> = Vec::new();
-        for _ in 0..self.substeps.count() {
-            self.physics.step();
-            for id in self.pressed_by_slicers() {
-                if !pressed.contains(&id) {
-                    pressed.push(id);
+        if !self.quiet {
+            for _ in 0..self.substeps.count() {
+                self.physics.step();
+                for id in self.pressed_by_slicers() {
+                    if !pressed.contains(&id) {
+                        pressed.push(id);
+                    }
                 }
             }
+            self.quiet = self.physics.islands.num_active_bodies() == 0;
         }
         self.note_motion();
         self.update_water();
@@ -569,6 +593,11 @@ impl World {
         self.steps += 1;
     }
 
+    /// Drops every memoized predicate (for benchmarks of the uncached computation).
+    pub fn forget_predicates(&self) {
+        self.cache.borrow_mut().clear();
+    }
+
     /// How many times an object has moved: a step in which its body or a link was awake, or a
     /// teleport. Memoized predicates are valid while the counts of their objects are unchanged.
     pub fn motion(&self, id: ObjectId) -> u64 {
@@ -579,6 +608,7 @@ impl World {
     /// predicates see the change at once. (Running the collision pipeline here instead would
     /// consume rapier's record of changed bodies and keep new bodies from ever waking.)
     pub(crate) fn refresh(&mut self) {
+        self.quiet = false;
         let physics = &mut self.physics;
         physics
             .bodies

@@ -280,7 +280,7 @@ pub struct World {
     /// Per object: how many times it has moved (see [`World::motion`]).
     motion: Vec<u64>,
     /// Memoized binary predicates with the motion counts they were computed at.
-    pub(crate) cache: RefCell<HashMap<PredicateKey, (bool, (u64, u64))>>,
+    pub(crate) cache: RefCell<PredicateMemo>,
     /// The last physics step left every body asleep and nothing has changed since, so further
     /// substeps would change nothing: they are skipped until something wakes.
     pub(crate) quiet: bool,
@@ -288,7 +288,8 @@ pub struct World {
     substeps: Substeps,
 }
 
-pub(crate) type PredicateKey = (Predicate, ObjectId, ObjectId);
+/// Memoized binary predicates: (predicate, a, b) → (value, motion counts of a and b).
+pub(crate) type PredicateMemo = HashMap<(Predicate, ObjectId, ObjectId), (bool, (u64, u64))>;
 
 impl Default for World {
     fn default() -> Self {

@@ -56,6 +56,27 @@ impl World {
         self.refresh();
     }
 
+    /// Drives a link's joint toward a velocity (rad/s or m/s) with a motor of the given
+    /// strength; velocity 0 with the link's damping is the default, passive state.
+    pub fn set_joint_motor(&mut self, id: ObjectId, link: usize, velocity: f32, factor: f32) {
+        let (velocity, factor) = if velocity.is_finite() && factor.is_finite() {
+            (velocity, factor.max(0.0))
+        } else {
+            (0.0, 0.0)
+        };
+        let l = &self.object(id).links[link];
+        let (handle, body, kind) = (l.joint, l.body, l.kind);
+        if let Some(joint) = self.physics.impulse_joints.get_mut(handle, true) {
+            let axis = match kind {
+                JointKind::Revolute => rapier3d::dynamics::JointAxis::AngX,
+                JointKind::Prismatic => rapier3d::dynamics::JointAxis::LinX,
+            };
+            joint.data.set_motor_velocity(axis, velocity, factor);
+        }
+        self.physics.bodies[body].wake_up(true);
+        self.quiet = false;
+    }
+
     pub fn is_open(&self, id: ObjectId) -> bool {
         let links = &self.object(id).links;
         (0..links.len()).any(|i| self.joint_position(id, i) > OPEN_FRACTION * links[i].range)

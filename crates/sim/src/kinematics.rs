@@ -10,8 +10,10 @@
 //!   near an edge, and never for two objects side by side.
 //! - `under(a, b)`: a ray cast up from the top centre of `a`'s box hits `b` within 5 m, and a ray
 //!   cast down from its bottom centre does not.
-//! - `inside(a, b)`: the centre of `a`'s box lies in `b`'s box, and rays from it along at least
-//!   two of the three axes hit `b` in both directions (`b` surrounds `a`).
+//! - `inside(a, b)`: the centre of `a`'s box lies in `b`'s box, at least half of `a`'s box lies
+//!   within `b`'s (iGibson checks the centre only, which lets a table standing over a bin be
+//!   "inside" it), and rays from the centre along at least two of the three axes hit `b` in both
+//!   directions (`b` surrounds `a`).
 //! - `nextto(a, b)`: the gap between their boxes is at most a sixth of the mean of their summed
 //!   extents, and a horizontal ray from the centre of one (16 directions, 1 m) hits the other.
 //! - `onfloor(a, floor)`: `a` touches the floor object, and the room at the centre of `a`'s box
@@ -140,9 +142,10 @@ impl World {
         if a == b {
             return false;
         }
-        let center = self.aabb(a).center();
+        let own = self.aabb(a);
+        let center = own.center();
         let container = self.aabb(b);
-        if !container.contains_local_point(center) {
+        if !container.contains_local_point(center) || !mostly_within(&own, &container) {
             return false;
         }
         let reach = (container.maxs - container.mins).length();
@@ -200,4 +203,14 @@ impl World {
             c.is_enabled() && c.shape().intersects_ray(c.position(), &ray, range)
         })
     }
+}
+
+/// Whether at least half of `inner`'s volume lies within `outer`.
+fn mostly_within(
+    inner: &rapier3d::parry::bounding_volume::Aabb,
+    outer: &rapier3d::parry::bounding_volume::Aabb,
+) -> bool {
+    let overlap = (inner.maxs.min(outer.maxs) - inner.mins.max(outer.mins)).max(Vector::ZERO);
+    let size = inner.maxs - inner.mins;
+    overlap.x * overlap.y * overlap.z >= 0.5 * size.x * size.y * size.z
 }

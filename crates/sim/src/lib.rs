@@ -25,6 +25,7 @@ pub mod bench_scene;
 pub mod kinematics;
 pub mod oracle;
 pub mod particles;
+pub mod placement;
 pub mod slicing;
 pub mod states;
 pub mod temperature;
@@ -33,6 +34,7 @@ pub mod water;
 pub mod world;
 
 pub use oracle::BoundWorld;
+pub use placement::{PlacementError, Relation};
 pub use states::StateError;
 pub use world::{
     JointKind, LinkSpec, ObjectId, ObjectSpec, Part, PointKind, Primitive, Room, Snapshot,

@@ -7,7 +7,7 @@
 use crate::states::ObjectState;
 use crate::water::WaterStream;
 use behavior_bddl::Predicate;
-use behavior_bddl::taxonomy::{Ability, AbilityParams, ParamValue};
+use behavior_bddl::taxonomy::{Ability, AbilityParams, ParamValue, Taxonomy};
 use rapier3d::dynamics::{
     CCDSolver, GenericJoint, ImpulseJointHandle, PrismaticJointBuilder, RevoluteJointBuilder,
     RigidBodyActivation, RigidBodyBuilder, RigidBodyHandle,
@@ -160,6 +160,18 @@ impl ObjectSpec {
     pub fn fixed(mut self) -> ObjectSpec {
         self.fixed = true;
         self
+    }
+
+    /// Takes the abilities (and their parameters) of the spec's category from the taxonomy;
+    /// `false` if the taxonomy lacks the synset.
+    pub fn abilities_from(&mut self, taxonomy: &Taxonomy) -> bool {
+        match taxonomy.get(&self.category) {
+            Some(synset) => {
+                self.abilities = taxonomy.synset(synset).abilities.clone();
+                true
+            }
+            None => false,
+        }
     }
 
     /// Adds an ability with its parameters, e.g. `(Cookable, &[("cook_temperature", 70)])`.

@@ -230,3 +230,52 @@ fn sliced_a_knife_dropped_onto_a_tomato() {
     assert!(world.ontop(a, table) || world.ontop(b, table));
     assert!(world.set_state(tomato, Predicate::Sliced, false).is_err());
 }
+
+#[test]
+fn open_by_a_motor_driving_the_door() {
+    let mut world = World::default();
+    two_room_floor(&mut world);
+    let fridge = fridge(&mut world, -2.0, 0.0);
+    settle(&mut world, 0.5);
+    world.set_joint_motor(fridge, 0, 1.0, 100.0);
+    settle(&mut world, 1.0);
+    assert!(
+        world.state(fridge, Predicate::Open),
+        "{}",
+        world.joint_position(fridge, 0)
+    );
+    // Released, the damped door coasts on but does not swing shut: nothing pulls it closed.
+    world.set_joint_motor(fridge, 0, 0.0, 5.0);
+    let opened = world.joint_position(fridge, 0);
+    settle(&mut world, 2.0);
+    assert!(world.joint_position(fridge, 0) >= opened - 0.01);
+    assert!(world.joint_position(fridge, 0) <= 2.0 + 0.05, "the joint limit holds");
+}
+
+#[test]
+fn abilities_come_from_the_taxonomy() {
+    use behavior_bddl::taxonomy::{Ability, Taxonomy};
+    let taxonomy = Taxonomy::from_json(
+        r#"{"name": "entity.n.01", "children": [{"name": "apple.n.01", "abilities": {"cookable": {"cook_temperature": 60}, "sliceable": {}}}]}"#,
+    )
+    .unwrap();
+    let mut spec = behavior_sim::ObjectSpec::new(
+        "apple_1",
+        "apple.n.01",
+        vec![behavior_sim::Part::new(behavior_sim::Primitive::Sphere {
+            radius: 0.04,
+        })],
+    );
+    assert!(spec.abilities_from(&taxonomy));
+    let mut world = World::default();
+    let apple = world.add(spec).unwrap();
+    assert!(world.object(apple).has(Ability::Sliceable));
+    assert_eq!(
+        world
+            .object(apple)
+            .param(Ability::Cookable, "cook_temperature", 70.0),
+        60.0
+    );
+    let mut unknown = behavior_sim::ObjectSpec::new("x", "zzz.n.01", vec![]);
+    assert!(!unknown.abilities_from(&taxonomy));
+}

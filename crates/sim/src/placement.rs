@@ -1,0 +1,266 @@
+//! Placement helpers for sampling initial states: put an object on, in or under another, or on a
+//! room's floor, at a sampled collision-free pose where the relation holds.
+//!
+//! Each attempt draws a point over the target's footprint (inside its box, for `inside`), finds
+//! the supporting surface below it by a ray cast (an upward-facing surface of the target for
+//! `ontop` and `inside`, of anything for `under`, of the floor for `onfloor`), sets the object on
+//! it, 2 mm up, keeping its orientation, and accepts the pose if the object then overlaps nothing
+//! and the predicate holds. iGibson samples the same way (`sample_kinematics`, with 10 attempts);
+//! we allow [`PLACEMENT_ATTEMPTS`]. Settling is left to the caller, who usually places several
+//! objects first ([`World::settle`]).
+
+use crate::world::{ObjectId, World};
+use rand_chacha::ChaCha8Rng;
+use rand_chacha::rand_core::Rng;
+use rapier3d::math::{Pose, Vector};
+use rapier3d::parry::bounding_volume::{Aabb, BoundingVolume};
+use rapier3d::parry::query;
+use rapier3d::prelude::Ray;
+
+pub const PLACEMENT_ATTEMPTS: usize = 20;
+/// Gap left under a placed object (m); it lands within a step.
+pub const DROP_GAP: f32 = 0.002;
+/// A support surface's normal must be this close to vertical.
+pub const SUPPORT_NORMAL_Z: f32 = 0.7;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Relation {
+    OnTop,
+    Inside,
+    Under,
+    OnFloor,
+}
+
+impl Relation {
+    pub fn name(self) -> &'static str {
+        match self {
+            Relation::OnTop => "ontop",
+            Relation::Inside => "inside",
+            Relation::Under => "under",
+            Relation::OnFloor => "onfloor",
+        }
+    }
+}
+
+#[derive(Debug, thiserror::Error, PartialEq, Eq)]
+#[error("could not place {object} {relation} {target} in {attempts} attempts: {reason}")]
+pub struct PlacementError {
+    pub object: String,
+    pub relation: &'static str,
+    pub target: String,
+    pub attempts: usize,
+    /// Why the last attempt failed.
+    pub reason: String,
+}
+
+fn uniform(rng: &mut ChaCha8Rng, lo: f32, hi: f32) -> f32 {
+    let unit = (rng.next_u32() >> 8) as f32 / (1u32 << 24) as f32;
+    lo + (hi - lo) * unit
+}
+
+impl World {
+    /// Places `object` in `relation` to `target` (see the module docs); returns the pose chosen.
+    /// On failure the object is back where it was.
+    pub fn place(
+        &mut self,
+        object: ObjectId,
+        relation: Relation,
+        target: ObjectId,
+        rng: &mut ChaCha8Rng,
+    ) -> Result<Pose, PlacementError> {
+        let original = self.pose(object);
+        let mut reason = String::from("no attempt made");
+        for _ in 0..PLACEMENT_ATTEMPTS {
+            match self.try_place(object, relation, target, rng) {
+                Ok(pose) => return Ok(pose),
+                Err(why) => reason = why,
+            }
+        }
+        // A pose that was valid before stays valid; restoring it cannot fail.
+        let _ = self.set_pose(object, original);
+        Err(PlacementError {
+            object: self.object(object).name.clone(),
+            relation: relation.name(),
+            target: self.object(target).name.clone(),
+            attempts: PLACEMENT_ATTEMPTS,
+            reason,
+        })
+    }
+
+    fn try_place(
+        &mut self,
+        object: ObjectId,
+        relation: Relation,
+        target: ObjectId,
+        rng: &mut ChaCha8Rng,
+    ) -> Result<Pose, String> {
+        if object == target {
+            return Err("an object cannot be placed relative to itself".into());
+        }
+        let pose = self.pose(object);
+        let own = self.aabb(object);
+        let half = (own.maxs - own.mins) * 0.5;
+        // Where the object's box sits relative to its pose's origin.
+        let center_offset = own.center() - pose.translation;
+        let area = match relation {
+            Relation::OnFloor => self.floor_area(target),
+            _ => self.aabb(target),
+        };
+        let span = |lo: f32, hi: f32, h: f32| {
+            if hi - lo > 2.0 * h {
+                (lo + h, hi - h)
+            } else {
+                ((lo + hi) * 0.5, (lo + hi) * 0.5)
+            }
+        };
+        let (x0, x1) = span(area.mins.x, area.maxs.x, half.x);
+        let (y0, y1) = span(area.mins.y, area.maxs.y, half.y);
+        let (x, y) = (uniform(rng, x0, x1), uniform(rng, y0, y1));
+        let start_z = match relation {
+            Relation::OnTop | Relation::OnFloor => area.maxs.z + 0.01,
+            Relation::Inside => uniform(
+                rng,
+                area.mins.z + half.z,
+                area.maxs.z.max(area.mins.z + half.z),
+            ),
+            // Just below the target's underside at (x, y).
+            Relation::Under => {
+                self.underside(target, x, y, area.mins.z - 1.0)
+                    .ok_or("the target has no underside there")?
+                    - 0.001
+            }
+        };
+        let support = match relation {
+            Relation::OnTop | Relation::Inside | Relation::OnFloor => {
+                self.surface_below(&[target], x, y, start_z)
+            }
+            Relation::Under => {
+                let others: Vec<ObjectId> = self
+                    .objects()
+                    .map(|(id, _)| id)
+                    .filter(|&id| id != object && id != target)
+                    .collect();
+                self.surface_below(&others, x, y, start_z)
+            }
+        }
+        .ok_or("no surface facing up below the sampled point")?;
+        let bottom_center = Vector::new(x, y, support + DROP_GAP + half.z);
+        let candidate = Pose::from_parts(bottom_center - center_offset, pose.rotation);
+        if let Some(other) = self.overlap_at(object, candidate) {
+            return Err(format!("it would overlap {}", self.object(other).name));
+        }
+        self.set_pose(object, candidate)
+            .map_err(|e| e.to_string())?;
+        let holds = match relation {
+            Relation::OnTop => self.ontop(object, target),
+            Relation::Inside => self.inside(object, target),
+            Relation::Under => self.under(object, target),
+            Relation::OnFloor => self.onfloor(object, target),
+        };
+        if holds {
+            Ok(candidate)
+        } else {
+            Err(format!(
+                "`{}` does not hold at the sampled pose",
+                relation.name()
+            ))
+        }
+    }
+
+    /// The footprint of the room whose floor `floor` is (at the floor's top), or the floor's box.
+    fn floor_area(&self, floor: ObjectId) -> Aabb {
+        let aabb = self.aabb(floor);
+        match self.rooms().iter().find(|r| r.floor == Some(floor)) {
+            Some(room) => Aabb::new(
+                Vector::new(room.min[0], room.min[1], aabb.mins.z),
+                Vector::new(room.max[0], room.max[1], aabb.maxs.z),
+            ),
+            None => aabb,
+        }
+    }
+
+    /// The height of the first upward-facing surface of `among` straight below (x, y, z).
+    fn surface_below(&self, among: &[ObjectId], x: f32, y: f32, z: f32) -> Option<f32> {
+        let ray = Ray::new(Vector::new(x, y, z), -Vector::Z);
+        let mut best: Option<(f32, f32)> = None;
+        for &id in among {
+            for &c in &self.object(id).colliders {
+                let c = &self.physics.colliders[c];
+                if !c.is_enabled() {
+                    continue;
+                }
+                if let Some(hit) = c
+                    .shape()
+                    .cast_ray_and_get_normal(c.position(), &ray, 50.0, true)
+                    && best.is_none_or(|(t, _)| hit.time_of_impact < t)
+                {
+                    best = Some((hit.time_of_impact, hit.normal.z));
+                }
+            }
+        }
+        let (t, normal_z) = best?;
+        (normal_z >= SUPPORT_NORMAL_Z).then_some(z - t)
+    }
+
+    /// The height of the target's lowest surface above (x, y, z), seen from below.
+    fn underside(&self, target: ObjectId, x: f32, y: f32, z: f32) -> Option<f32> {
+        let ray = Ray::new(Vector::new(x, y, z), Vector::Z);
+        self.object(target)
+            .colliders
+            .iter()
+            .map(|&c| &self.physics.colliders[c])
+            .filter(|c| c.is_enabled())
+            .filter_map(|c| c.shape().cast_ray(c.position(), &ray, 100.0, true))
+            .min_by(f32::total_cmp)
+            .map(|t| z + t)
+    }
+
+    /// Some other object that `object` would intersect at `pose`.
+    fn overlap_at(&self, object: ObjectId, pose: Pose) -> Option<ObjectId> {
+        let current = self.pose(object);
+        let moved: Vec<(Pose, &rapier3d::geometry::Collider)> = self
+            .object(object)
+            .colliders
+            .iter()
+            .map(|&c| {
+                let c = &self.physics.colliders[c];
+                // The collider's pose relative to the body is unchanged by the move.
+                (pose * current.inv_mul(c.position()), c)
+            })
+            .collect();
+        for (id, other) in self.objects() {
+            if id == object {
+                continue;
+            }
+            for &oc in &other.colliders {
+                let oc = &self.physics.colliders[oc];
+                if !oc.is_enabled() {
+                    continue;
+                }
+                let other_box = oc.compute_aabb();
+                for (p, c) in &moved {
+                    if !c.shape().compute_aabb(p).intersects(&other_box) {
+                        continue;
+                    }
+                    if query::intersection_test(p, c.shape(), oc.position(), oc.shape())
+                        .map_or(true, |i| i.intersecting)
+                    {
+                        return Some(id);
+                    }
+                }
+            }
+        }
+        None
+    }
+
+    /// Steps until every body sleeps or `max_steps` have passed; whether the world came to rest.
+    pub fn settle(&mut self, max_steps: usize) -> bool {
+        for _ in 0..max_steps {
+            self.step();
+            if self.quiet {
+                return true;
+            }
+        }
+        false
+    }
+}

@@ -1,19 +1,22 @@
 //! `sliced`: a slicer pressing a sliceable object with more than 10 N replaces it by two halves.
 //!
 //! The force is read from the contact impulses of each physics substep (iGibson 2.0 §1.7 reads the
-//! normal force of the slicer link's contacts). The whole object is then disabled (it leaves the
+//! normal force of the slicer link's contacts); when the slicer names a slicing edge, only
+//! contacts near it count, so pressing with the handle does not cut. The whole object is then disabled (it leaves the
 //! simulation and the ray casts, but keeps its id, its last pose and its states), and two halves
 //! — the two halves of its bounding box, split across its longest horizontal side — appear in its
 //! place as new objects that inherit its states. Slicing cannot be undone.
 
 use crate::states::StateError;
-use crate::world::{ObjectId, ObjectSpec, Part, Primitive, World};
+use crate::world::{ObjectId, ObjectSpec, Part, PointKind, Primitive, World};
 use behavior_bddl::Predicate;
 use behavior_bddl::taxonomy::Ability;
 use rapier3d::math::{Pose, Vector};
 
 /// Newtons.
 pub const SLICE_FORCE: f32 = 10.0;
+/// How close to a slicer's [`PointKind::SlicingEdge`] a contact must be to cut (m).
+pub const EDGE_REACH: f32 = 0.05;
 
 impl World {
     /// Sliceable objects pressed by a slicer with more than [`SLICE_FORCE`] in the last substep.
@@ -24,6 +27,9 @@ impl World {
             if !object.has(Ability::Slicer) {
                 continue;
             }
+            let edge = object
+                .point(PointKind::SlicingEdge)
+                .map(|p| self.pose(slicer).transform_point(p));
             for &c in &object.colliders {
                 for pair in self.physics.narrow_phase.contact_pairs_with(c) {
                     let other = if pair.collider1 == c {
@@ -43,7 +49,18 @@ impl World {
                     }
                     let sliceable =
                         self.object(id).has(Ability::Sliceable) && !self.object_state(id).sliced;
+                    let at_edge = match edge {
+                        None => true,
+                        Some(edge) => {
+                            let c1 = &self.physics.colliders[pair.collider1];
+                            pair.manifolds().iter().flat_map(|m| &m.points).any(|p| {
+                                (c1.position().transform_point(p.local_p1) - edge).length()
+                                    <= EDGE_REACH
+                            })
+                        }
+                    };
                     if sliceable
+                        && at_edge
                         && pair.total_impulse_magnitude() / dt > SLICE_FORCE
                         && !pressed.contains(&id)
                     {

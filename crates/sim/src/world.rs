@@ -81,7 +81,8 @@ pub struct ObjectSpec {
     pub angular_damping: f32,
     /// What the object can do or undergo, with the parameters (from the taxonomy).
     pub abilities: BTreeMap<Ability, AbilityParams>,
-    /// Named points in the object's frame: heating element, toggle button, water outlet.
+    /// Named points in the object's frame: heating element, toggle button, water outlet, slicing
+    /// edge, cleaning area.
     pub points: Vec<(PointKind, Vector)>,
     /// Moving parts: doors and drawers, each on one joint to the object's body.
     pub links: Vec<LinkSpec>,
@@ -96,6 +97,11 @@ pub enum PointKind {
     ToggleButton,
     /// Where a water source's drops come out.
     WaterOutlet,
+    /// A slicer's cutting edge: only contacts within [`crate::slicing::EDGE_REACH`] of it slice.
+    SlicingEdge,
+    /// A cleaning tool's working face: only particles within [`crate::particles::CLEANING_REACH`]
+    /// of it are wiped.
+    CleaningArea,
 }
 
 /// A door or drawer of an object: its parts (in the object's frame, as when closed) and the joint

@@ -249,7 +249,10 @@ fn open_by_a_motor_driving_the_door() {
     let opened = world.joint_position(fridge, 0);
     settle(&mut world, 2.0);
     assert!(world.joint_position(fridge, 0) >= opened - 0.01);
-    assert!(world.joint_position(fridge, 0) <= 2.0 + 0.05, "the joint limit holds");
+    assert!(
+        world.joint_position(fridge, 0) <= 2.0 + 0.05,
+        "the joint limit holds"
+    );
 }
 
 #[test]
@@ -278,4 +281,35 @@ fn abilities_come_from_the_taxonomy() {
     );
     let mut unknown = behavior_sim::ObjectSpec::new("x", "zzz.n.01", vec![]);
     assert!(!unknown.abilities_from(&taxonomy));
+}
+
+#[test]
+fn sliced_only_by_the_edge_not_by_the_handle() {
+    use behavior_bddl::taxonomy::Ability;
+    use behavior_sim::{ObjectSpec, Part, PointKind};
+    let knife_with_edge = |world: &mut World, at| {
+        // The blade is the +x half; its edge runs along the bottom of that half.
+        let mut spec = ObjectSpec::new(
+            "knife_1",
+            "carving_knife.n.01",
+            vec![Part::new(cuboid(0.12, 0.01, 0.02))],
+        )
+        .at(at)
+        .ability(Ability::Slicer, &[])
+        .point(PointKind::SlicingEdge, v(0.06, 0.0, -0.02));
+        spec.density = 7800.0;
+        world.add(spec).unwrap()
+    };
+    let drop_on_tomato = |knife_x: f32| {
+        let mut world = World::default();
+        two_room_floor(&mut world);
+        table(&mut world, -1.0, 0.0);
+        let tomato = sliceable_apple(&mut world, "tomato_1", v(-1.0, 0.0, 0.8));
+        settle(&mut world, 1.0);
+        knife_with_edge(&mut world, v(knife_x, 0.0, 1.2));
+        settle(&mut world, 1.0);
+        world.state(tomato, Predicate::Sliced)
+    };
+    assert!(drop_on_tomato(-1.06), "the edge lands on the tomato");
+    assert!(!drop_on_tomato(-0.92), "the handle lands on the tomato");
 }

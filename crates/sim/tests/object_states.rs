@@ -313,3 +313,33 @@ fn sliced_only_by_the_edge_not_by_the_handle() {
     assert!(drop_on_tomato(-1.06), "the edge lands on the tomato");
     assert!(!drop_on_tomato(-0.92), "the handle lands on the tomato");
 }
+
+#[test]
+fn cooked_in_a_microwave_only_when_on_closed_and_inside() {
+    let mut world = World::default();
+    two_room_floor(&mut world);
+    let microwave = microwave(&mut world, -2.0, 0.0);
+    let inside = sliceable_apple(&mut world, "apple_1", v(-2.0, 0.0, 1.0));
+    let outside = sliceable_apple(&mut world, "apple_2", v(-2.0, -0.5, 0.05));
+    settle(&mut world, 1.0);
+    assert!(world.inside(inside, microwave) && !world.inside(outside, microwave));
+    // Off: nothing.
+    settle(&mut world, 3.0);
+    assert!(world.temperature(inside) < 24.0);
+    // On but open: nothing.
+    world.set_state(microwave, Predicate::Open, true).unwrap();
+    world
+        .set_state(microwave, Predicate::ToggledOn, true)
+        .unwrap();
+    settle(&mut world, 3.0);
+    assert!(world.temperature(inside) < 24.0);
+    // On and closed: 1000 °C at 0.04 /s reaches 70 °C in ln(977/930)/0.04 ≈ 1.2 s.
+    world.set_state(microwave, Predicate::Open, false).unwrap();
+    settle(&mut world, 2.0);
+    assert!(
+        world.state(inside, Predicate::Cooked),
+        "{}",
+        world.temperature(inside)
+    );
+    assert!(!world.state(outside, Predicate::Cooked));
+}

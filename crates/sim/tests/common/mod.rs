@@ -277,3 +277,46 @@ pub fn knife(world: &mut World, at: Vector) -> ObjectId {
     spec.density = 7800.0;
     world.add(spec).unwrap()
 }
+
+/// A microwave: a 0.5 × 0.4 × 0.3 m box on a counter-height stand, with a door, heating as
+/// `microwave.n.02` (1000 °C, rate 0.04 /s, needs to be on, closed, and the food inside).
+pub fn microwave(world: &mut World, x: f32, y: f32) -> ObjectId {
+    let (w, d, h, t, z0) = (0.25, 0.2, 0.3, 0.01, 0.9);
+    let parts = vec![
+        Part::at(cuboid(0.25, 0.2, z0 / 2.0), v(0.0, 0.0, z0 / 2.0)),
+        Part::at(cuboid(w, d, t), v(0.0, 0.0, z0 + h - t)),
+        Part::at(cuboid(t, d, h / 2.0), v(-w + t, 0.0, z0 + h / 2.0)),
+        Part::at(cuboid(t, d, h / 2.0), v(w - t, 0.0, z0 + h / 2.0)),
+        Part::at(cuboid(w, t, h / 2.0), v(0.0, d - t, z0 + h / 2.0)),
+    ];
+    let door = LinkSpec {
+        name: "door".into(),
+        parts: vec![Part::at(
+            cuboid(w, t, h / 2.0),
+            v(0.0, -d - t, z0 + h / 2.0),
+        )],
+        joint: JointKind::Revolute,
+        anchor: v(-w, -d - t, 0.0),
+        axis: v(0.0, 0.0, -1.0),
+        range: 1.8,
+        damping: 5.0,
+        density: 300.0,
+    };
+    let spec = ObjectSpec::new("microwave_1", "microwave.n.02", parts)
+        .at(v(x, y, 0.0))
+        .fixed()
+        .link(door)
+        .ability(Ability::Openable, &[])
+        .ability(Ability::Toggleable, &[])
+        .ability(
+            Ability::HeatSource,
+            &[
+                ("temperature", num(1000.0)),
+                ("heating_rate", num(0.04)),
+                ("requires_toggled_on", yes(true)),
+                ("requires_closed", yes(true)),
+                ("requires_inside", yes(true)),
+            ],
+        );
+    world.add(spec).unwrap()
+}

@@ -3,9 +3,9 @@
 //! Each step (1/30 s) an object with a temperature state (cookable, burnable or freezable) is
 //! pulled toward every active source that reaches it, `T += (T_source − T) · rate · dt`, each
 //! computed from the old temperature; an object no source reaches decays toward 23 °C at
-//! 0.02 /s. A source reaches an object when its heating element is within its distance
-//! threshold of the object's centre, or, for sources that need it inside (ovens, microwaves,
-//! fridges), when the object is inside it. A source is active when it is toggled on (if it needs
+//! 0.02 /s. A source reaches an object when one of its heating elements (a stove has several
+//! burners) is within its distance threshold of the object's centre, or, for sources that need it
+//! inside (ovens, microwaves, fridges), when the object is inside it. A source is active when it is toggled on (if it needs
 //! to be) and closed (if it needs to be). Constants and per-synset parameters are iGibson 2.0's
 //! (`../shared/reference/igibson-2.0-reference.md` §1.4), read from the taxonomy's abilities.
 
@@ -28,8 +28,9 @@ struct Source {
     id: ObjectId,
     temperature: f32,
     rate: f32,
-    /// The element's world position and reach, or `None` when the object must be inside.
-    element: Option<(rapier3d::math::Vector, f32)>,
+    /// The elements' world positions (a stove has several burners) and their reach, or `None`
+    /// when the object must be inside.
+    elements: Option<(Vec<rapier3d::math::Vector>, f32)>,
 }
 
 impl World {
@@ -49,21 +50,28 @@ impl World {
             {
                 continue;
             }
-            let element = if needs_inside {
+            let elements = if needs_inside {
                 None
             } else {
+                let pose = self.pose(id);
+                let points: Vec<_> = object
+                    .points
+                    .iter()
+                    .filter(|(kind, _)| *kind == PointKind::HeatingElement)
+                    .map(|(_, p)| pose.transform_point(*p))
+                    .collect();
                 // Without an element there is nothing to heat from (as in iGibson).
-                let Some(point) = object.point(PointKind::HeatingElement) else {
+                if points.is_empty() {
                     continue;
-                };
+                }
                 let reach = object.param(ability, "distance_threshold", DEFAULT_DISTANCE_THRESHOLD);
-                Some((self.pose(id).transform_point(point), reach))
+                Some((points, reach))
             };
             sources.push(Source {
                 id,
                 temperature: object.param(ability, "temperature", DEFAULT_SOURCE_TEMPERATURE),
                 rate: object.param(ability, "heating_rate", DEFAULT_HEATING_RATE),
-                element,
+                elements,
             });
         }
         sources
@@ -86,8 +94,10 @@ impl World {
             let mut new = old;
             let mut reached = false;
             for source in sources.iter().filter(|s| s.id != id) {
-                let reaches = match source.element {
-                    Some((at, reach)) => (center - at).length() <= reach,
+                let reaches = match &source.elements {
+                    Some((points, reach)) => {
+                        points.iter().any(|at| (center - *at).length() <= *reach)
+                    }
                     None => self.inside(id, source.id),
                 };
                 if reaches {

@@ -1,0 +1,111 @@
+//! Resolving synsets to archetypes, and spawning equipped instances.
+
+use crate::archetype::{Archetype, Layout, Shape};
+use crate::catalog::CATALOG;
+use behavior_bddl::Taxonomy;
+use behavior_bddl::taxonomy::Ability;
+use behavior_sim::{ObjectSpec, PointKind};
+use rand_chacha::ChaCha8Rng;
+use rand_chacha::rand_core::Rng;
+use rapier3d::math::Vector;
+use std::collections::HashMap;
+
+#[derive(Debug, thiserror::Error, PartialEq, Eq)]
+pub enum AssetError {
+    #[error("unknown synset `{0}`: it is not in the taxonomy")]
+    UnknownSynset(String),
+    #[error("no object archetype for `{0}` or any synset below it")]
+    NoArchetype(String),
+}
+
+/// The catalog indexed by synset, with the taxonomy to resolve and equip synsets.
+pub struct Library<'t> {
+    taxonomy: &'t Taxonomy,
+    by_synset: HashMap<&'static str, &'static Archetype>,
+}
+
+impl<'t> Library<'t> {
+    pub fn new(taxonomy: &'t Taxonomy) -> Library<'t> {
+        Library {
+            taxonomy,
+            by_synset: CATALOG.iter().map(|a| (a.synset, a)).collect(),
+        }
+    }
+
+    /// The archetype of a synset: its own, else that of the nearest descendant that has one
+    /// (breadth first, so `fruit.n.01` gets a fruit's).
+    pub fn resolve(&self, synset: &str) -> Result<&'static Archetype, AssetError> {
+        if let Some(a) = self.by_synset.get(synset) {
+            return Ok(a);
+        }
+        let id = self
+            .taxonomy
+            .get(synset)
+            .ok_or_else(|| AssetError::UnknownSynset(synset.to_string()))?;
+        self.taxonomy
+            .descendants(id)
+            .into_iter()
+            .find_map(|d| self.by_synset.get(self.taxonomy.name(d)).copied())
+            .ok_or_else(|| AssetError::NoArchetype(synset.to_string()))
+    }
+
+    /// An instance of `synset` named `name`: a size drawn uniformly in the archetype's range and a
+    /// variant, both from `rng`; the synset's abilities from the taxonomy; and the named points
+    /// those abilities use. Its bottom rests at z = 0 around the origin.
+    pub fn spawn(
+        &self,
+        synset: &str,
+        name: &str,
+        rng: &mut ChaCha8Rng,
+    ) -> Result<ObjectSpec, AssetError> {
+        let archetype = self.resolve(synset)?;
+        let mut unit = || (rng.next_u32() >> 8) as f32 / (1u32 << 24) as f32;
+        let size = Vector::from_array(std::array::from_fn(|k| {
+            archetype.min[k] + unit() * (archetype.max[k] - archetype.min[k])
+        }));
+        let variant = rng.next_u32() % archetype.shape.variants();
+        let (mut spec, layout) = archetype.build(name, size, variant);
+        spec.category = synset.to_string();
+        spec.abilities_from(self.taxonomy);
+        equip(&mut spec, archetype, &layout);
+        Ok(spec)
+    }
+}
+
+/// Adds the named points the spec's abilities need.
+fn equip(spec: &mut ObjectSpec, archetype: &Archetype, layout: &Layout) {
+    let s = layout.size;
+    let top = Vector::new(0.0, 0.0, s.z + 0.01);
+    let has = |a: Ability| spec.abilities.contains_key(&a);
+    let mut points = Vec::new();
+    if has(Ability::Toggleable) {
+        let button = if archetype.shape.is_fixed() {
+            layout.front_button
+        } else {
+            top
+        };
+        points.push((PointKind::ToggleButton, button));
+    }
+    if has(Ability::HeatSource) {
+        let burners: Vec<Vector> = layout.burners.iter().flatten().copied().collect();
+        if burners.is_empty() {
+            points.push((PointKind::HeatingElement, top));
+        }
+        points.extend(burners.into_iter().map(|b| (PointKind::HeatingElement, b)));
+    }
+    if has(Ability::WaterSource) {
+        points.push((PointKind::WaterOutlet, layout.outlet.unwrap_or(top)));
+    }
+    if has(Ability::Slicer) {
+        // The cutting half of a blade lying along x, at its bottom edge.
+        points.push((PointKind::SlicingEdge, Vector::new(s.x / 4.0, 0.0, 0.0)));
+    }
+    if has(Ability::CleaningTool) && archetype.shape == Shape::Rod {
+        // A brush or broom cleans with its head, the −x end.
+        points.push((
+            PointKind::CleaningArea,
+            Vector::new(-s.x / 2.0 + 0.05, 0.0, 0.0),
+        ));
+    }
+    spec.points.extend(points);
+}

@@ -1,0 +1,251 @@
+//! The object library against the official activities: coverage, buildability, openings and
+//! containers that really contain.
+
+use behavior_assets::catalog::CATALOG;
+use behavior_assets::{Library, Shape};
+use behavior_bddl::Predicate;
+use behavior_bddl::data::DataDir;
+use behavior_bddl::taxonomy::Ability;
+use behavior_sim::{ObjectSpec, Part, Primitive, Relation, World};
+use rand_chacha::ChaCha8Rng;
+use rand_chacha::rand_core::SeedableRng;
+use rapier3d::math::Vector;
+use std::collections::BTreeSet;
+
+fn taxonomy() -> behavior_bddl::Taxonomy {
+    DataDir::locate(None, |m| eprintln!("{m}"))
+        .unwrap()
+        .taxonomy()
+        .unwrap()
+}
+
+/// Every category declared by the 100 official activities.
+fn official_synsets() -> BTreeSet<String> {
+    let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
+    let knowledge = data.knowledge().unwrap();
+    let mut synsets = BTreeSet::new();
+    for name in data.activities().unwrap() {
+        let (activity, _) = knowledge
+            .load(&data.problem_source(&name).unwrap())
+            .unwrap();
+        synsets.extend(activity.categories.iter().map(|c| c.name.clone()));
+    }
+    synsets
+}
+
+#[test]
+fn every_synset_of_the_100_activities_resolves_to_an_archetype() {
+    let taxonomy = taxonomy();
+    let library = Library::new(&taxonomy);
+    let synsets = official_synsets();
+    assert_eq!(synsets.len(), 194);
+    let missing: Vec<&String> = synsets
+        .iter()
+        .filter(|s| library.resolve(s).is_err())
+        .collect();
+    assert!(missing.is_empty(), "no archetype for {missing:?}");
+    // A synset without its own archetype resolves through a descendant.
+    assert_eq!(library.resolve("fruit.n.01").unwrap().shape, Shape::Ball);
+    assert!(library.resolve("nonsense.n.01").is_err());
+}
+
+#[test]
+fn the_catalog_has_one_sorted_entry_per_synset_with_sane_sizes() {
+    assert!(
+        CATALOG.windows(2).all(|w| w[0].synset < w[1].synset),
+        "sorted and unique"
+    );
+    for a in CATALOG {
+        assert!(
+            (0..3).all(|k| a.min[k] > 0.0 && a.min[k] <= a.max[k]),
+            "{}",
+            a.synset
+        );
+        assert!(a.density > 0.0, "{}", a.synset);
+        assert!(
+            a.max.iter().all(|&x| x <= 5.0),
+            "{} is larger than a room",
+            a.synset
+        );
+    }
+}
+
+fn spawn_all(seed: u64) -> Vec<(ObjectSpec, &'static behavior_assets::Archetype)> {
+    let taxonomy = taxonomy();
+    let library = Library::new(&taxonomy);
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    CATALOG
+        .iter()
+        .map(|a| {
+            (
+                library
+                    .spawn(a.synset, &format!("{}_1", a.synset), &mut rng)
+                    .unwrap(),
+                a,
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn every_archetype_builds_in_every_variant_and_openables_open() {
+    let taxonomy = taxonomy();
+    let mut opened = 0;
+    for a in CATALOG {
+        for variant in 0..a.shape.variants() {
+            let mid = Vector::from_array(std::array::from_fn(|k| (a.min[k] + a.max[k]) / 2.0));
+            let (mut spec, _) = a.build(&format!("{}_1", a.synset), mid, variant);
+            spec.abilities_from(&taxonomy);
+            let openable = spec.abilities.contains_key(&Ability::Openable);
+            let mut world = World::default();
+            let id = world
+                .add(spec)
+                .unwrap_or_else(|e| panic!("{}: {e}", a.synset));
+            if openable && !world.object(id).links.is_empty() {
+                world.set_state(id, Predicate::Open, true).unwrap();
+                assert!(world.state(id, Predicate::Open), "{}", a.synset);
+                world.set_state(id, Predicate::Open, false).unwrap();
+                assert!(!world.state(id, Predicate::Open), "{}", a.synset);
+                opened += 1;
+            }
+            for _ in 0..5 {
+                world.step();
+            }
+        }
+    }
+    assert!(opened >= 15, "only {opened} openable archetypes opened");
+}
+
+#[test]
+fn openable_synsets_get_doors_drawers_or_lids() {
+    let taxonomy = taxonomy();
+    let openable: Vec<&str> = CATALOG
+        .iter()
+        .filter(|a| {
+            let id = taxonomy.get(a.synset);
+            id.is_some_and(|id| taxonomy.has_ability(id, Ability::Openable))
+        })
+        .map(|a| a.synset)
+        .collect();
+    let spawned = spawn_all(1);
+    let without: Vec<&str> = openable
+        .iter()
+        .copied()
+        .filter(|s| {
+            spawned
+                .iter()
+                .any(|(spec, a)| a.synset == *s && spec.links.is_empty())
+        })
+        .collect();
+    // A stove is openable in the taxonomy (its oven); ours is a cooktop block for now.
+    assert_eq!(
+        without,
+        ["stove.n.01"],
+        "openable synsets without a moving part"
+    );
+}
+
+#[test]
+fn containers_used_with_inside_hold_an_object_inside() {
+    let taxonomy = taxonomy();
+    let library = Library::new(&taxonomy);
+    // The synsets the activities put things inside.
+    let containers = [
+        "ashcan.n.01",
+        "backpack.n.01",
+        "basket.n.01",
+        "bathtub.n.01",
+        "bin.n.01",
+        "bucket.n.01",
+        "cabinet.n.01",
+        "carton.n.02",
+        "dish.n.01",
+        "dishwasher.n.01",
+        "electric_refrigerator.n.01",
+        "jar.n.01",
+        "sack.n.01",
+        "shelf.n.01",
+        "sink.n.01",
+        "stocking.n.01",
+        "teapot.n.01",
+    ];
+    let mut rng = ChaCha8Rng::seed_from_u64(5);
+    for synset in containers {
+        let mut world = World::default();
+        let _floor = world
+            .add(
+                ObjectSpec::new(
+                    "floor",
+                    "floor.n.01",
+                    vec![Part::at(
+                        Primitive::Box {
+                            half_extents: Vector::new(5.0, 5.0, 0.05),
+                        },
+                        Vector::new(0.0, 0.0, -0.05),
+                    )],
+                )
+                .fixed(),
+            )
+            .unwrap();
+        let mut spec = library.spawn(synset, "container", &mut rng).unwrap();
+        spec.fixed = true;
+        let container = world.add(spec).unwrap();
+        let size = world.aabb(container).maxs - world.aabb(container).mins;
+        let radius = (size.x.min(size.y).min(size.z) / 8.0).clamp(0.005, 0.04);
+        let ball = world
+            .add(
+                ObjectSpec::new(
+                    "ball",
+                    "ball.n.01",
+                    vec![Part::new(Primitive::Sphere { radius })],
+                )
+                .at(Vector::new(3.0, 3.0, 0.5)),
+            )
+            .unwrap();
+        world
+            .place(ball, Relation::Inside, container, &mut rng)
+            .unwrap_or_else(|e| panic!("{synset}: {e}"));
+        world.settle(200);
+        assert!(world.inside(ball, container), "{synset}: the ball fell out");
+    }
+}
+
+#[test]
+fn spawning_is_deterministic_per_seed_and_varies_across_seeds() {
+    let sizes = |seed| -> Vec<u32> {
+        spawn_all(seed)
+            .iter()
+            .flat_map(|(spec, _)| spec.parts.iter().map(|p| p.offset.translation.z.to_bits()))
+            .collect()
+    };
+    assert_eq!(sizes(3), sizes(3));
+    assert_ne!(sizes(3), sizes(4));
+}
+
+#[test]
+fn tools_and_appliances_get_the_points_their_abilities_use() {
+    use behavior_sim::PointKind;
+    let spawned = spawn_all(2);
+    let point = |synset: &str, kind: PointKind| {
+        spawned
+            .iter()
+            .any(|(spec, a)| a.synset == synset && spec.points.iter().any(|(k, _)| *k == kind))
+    };
+    assert!(point("stove.n.01", PointKind::HeatingElement));
+    assert!(point("sink.n.01", PointKind::WaterOutlet));
+    assert!(point("sink.n.01", PointKind::ToggleButton));
+    assert!(point("carving_knife.n.01", PointKind::SlicingEdge));
+    let stove = spawned
+        .iter()
+        .find(|(_, a)| a.synset == "stove.n.01")
+        .unwrap();
+    assert_eq!(
+        stove
+            .0
+            .points
+            .iter()
+            .filter(|(k, _)| *k == PointKind::HeatingElement)
+            .count(),
+        4
+    );
+}

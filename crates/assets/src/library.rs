@@ -58,12 +58,29 @@ impl<'t> Library<'t> {
         name: &str,
         rng: &mut ChaCha8Rng,
     ) -> Result<ObjectSpec, AssetError> {
+        let (size, variant) = self.sample(synset, rng)?;
+        self.instance(synset, name, size, variant)
+    }
+
+    /// A size (uniform in the archetype's range) and a variant for a synset.
+    pub fn sample(&self, synset: &str, rng: &mut ChaCha8Rng) -> Result<(Vector, u32), AssetError> {
         let archetype = self.resolve(synset)?;
         let mut unit = || (rng.next_u32() >> 8) as f32 / (1u32 << 24) as f32;
         let size = Vector::from_array(std::array::from_fn(|k| {
             archetype.min[k] + unit() * (archetype.max[k] - archetype.min[k])
         }));
-        let variant = rng.next_u32() % archetype.shape.variants();
+        Ok((size, rng.next_u32() % archetype.shape.variants()))
+    }
+
+    /// An instance of a given size (clamped to the archetype's range) and variant, equipped.
+    pub fn instance(
+        &self,
+        synset: &str,
+        name: &str,
+        size: Vector,
+        variant: u32,
+    ) -> Result<ObjectSpec, AssetError> {
+        let archetype = self.resolve(synset)?;
         let (mut spec, layout) = archetype.build(name, size, variant);
         spec.category = synset.to_string();
         spec.abilities_from(self.taxonomy);

@@ -38,5 +38,5 @@ pub use placement::{PlacementError, Relation};
 pub use states::StateError;
 pub use world::{
     JointKind, LinkSpec, ObjectId, ObjectSpec, Part, PointKind, Primitive, Room, Snapshot,
-    Substeps, World,
+    Substeps, World, WorldError,
 };

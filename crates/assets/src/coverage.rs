@@ -1,0 +1,60 @@
+//! Which homes can host which activities: an activity's `inroom` literals ask for rooms of given
+//! types holding furniture of given synsets; a home covers the activity when it has, for every
+//! room type, enough objects of each synset (or of a synset below it in the taxonomy) in rooms of
+//! that type. Floors (`floor.n.01`) ask for rooms of the type.
+
+use crate::scene::Scene;
+use behavior_bddl::Taxonomy;
+use behavior_bddl::activity::{Activity, InitLiteral};
+use behavior_bddl::taxonomy::FLOOR_SYNSET;
+use std::collections::BTreeMap;
+
+/// (room type, synset) → how many instances the activity places in rooms of that type.
+pub type Requirements = BTreeMap<(String, String), usize>;
+
+pub fn requirements(activity: &Activity) -> Requirements {
+    let mut needs = Requirements::new();
+    for literal in &activity.init {
+        if let InitLiteral::InRoom {
+            instance,
+            room,
+            positive: true,
+        } = literal
+        {
+            let synset = activity
+                .category(activity.instance(*instance).category)
+                .name
+                .clone();
+            *needs.entry((room.clone(), synset)).or_insert(0) += 1;
+        }
+    }
+    needs
+}
+
+/// What the scene lacks for these requirements, as readable lines; empty when it covers them.
+pub fn missing(scene: &Scene, needs: &Requirements, taxonomy: &Taxonomy) -> Vec<String> {
+    let mut lacks = Vec::new();
+    for ((room, synset), &count) in needs {
+        let rooms_of_type: Vec<usize> = (0..scene.rooms.len())
+            .filter(|&i| scene.rooms[i].kind == *room)
+            .collect();
+        let have = if synset == FLOOR_SYNSET {
+            rooms_of_type.len()
+        } else {
+            let wanted = taxonomy.get(synset);
+            scene
+                .objects
+                .iter()
+                .filter(|o| rooms_of_type.contains(&o.room))
+                .filter(|o| match (taxonomy.get(&o.synset), wanted) {
+                    (Some(have), Some(want)) => taxonomy.is_a(have, want),
+                    _ => o.synset == *synset,
+                })
+                .count()
+        };
+        if have < count {
+            lacks.push(format!("{count} × {synset} in a {room} (has {have})"));
+        }
+    }
+    lacks
+}

@@ -1,0 +1,118 @@
+//! The named homes: they generate, build, round-trip through JSON exactly, and each official
+//! activity is covered by at least three of them.
+
+use behavior_assets::coverage::{missing, requirements};
+use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
+use behavior_bddl::data::DataDir;
+
+#[test]
+fn named_homes_generate_build_and_round_trip_exactly() {
+    let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
+    let taxonomy = data.taxonomy().unwrap();
+    let library = Library::new(&taxonomy);
+    for (name, seed) in NAMED_HOMES {
+        let scene = generate(name, seed, &library).unwrap();
+        let kinds: Vec<&str> = scene.rooms.iter().map(|r| r.kind.as_str()).collect();
+        for core in ["kitchen", "living_room", "bathroom", "bedroom", "corridor"] {
+            assert!(kinds.contains(&core), "{name} lacks a {core}");
+        }
+        let text = scene.to_json();
+        let back = Scene::from_json(&text).unwrap();
+        assert_eq!(back, scene, "{name}");
+        assert_eq!(back.to_json(), text, "{name}");
+        let built = scene.build(&library).unwrap();
+        assert_eq!(built.objects.len(), scene.objects.len());
+        // Every object stands in the room it is filed under.
+        for (plan, &id) in scene.objects.iter().zip(&built.objects) {
+            let c = built.world.aabb(id).center();
+            assert_eq!(
+                scene.room_at(c.x, c.y),
+                Some(plan.room),
+                "{name}: {} is not in its room",
+                plan.name
+            );
+        }
+        assert_eq!(
+            generate(name, seed, &library).unwrap(),
+            scene,
+            "{name}: same seed, same home"
+        );
+    }
+    assert_ne!(
+        generate("x", 1, &library).unwrap().rooms,
+        generate("x", 2, &library).unwrap().rooms
+    );
+}
+
+#[test]
+fn furniture_does_not_overlap_and_settles_in_place() {
+    let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
+    let taxonomy = data.taxonomy().unwrap();
+    let library = Library::new(&taxonomy);
+    let (name, seed) = NAMED_HOMES[0];
+    let scene = generate(name, seed, &library).unwrap();
+    let mut built = scene.build(&library).unwrap();
+    let boxes: Vec<_> = built
+        .objects
+        .iter()
+        .map(|&id| built.world.aabb(id))
+        .collect();
+    for i in 0..boxes.len() {
+        for j in i + 1..boxes.len() {
+            let (a, b) = (&boxes[i], &boxes[j]);
+            let overlap = (a.maxs.min(b.maxs) - a.mins.max(b.mins)).min_element();
+            let stacked = scene.objects[i].synset == "microwave.n.02"
+                || scene.objects[j].synset == "microwave.n.02";
+            assert!(
+                overlap <= 0.01 || stacked,
+                "{} and {} overlap",
+                scene.objects[i].name,
+                scene.objects[j].name
+            );
+        }
+    }
+    let before: Vec<_> = built
+        .objects
+        .iter()
+        .map(|&id| built.world.pose(id))
+        .collect();
+    assert!(built.world.settle(300), "the home comes to rest");
+    for (k, &id) in built.objects.iter().enumerate() {
+        let moved = (built.world.pose(id).translation - before[k].translation).length();
+        assert!(
+            moved < 0.05,
+            "{} moved {moved} m while settling",
+            scene.objects[k].name
+        );
+    }
+}
+
+#[test]
+fn every_official_activity_is_covered_by_at_least_three_named_homes() {
+    let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
+    let knowledge = data.knowledge().unwrap();
+    let library = Library::new(&knowledge.taxonomy);
+    let homes: Vec<Scene> = NAMED_HOMES
+        .iter()
+        .map(|(n, s)| generate(n, *s, &library).unwrap())
+        .collect();
+    let mut short = Vec::new();
+    for name in data.activities().unwrap() {
+        let (activity, _) = knowledge
+            .load(&data.problem_source(&name).unwrap())
+            .unwrap();
+        let needs = requirements(&activity);
+        let covering = homes
+            .iter()
+            .filter(|h| missing(h, &needs, &knowledge.taxonomy).is_empty())
+            .count();
+        if covering < 3 {
+            let why: Vec<String> = homes
+                .iter()
+                .map(|h| missing(h, &needs, &knowledge.taxonomy).join("; "))
+                .collect();
+            short.push(format!("{name}: {covering} homes; e.g. {:?}", &why[..2]));
+        }
+    }
+    assert!(short.is_empty(), "{}", short.join("\n"));
+}

@@ -149,7 +149,7 @@ impl Rect {
 
 /// Footprint of an object of size (w, d) standing at (x, y) after `turns` quarter turns.
 fn footprint(x: f32, y: f32, w: f32, d: f32, turns: u8) -> Rect {
-    let (hx, hy) = if turns % 2 == 0 {
+    let (hx, hy) = if turns.is_multiple_of(2) {
         (w / 2.0, d / 2.0)
     } else {
         (d / 2.0, w / 2.0)
@@ -415,7 +415,7 @@ fn against_a_wall(
         // Walls: north (front faces −y, 0 turns), east (faces −x, 3), south (+y, 2), west (+x, 1).
         let wall = (start + k) % 4;
         let turns: u8 = [0, 3, 2, 1][wall];
-        let (along_lo, along_hi) = if wall % 2 == 0 {
+        let (along_lo, along_hi) = if wall.is_multiple_of(2) {
             (r.min[0], r.max[0])
         } else {
             (r.min[1], r.max[1])

@@ -4,6 +4,8 @@
 //! errors. Machine-readable output (`--json`) is documented per command in the README.
 
 mod bddl;
+mod map;
+mod scene;
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -30,12 +32,22 @@ enum Command {
     /// Activity definitions: check, evaluate, list options, statistics.
     #[command(subcommand)]
     Bddl(bddl::BddlCommand),
+    /// Homes: the named ones, generating from seeds, maps, activity coverage.
+    #[command(subcommand)]
+    Scene(scene::SceneCommand),
 }
 
 fn main() -> ExitCode {
+    // Like other Unix tools, end quietly when the reader of our output goes away (`| head`).
+    #[cfg(unix)]
+    // SAFETY: restoring the default disposition of SIGPIPE before any thread starts.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Bddl(command) => bddl::run(command, cli.data_dir.as_deref()),
+        Command::Scene(command) => scene::run(command, cli.data_dir.as_deref()),
     };
     match result {
         Ok(code) => code,

@@ -334,3 +334,73 @@ fn check_recognizes_a_domain_file() {
         "{out}"
     );
 }
+
+#[test]
+fn scene_list_names_fifteen_homes() {
+    let output = behavior(&["scene", "list"]);
+    assert!(output.status.success());
+    let out = stdout(&output);
+    assert_eq!(out.lines().count(), 16, "{out}");
+    assert!(out.contains("alder") && out.contains("willow") && out.contains("kitchen_0"));
+}
+
+#[test]
+fn scene_generate_writes_a_scene_file_that_round_trips() {
+    let path = scratch("seed_42.json");
+    let output = behavior(&[
+        "scene",
+        "generate",
+        "--seed",
+        "42",
+        "--out",
+        path.to_str().unwrap(),
+    ]);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let text = std::fs::read_to_string(&path).unwrap();
+    let scene = behavior_assets::Scene::from_json(&text).unwrap();
+    assert_eq!(scene.seed, 42);
+    assert_eq!(scene.to_json(), text);
+    // The file draws as well as a named home does.
+    let png = scratch("seed_42.png");
+    let output = behavior(&[
+        "scene",
+        "show",
+        path.to_str().unwrap(),
+        "--png",
+        png.to_str().unwrap(),
+    ]);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let image = image::open(&png).unwrap();
+    assert!(image.width() > 500 && image.height() > 300);
+    // A broken file is a clear error.
+    std::fs::write(&path, "{\"name\": 3}").unwrap();
+    let output = behavior(&[
+        "scene",
+        "show",
+        path.to_str().unwrap(),
+        "--png",
+        png.to_str().unwrap(),
+    ]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("the scene file is not valid"));
+}
+
+#[test]
+fn scene_coverage_json_lists_at_least_three_homes_per_activity() {
+    let output = behavior(&["scene", "coverage", "--json"]);
+    assert!(output.status.success());
+    let rows: Vec<Value> = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(rows.len(), 100);
+    for row in &rows {
+        let scenes = row["scenes"].as_array().unwrap();
+        assert!(scenes.len() >= 3, "{row}");
+    }
+}

@@ -1,0 +1,159 @@
+//! A top-down map of a home as a PNG: rooms coloured and labelled by type, walls, doors, and
+//! furniture outlines with their names.
+
+use behavior_assets::Scene;
+use font8x8::legacy::BASIC_LEGACY;
+use image::{Rgb, RgbImage};
+
+const MARGIN: f32 = 0.6;
+
+fn room_color(kind: &str) -> Rgb<u8> {
+    Rgb(match kind {
+        "kitchen" => [255, 236, 179],
+        "living_room" => [200, 230, 201],
+        "bedroom" => [187, 222, 251],
+        "bathroom" => [178, 235, 242],
+        "dining_room" => [255, 224, 178],
+        "garage" => [215, 204, 200],
+        "home_office" => [225, 190, 231],
+        "storage_room" => [207, 216, 220],
+        "utility_room" => [240, 244, 195],
+        "closet" => [248, 187, 208],
+        "corridor" => [238, 238, 238],
+        _ => [255, 255, 255],
+    })
+}
+
+/// Draws the scene at `scale` pixels per metre.
+pub fn render(scene: &Scene, scale: f32) -> RgbImage {
+    let (mut lo, mut hi) = ([f32::MAX; 2], [f32::MIN; 2]);
+    for r in &scene.rooms {
+        for k in 0..2 {
+            lo[k] = lo[k].min(r.min[k]);
+            hi[k] = hi[k].max(r.max[k]);
+        }
+    }
+    if scene.rooms.is_empty() {
+        lo = [0.0; 2];
+        hi = [1.0; 2];
+    }
+    let width = ((hi[0] - lo[0] + 2.0 * MARGIN) * scale).ceil() as u32;
+    let height = ((hi[1] - lo[1] + 2.0 * MARGIN) * scale).ceil() as u32;
+    let mut img = RgbImage::from_pixel(
+        width.clamp(1, 8000),
+        height.clamp(1, 8000),
+        Rgb([255, 255, 255]),
+    );
+    // World (x, y) to pixel; y grows up in the world and down in the image.
+    let px = |x: f32, y: f32| ((x - lo[0] + MARGIN) * scale, (hi[1] - y + MARGIN) * scale);
+    let fill = |img: &mut RgbImage, min: [f32; 2], max: [f32; 2], color: Rgb<u8>| {
+        let (x0, y1) = px(min[0], min[1]);
+        let (x1, y0) = px(max[0], max[1]);
+        for y in (y0.floor().max(0.0) as u32)..(y1.ceil() as u32).min(img.height()) {
+            for x in (x0.floor().max(0.0) as u32)..(x1.ceil() as u32).min(img.width()) {
+                img.put_pixel(x, y, color);
+            }
+        }
+    };
+    for r in &scene.rooms {
+        fill(&mut img, r.min, r.max, room_color(&r.kind));
+    }
+    for w in &scene.walls {
+        fill(
+            &mut img,
+            [w.min[0], w.min[1]],
+            [w.max[0], w.max[1]],
+            Rgb([60, 60, 60]),
+        );
+    }
+    for o in &scene.objects {
+        let (w, d) = if o.yaw_quarter_turns % 2 == 0 {
+            (o.size[0], o.size[1])
+        } else {
+            (o.size[1], o.size[0])
+        };
+        let min = [o.position[0] - w / 2.0, o.position[1] - d / 2.0];
+        let max = [o.position[0] + w / 2.0, o.position[1] + d / 2.0];
+        let color = match o.synset.as_str() {
+            "door.n.01" => Rgb([141, 90, 50]),
+            "window.n.01" => Rgb([66, 165, 245]),
+            _ => Rgb([90, 90, 90]),
+        };
+        outline(&mut img, px(min[0], max[1]), px(max[0], min[1]), color);
+        let (cx, cy) = px(o.position[0], o.position[1]);
+        if !matches!(o.synset.as_str(), "door.n.01" | "window.n.01") {
+            text(&mut img, &o.name, cx, cy, 1, Rgb([30, 30, 30]));
+        }
+    }
+    for r in &scene.rooms {
+        let (cx, _) = px((r.min[0] + r.max[0]) / 2.0, r.max[1]);
+        let (_, top) = px(r.min[0], r.max[1] - 0.25);
+        text(&mut img, &r.label(), cx, top + 10.0, 2, Rgb([20, 20, 120]));
+    }
+    text(
+        &mut img,
+        &format!("{} (seed {})", scene.name, scene.seed),
+        width as f32 / 2.0,
+        10.0,
+        2,
+        Rgb([0, 0, 0]),
+    );
+    img
+}
+
+fn outline(img: &mut RgbImage, (x0, y0): (f32, f32), (x1, y1): (f32, f32), color: Rgb<u8>) {
+    let (x0, y0, x1, y1) = (
+        x0.max(0.0) as u32,
+        y0.max(0.0) as u32,
+        x1.max(0.0) as u32,
+        y1.max(0.0) as u32,
+    );
+    for x in x0..=x1.min(img.width().saturating_sub(1)) {
+        for y in [y0, y1] {
+            if y < img.height() {
+                img.put_pixel(x, y, color);
+            }
+        }
+    }
+    for y in y0..=y1.min(img.height().saturating_sub(1)) {
+        for x in [x0, x1] {
+            if x < img.width() {
+                img.put_pixel(x, y, color);
+            }
+        }
+    }
+}
+
+/// ASCII text centred on (cx, cy), with 8×8 glyphs scaled by `size`, on a white band so it reads
+/// over outlines.
+fn text(img: &mut RgbImage, s: &str, cx: f32, cy: f32, size: u32, color: Rgb<u8>) {
+    let glyph = 8 * size;
+    let width = s.chars().count() as u32 * glyph;
+    let x0 = cx as i64 - i64::from(width / 2);
+    let y0 = cy as i64 - i64::from(glyph / 2);
+    for y in (y0 - 1).max(0)..(y0 + i64::from(glyph) + 1).min(i64::from(img.height())) {
+        for x in (x0 - 2).max(0)..(x0 + i64::from(width) + 2).min(i64::from(img.width())) {
+            img.put_pixel(x as u32, y as u32, Rgb([255, 255, 255]));
+        }
+    }
+    for (i, ch) in s.chars().enumerate() {
+        let bitmap = BASIC_LEGACY[(ch as usize).min(127)];
+        for (row, bits) in bitmap.iter().enumerate() {
+            for col in 0..8 {
+                if bits >> col & 1 == 0 {
+                    continue;
+                }
+                for dy in 0..size {
+                    for dx in 0..size {
+                        let x = x0 + i64::from(i as u32 * glyph + col * size + dx);
+                        let y = y0 + i64::from(row as u32 * size + dy);
+                        if x >= 0 && y >= 0 && (x as u32) < img.width() && (y as u32) < img.height()
+                        {
+                            img.put_pixel(x as u32, y as u32, color);
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,132 @@
+//! `behavior scene ...`: the named homes, generating homes from seeds, maps, and which homes can
+//! host which activities.
+
+use anyhow::{Context, Result};
+use behavior_assets::coverage::{missing, requirements};
+use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
+use behavior_bddl::data::DataDir;
+use clap::Subcommand;
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+#[derive(Subcommand)]
+pub enum SceneCommand {
+    /// The named homes with their rooms.
+    List,
+    /// Generate a home from a seed and save it as a scene file.
+    Generate {
+        #[arg(long)]
+        seed: u64,
+        #[arg(long, value_name = "FILE.json")]
+        out: PathBuf,
+    },
+    /// Draw a top-down map of a named home or a scene file.
+    Show {
+        /// A named home (see `scene list`) or a scene file.
+        scene: String,
+        #[arg(long, value_name = "OUT.png")]
+        png: PathBuf,
+        /// Pixels per metre.
+        #[arg(long, default_value_t = 60.0)]
+        scale: f32,
+    },
+    /// For each official activity, the named homes holding every room and piece of furniture its
+    /// `inroom` literals require.
+    Coverage {
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+pub fn run(command: SceneCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
+    let data = DataDir::locate(data_dir, |message| eprintln!("{message}"))?;
+    let knowledge = data.knowledge()?;
+    let library = Library::new(&knowledge.taxonomy);
+    match command {
+        SceneCommand::List => {
+            println!("{:<10} {:>5} {:>8}  rooms", "home", "seed", "objects");
+            for (name, seed) in NAMED_HOMES {
+                let scene = generate(name, seed, &library)?;
+                let rooms: Vec<String> = scene.rooms.iter().map(|r| r.label()).collect();
+                println!(
+                    "{name:<10} {seed:>5} {:>8}  {}",
+                    scene.objects.len(),
+                    rooms.join(", ")
+                );
+            }
+        }
+        SceneCommand::Generate { seed, out } => {
+            let scene = generate(&format!("seed_{seed}"), seed, &library)?;
+            std::fs::write(&out, scene.to_json())
+                .with_context(|| format!("cannot write {}", out.display()))?;
+            eprintln!(
+                "{}: {} rooms, {} objects",
+                out.display(),
+                scene.rooms.len(),
+                scene.objects.len()
+            );
+        }
+        SceneCommand::Show { scene, png, scale } => {
+            let scene = load_scene(&scene, &library)?;
+            if !(scale.is_finite() && (5.0..=400.0).contains(&scale)) {
+                anyhow::bail!("--scale must be between 5 and 400 pixels per metre");
+            }
+            crate::map::render(&scene, scale)
+                .save(&png)
+                .with_context(|| format!("cannot write {}", png.display()))?;
+            eprintln!("{}: map of {}", png.display(), scene.name);
+        }
+        SceneCommand::Coverage { json } => {
+            #[derive(Serialize)]
+            struct Row {
+                activity: String,
+                scenes: Vec<String>,
+            }
+            let homes: Vec<Scene> = NAMED_HOMES
+                .iter()
+                .map(|(n, s)| generate(n, *s, &library))
+                .collect::<Result<_, _>>()?;
+            let mut rows = Vec::new();
+            for name in data.activities()? {
+                let (activity, _) = knowledge.load(&data.problem_source(&name)?)?;
+                let needs = requirements(&activity);
+                let scenes = homes
+                    .iter()
+                    .filter(|h| missing(h, &needs, &knowledge.taxonomy).is_empty())
+                    .map(|h| h.name.clone())
+                    .collect();
+                rows.push(Row {
+                    activity: name,
+                    scenes,
+                });
+            }
+            if json {
+                println!("{}", serde_json::to_string_pretty(&rows)?);
+            } else {
+                for r in &rows {
+                    println!(
+                        "{:<42} {:>2}  {}",
+                        r.activity,
+                        r.scenes.len(),
+                        r.scenes.join(" ")
+                    );
+                }
+            }
+        }
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// A named home, or a scene file.
+fn load_scene(name: &str, library: &Library) -> Result<Scene> {
+    if let Some((n, seed)) = NAMED_HOMES.iter().find(|(n, _)| *n == name) {
+        return Ok(generate(n, *seed, library)?);
+    }
+    let text = std::fs::read_to_string(name).with_context(|| {
+        format!(
+            "`{name}` is neither a named home (see `behavior scene list`) nor a readable scene file"
+        )
+    })?;
+    Scene::from_json(&text).with_context(|| format!("{name}"))
+}

@@ -128,5 +128,5 @@ fn load_scene(name: &str, library: &Library) -> Result<Scene> {
             "`{name}` is neither a named home (see `behavior scene list`) nor a readable scene file"
         )
     })?;
-    Scene::from_json(&text).with_context(|| format!("{name}"))
+    Scene::from_json(&text).with_context(|| name.to_string())
 }

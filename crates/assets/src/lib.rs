@@ -5,7 +5,7 @@
 //! taxonomy), samples an instance's size and variant from the episode's random number
 //! generator, and equips it with the abilities of its synset and the named points they need.
 //! [`home`] generates floor plans with furniture from a seed, and [`scene`] saves, loads and
-//! builds them.
+//! builds them; [`urdf`] imports a user's own models.
 //!
 //! This crate builds [`behavior_sim::ObjectSpec`]s; it knows nothing of BDDL text or of how the
 //! world simulates them.
@@ -16,6 +16,7 @@ pub mod coverage;
 pub mod home;
 pub mod library;
 pub mod scene;
+pub mod urdf;
 
 pub use archetype::{Archetype, Shape};
 pub use home::{NAMED_HOMES, generate};

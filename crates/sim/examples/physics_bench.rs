@@ -54,11 +54,13 @@ fn scene_json(specs: &[ObjectSpec]) -> serde_json::Value {
                 .map(|p| {
                     let o = p.offset.translation;
                     let offset = [o.x, o.y, o.z];
-                    match p.primitive {
+                    match p.primitive.clone() {
                         Primitive::Box { half_extents: h } => serde_json::json!({"type": "box", "half_extents": [h.x, h.y, h.z], "offset": offset}),
                         Primitive::Cylinder { radius, half_height } => serde_json::json!({"type": "cylinder", "radius": radius, "half_height": half_height, "offset": offset}),
                         Primitive::Sphere { radius } => serde_json::json!({"type": "sphere", "radius": radius, "offset": offset}),
-                        Primitive::Capsule { .. } => unreachable!("the benchmark scene has no capsules"),
+                        Primitive::Capsule { .. } | Primitive::ConvexHull { .. } => {
+                            unreachable!("the benchmark scene has only boxes, cylinders and balls")
+                        }
                     }
                 })
                 .collect();

@@ -55,6 +55,7 @@ pub fn resting_home() -> Vec<ObjectSpec> {
             Primitive::Box { half_extents } => half_extents.z,
             Primitive::Cylinder { half_height, .. } => half_height,
             Primitive::Sphere { radius } | Primitive::Capsule { radius, .. } => radius,
+            Primitive::ConvexHull { .. } => unreachable!("the scene uses simple primitives"),
         };
         // 12 objects on each table in a grid, the rest on the floor in rows.
         let at = if i < 120 {

@@ -31,16 +31,30 @@ pub const DROP_TAG: u128 = u128::MAX;
 pub struct ObjectId(pub u32);
 
 /// A collision primitive in the object's frame. Cylinders and capsules stand along z.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Primitive {
-    Box { half_extents: Vector },
-    Cylinder { radius: f32, half_height: f32 },
-    Sphere { radius: f32 },
-    Capsule { radius: f32, half_height: f32 },
+    Box {
+        half_extents: Vector,
+    },
+    Cylinder {
+        radius: f32,
+        half_height: f32,
+    },
+    Sphere {
+        radius: f32,
+    },
+    Capsule {
+        radius: f32,
+        half_height: f32,
+    },
+    /// The convex hull of these points (imported meshes, convex decompositions).
+    ConvexHull {
+        points: Vec<Vector>,
+    },
 }
 
 /// One primitive of an object's compound shape, placed in the object's frame.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Part {
     pub primitive: Primitive,
     pub offset: Pose,
@@ -691,7 +705,7 @@ fn colliders_of(
     parts
         .iter()
         .map(|part| {
-            let builder = collider(part.primitive)?;
+            let builder = collider(&part.primitive)?;
             pose_is_finite(&part.offset).then(|| {
                 builder
                     .position(part.offset)
@@ -704,11 +718,17 @@ fn colliders_of(
         .collect()
 }
 
-fn collider(primitive: Primitive) -> Option<ColliderBuilder> {
+fn collider(primitive: &Primitive) -> Option<ColliderBuilder> {
     let ok = |x: f32| x.is_finite() && x > 0.0;
     // parry's cylinders and capsules run along y; ours stand along z.
     let upright = Pose::from_rotation(Rotation::from_rotation_x(std::f32::consts::FRAC_PI_2));
-    Some(match primitive {
+    Some(match *primitive {
+        Primitive::ConvexHull { ref points } => {
+            if points.len() < 4 || !points.iter().all(|p| p.is_finite()) {
+                return None;
+            }
+            ColliderBuilder::convex_hull(points)?
+        }
         Primitive::Box { half_extents: h } if ok(h.x) && ok(h.y) && ok(h.z) => {
             ColliderBuilder::cuboid(h.x, h.y, h.z)
         }

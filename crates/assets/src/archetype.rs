@@ -7,7 +7,7 @@
 //! the [`crate::library::Library`], from the taxonomy of the synset asked for.
 
 use behavior_sim::{JointKind, LinkSpec, ObjectSpec, Part, Primitive};
-use rapier3d::math::Vector;
+use rapier3d::math::{Pose, Rotation, Vector};
 
 /// A family of procedural geometry. Containers have real walls and an opening, so `inside` is
 /// physical; furniture that opens has doors or drawers on joints.
@@ -58,7 +58,15 @@ impl Shape {
     /// How many geometric variants the shape has.
     pub fn variants(self) -> u32 {
         match self {
-            Shape::Table | Shape::Cabinet | Shape::Shelf | Shape::OpenContainer | Shape::Chair => 2,
+            Shape::Table
+            | Shape::Cabinet
+            | Shape::Shelf
+            | Shape::OpenContainer
+            | Shape::Chair
+            | Shape::Ball
+            | Shape::Cylinder
+            | Shape::Slab
+            | Shape::Rod => 2,
             _ => 1,
         }
     }
@@ -198,7 +206,81 @@ fn drawer(name: &str, min: Vector, max: Vector, t: f32, density: f32) -> LinkSpe
     }
 }
 
+fn hull(points: Vec<Vector>) -> Part {
+    Part::new(Primitive::ConvexHull { points })
+}
+
+/// Points on an ellipsoid filling a box of `size` standing at z = 0, those `keep` accepts, plus
+/// points where the cut plane x = 0 meets it (so a half closes flat).
+fn ellipsoid(size: Vector, keep: impl Fn(Vector) -> bool) -> Vec<Vector> {
+    let r = size * 0.5;
+    let mut points = Vec::new();
+    for i in 0..=8 {
+        let theta = std::f32::consts::PI * i as f32 / 8.0;
+        for j in 0..16 {
+            let phi = std::f32::consts::TAU * j as f32 / 16.0;
+            let unit = v(
+                theta.sin() * phi.cos(),
+                theta.sin() * phi.sin(),
+                theta.cos(),
+            );
+            let p = unit * r + v(0.0, 0.0, r.z);
+            if keep(p) || unit.x.abs() < 1e-6 {
+                points.push(p);
+            }
+        }
+    }
+    points
+}
+
+/// Points of a regular `sides`-gon prism of radius `radius` and height `height` (those `keep`
+/// accepts, plus the cut plane's).
+fn prism(radius: f32, height: f32, sides: usize, keep: impl Fn(Vector) -> bool) -> Vec<Vector> {
+    let mut points = Vec::new();
+    for k in 0..sides {
+        let a = std::f32::consts::TAU * (k as f32 + 0.5) / sides as f32;
+        for z in [0.0, height] {
+            let p = v(radius * a.cos(), radius * a.sin(), z);
+            if keep(p) {
+                points.push(p);
+            }
+        }
+    }
+    for z in [0.0, height] {
+        points.push(v(0.0, -radius, z));
+        points.push(v(0.0, radius, z));
+    }
+    points
+}
+
 impl Archetype {
+    /// The two halves of a sliced instance, in its frame: split across x, the cut through its
+    /// middle. Round things give half-spheres or half-cylinders, others half boxes.
+    pub fn halves(&self, size: Vector, variant: u32) -> [Vec<Part>; 2] {
+        let lo = Vector::from_array(self.min);
+        let s = size.clamp(lo, Vector::from_array(self.max).max(lo));
+        let side = |sign: f32| move |p: Vector| p.x * sign >= -1e-6;
+        match (self.shape, variant % self.shape.variants()) {
+            (Shape::Ball, 0) => {
+                let r = s.min_element();
+                let ball = Vector::splat(r);
+                [-1.0, 1.0].map(|sign| vec![hull(ellipsoid(ball, side(sign)))])
+            }
+            (Shape::Ball, _) => [-1.0, 1.0].map(|sign| vec![hull(ellipsoid(s, side(sign)))]),
+            (Shape::Cylinder, _) => {
+                let radius = s.x.min(s.y) / 2.0;
+                [-1.0, 1.0].map(|sign| vec![hull(prism(radius, s.z, 16, side(sign)))])
+            }
+            _ => {
+                let (min, max) = (v(-s.x / 2.0, -s.y / 2.0, 0.0), v(s.x / 2.0, s.y / 2.0, s.z));
+                [
+                    vec![span(min, v(0.0, max.y, max.z))],
+                    vec![span(v(0.0, min.y, min.z), max)],
+                ]
+            }
+        }
+    }
+
     /// Builds an instance of the given size (clamped to the range) and variant.
     pub fn build(&self, name: &str, size: Vector, variant: u32) -> (ObjectSpec, Layout) {
         let lo = Vector::from_array(self.min);
@@ -216,31 +298,57 @@ impl Archetype {
             outlet: None,
             burners: [None; 4],
         };
-        let parts: Vec<Part> = match self.shape {
-            Shape::Ball => vec![Part::at(
+        let parts: Vec<Part> = match (self.shape, variant) {
+            (Shape::Ball, 0) => vec![Part::at(
                 Primitive::Sphere {
                     radius: w.min(d).min(h) / 2.0,
                 },
                 v(0.0, 0.0, w.min(d).min(h) / 2.0),
             )],
-            Shape::Block | Shape::Slab | Shape::Rod | Shape::Countertop | Shape::Floor => {
-                vec![span(min, max)]
-            }
-            Shape::Cylinder => vec![Part::at(
+            // An ellipsoid filling the box: pears, eggs, lemons.
+            (Shape::Ball, _) => vec![hull(ellipsoid(s, |_| true))],
+            (Shape::Slab, 1) => vec![Part::at(
                 Primitive::Cylinder {
                     radius: w.min(d) / 2.0,
                     half_height: h / 2.0,
                 },
                 v(0.0, 0.0, h / 2.0),
             )],
-            Shape::Agent => vec![Part::at(
+            (Shape::Rod, 1) => {
+                // Round in section: a capsule lying along x.
+                let radius = d.min(h) / 2.0;
+                let lying = Pose::from_parts(
+                    v(0.0, 0.0, radius),
+                    Rotation::from_rotation_y(std::f32::consts::FRAC_PI_2),
+                );
+                vec![Part {
+                    primitive: Primitive::Capsule {
+                        radius,
+                        half_height: (w / 2.0 - radius).max(0.001),
+                    },
+                    offset: lying,
+                }]
+            }
+            (Shape::Block | Shape::Slab | Shape::Rod | Shape::Countertop | Shape::Floor, _) => {
+                vec![span(min, max)]
+            }
+            (Shape::Cylinder, 0) => vec![Part::at(
+                Primitive::Cylinder {
+                    radius: w.min(d) / 2.0,
+                    half_height: h / 2.0,
+                },
+                v(0.0, 0.0, h / 2.0),
+            )],
+            // Faceted: an octagonal prism (jars, tins, candles).
+            (Shape::Cylinder, _) => vec![hull(prism(w.min(d) / 2.0, h, 8, |_| true))],
+            (Shape::Agent, _) => vec![Part::at(
                 Primitive::Capsule {
                     radius: w.min(d) / 2.0,
                     half_height: (h - w.min(d)).max(0.01) / 2.0,
                 },
                 v(0.0, 0.0, h / 2.0),
             )],
-            Shape::OpenContainer => {
+            (Shape::OpenContainer, _) => {
                 if variant == 1 {
                     // Low and wide: a tray-like basin, same footprint, 60 % of the height.
                     tub(min, v(max.x, max.y, 0.6 * h), t)
@@ -248,7 +356,7 @@ impl Archetype {
                     tub(min, max, t)
                 }
             }
-            Shape::LiddedContainer => {
+            (Shape::LiddedContainer, _) => {
                 links.push(LinkSpec {
                     name: "lid".into(),
                     parts: vec![span(v(min.x, min.y, h), v(max.x, max.y, h + t))],
@@ -261,7 +369,7 @@ impl Archetype {
                 });
                 tub(min, max, t)
             }
-            Shape::Table => {
+            (Shape::Table, _) => {
                 let top = 0.03f32.min(h / 4.0);
                 let mut parts = vec![span(v(min.x, min.y, h - top), max)];
                 let leg = 0.03f32.min(w / 8.0).min(d / 8.0);
@@ -288,7 +396,7 @@ impl Archetype {
                 }
                 parts
             }
-            Shape::Shelf => {
+            (Shape::Shelf, _) => {
                 let mut parts = vec![
                     span(min, v(min.x + t, max.y, max.z)),
                     span(v(max.x - t, min.y, min.z), max),
@@ -301,7 +409,7 @@ impl Archetype {
                 }
                 parts
             }
-            Shape::Cabinet => {
+            (Shape::Cabinet, _) => {
                 let mut parts = carcass(min, max, t);
                 if variant == 0 {
                     parts.push(span(
@@ -328,7 +436,7 @@ impl Archetype {
                 }
                 parts
             }
-            Shape::Fridge => {
+            (Shape::Fridge, _) => {
                 let mut parts = carcass(min, max, t);
                 parts.push(span(
                     v(min.x, min.y, h / 2.0),
@@ -338,7 +446,7 @@ impl Archetype {
                 layout.front_button = v(max.x - 0.05, min.y - 0.01, 0.6 * h);
                 parts
             }
-            Shape::Oven | Shape::Dishwasher => {
+            (Shape::Oven | Shape::Dishwasher, _) => {
                 let mut parts = carcass(min, max, t);
                 parts.push(span(
                     v(min.x, min.y, h / 2.0),
@@ -349,12 +457,12 @@ impl Archetype {
                 parts.push(span(v(min.x, max.y - 0.05, h), v(max.x, max.y, h + 0.06)));
                 parts
             }
-            Shape::Microwave | Shape::Washer | Shape::Dryer => {
+            (Shape::Microwave | Shape::Washer | Shape::Dryer, _) => {
                 links.push(side_door("door", min, max, t, density));
                 layout.front_button = v(max.x - 0.03, min.y - 0.01, 0.8 * h);
                 carcass(min, max, t)
             }
-            Shape::Stove => {
+            (Shape::Stove, _) => {
                 let mut parts = vec![span(min, max)];
                 // A control panel at the back of the top.
                 parts.push(span(v(min.x, max.y - 0.05, h), v(max.x, max.y, h + 0.1)));
@@ -367,7 +475,7 @@ impl Archetype {
                 layout.front_button = v(0.0, max.y - 0.06, h + 0.05);
                 parts
             }
-            Shape::Sink => {
+            (Shape::Sink, _) => {
                 // A basin on a stand, with a spout at the back.
                 let bowl = 0.25f32.min(h / 2.0);
                 let mut parts = vec![span(
@@ -383,12 +491,12 @@ impl Archetype {
                 layout.front_button = v(0.08, max.y - 0.03, h + 0.05);
                 parts
             }
-            Shape::Bathtub => {
+            (Shape::Bathtub, _) => {
                 layout.outlet = Some(v(min.x + 0.15, 0.0, h + 0.2));
                 layout.front_button = v(min.x + 0.05, 0.0, h + 0.05);
                 tub(min, max, t.max(0.03))
             }
-            Shape::Shower => {
+            (Shape::Shower, _) => {
                 let mut parts = vec![span(min, v(max.x, max.y, 0.05))];
                 parts.push(span(v(min.x, min.y, 0.0), v(min.x + t, max.y, h)));
                 parts.push(span(v(max.x - t, min.y, 0.0), v(max.x, max.y, h)));
@@ -397,7 +505,7 @@ impl Archetype {
                 layout.front_button = v(0.0, max.y - t - 0.01, 1.1);
                 parts
             }
-            Shape::Toilet => {
+            (Shape::Toilet, _) => {
                 let seat = 0.42f32.min(h * 0.6);
                 let mut parts = vec![span(
                     v(-0.12, min.y + 0.1, 0.0),
@@ -412,7 +520,7 @@ impl Archetype {
                 layout.front_button = v(max.x - 0.03, max.y - 0.09, h + 0.01);
                 parts
             }
-            Shape::Bed => {
+            (Shape::Bed, _) => {
                 let base = 0.6 * h;
                 vec![
                     span(min, v(max.x, max.y, base)),
@@ -423,7 +531,7 @@ impl Archetype {
                     span(v(min.x, max.y - 0.08, 0.0), v(max.x, max.y, h + 0.4)),
                 ]
             }
-            Shape::Sofa => {
+            (Shape::Sofa, _) => {
                 let seat = 0.45f32.min(h * 0.55);
                 vec![
                     span(min, v(max.x, max.y, seat)),
@@ -438,7 +546,7 @@ impl Archetype {
                     ),
                 ]
             }
-            Shape::Chair => {
+            (Shape::Chair, _) => {
                 let seat = 0.46f32.min(h * 0.55);
                 let leg = 0.03;
                 let mut parts = vec![span(v(min.x, min.y, seat - 0.04), v(max.x, max.y, seat))];
@@ -464,7 +572,7 @@ impl Archetype {
                 }
                 parts
             }
-            Shape::Door | Shape::Window => {
+            (Shape::Door | Shape::Window, _) => {
                 // A frame in the x–z plane (y is the wall's thickness) and a leaf on a hinge.
                 let frame = 0.05;
                 let sill = if self.shape == Shape::Window {

@@ -84,6 +84,9 @@ impl<'t> Library<'t> {
         let (mut spec, layout) = archetype.build(name, size, variant);
         spec.category = synset.to_string();
         spec.abilities_from(self.taxonomy);
+        if spec.abilities.contains_key(&Ability::Sliceable) {
+            spec.halves = Some(archetype.halves(size, variant));
+        }
         equip(&mut spec, archetype, &layout);
         Ok(spec)
     }

@@ -249,3 +249,42 @@ fn tools_and_appliances_get_the_points_their_abilities_use() {
         4
     );
 }
+
+#[test]
+fn sliceables_split_into_their_archetype_halves() {
+    let taxonomy = taxonomy();
+    let library = Library::new(&taxonomy);
+    let mut sliced = 0;
+    for a in CATALOG {
+        let Some(id) = taxonomy.get(a.synset) else {
+            continue;
+        };
+        if !taxonomy.has_ability(id, Ability::Sliceable) {
+            continue;
+        }
+        for variant in 0..a.shape.variants() {
+            let mid = Vector::from_array(std::array::from_fn(|k| (a.min[k] + a.max[k]) / 2.0));
+            let spec = library.instance(a.synset, "whole", mid, variant).unwrap();
+            assert!(spec.halves.is_some(), "{}", a.synset);
+            let mut world = World::default();
+            let whole = world.add(spec).unwrap();
+            let mass = world.mass(whole);
+            world.set_state(whole, Predicate::Sliced, true).unwrap();
+            let [h1, h2] = world.halves(whole).unwrap();
+            let halves = world.mass(h1) + world.mass(h2);
+            assert!(
+                (halves - mass).abs() <= 0.1 * mass,
+                "{} v{variant}: {mass} kg into {halves} kg",
+                a.synset
+            );
+            // Each half lies on its own side of the cut.
+            assert!(
+                world.aabb(h1).center().x < world.aabb(h2).center().x,
+                "{}",
+                a.synset
+            );
+            sliced += 1;
+        }
+    }
+    assert!(sliced >= 10, "only {sliced} sliceable archetypes");
+}

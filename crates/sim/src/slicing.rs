@@ -4,8 +4,9 @@
 //! normal force of the slicer link's contacts); when the slicer names a slicing edge, only
 //! contacts near it count, so pressing with the handle does not cut. The whole object is then disabled (it leaves the
 //! simulation and the ray casts, but keeps its id, its last pose and its states), and two halves
-//! — the two halves of its bounding box, split across its longest horizontal side — appear in its
-//! place as new objects that inherit its states. Slicing cannot be undone.
+//! appear in its place as new objects that inherit its states: the halves its archetype defines
+//! ([`crate::ObjectSpec::halves`]), or else the two halves of its bounding box, split across its
+//! longer horizontal side. Slicing cannot be undone.
 
 use crate::states::StateError;
 use crate::world::{ObjectId, ObjectSpec, Part, PointKind, Primitive, World};
@@ -92,32 +93,49 @@ impl World {
             });
         }
         let object = self.object(id);
-        let aabb = self.aabb(id);
-        let half = (aabb.maxs - aabb.mins) * 0.5;
-        let center = aabb.center();
-        let mass = self.physics.bodies[object.body].mass();
-        // Split across the longer horizontal side.
-        let along = if half.x >= half.y {
-            Vector::X
-        } else {
-            Vector::Y
-        };
-        let piece = half - along * (half.dot(along) * 0.5);
-        let volume = 8.0 * piece.x * piece.y * piece.z;
         let mut specs = Vec::new();
-        for (k, sign) in [(1, -1.0f32), (2, 1.0)] {
-            let mut spec = ObjectSpec::new(
-                &format!("{}_half_{k}", object.name),
-                &object.category,
-                vec![Part::new(Primitive::Box {
-                    half_extents: piece,
-                })],
-            );
-            spec.pose = Pose::from_translation(center + along * (sign * half.dot(along) * 0.5));
-            spec.density = (mass * 0.5 / volume).max(1.0);
+        if let Some(halves) = &object.halves {
+            // The archetype's halves, where the whole object stands.
+            let pose = self.pose(id);
+            for (k, parts) in halves.iter().enumerate() {
+                let mut spec = ObjectSpec::new(
+                    &format!("{}_half_{}", object.name, k + 1),
+                    &object.category,
+                    parts.clone(),
+                );
+                spec.pose = pose;
+                spec.density = object.density;
+                specs.push(spec);
+            }
+        } else {
+            let aabb = self.aabb(id);
+            let half = (aabb.maxs - aabb.mins) * 0.5;
+            let center = aabb.center();
+            let mass = self.physics.bodies[object.body].mass();
+            // Split across the longer horizontal side.
+            let along = if half.x >= half.y {
+                Vector::X
+            } else {
+                Vector::Y
+            };
+            let piece = half - along * (half.dot(along) * 0.5);
+            let volume = 8.0 * piece.x * piece.y * piece.z;
+            for (k, sign) in [(1, -1.0f32), (2, 1.0)] {
+                let mut spec = ObjectSpec::new(
+                    &format!("{}_half_{k}", object.name),
+                    &object.category,
+                    vec![Part::new(Primitive::Box {
+                        half_extents: piece,
+                    })],
+                );
+                spec.pose = Pose::from_translation(center + along * (sign * half.dot(along) * 0.5));
+                spec.density = (mass * 0.5 / volume).max(1.0);
+                specs.push(spec);
+            }
+        }
+        for spec in &mut specs {
             spec.abilities = object.abilities.clone();
             spec.abilities.remove(&Ability::Sliceable);
-            specs.push(spec);
         }
         let inherited = self.object_state(id).clone();
         let mut halves = [id; 2];

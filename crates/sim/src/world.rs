@@ -100,6 +100,9 @@ pub struct ObjectSpec {
     pub points: Vec<(PointKind, Vector)>,
     /// Moving parts: doors and drawers, each on one joint to the object's body.
     pub links: Vec<LinkSpec>,
+    /// For a sliceable object, the parts of its two halves in its frame; without them slicing
+    /// splits its bounding box.
+    pub halves: Option<[Vec<Part>; 2]>,
 }
 
 /// Where an ability acts, as a point in the object's frame.
@@ -169,6 +172,7 @@ impl ObjectSpec {
             abilities: BTreeMap::new(),
             points: Vec::new(),
             links: Vec::new(),
+            halves: None,
         }
     }
 
@@ -223,6 +227,9 @@ pub struct Object {
     pub abilities: BTreeMap<Ability, AbilityParams>,
     pub points: Vec<(PointKind, Vector)>,
     pub links: Vec<Link>,
+    pub halves: Option<[Vec<Part>; 2]>,
+    /// The density the object was made with (for its halves).
+    pub density: f32,
 }
 
 impl Object {
@@ -494,6 +501,8 @@ impl World {
             abilities: spec.abilities,
             points: spec.points,
             links,
+            halves: spec.halves,
+            density: spec.density,
         });
         self.states.push(ObjectState::default());
         self.motion.push(0);
@@ -582,6 +591,11 @@ impl World {
             }
         }
         self.quiet = false;
+    }
+
+    /// The mass of an object's body (its links excluded), kg.
+    pub fn mass(&self, id: ObjectId) -> f32 {
+        self.physics.bodies[self.object(id).body].mass()
     }
 
     pub fn is_sleeping(&self, id: ObjectId) -> bool {

@@ -71,6 +71,23 @@ impl Shape {
         }
     }
 
+    /// Orientations (of the object's frame) in which an instance rests stably on a flat surface,
+    /// upright first: blocks on any face, rods on either long side, cylinders standing or lying;
+    /// everything else only upright. Samplers may pick among them for variety.
+    pub fn resting_orientations(self) -> Vec<Rotation> {
+        let quarter = std::f32::consts::FRAC_PI_2;
+        let mut rotations = vec![Rotation::IDENTITY];
+        match self {
+            Shape::Block => rotations.extend([
+                Rotation::from_rotation_x(quarter),
+                Rotation::from_rotation_y(quarter),
+            ]),
+            Shape::Rod | Shape::Cylinder => rotations.push(Rotation::from_rotation_x(quarter)),
+            _ => {}
+        }
+        rotations
+    }
+
     /// Fixed in the scene (furniture) rather than free to move.
     pub fn is_fixed(self) -> bool {
         !matches!(
@@ -87,6 +104,41 @@ impl Shape {
     }
 }
 
+/// What an object's surface is made of: it sets the friction of its colliders.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Material {
+    Wood,
+    Metal,
+    Plastic,
+    Glass,
+    Ceramic,
+    Cloth,
+    Paper,
+    Food,
+    Rubber,
+    Stone,
+}
+
+impl Material {
+    /// Coulomb friction coefficient against typical household surfaces (engineering-table values:
+    /// wood on wood ~0.4, metal ~0.4, plastic ~0.35, glass and glazed ceramic ~0.25–0.3, cloth and
+    /// rubber high).
+    pub fn friction(self) -> f32 {
+        match self {
+            Material::Wood => 0.45,
+            Material::Metal => 0.4,
+            Material::Plastic => 0.35,
+            Material::Glass => 0.25,
+            Material::Ceramic => 0.3,
+            Material::Cloth => 0.7,
+            Material::Paper => 0.5,
+            Material::Food => 0.6,
+            Material::Rubber => 0.9,
+            Material::Stone => 0.55,
+        }
+    }
+}
+
 /// An object family for one synset.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Archetype {
@@ -97,6 +149,7 @@ pub struct Archetype {
     pub max: [f32; 3],
     /// Of the material, kg/m³.
     pub density: f32,
+    pub material: Material,
     pub color: [u8; 3],
 }
 
@@ -605,6 +658,7 @@ impl Archetype {
         let mut spec = ObjectSpec::new(name, self.synset, parts);
         spec.fixed = self.shape.is_fixed();
         spec.density = density;
+        spec.friction = self.material.friction();
         spec.links = links;
         (spec, layout)
     }

@@ -288,3 +288,55 @@ fn sliceables_split_into_their_archetype_halves() {
     }
     assert!(sliced >= 10, "only {sliced} sliceable archetypes");
 }
+
+#[test]
+fn resting_orientations_are_stable_on_a_floor() {
+    use rapier3d::math::Pose;
+    let taxonomy = taxonomy();
+    let library = Library::new(&taxonomy);
+    let mut checked = 0;
+    for a in CATALOG
+        .iter()
+        .filter(|a| !a.shape.is_fixed() && a.max.iter().all(|&x| x < 1.0))
+    {
+        for rotation in a.shape.resting_orientations() {
+            let mut world = World::default();
+            let slab = Primitive::Box {
+                half_extents: Vector::new(3.0, 3.0, 0.05),
+            };
+            world
+                .add(
+                    ObjectSpec::new(
+                        "floor",
+                        "floor.n.01",
+                        vec![Part::at(slab, Vector::new(0.0, 0.0, -0.05))],
+                    )
+                    .fixed(),
+                )
+                .unwrap();
+            let mid = Vector::from_array(std::array::from_fn(|k| (a.min[k] + a.max[k]) / 2.0));
+            let mut spec = library.instance(a.synset, "thing", mid, 0).unwrap();
+            spec.pose = Pose::from_parts(Vector::new(0.0, 0.0, 1.5), rotation);
+            let id = world.add(spec).unwrap();
+            // Lower it onto the floor, 5 mm up.
+            let bottom = world.aabb(id).mins.z;
+            world
+                .set_pose(
+                    id,
+                    Pose::from_parts(Vector::new(0.0, 0.0, 1.5 - bottom + 0.005), rotation),
+                )
+                .unwrap();
+            world.settle(300);
+            // The world's up, seen in the object's frame, must still point up.
+            let up_in_object = rotation.inverse() * Vector::Z;
+            let now = world.pose(id).rotation * up_in_object;
+            assert!(
+                now.z > 0.98,
+                "{} does not rest in orientation {rotation:?}: up is now {now:?}",
+                a.synset
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked > 150, "{checked}");
+}

@@ -559,7 +559,7 @@ impl World {
         *self.physics.bodies[self.object(id).body].position()
     }
 
-    /// Moves an object (teleport), waking it.
+    /// Moves an object (teleport) with its links, at rest, waking it.
     pub fn set_pose(&mut self, id: ObjectId, pose: Pose) -> Result<(), WorldError> {
         if !pose_is_finite(&pose) {
             return Err(WorldError::BadObject {
@@ -567,11 +567,21 @@ impl World {
                 reason: "the requested pose is not finite".into(),
             });
         }
-        let body = self.object(id).body;
-        let body = &mut self.physics.bodies[body];
-        body.set_position(pose, true);
-        body.set_linvel(Vector::ZERO, true);
-        body.set_angvel(Vector::ZERO, true);
+        // Doors, drawers and lids move with the body, keeping their joint positions.
+        let object = &self.objects[id.0 as usize];
+        let old = *self.physics.bodies[object.body].position();
+        let moves: Vec<(RigidBodyHandle, Pose)> = std::iter::once((object.body, pose))
+            .chain(object.links.iter().map(|l| {
+                let relative = old.inv_mul(self.physics.bodies[l.body].position());
+                (l.body, pose * relative)
+            }))
+            .collect();
+        for (handle, target) in moves {
+            let body = &mut self.physics.bodies[handle];
+            body.set_position(target, true);
+            body.set_linvel(Vector::ZERO, true);
+            body.set_angvel(Vector::ZERO, true);
+        }
         self.moved(id);
         self.refresh();
         Ok(())

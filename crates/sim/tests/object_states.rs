@@ -343,3 +343,21 @@ fn cooked_in_a_microwave_only_when_on_closed_and_inside() {
     );
     assert!(!world.state(outside, Predicate::Cooked));
 }
+
+#[test]
+fn open_state_survives_teleporting_the_object_with_its_door() {
+    let mut world = World::default();
+    two_room_floor(&mut world);
+    let fridge_id = fridge(&mut world, -2.0, 0.0);
+    world.set_joint_position(fridge_id, 0, 0.8);
+    let before = world.joint_position(fridge_id, 0);
+    let mut pose = world.pose(fridge_id);
+    pose.translation.x += 1.0;
+    world.set_pose(fridge_id, pose).unwrap();
+    assert!(
+        (world.joint_position(fridge_id, 0) - before).abs() < 1e-4,
+        "the door moved with the body"
+    );
+    settle(&mut world, 1.0);
+    assert!(world.state(fridge_id, Predicate::Open));
+}

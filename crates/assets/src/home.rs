@@ -291,8 +291,10 @@ pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, Asset
             continue;
         }
         let (_, door_x, door_y) = doorways[index];
+        // The door stands just inside its room and its leaf swings into the room (a door's
+        // front is its −y side), so an open door still stands in its room.
         let inward = if door_y > room.min[1] { -0.15 } else { 0.15 };
-        let turns = if door_y > room.min[1] { 2 } else { 0 };
+        let turns = if door_y > room.min[1] { 0 } else { 2 };
         objects.push(place_door(
             library,
             &mut rng,
@@ -317,13 +319,15 @@ pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, Asset
             } else {
                 outer_y - half - 0.05
             };
+            // Its casement opens into the room too.
+            let turns = if outer_y < door_y { 2 } else { 0 };
             f.taken.push(footprint(x, y, size.x, 0.12, 0));
             objects.push(ObjectPlan {
                 name: next_name("window.n.01"),
                 synset: "window.n.01".into(),
                 room: index,
                 position: [x, y, 0.0],
-                yaw_quarter_turns: 0,
+                yaw_quarter_turns: turns,
                 size: size.to_array(),
                 variant,
                 joints: vec![0.0],

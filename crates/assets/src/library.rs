@@ -32,6 +32,10 @@ impl<'t> Library<'t> {
         }
     }
 
+    pub fn taxonomy(&self) -> &'t Taxonomy {
+        self.taxonomy
+    }
+
     /// The archetype of a synset: its own, else that of the nearest descendant that has one
     /// (breadth first, so `fruit.n.01` gets a fruit's).
     pub fn resolve(&self, synset: &str) -> Result<&'static Archetype, AssetError> {

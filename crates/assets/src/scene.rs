@@ -132,13 +132,15 @@ impl Scene {
                 (room.min[1] + room.max[1]) / 2.0,
                 -FLOOR_THICKNESS / 2.0,
             );
-            let spec = ObjectSpec::new(
+            let mut spec = ObjectSpec::new(
                 &format!("floor_{}", room.label()),
                 "floor.n.01",
                 vec![Part::new(slab)],
             )
             .at(center)
             .fixed();
+            // Floors get dusty and stained like any surface.
+            spec.abilities_from(library.taxonomy());
             let floor = world.add(spec)?;
             world.add_room(Room {
                 kind: room.kind.clone(),

@@ -5,6 +5,7 @@
 
 mod bddl;
 mod map;
+mod sample;
 mod scene;
 
 use clap::{Parser, Subcommand};
@@ -35,6 +36,10 @@ enum Command {
     /// Homes: the named ones, generating from seeds, maps, activity coverage.
     #[command(subcommand)]
     Scene(scene::SceneCommand),
+    /// Sample an instance of an activity in a home: bindings, time taken, init check.
+    Sample(sample::SampleArgs),
+    /// Try every official activity in every named home that covers it.
+    SampleAll(sample::SampleAllArgs),
 }
 
 fn main() -> ExitCode {
@@ -48,6 +53,8 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Bddl(command) => bddl::run(command, cli.data_dir.as_deref()),
         Command::Scene(command) => scene::run(command, cli.data_dir.as_deref()),
+        Command::Sample(args) => sample::sample(args, cli.data_dir.as_deref()),
+        Command::SampleAll(args) => sample::sample_all(args, cli.data_dir.as_deref()),
     };
     match result {
         Ok(code) => code,

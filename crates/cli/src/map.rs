@@ -24,8 +24,26 @@ fn room_color(kind: &str) -> Rgb<u8> {
     })
 }
 
-/// Draws the scene at `scale` pixels per metre.
-pub fn render(scene: &Scene, scale: f32) -> RgbImage {
+/// Draws the scene, then marks and labels the given boxes (name, min, max) in red.
+pub fn render_marked(
+    scene: &Scene,
+    scale: f32,
+    marked: &[(String, [f32; 3], [f32; 3])],
+) -> RgbImage {
+    let mut img = render(scene, scale);
+    let (lo, hi) = extent(scene);
+    let px = |x: f32, y: f32| ((x - lo[0] + MARGIN) * scale, (hi[1] - y + MARGIN) * scale);
+    for (name, min, max) in marked {
+        let red = Rgb([220, 30, 30]);
+        outline(&mut img, px(min[0], max[1]), px(max[0], min[1]), red);
+        let (cx, cy) = px((min[0] + max[0]) / 2.0, (min[1] + max[1]) / 2.0);
+        text(&mut img, name, cx, cy - 10.0, 1, red);
+    }
+    img
+}
+
+/// The scene's bounding rectangle in x, y.
+fn extent(scene: &Scene) -> ([f32; 2], [f32; 2]) {
     let (mut lo, mut hi) = ([f32::MAX; 2], [f32::MIN; 2]);
     for r in &scene.rooms {
         for k in 0..2 {
@@ -34,9 +52,15 @@ pub fn render(scene: &Scene, scale: f32) -> RgbImage {
         }
     }
     if scene.rooms.is_empty() {
-        lo = [0.0; 2];
-        hi = [1.0; 2];
+        ([0.0; 2], [1.0; 2])
+    } else {
+        (lo, hi)
     }
+}
+
+/// Draws the scene at `scale` pixels per metre.
+pub fn render(scene: &Scene, scale: f32) -> RgbImage {
+    let (lo, hi) = extent(scene);
     let width = ((hi[0] - lo[0] + 2.0 * MARGIN) * scale).ceil() as u32;
     let height = ((hi[1] - lo[1] + 2.0 * MARGIN) * scale).ceil() as u32;
     let mut img = RgbImage::from_pixel(

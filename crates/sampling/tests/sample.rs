@@ -1,0 +1,131 @@
+//! Sampling official activities in the named homes.
+
+use behavior_assets::coverage::{missing, requirements};
+use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
+use behavior_bddl::activity::InitLiteral;
+use behavior_bddl::data::{DataDir, Knowledge};
+use behavior_bddl::{Activity, PredicateOracle};
+use behavior_sampling::{SampleError, SavedInstance, instantiate};
+
+fn setup() -> (DataDir, Knowledge) {
+    let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
+    let knowledge = data.knowledge().unwrap();
+    (data, knowledge)
+}
+
+fn activity(data: &DataDir, knowledge: &Knowledge, name: &str) -> Activity {
+    knowledge
+        .load(&data.problem_source(name).unwrap())
+        .unwrap()
+        .0
+}
+
+fn covering_home(activity: &Activity, library: &Library, knowledge: &Knowledge) -> Scene {
+    let needs = requirements(activity);
+    NAMED_HOMES
+        .iter()
+        .map(|(n, s)| generate(n, *s, library).unwrap())
+        .find(|h| missing(h, &needs, &knowledge.taxonomy).is_empty())
+        .expect("a covering home")
+}
+
+/// Re-checks every positive and negative init literal through the BDDL oracle, independently of
+/// the sampler's own check.
+fn all_init_literals_hold(activity: &Activity, instance: &behavior_sampling::Instance) -> bool {
+    let bound = instance.bound();
+    let oracle = instance.oracle(&bound);
+    activity.init.iter().all(|l| match l {
+        InitLiteral::Atom(l) => oracle.holds(l.atom) == l.positive,
+        InitLiteral::InRoom {
+            instance: i,
+            room,
+            positive,
+        } => {
+            (instance.world.room_of(instance.bindings[i.0 as usize]) == Some(room.as_str()))
+                == *positive
+        }
+    })
+}
+
+#[test]
+fn packing_lunches_is_sampled_with_every_init_literal_true_and_saves_and_loads() {
+    let (data, knowledge) = setup();
+    let library = Library::new(&knowledge.taxonomy);
+    let activity = activity(&data, &knowledge, "packing_lunches");
+    let home = covering_home(&activity, &library, &knowledge);
+    let instance = instantiate(&activity, &home, 0, &library, &knowledge.taxonomy)
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(all_init_literals_hold(&activity, &instance));
+    // Saved and loaded, the instance still satisfies its initial condition.
+    let saved = instance.save();
+    let text = saved.to_json();
+    let back = SavedInstance::from_json(&text).unwrap();
+    assert_eq!(back, saved);
+    let loaded = back
+        .load(&activity, &library)
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(all_init_literals_hold(&activity, &loaded));
+    for (&a, &b) in instance.bindings.iter().zip(&loaded.bindings) {
+        let (pa, pb) = (instance.world.pose(a), loaded.world.pose(b));
+        assert!((pa.translation - pb.translation).length() < 1e-5);
+    }
+}
+
+#[test]
+fn the_same_seed_gives_the_same_instance_and_another_seed_another() {
+    let (data, knowledge) = setup();
+    let library = Library::new(&knowledge.taxonomy);
+    let activity = activity(&data, &knowledge, "putting_away_toys");
+    let home = covering_home(&activity, &library, &knowledge);
+    let sample = |seed| instantiate(&activity, &home, seed, &library, &knowledge.taxonomy).unwrap();
+    let (a, b, c) = (sample(7), sample(7), sample(8));
+    assert_eq!(a.world.motion_bits(), b.world.motion_bits());
+    assert_eq!(a.created, b.created);
+    assert!(a.world.motion_bits() != c.world.motion_bits() || a.created != c.created);
+}
+
+#[test]
+fn a_home_without_the_rooms_an_activity_needs_is_a_clear_error() {
+    let (data, knowledge) = setup();
+    let library = Library::new(&knowledge.taxonomy);
+    let activity = activity(&data, &knowledge, "cleaning_garage");
+    let needs = requirements(&activity);
+    let home = NAMED_HOMES
+        .iter()
+        .map(|(n, s)| generate(n, *s, &library).unwrap())
+        .find(|h| !missing(h, &needs, &knowledge.taxonomy).is_empty())
+        .expect("a home without a garage");
+    match instantiate(&activity, &home, 0, &library, &knowledge.taxonomy) {
+        Err(e @ SampleError::NoFurniture { .. }) => {
+            assert!(e.to_string().contains("has no garage"), "{e}")
+        }
+        Err(e) => panic!("unexpected error: {e}"),
+        Ok(_) => panic!("sampled without a garage"),
+    }
+}
+
+#[test]
+fn most_activities_sample_in_their_first_covering_home() {
+    let (data, knowledge) = setup();
+    let library = Library::new(&knowledge.taxonomy);
+    let homes: Vec<Scene> = NAMED_HOMES
+        .iter()
+        .map(|(n, s)| generate(n, *s, &library).unwrap())
+        .collect();
+    let mut failures = Vec::new();
+    let names = data.activities().unwrap();
+    for name in names.iter().step_by(5) {
+        let activity = activity(&data, &knowledge, name);
+        let needs = requirements(&activity);
+        let home = homes
+            .iter()
+            .find(|h| missing(h, &needs, &knowledge.taxonomy).is_empty())
+            .unwrap();
+        match instantiate(&activity, home, 0, &library, &knowledge.taxonomy) {
+            Ok(instance) => assert!(all_init_literals_hold(&activity, &instance), "{name}"),
+            Err(e) => failures.push(format!("{name} in {}: {e}", home.name)),
+        }
+    }
+    eprintln!("{} of 20 failed:\n{}", failures.len(), failures.join("\n"));
+    assert!(failures.len() <= 4, "{}", failures.join("\n"));
+}

@@ -310,8 +310,7 @@ impl Archetype {
     /// The two halves of a sliced instance, in its frame: split across x, the cut through its
     /// middle. Round things give half-spheres or half-cylinders, others half boxes.
     pub fn halves(&self, size: Vector, variant: u32) -> [Vec<Part>; 2] {
-        let lo = Vector::from_array(self.min);
-        let s = size.clamp(lo, Vector::from_array(self.max).max(lo));
+        let s = self.fit(size);
         let side = |sign: f32| move |p: Vector| p.x * sign >= -1e-6;
         match (self.shape, variant % self.shape.variants()) {
             (Shape::Ball, 0) => {
@@ -334,11 +333,18 @@ impl Archetype {
         }
     }
 
-    /// Builds an instance of the given size (clamped to the range) and variant.
+    /// A size no larger than the archetype's largest (smaller is allowed: a sampler may shrink
+    /// an object to fit its container), and at least 5 mm.
+    pub fn fit(&self, size: Vector) -> Vector {
+        let finite = Vector::select(size.is_finite_mask(), size, Vector::from_array(self.min));
+        finite
+            .min(Vector::from_array(self.max))
+            .max(Vector::splat(0.005))
+    }
+
+    /// Builds an instance of the given size (see [`Archetype::fit`]) and variant.
     pub fn build(&self, name: &str, size: Vector, variant: u32) -> (ObjectSpec, Layout) {
-        let lo = Vector::from_array(self.min);
-        let hi = Vector::from_array(self.max);
-        let s = size.clamp(lo, hi.max(lo));
+        let s = self.fit(size);
         let (w, d, h) = (s.x, s.y, s.z);
         let (min, max) = (v(-w / 2.0, -d / 2.0, 0.0), v(w / 2.0, d / 2.0, h));
         let t = wall(s);

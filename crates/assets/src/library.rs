@@ -76,7 +76,7 @@ impl<'t> Library<'t> {
         Ok((size, rng.next_u32() % archetype.shape.variants()))
     }
 
-    /// An instance of a given size (clamped to the archetype's range) and variant, equipped.
+    /// An instance of a given size (at most the archetype's largest) and variant, equipped.
     pub fn instance(
         &self,
         synset: &str,

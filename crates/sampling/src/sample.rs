@@ -97,37 +97,7 @@ fn attempt_once(
     // Bound furniture and floors already stand; the rest is placed below.
     let mut placed: Vec<bool> = bindings.iter().map(Option::is_some).collect();
 
-    // Everything else comes from the library, parked far away until placed.
-    let mut created = Vec::new();
-    for (i, binding) in bindings.iter_mut().enumerate() {
-        if binding.is_some() {
-            continue;
-        }
-        let instance = &activity.instances[i];
-        let synset = activity.category(instance.category).name.clone();
-        let (size, variant) = library.sample(&synset, rng)?;
-        let mut spec = library.instance(&synset, &instance.name, size, variant)?;
-        spec.pose = Pose::from_translation(Vector::new(1000.0 + 5.0 * i as f32, 1000.0, 0.0));
-        spec.fixed = false;
-        let id = world.add(spec).map_err(|e| SampleError::Literal {
-            literal: instance.name.clone(),
-            reason: e.to_string(),
-        })?;
-        *binding = Some(id);
-        created.push(Created {
-            instance: instance.name.clone(),
-            synset,
-            size: size.to_array(),
-            variant,
-        });
-    }
-    let bindings: Vec<ObjectId> = bindings
-        .into_iter()
-        .map(|b| b.expect("every instance is bound"))
-        .collect();
     let show = |l: Literal| activity.show_literal(l);
-
-    // Placement in dependency order: a literal is placed once its second object stands.
     let kinematic: Vec<Literal> = activity
         .init
         .iter()
@@ -147,28 +117,116 @@ fn attempt_once(
             _ => None,
         })
         .collect();
+
+    // Everything else comes from the library, parked far away until placed. Supports and
+    // containers are made before what they hold, so a held object can be sized to fit.
+    let mut created = Vec::new();
+    loop {
+        let ready = (0..n).find(|&i| {
+            bindings[i].is_none()
+                && kinematic.iter().all(|l| {
+                    l.atom.subject.0 as usize != i
+                        || l.atom.predicate == Predicate::OnFloor
+                        || bindings[l.atom.object.expect("binary").0 as usize].is_some()
+                        || l.atom.object.expect("binary").0 as usize == i
+                })
+        });
+        let Some(i) = ready.or_else(|| (0..n).find(|&i| bindings[i].is_none())) else {
+            break;
+        };
+        let instance = &activity.instances[i];
+        let synset = activity.category(instance.category).name.clone();
+        let (mut size, variant) = library.sample(&synset, rng)?;
+        // How many objects go inside or on top of this one: a container that must hold several
+        // is made as large as its kind comes.
+        let holds = |j: usize| {
+            kinematic
+                .iter()
+                .filter(|l| {
+                    matches!(l.atom.predicate, Predicate::Inside | Predicate::OnTop)
+                        && l.atom.object.is_some_and(|o| o.0 as usize == j)
+                })
+                .count()
+        };
+        if holds(i) >= 3 {
+            size = Vector::from_array(library.resolve(&synset)?.max);
+        }
+        // Objects on or in another are shrunk, if need be, so that all it holds fit side by side.
+        for l in kinematic.iter().filter(|l| l.atom.subject.0 as usize == i) {
+            let Some(o) = l.atom.object else { continue };
+            let Some(target) = bindings[o.0 as usize] else {
+                continue;
+            };
+            let b = world.aabb(target);
+            let room = b.maxs - b.mins;
+            let share = 1.0 / (holds(o.0 as usize) as f32).sqrt().ceil().max(1.0);
+            let cap = match l.atom.predicate {
+                Predicate::Inside => room * Vector::new(0.7 * share, 0.7 * share, 0.4),
+                Predicate::OnTop => room * Vector::new(0.9 * share, 0.9 * share, 10.0),
+                _ => continue,
+            };
+            size = size.min(cap);
+        }
+        let mut spec = library.instance(&synset, &instance.name, size, variant)?;
+        spec.pose = Pose::from_translation(Vector::new(1000.0 + 5.0 * i as f32, 1000.0, 0.0));
+        spec.fixed = false;
+        let id = world.add(spec).map_err(|e| SampleError::Literal {
+            literal: instance.name.clone(),
+            reason: e.to_string(),
+        })?;
+        bindings[i] = Some(id);
+        created.push(Created {
+            instance: instance.name.clone(),
+            synset,
+            size: size.to_array(),
+            variant,
+        });
+    }
+    let bindings: Vec<ObjectId> = bindings
+        .into_iter()
+        .map(|b| b.expect("every instance is bound"))
+        .collect();
+
+    // Placement in dependency order: a literal is placed once its second object stands. An
+    // object with several placement literals is placed by `ontop`, `inside` or `under` when it
+    // can be (resting on a towel on the floor, under a table on the floor), by `onfloor` last.
     loop {
         let mut progress = false;
-        for literal in &kinematic {
-            let (a, b) = (literal.atom.subject, literal.atom.object.expect("binary"));
-            if placed[a.0 as usize] || !placed[b.0 as usize] {
-                continue;
+        for pass_onfloor in [false, true] {
+            for literal in &kinematic {
+                let (a, b) = (literal.atom.subject, literal.atom.object.expect("binary"));
+                let onfloor = literal.atom.predicate == Predicate::OnFloor;
+                if onfloor != pass_onfloor || placed[a.0 as usize] || !placed[b.0 as usize] {
+                    continue;
+                }
+                if onfloor
+                    && kinematic.iter().any(|o| {
+                        o.atom.subject == a
+                            && o.atom.predicate != Predicate::OnFloor
+                            && !placed[o.atom.object.expect("binary").0 as usize]
+                    })
+                {
+                    continue; // wait for its other support
+                }
+                let relation = match literal.atom.predicate {
+                    Predicate::OnTop => Relation::OnTop,
+                    Predicate::Inside => Relation::Inside,
+                    Predicate::Under => Relation::Under,
+                    _ => Relation::OnFloor,
+                };
+                let (object, target) = (bindings[a.0 as usize], bindings[b.0 as usize]);
+                world
+                    .place(object, relation, target, rng)
+                    .map_err(|e| SampleError::Literal {
+                        literal: show(*literal),
+                        reason: e.to_string(),
+                    })?;
+                placed[a.0 as usize] = true;
+                progress = true;
             }
-            let relation = match literal.atom.predicate {
-                Predicate::OnTop => Relation::OnTop,
-                Predicate::Inside => Relation::Inside,
-                Predicate::Under => Relation::Under,
-                _ => Relation::OnFloor,
-            };
-            let (object, target) = (bindings[a.0 as usize], bindings[b.0 as usize]);
-            world
-                .place(object, relation, target, rng)
-                .map_err(|e| SampleError::Literal {
-                    literal: show(*literal),
-                    reason: e.to_string(),
-                })?;
-            placed[a.0 as usize] = true;
-            progress = true;
+            if progress {
+                break;
+            }
         }
         if !progress {
             break;

@@ -16,8 +16,9 @@
 //!   directions (`b` surrounds `a`).
 //! - `nextto(a, b)`: the gap between their boxes is at most a sixth of the mean of their summed
 //!   extents, and a horizontal ray from the centre of one (16 directions, 1 m) hits the other.
-//! - `onfloor(a, floor)`: `a` touches the floor object, and the room at the centre of `a`'s box
-//!   is the floor's room.
+//! - `onfloor(a, floor)`: the room at the centre of `a`'s box is the floor's room, and `a` touches
+//!   the floor or its bottom is within 10 cm of it (iGibson requires contact, which makes "the
+//!   soap on the towel on the floor" — both literals in `washing_floor` — impossible).
 //! - `inroom(a, type)`: the room at the centre of `a`'s box has that type.
 //!
 //! A ray "hits" an object when it meets any of its colliders, whatever lies between (iGibson
@@ -41,6 +42,8 @@ pub const TOUCH_DISTANCE: f32 = 0.005;
 pub const SUPPORT_COS: f32 = std::f32::consts::FRAC_1_SQRT_2;
 pub const VERTICAL_RANGE: f32 = 5.0;
 pub const HORIZONTAL_RANGE: f32 = 1.0;
+/// An object whose bottom is this close above a floor is on it, even lying on a mat or a towel.
+pub const ONFLOOR_HEIGHT: f32 = 0.1;
 pub const HORIZONTAL_DIRECTIONS: usize = 16;
 
 impl World {
@@ -182,9 +185,11 @@ impl World {
     }
 
     pub fn onfloor(&self, a: ObjectId, floor: ObjectId) -> bool {
-        let c = self.aabb(a).center();
+        let own = self.aabb(a);
+        let c = own.center();
         let room_floor = self.room_at(c.x, c.y).and_then(|r| r.floor);
-        room_floor == Some(floor) && self.touching(a, floor)
+        let low = own.mins.z - self.aabb(floor).maxs.z <= ONFLOOR_HEIGHT;
+        room_floor == Some(floor) && (self.touching(a, floor) || (low && a != floor))
     }
 
     /// The type of the room at the centre of the object's box.

@@ -404,3 +404,43 @@ fn scene_coverage_json_lists_at_least_three_homes_per_activity() {
         assert!(scenes.len() >= 3, "{row}");
     }
 }
+
+#[test]
+fn sample_prints_bindings_and_saves_an_instance() {
+    let out = scratch("lunches_instance.json");
+    let output = behavior(&[
+        "sample",
+        "packing_lunches",
+        "--seed",
+        "1",
+        "--json",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let report: Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(report["activity"], "packing_lunches");
+    assert_eq!(report["init_check"], "every init literal holds");
+    assert_eq!(report["bindings"].as_array().unwrap().len(), 19);
+    let saved =
+        behavior_sampling::SavedInstance::from_json(&std::fs::read_to_string(&out).unwrap())
+            .unwrap();
+    assert_eq!(saved.activity, "packing_lunches_0");
+    assert_eq!(saved.bindings.len(), 19);
+}
+
+#[test]
+fn sample_reports_an_activity_that_cannot_be_instantiated() {
+    // Its definition puts a shoe under a living-room table and on the dining-room floor at once.
+    let output = behavior(&["sample", "collect_misplaced_items"]);
+    assert_eq!(output.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        err.contains("(onfloor gym_shoe.n.01_1 floor.n.01_2) could not be satisfied"),
+        "{err}"
+    );
+}

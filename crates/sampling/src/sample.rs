@@ -1,4 +1,4 @@
-//! Sampling one instance of an activity in a home.
+//! Sampling one instance of an activity in a home, and checking that its goal can be reached.
 
 use crate::instance::{Created, Instance};
 use behavior_assets::{AssetError, Library, Scene, SceneError};
@@ -28,6 +28,8 @@ pub enum SampleError {
     },
     #[error("{literal} could not be satisfied: {reason}")]
     Literal { literal: String, reason: String },
+    #[error("no goal option can be reached in this home: {literal}: {reason}")]
+    Infeasible { literal: String, reason: String },
     #[error("{0}")]
     Asset(#[from] AssetError),
     #[error("{0}")]
@@ -55,7 +57,7 @@ pub fn instantiate(
         rng.set_stream(u64::from(attempt));
         match attempt_once(activity, scene, library, taxonomy, &mut rng) {
             Ok((world, bindings, created)) => {
-                return Ok(Instance {
+                let instance = Instance {
                     activity: activity.name.clone(),
                     scene: scene.clone(),
                     seed,
@@ -63,7 +65,9 @@ pub fn instantiate(
                     world,
                     bindings,
                     created,
-                });
+                };
+                goal_feasible(activity, &instance)?;
+                return Ok(instance);
             }
             Err(e) if e.retryable() => last = Some(e),
             Err(e) => return Err(e),
@@ -118,13 +122,31 @@ fn attempt_once(
         })
         .collect();
 
+    // Where the goal may want objects (every positive `inside`/`ontop` atom of the ground goal):
+    // sizing takes these into account too, so that the goal stays reachable.
+    let goal = behavior_bddl::GroundGoal::new(activity);
+    let mut demands: Vec<Literal> = kinematic.clone();
+    for node in &goal.nodes {
+        if let behavior_bddl::ground::Node::Lit(lit) = node {
+            let atom = goal.atom(lit.atom);
+            if lit.positive && matches!(atom.predicate, Predicate::Inside | Predicate::OnTop) {
+                demands.push(Literal {
+                    atom,
+                    positive: true,
+                });
+            }
+        }
+    }
+    demands.sort();
+    demands.dedup();
+
     // Everything else comes from the library, parked far away until placed. Supports and
     // containers are made before what they hold, so a held object can be sized to fit.
     let mut created = Vec::new();
     loop {
         let ready = (0..n).find(|&i| {
             bindings[i].is_none()
-                && kinematic.iter().all(|l| {
+                && demands.iter().all(|l| {
                     l.atom.subject.0 as usize != i
                         || l.atom.predicate == Predicate::OnFloor
                         || bindings[l.atom.object.expect("binary").0 as usize].is_some()
@@ -140,7 +162,7 @@ fn attempt_once(
         // How many objects go inside or on top of this one: a container that must hold several
         // is made as large as its kind comes.
         let holds = |j: usize| {
-            kinematic
+            demands
                 .iter()
                 .filter(|l| {
                     matches!(l.atom.predicate, Predicate::Inside | Predicate::OnTop)
@@ -152,7 +174,7 @@ fn attempt_once(
             size = Vector::from_array(library.resolve(&synset)?.max);
         }
         // Objects on or in another are shrunk, if need be, so that all it holds fit side by side.
-        for l in kinematic.iter().filter(|l| l.atom.subject.0 as usize == i) {
+        for l in demands.iter().filter(|l| l.atom.subject.0 as usize == i) {
             let Some(o) = l.atom.object else { continue };
             let Some(target) = bindings[o.0 as usize] else {
                 continue;
@@ -385,4 +407,53 @@ fn bind_furniture(
         }
     }
     Ok(())
+}
+
+/// How many goal options (smallest first) [`goal_feasible`] tries before giving up.
+pub const FEASIBILITY_OPTIONS: usize = 64;
+
+/// Checks that some goal option can be reached in this home: every object in a positive
+/// `ontop`, `inside` or `under` literal of the option fits where it is asked to go — inside a
+/// container whose box can hold its box (in some orientation), on a support at least as wide as
+/// its narrower side, under something taller than it. Other objects in the way do not count (the
+/// agent can move them). Options are tried smallest first; the error reports why the first fails.
+pub fn goal_feasible(activity: &Activity, instance: &Instance) -> Result<(), SampleError> {
+    let goal = behavior_bddl::GroundGoal::new(activity);
+    let world = &instance.world;
+    let dims = |i: InstanceId| {
+        let b = world.aabb(instance.bindings[i.0 as usize]);
+        let mut d = (b.maxs - b.mins).to_array();
+        d.sort_by(f32::total_cmp);
+        d
+    };
+    let mut first_failure: Option<(String, String)> = None;
+    for option in behavior_bddl::options::options(&goal).take(FEASIBILITY_OPTIONS) {
+        let failure = option.iter().filter(|l| l.positive).find_map(|l| {
+            let target = l.atom.object?;
+            let (a, b) = (dims(l.atom.subject), dims(target));
+            let reason = match l.atom.predicate {
+                Predicate::Inside if (0..3).any(|k| a[k] > 0.95 * b[k]) => {
+                    format!("its box {a:.2?} does not fit in {:.2?}", b)
+                }
+                Predicate::OnTop if a[0] > b[2] => format!(
+                    "its narrower side {:.2} exceeds the support's widest {:.2}",
+                    a[0], b[2]
+                ),
+                Predicate::Under if a[0] > b[2] => {
+                    "it is larger than what it should go under".to_string()
+                }
+                _ => return None,
+            };
+            Some((activity.show_literal(*l), reason))
+        });
+        match failure {
+            None => return Ok(()),
+            Some(f) => {
+                first_failure.get_or_insert(f);
+            }
+        }
+    }
+    let (literal, reason) =
+        first_failure.unwrap_or_else(|| ("the goal".into(), "it has no consistent option".into()));
+    Err(SampleError::Infeasible { literal, reason })
 }

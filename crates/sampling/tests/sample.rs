@@ -129,3 +129,25 @@ fn most_activities_sample_in_their_first_covering_home() {
     eprintln!("{} of 20 failed:\n{}", failures.len(), failures.join("\n"));
     assert!(failures.len() <= 4, "{}", failures.join("\n"));
 }
+
+#[test]
+fn an_unreachable_goal_is_reported_as_infeasible() {
+    let (_, knowledge) = setup();
+    let library = Library::new(&knowledge.taxonomy);
+    // The goal wants a kitchen table inside a small bin.
+    let text = "(define (problem tidy_0) (:domain igibson)
+      (:objects bin.n.01_1 - bin.n.01 table.n.02_1 - table.n.02 floor.n.01_1 - floor.n.01 agent.n.01_1 - agent.n.01)
+      (:init (onfloor bin.n.01_1 floor.n.01_1) (inroom table.n.02_1 kitchen) (inroom floor.n.01_1 kitchen) (onfloor agent.n.01_1 floor.n.01_1))
+      (:goal (inside ?table.n.02_1 ?bin.n.01_1)))";
+    let (activity, _) = knowledge
+        .load(&behavior_bddl::Source::new("tidy.bddl", text))
+        .unwrap();
+    let home = generate(NAMED_HOMES[0].0, NAMED_HOMES[0].1, &library).unwrap();
+    match instantiate(&activity, &home, 0, &library, &knowledge.taxonomy) {
+        Err(e @ SampleError::Infeasible { .. }) => {
+            assert!(e.to_string().starts_with("no goal option can be reached in this home: (inside table.n.02_1 bin.n.01_1): its box"), "{e}")
+        }
+        Err(e) => panic!("unexpected error: {e}"),
+        Ok(_) => panic!("an impossible goal was accepted"),
+    }
+}

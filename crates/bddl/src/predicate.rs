@@ -57,6 +57,19 @@ impl Predicate {
         Predicate::TimeSet,
     ];
 
+    /// The unary states the official activities use (iGibson's nine).
+    pub const UNARY_STATES: [Predicate; 9] = [
+        Predicate::Cooked,
+        Predicate::Burnt,
+        Predicate::Frozen,
+        Predicate::Soaked,
+        Predicate::Open,
+        Predicate::Dusty,
+        Predicate::Stained,
+        Predicate::Sliced,
+        Predicate::ToggledOn,
+    ];
+
     pub fn name(self) -> &'static str {
         match self {
             Predicate::Inside => "inside",

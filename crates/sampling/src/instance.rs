@@ -31,19 +31,6 @@ pub struct Instance {
     pub created: Vec<Created>,
 }
 
-/// The unary predicates a saved instance records.
-const STATES: [Predicate; 9] = [
-    Predicate::Cooked,
-    Predicate::Burnt,
-    Predicate::Frozen,
-    Predicate::Soaked,
-    Predicate::Open,
-    Predicate::Dusty,
-    Predicate::Stained,
-    Predicate::Sliced,
-    Predicate::ToggledOn,
-];
-
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SavedObject {
@@ -97,7 +84,7 @@ impl Instance {
                     joints: (0..o.links.len())
                         .map(|k| w.joint_position(id, k))
                         .collect(),
-                    states: STATES
+                    states: Predicate::UNARY_STATES
                         .iter()
                         .filter(|&&p| w.state(id, p))
                         .map(|p| p.name().to_string())
@@ -170,7 +157,7 @@ impl SavedInstance {
             {
                 world.set_joint_position(id, k, q);
             }
-            for p in STATES {
+            for p in Predicate::UNARY_STATES {
                 let on = saved.states.iter().any(|s| s == p.name());
                 if world.state(id, p) != on {
                     world

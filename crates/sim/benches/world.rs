@@ -25,17 +25,7 @@ fn settled(substeps: Substeps) -> World {
 fn all_predicates(world: &World, objects: &[ObjectId]) -> usize {
     let mut true_count = 0;
     for &a in objects {
-        for p in [
-            Predicate::Cooked,
-            Predicate::Burnt,
-            Predicate::Frozen,
-            Predicate::Soaked,
-            Predicate::Open,
-            Predicate::Dusty,
-            Predicate::Stained,
-            Predicate::Sliced,
-            Predicate::ToggledOn,
-        ] {
+        for p in Predicate::UNARY_STATES {
             true_count += usize::from(world.state(a, p));
         }
         for &b in objects {

@@ -175,7 +175,7 @@ pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, Asset
     let mut kinds: Vec<&str> = CORE_ROOMS.to_vec();
     let named = NAMED_HOMES
         .iter()
-        .position(|(_, s)| *s == seed && NAMED_HOMES.iter().any(|(n, _)| *n == name));
+        .position(|&(n, s)| n == name && s == seed);
     for k in 0..3 {
         let pick = match named {
             Some(i) => EXTRA_ROOMS[(i + 2 * k) % EXTRA_ROOMS.len()],
@@ -465,7 +465,8 @@ fn in_the_middle(
                 (table.min[0] + table.max[0]) / 2.0,
                 (table.min[1] + table.max[1]) / 2.0,
             );
-            let off = size.y / 2.0 + 0.1;
+            // Beyond the 0.3 m kept around every middle piece, so the chair is accepted.
+            let off = size.y / 2.0 + 0.32;
             candidates.push(([cx, table.min[1] - off], 2));
             candidates.push(([cx, table.max[1] + off], 0));
             candidates.push(([table.min[0] - off, cy], 1));

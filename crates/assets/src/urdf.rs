@@ -304,6 +304,11 @@ fn link_parts(link: roxmltree::Node, dir: &Path, pose: Pose) -> Result<Vec<Part>
                 let (points, triangles) =
                     load_mesh(&dir.join(file.trim_start_matches("package://")))?;
                 let points: Vec<Vector> = points.into_iter().map(|p| p * scale).collect();
+                if !points.iter().all(|p| p.is_finite()) {
+                    return Err(format!(
+                        "mesh `{file}` scaled by {scale} has non-finite points"
+                    ));
+                }
                 if from_visual {
                     // No collision geometry: approximate the visual mesh by convex parts, keeping
                     // those with volume (thin meshes can yield flat ones).

@@ -32,8 +32,8 @@ pub struct SampleArgs {
 
 #[derive(clap::Args)]
 pub struct SampleAllArgs {
-    /// Seeds per (activity, covering home).
-    #[arg(long, default_value_t = 1)]
+    /// Seeds per (activity, covering home), 1 to 1000.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=1000))]
     seeds: u64,
     #[arg(long)]
     json: bool,

@@ -43,7 +43,9 @@ pub struct SavedObject {
     pub states: Vec<String>,
 }
 
-/// An instance as a file: enough to rebuild the same world without sampling again.
+/// An instance as a file: the home, the created objects, bindings, and every object's pose, joint
+/// positions and unary states — enough to rebuild a world where the same predicates hold
+/// (temperatures, particle layouts and velocities are not stored: states are re-set).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SavedInstance {
@@ -53,7 +55,7 @@ pub struct SavedInstance {
     pub created: Vec<Created>,
     /// The object name bound to each activity instance, in `:objects` order.
     pub bindings: Vec<String>,
-    /// Every object of the world but walls and floors, in world order.
+    /// Every object of the world but walls (floors included: they get dusty), in world order.
     pub objects: Vec<SavedObject>,
 }
 
@@ -74,7 +76,7 @@ impl Instance {
         let w = &self.world;
         let objects = w
             .objects()
-            .filter(|(_, o)| o.category != "wall.n.01" && o.category != "floor.n.01")
+            .filter(|(_, o)| o.category != "wall.n.01")
             .map(|(id, o)| {
                 let pose = w.pose(id);
                 SavedObject {

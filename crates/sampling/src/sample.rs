@@ -39,7 +39,11 @@ pub enum SampleError {
 impl SampleError {
     /// Whether fresh randomness might succeed.
     fn retryable(&self) -> bool {
-        matches!(self, SampleError::Literal { .. })
+        // Sizes and poses are drawn afresh on each attempt, so either may come out differently.
+        matches!(
+            self,
+            SampleError::Literal { .. } | SampleError::Infeasible { .. }
+        )
     }
 }
 
@@ -267,6 +271,9 @@ fn attempt_once(
             && l.atom.object.is_none()
         {
             let object = bindings[l.atom.subject.0 as usize];
+            if world.state(object, l.atom.predicate) == l.positive {
+                continue; // already so: `(not (open x))` needs no joints, `(not (frozen x))` no cooling
+            }
             world
                 .set_state(object, l.atom.predicate, l.positive)
                 .map_err(|e| SampleError::Literal {
@@ -414,8 +421,8 @@ pub const FEASIBILITY_OPTIONS: usize = 64;
 
 /// Checks that some goal option can be reached in this home: every object in a positive
 /// `ontop`, `inside` or `under` literal of the option fits where it is asked to go — inside a
-/// container whose box can hold its box (in some orientation), on a support at least as wide as
-/// its narrower side, under something taller than it. Other objects in the way do not count (the
+/// container whose box can hold its box (in some orientation), on a support whose widest side is at
+/// least its narrowest, under something whose largest side is at least its smallest. Other objects in the way do not count (the
 /// agent can move them). Options are tried smallest first; the error reports why the first fails.
 pub fn goal_feasible(activity: &Activity, instance: &Instance) -> Result<(), SampleError> {
     let goal = behavior_bddl::GroundGoal::new(activity);

@@ -151,3 +151,25 @@ fn an_unreachable_goal_is_reported_as_infeasible() {
         Ok(_) => panic!("an impossible goal was accepted"),
     }
 }
+
+#[test]
+fn a_dusty_floor_survives_saving_and_loading() {
+    let (data, knowledge) = setup();
+    let library = Library::new(&knowledge.taxonomy);
+    let activity = activity(&data, &knowledge, "cleaning_floors");
+    let home = covering_home(&activity, &library, &knowledge);
+    let instance = instantiate(&activity, &home, 2, &library, &knowledge.taxonomy)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let saved = instance.save();
+    assert!(
+        saved
+            .objects
+            .iter()
+            .any(|o| o.name.starts_with("floor_") && !o.states.is_empty())
+    );
+    let loaded = SavedInstance::from_json(&saved.to_json())
+        .unwrap()
+        .load(&activity, &library)
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(all_init_literals_hold(&activity, &loaded));
+}

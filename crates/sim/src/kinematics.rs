@@ -17,13 +17,17 @@
 //! - `nextto(a, b)`: the gap between their boxes is at most a sixth of the mean of their summed
 //!   extents, and a horizontal ray from the centre of one (16 directions, 1 m) hits the other.
 //! - `onfloor(a, floor)`: the room at the centre of `a`'s box is the floor's room, and `a` touches
-//!   the floor or its bottom is within 10 cm of it (iGibson requires contact, which makes "the
-//!   soap on the towel on the floor" — both literals in `washing_floor` — impossible).
+//!   the floor, or its bottom is within 10 cm of it with the floor the first fixed object below
+//!   (iGibson requires contact, which makes "the soap on the towel on the floor" — both literals
+//!   in `washing_floor` — impossible; a bottom drawer or shelf board still does not count).
 //! - `inroom(a, type)`: the room at the centre of `a`'s box has that type.
 //!
 //! A ray "hits" an object when it meets any of its colliders, whatever lies between (iGibson
 //! collects the first 10 objects along each ray, which comes to the same in household scenes), so
 //! a predicate depends on its two objects only.
+//!
+//! A sliced object relates as its halves do: both halves must satisfy a predicate it is the
+//! subject of, either half one it is the object of.
 //!
 //! Values are memoized per pair and kept until either object moves: after a step, an object
 //! whose body (or a link's) is awake counts as moved, and so does one that is teleported. A
@@ -48,23 +52,47 @@ pub const HORIZONTAL_DIRECTIONS: usize = 16;
 
 impl World {
     pub fn touching(&self, a: ObjectId, b: ObjectId) -> bool {
-        self.cached(Predicate::Touching, a, b, || self.compute_touching(a, b))
+        self.relate(Predicate::Touching, a, b)
     }
 
     pub fn ontop(&self, a: ObjectId, b: ObjectId) -> bool {
-        self.cached(Predicate::OnTop, a, b, || self.compute_ontop(a, b))
+        self.relate(Predicate::OnTop, a, b)
     }
 
     pub fn under(&self, a: ObjectId, b: ObjectId) -> bool {
-        self.cached(Predicate::Under, a, b, || self.compute_under(a, b))
+        self.relate(Predicate::Under, a, b)
     }
 
     pub fn inside(&self, a: ObjectId, b: ObjectId) -> bool {
-        self.cached(Predicate::Inside, a, b, || self.compute_inside(a, b))
+        self.relate(Predicate::Inside, a, b)
     }
 
     pub fn nextto(&self, a: ObjectId, b: ObjectId) -> bool {
-        self.cached(Predicate::NextTo, a, b, || self.compute_nextto(a, b))
+        self.relate(Predicate::NextTo, a, b)
+    }
+
+    /// A binary predicate. A sliced object relates as its halves do: both halves must relate as
+    /// the subject, either half will do as the object (an apple sliced on a plate is still on it).
+    fn relate(&self, predicate: Predicate, a: ObjectId, b: ObjectId) -> bool {
+        if let Some(halves) = self.replaced_by(a) {
+            return halves.iter().all(|&h| self.relate(predicate, h, b));
+        }
+        if let Some(halves) = self.replaced_by(b) {
+            return halves.iter().any(|&h| self.relate(predicate, a, h));
+        }
+        self.cached(predicate, a, b, || match predicate {
+            Predicate::OnTop => self.compute_ontop(a, b),
+            Predicate::Inside => self.compute_inside(a, b),
+            Predicate::Under => self.compute_under(a, b),
+            Predicate::NextTo => self.compute_nextto(a, b),
+            _ => self.compute_touching(a, b),
+        })
+    }
+
+    /// The halves that replaced a sliced object.
+    fn replaced_by(&self, id: ObjectId) -> Option<[ObjectId; 2]> {
+        let s = self.object_state(id);
+        if s.sliced { s.halves } else { None }
     }
 
     /// A memoized predicate: valid while neither object has moved (see [`World::motion`]).
@@ -185,11 +213,50 @@ impl World {
     }
 
     pub fn onfloor(&self, a: ObjectId, floor: ObjectId) -> bool {
+        if let Some(halves) = self.replaced_by(a) {
+            return halves.iter().all(|&h| self.onfloor(h, floor));
+        }
+        if a == floor {
+            return false;
+        }
         let own = self.aabb(a);
         let c = own.center();
         let room_floor = self.room_at(c.x, c.y).and_then(|r| r.floor);
+        if room_floor != Some(floor) {
+            return false;
+        }
+        if self.touching(a, floor) {
+            return true;
+        }
+        // Lying on something thin on the floor (a mat, a towel), not in a bottom drawer or on a
+        // shelf's lowest board: low enough, with the floor the first fixed thing below.
         let low = own.mins.z - self.aabb(floor).maxs.z <= ONFLOOR_HEIGHT;
-        room_floor == Some(floor) && (self.touching(a, floor) || (low && a != floor))
+        low && self.first_fixed_below(a, Vector::new(c.x, c.y, own.mins.z + 0.001)) == Some(floor)
+    }
+
+    /// The nearest fixed object (furniture, floor) straight below a point, other than `except`.
+    fn first_fixed_below(&self, except: ObjectId, from: Vector) -> Option<ObjectId> {
+        let ray = Ray::new(from, -Vector::Z);
+        let mut best: Option<(f32, ObjectId)> = None;
+        for (id, object) in self.objects() {
+            if id == except || !object.fixed || !self.present(id) {
+                continue;
+            }
+            for &c in &object.colliders {
+                let c = &self.physics.colliders[c];
+                if let Some(t) = c.shape().cast_ray(c.position(), &ray, 10.0, true)
+                    && best.is_none_or(|(bt, _)| t < bt)
+                {
+                    best = Some((t, id));
+                }
+            }
+        }
+        best.map(|(_, id)| id)
+    }
+
+    /// Whether an object is in the world: not replaced by its halves.
+    pub fn present(&self, id: ObjectId) -> bool {
+        !self.object_state(id).sliced
     }
 
     /// The type of the room at the centre of the object's box.
@@ -202,6 +269,9 @@ impl World {
     /// colliders, so what lies between does not matter and the result needs no query structure
     /// (it is right even just after a teleport).
     pub fn ray_hits(&self, target: ObjectId, origin: Vector, dir: Vector, range: f32) -> bool {
+        if !self.present(target) {
+            return false;
+        }
         let ray = Ray::new(origin, dir);
         self.object(target).colliders.iter().any(|&c| {
             let c = &self.physics.colliders[c];

@@ -184,6 +184,9 @@ impl World {
         let ray = Ray::new(Vector::new(x, y, z), -Vector::Z);
         let mut best: Option<(f32, f32)> = None;
         for &id in among {
+            if !self.present(id) {
+                continue;
+            }
             for &c in &self.object(id).colliders {
                 let c = &self.physics.colliders[c];
                 if !c.is_enabled() {
@@ -229,7 +232,7 @@ impl World {
             })
             .collect();
         for (id, other) in self.objects() {
-            if id == object {
+            if id == object || !self.present(id) {
                 continue;
             }
             for &oc in &other.colliders {

@@ -411,7 +411,19 @@ impl World {
             return Err(bad("friction and damping must be non-negative numbers"));
         }
         if !pose_is_finite(&spec.pose) {
-            return Err(bad("its pose is not finite"));
+            return Err(bad(
+                "its pose is not finite or its rotation not a unit quaternion",
+            ));
+        }
+        if !spec.points.iter().all(|(_, p)| p.is_finite()) {
+            return Err(bad("a named point is not finite"));
+        }
+        if let Some(halves) = &spec.halves
+            && halves
+                .iter()
+                .any(|h| h.is_empty() || colliders_of(h, 1.0, 0.5, ObjectId(0)).is_none())
+        {
+            return Err(bad("its halves must each have valid parts"));
         }
         let id = ObjectId(self.objects.len() as u32);
         let body = if spec.fixed {
@@ -715,8 +727,11 @@ impl World {
     }
 }
 
+/// Finite, with a rotation that is a unit quaternion up to rounding (a zero one would become NaN).
 fn pose_is_finite(pose: &Pose) -> bool {
-    pose.translation.is_finite() && pose.rotation.is_finite()
+    pose.translation.is_finite()
+        && pose.rotation.is_finite()
+        && (pose.rotation.length() - 1.0).abs() < 1e-3
 }
 
 /// Colliders for parts, tagged with the object's id; `None` if a part is malformed.

@@ -152,3 +152,33 @@ fn ontop_memo_survives_sleep_and_is_invalidated_by_motion() {
     );
     assert!(world.touching(apple, world.object_named("floor_kitchen").unwrap()));
 }
+
+#[test]
+fn onfloor_includes_lying_on_a_mat_but_not_sitting_in_a_low_bin() {
+    let mut world = World::default();
+    let (kitchen, _) = two_room_floor(&mut world);
+    let mat = world
+        .add(
+            behavior_sim::ObjectSpec::new(
+                "mat_1",
+                "rug.n.01",
+                vec![behavior_sim::Part::new(cuboid(0.4, 0.3, 0.01))],
+            )
+            .at(v(-2.0, 2.0, 0.02)),
+        )
+        .unwrap();
+    let on_mat = apple(&mut world, "apple_1", v(-2.0, 2.0, 0.2));
+    let bin = open_box(&mut world, -1.0, -2.0);
+    let in_bin = apple(&mut world, "apple_2", v(-1.0, -2.0, 0.3));
+    settle(&mut world, 2.0);
+    assert!(world.ontop(on_mat, mat) && !world.touching(on_mat, kitchen));
+    assert!(
+        world.onfloor(on_mat, kitchen),
+        "lying on a mat on the floor"
+    );
+    assert!(world.inside(in_bin, bin));
+    assert!(
+        !world.onfloor(in_bin, kitchen),
+        "in a bin on the floor is not on the floor"
+    );
+}

@@ -121,8 +121,7 @@ fn windows(kind: &str) -> usize {
 }
 
 fn uniform(rng: &mut ChaCha8Rng, range: [f32; 2]) -> f32 {
-    let unit = (rng.next_u32() >> 8) as f32 / (1u32 << 24) as f32;
-    range[0] + unit * (range[1] - range[0])
+    behavior_sim::placement::uniform(rng, range[0], range[1])
 }
 
 /// An axis-aligned footprint on the floor.

@@ -69,9 +69,8 @@ impl<'t> Library<'t> {
     /// A size (uniform in the archetype's range) and a variant for a synset.
     pub fn sample(&self, synset: &str, rng: &mut ChaCha8Rng) -> Result<(Vector, u32), AssetError> {
         let archetype = self.resolve(synset)?;
-        let mut unit = || (rng.next_u32() >> 8) as f32 / (1u32 << 24) as f32;
         let size = Vector::from_array(std::array::from_fn(|k| {
-            archetype.min[k] + unit() * (archetype.max[k] - archetype.min[k])
+            behavior_sim::placement::uniform(rng, archetype.min[k], archetype.max[k])
         }));
         Ok((size, rng.next_u32() % archetype.shape.variants()))
     }

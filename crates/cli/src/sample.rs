@@ -62,12 +62,7 @@ pub fn sample(args: SampleArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let library = Library::new(&knowledge.taxonomy);
     let (activity, _) = knowledge.load(&data.problem_source(&args.activity)?)?;
     let scene = match &args.scene {
-        Some(name) => match NAMED_HOMES.iter().find(|(n, _)| n == name) {
-            Some((n, s)) => generate(n, *s, &library)?,
-            None => Scene::from_json(
-                &std::fs::read_to_string(name).with_context(|| format!("cannot read {name}"))?,
-            )?,
-        },
+        Some(name) => crate::scene::load_scene(name, &library)?,
         None => {
             let needs = requirements(&activity);
             named_homes(&library)?

@@ -119,7 +119,7 @@ pub fn run(command: SceneCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
 }
 
 /// A named home, or a scene file.
-fn load_scene(name: &str, library: &Library) -> Result<Scene> {
+pub(crate) fn load_scene(name: &str, library: &Library) -> Result<Scene> {
     if let Some((n, seed)) = NAMED_HOMES.iter().find(|(n, _)| *n == name) {
         return Ok(generate(n, *seed, library)?);
     }

@@ -53,7 +53,9 @@ pub struct PlacementError {
     pub reason: String,
 }
 
-fn uniform(rng: &mut ChaCha8Rng, lo: f32, hi: f32) -> f32 {
+/// A uniform draw in `[lo, hi)` from 24 random bits: the one way the project turns its seeded
+/// generator into floats.
+pub fn uniform(rng: &mut ChaCha8Rng, lo: f32, hi: f32) -> f32 {
     let unit = (rng.next_u32() >> 8) as f32 / (1u32 << 24) as f32;
     lo + (hi - lo) * unit
 }

@@ -4,6 +4,9 @@
 //! the angle about the axis for a revolute joint, the displacement along it for a prismatic one.
 //! An object is open when any joint is beyond 5 % of its range from closed (iGibson's
 //! `_JOINT_THRESHOLD_BY_TYPE`).
+//!
+//! Link indices are positions in [`crate::world::Object::links`]; like slice indices, an index
+//! out of range is a programming error and panics.
 
 use crate::states::StateError;
 use crate::world::{JointKind, ObjectId, World};

@@ -66,6 +66,46 @@ impl<'t> Library<'t> {
         self.instance(synset, name, size, variant)
     }
 
+    /// An archetype for a new object of `synset`, drawn uniformly among its own and those of the
+    /// synsets below it that are alike (movable or fixed as its own), so `food.n.02` may come as an
+    /// apple or a loaf.
+    pub fn choose(
+        &self,
+        synset: &str,
+        rng: &mut ChaCha8Rng,
+    ) -> Result<&'static Archetype, AssetError> {
+        let first = self.resolve(synset)?;
+        let mut candidates: Vec<&'static Archetype> =
+            self.by_synset.get(synset).copied().into_iter().collect();
+        if let Some(id) = self.taxonomy.get(synset) {
+            let below: Vec<&'static Archetype> = self
+                .taxonomy
+                .descendants(id)
+                .into_iter()
+                .filter_map(|d| self.by_synset.get(self.taxonomy.name(d)).copied())
+                .filter(|a| a.shape.is_fixed() == first.shape.is_fixed())
+                .collect();
+            candidates.extend(below);
+        }
+        // Catalog order, so the draw depends only on the generator.
+        candidates.sort_by_key(|a| a.synset);
+        candidates.dedup_by_key(|a| a.synset);
+        Ok(candidates[rng.next_u32() as usize % candidates.len()])
+    }
+
+    /// An archetype (see [`Library::choose`]), a size uniform in its range and a variant.
+    pub fn sample_any(
+        &self,
+        synset: &str,
+        rng: &mut ChaCha8Rng,
+    ) -> Result<(&'static Archetype, Vector, u32), AssetError> {
+        let archetype = self.choose(synset, rng)?;
+        let size = Vector::from_array(std::array::from_fn(|k| {
+            behavior_sim::placement::uniform(rng, archetype.min[k], archetype.max[k])
+        }));
+        Ok((archetype, size, rng.next_u32() % archetype.shape.variants()))
+    }
+
     /// A size (uniform in the archetype's range) and a variant for a synset.
     pub fn sample(&self, synset: &str, rng: &mut ChaCha8Rng) -> Result<(Vector, u32), AssetError> {
         let archetype = self.resolve(synset)?;
@@ -83,7 +123,18 @@ impl<'t> Library<'t> {
         size: Vector,
         variant: u32,
     ) -> Result<ObjectSpec, AssetError> {
-        let archetype = self.resolve(synset)?;
+        Ok(self.instance_of(self.resolve(synset)?, synset, name, size, variant))
+    }
+
+    /// An instance of `synset` built from a given archetype (which may be a descendant's).
+    pub fn instance_of(
+        &self,
+        archetype: &Archetype,
+        synset: &str,
+        name: &str,
+        size: Vector,
+        variant: u32,
+    ) -> ObjectSpec {
         let (mut spec, layout) = archetype.build(name, size, variant);
         spec.category = synset.to_string();
         spec.abilities_from(self.taxonomy);
@@ -91,7 +142,7 @@ impl<'t> Library<'t> {
             spec.halves = Some(archetype.halves(size, variant));
         }
         equip(&mut spec, archetype, &layout);
-        Ok(spec)
+        spec
     }
 }
 

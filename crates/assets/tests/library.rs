@@ -340,3 +340,28 @@ fn resting_orientations_are_stable_on_a_floor() {
     }
     assert!(checked > 150, "{checked}");
 }
+
+#[test]
+fn a_general_synset_comes_as_any_of_its_kinds() {
+    let taxonomy = taxonomy();
+    let library = Library::new(&taxonomy);
+    let mut rng = ChaCha8Rng::seed_from_u64(11);
+    let drawn: BTreeSet<&str> = (0..40)
+        .map(|_| library.choose("food.n.02", &mut rng).unwrap().synset)
+        .collect();
+    assert!(drawn.len() >= 5, "{drawn:?}");
+    // Never a fixed piece of furniture for a movable kind (a vessel is not a bathtub).
+    for _ in 0..40 {
+        assert!(
+            !library
+                .choose("vessel.n.03", &mut rng)
+                .unwrap()
+                .shape
+                .is_fixed()
+        );
+    }
+    // A synset without kinds below it is always itself.
+    assert!(
+        (0..10).all(|_| library.choose("apple.n.01", &mut rng).unwrap().synset == "apple.n.01")
+    );
+}

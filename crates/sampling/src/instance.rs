@@ -14,6 +14,8 @@ use serde::{Deserialize, Serialize};
 pub struct Created {
     pub instance: String,
     pub synset: String,
+    /// The archetype it was built from: its synset's or a descendant's.
+    pub archetype: String,
     pub size: [f32; 3],
     pub variant: u32,
 }
@@ -134,12 +136,9 @@ impl SavedInstance {
         let built = self.scene.build(library)?;
         let mut world = built.world;
         for c in &self.created {
-            let spec = library.instance(
-                &c.synset,
-                &c.instance,
-                Vector::from_array(c.size),
-                c.variant,
-            )?;
+            let archetype = library.resolve(&c.archetype)?;
+            let size = Vector::from_array(c.size);
+            let spec = library.instance_of(archetype, &c.synset, &c.instance, size, c.variant);
             world.add(spec).map_err(|e| bad(e.to_string()))?;
         }
         for saved in &self.objects {

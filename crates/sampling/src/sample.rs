@@ -162,7 +162,7 @@ fn attempt_once(
         };
         let instance = &activity.instances[i];
         let synset = activity.category(instance.category).name.clone();
-        let (mut size, variant) = library.sample(&synset, rng)?;
+        let (archetype, mut size, variant) = library.sample_any(&synset, rng)?;
         // How many objects go inside or on top of this one: a container that must hold several
         // is made as large as its kind comes.
         let holds = |j: usize| {
@@ -175,7 +175,7 @@ fn attempt_once(
                 .count()
         };
         if holds(i) >= 3 {
-            size = Vector::from_array(library.resolve(&synset)?.max);
+            size = Vector::from_array(archetype.max);
         }
         // Objects on or in another are shrunk, if need be, so that all it holds fit side by side.
         for l in demands.iter().filter(|l| l.atom.subject.0 as usize == i) {
@@ -193,7 +193,7 @@ fn attempt_once(
             };
             size = size.min(cap);
         }
-        let mut spec = library.instance(&synset, &instance.name, size, variant)?;
+        let mut spec = library.instance_of(archetype, &synset, &instance.name, size, variant);
         spec.pose = Pose::from_translation(Vector::new(1000.0 + 5.0 * i as f32, 1000.0, 0.0));
         spec.fixed = false;
         let id = world.add(spec).map_err(|e| SampleError::Literal {
@@ -204,6 +204,7 @@ fn attempt_once(
         created.push(Created {
             instance: instance.name.clone(),
             synset,
+            archetype: archetype.synset.to_string(),
             size: size.to_array(),
             variant,
         });

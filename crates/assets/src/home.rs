@@ -9,6 +9,13 @@
 //! overlaps and out of the doorways' way; tables stand in the middle with chairs beside them, and
 //! the microwave stands on a countertop. An item that does not fit is left out (coverage
 //! reports what a home lacks). [`NAMED_HOMES`] are fifteen fixed seeds forming the default set.
+//!
+//! A dining room, when there is one, adjoins the living room with no wall between them: an open
+//! plan, as in many homes and in iGibson's scans, where the rooms are told apart by the floor map
+//! only. One of the living room's tables stands at that opening, its centre just inside the living
+//! room and its far end over the dining room's floor. This is what makes
+//! `collect_misplaced_items` possible as written: its shoe lies under a living-room table and on
+//! the dining room's floor.
 
 use crate::library::{AssetError, Library};
 use crate::scene::{ObjectPlan, RoomPlan, Scene, WALL_HEIGHT, WallPlan};
@@ -187,6 +194,19 @@ pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, Asset
         let j = rng.next_u32() as usize % (i + 1);
         kinds.swap(i, j);
     }
+    // The dining room goes beside the living room, on the same side of the corridor.
+    if let Some(d) = kinds.iter().position(|&k| k == "dining_room") {
+        kinds.remove(d);
+        let l = kinds
+            .iter()
+            .position(|&k| k == "living_room")
+            .expect("a core room");
+        if l + 2 <= kinds.len() {
+            kinds.insert(l + 2, "dining_room");
+        } else {
+            kinds.insert(l - 1, "dining_room");
+        }
+    }
     // Alternate rooms north and south of the corridor, west to east.
     let mut rooms: Vec<RoomPlan> = Vec::new();
     let mut cursor = [0.0f32, 0.0f32];
@@ -242,8 +262,9 @@ pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, Asset
         max: [length, CORRIDOR_WIDTH],
     });
     let corridor = rooms.len() - 1;
+    let opening = open_plan(&rooms);
 
-    let walls = build_walls(&rooms, &doorways, corridor);
+    let walls = build_walls(&rooms, &doorways, corridor, opening.as_ref());
 
     // Furniture, doors and windows.
     let mut objects: Vec<ObjectPlan> = Vec::new();
@@ -255,6 +276,25 @@ pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, Asset
         format!("{lemma}_{}", *n - 1)
     };
     let half = WALL_THICKNESS / 2.0;
+    // The table at the opening comes first: both rooms then furnish around it.
+    let mut shared_table: Option<Rect> = None;
+    if let Some(open) = &opening {
+        let (size, variant) = library.sample("table.n.02", &mut rng)?;
+        if let Some((position, rect)) = at_the_opening(open, &rooms, &doorways, size) {
+            shared_table = Some(rect);
+            let name = next_name("table.n.02");
+            objects.push(ObjectPlan {
+                name,
+                synset: "table.n.02".into(),
+                room: open.living,
+                position,
+                yaw_quarter_turns: 0,
+                size: size.to_array(),
+                variant,
+                joints: Vec::new(),
+            });
+        }
+    }
     for index in 0..rooms.len() {
         let room = &rooms[index];
         let inner = Rect {
@@ -266,6 +306,15 @@ pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, Asset
             inner,
             taken: Vec::new(),
         };
+        let mut tables_to_skip = 0;
+        if let (Some(open), Some(rect)) = (&opening, shared_table) {
+            if index == open.living || index == open.dining {
+                f.taken.push(rect);
+            }
+            if index == open.living {
+                tables_to_skip = 1; // it is one of the living room's tables
+            }
+        }
         // Keep every doorway of this room clear, on both sides of its wall.
         for &(r, x, y) in &doorways {
             if r == index || index == corridor {
@@ -333,6 +382,10 @@ pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, Asset
             });
         }
         for synset in furniture(&room.kind) {
+            if *synset == "table.n.02" && tables_to_skip > 0 {
+                tables_to_skip -= 1;
+                continue;
+            }
             let (size, variant) = library.sample(synset, &mut rng)?;
             let plan = match *synset {
                 "microwave.n.02" => on_countertop(&objects, index, size),
@@ -496,11 +549,85 @@ fn in_the_middle(
     None
 }
 
-/// Walls along every room edge, merged where rooms meet, with the doorways cut out.
+/// Where the living room opens onto the dining room: the rooms and their shared edge.
+struct Opening {
+    living: usize,
+    dining: usize,
+    /// The x of the shared edge.
+    x: f32,
+    /// The shared span along y.
+    y: [f32; 2],
+    /// +1 when the dining room lies east of the living room, −1 when west.
+    toward_dining: f32,
+}
+
+/// The opening between the living room and a dining room beside it, if the home has both.
+fn open_plan(rooms: &[RoomPlan]) -> Option<Opening> {
+    let living = rooms.iter().position(|r| r.kind == "living_room")?;
+    let dining = rooms.iter().position(|r| r.kind == "dining_room")?;
+    let (l, d) = (&rooms[living], &rooms[dining]);
+    let (x, toward_dining) = if (l.max[0] - d.min[0]).abs() < 1e-4 {
+        (l.max[0], 1.0)
+    } else if (l.min[0] - d.max[0]).abs() < 1e-4 {
+        (l.min[0], -1.0)
+    } else {
+        return None;
+    };
+    let y = [l.min[1].max(d.min[1]), l.max[1].min(d.max[1])];
+    (y[1] - y[0] > 1.0).then_some(Opening {
+        living,
+        dining,
+        x,
+        y,
+        toward_dining,
+    })
+}
+
+/// A table across the opening, long side along x, its centre 0.15 m inside the living room, clear
+/// of both rooms' doorways and the walls; its position and footprint.
+fn at_the_opening(
+    open: &Opening,
+    rooms: &[RoomPlan],
+    doorways: &[(usize, f32, f32)],
+    size: rapier3d::math::Vector,
+) -> Option<([f32; 3], Rect)> {
+    let x = open.x - open.toward_dining * 0.15;
+    let half = WALL_THICKNESS / 2.0 + 0.3;
+    let clear: Vec<Rect> = doorways
+        .iter()
+        .filter(|&&(r, _, _)| r == open.living || r == open.dining)
+        .map(|&(_, dx, dy)| Rect {
+            min: [dx - DOORWAY / 2.0 - 0.1, dy - DOOR_CLEARANCE],
+            max: [dx + DOORWAY / 2.0 + 0.1, dy + DOOR_CLEARANCE],
+        })
+        .collect();
+    let (l, d) = (&rooms[open.living], &rooms[open.dining]);
+    let (west, east) = (l.min[0].min(d.min[0]), l.max[0].max(d.max[0]));
+    let mid = (open.y[0] + open.y[1]) / 2.0;
+    // From the middle of the opening outwards, in 10 cm steps.
+    (0..40)
+        .map(|k| mid + 0.1 * (k / 2) as f32 * if k % 2 == 0 { 1.0 } else { -1.0 })
+        .map(|y| footprint(x, y, size.x, size.y, 0))
+        .find(|rect| {
+            rect.min[1] >= open.y[0] + half
+                && rect.max[1] <= open.y[1] - half
+                && clear.iter().all(|c| !rect.overlaps(c, GAP))
+                && rect.min[0] > west + half
+                && rect.max[0] < east - half
+        })
+        .map(|rect| {
+            let y = (rect.min[1] + rect.max[1]) / 2.0;
+            ([x, y, 0.0], rect)
+        })
+}
+
+/// Walls along every room edge, merged where rooms meet, with the doorways and the open plan's
+/// opening cut out.
 fn build_walls(
     rooms: &[RoomPlan],
     doorways: &[(usize, f32, f32)],
     corridor: usize,
+    opening: Option<&Opening>,
 ) -> Vec<WallPlan> {
     // Lines keyed by (vertical?, coordinate in mm) → intervals along them.
     let mut lines: BTreeMap<(bool, i64), Vec<[f32; 2]>> = BTreeMap::new();
@@ -537,6 +664,9 @@ fn build_walls(
             CORRIDOR_WIDTH / 2.0 + DOORWAY / 2.0,
         ],
     ));
+    if let Some(open) = opening {
+        gaps.push((true, key(open.x), open.y));
+    }
     let half = WALL_THICKNESS / 2.0;
     let mut walls = Vec::new();
     for ((vertical, at), mut spans) in lines {

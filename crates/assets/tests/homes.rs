@@ -116,3 +116,56 @@ fn every_official_activity_is_covered_by_at_least_three_named_homes() {
     }
     assert!(short.is_empty(), "{}", short.join("\n"));
 }
+
+#[test]
+fn a_dining_room_opens_onto_the_living_room_with_a_table_across() {
+    let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
+    let taxonomy = data.taxonomy().unwrap();
+    let library = Library::new(&taxonomy);
+    let mut open = 0;
+    for (name, seed) in NAMED_HOMES {
+        let scene = generate(name, seed, &library).unwrap();
+        let room = |kind: &str| scene.rooms.iter().position(|r| r.kind == kind);
+        let (Some(living), Some(dining)) = (room("living_room"), room("dining_room")) else {
+            continue;
+        };
+        let (l, d) = (&scene.rooms[living], &scene.rooms[dining]);
+        let x = if l.max[0] == d.min[0] {
+            l.max[0]
+        } else {
+            d.max[0]
+        };
+        assert!(
+            l.min[0] == x || l.max[0] == x,
+            "{name}: the rooms are not side by side"
+        );
+        // Walk along the shared edge: no wall stands on it.
+        let (y0, y1) = (l.min[1].max(d.min[1]), l.max[1].min(d.max[1]));
+        for k in 1..20 {
+            let y = y0 + (y1 - y0) * k as f32 / 20.0;
+            assert!(
+                !scene
+                    .walls
+                    .iter()
+                    .any(|w| { w.min[0] <= x && x <= w.max[0] && w.min[1] <= y && y <= w.max[1] }),
+                "{name}: a wall stands between the living and dining rooms at y = {y}"
+            );
+        }
+        // A living-room table reaches at least 30 cm over the dining room's floor.
+        let built = scene.build(&library).unwrap();
+        let across = scene.objects.iter().zip(&built.objects).any(|(o, &id)| {
+            let b = built.world.aabb(id);
+            let over = (b.maxs.x.min(d.max[0]) - b.mins.x.max(d.min[0])).max(0.0);
+            o.room == living && o.synset == "table.n.02" && over >= 0.3
+        });
+        assert!(
+            across,
+            "{name}: no living-room table stands across the opening"
+        );
+        open += 1;
+    }
+    assert!(
+        open >= 3,
+        "only {open} named homes have an open dining room"
+    );
+}

@@ -1,7 +1,7 @@
 //! Sampling one instance of an activity in a home, and checking that its goal can be reached.
 
 use crate::instance::{Created, Instance};
-use behavior_assets::{AssetError, Library, Scene, SceneError};
+use behavior_assets::{AssetError, BuiltScene, Library, Scene, SceneError};
 use behavior_bddl::activity::{Activity, InitLiteral, InstanceId, Literal};
 use behavior_bddl::taxonomy::FLOOR_SYNSET;
 use behavior_bddl::{Predicate, PredicateOracle, Taxonomy};
@@ -90,22 +90,8 @@ fn attempt_once(
     rng: &mut ChaCha8Rng,
 ) -> Result<Attempt, SampleError> {
     let built = scene.build(library)?;
-    let mut world = built.world;
     let n = activity.instances.len();
     let mut bindings: Vec<Option<ObjectId>> = vec![None; n];
-    bind_furniture(
-        activity,
-        scene,
-        &built.objects,
-        &built.floors,
-        taxonomy,
-        rng,
-        &mut bindings,
-    )?;
-    // Bound furniture and floors already stand; the rest is placed below.
-    let mut placed: Vec<bool> = bindings.iter().map(Option::is_some).collect();
-
-    let show = |l: Literal| activity.show_literal(l);
     let kinematic: Vec<Literal> = activity
         .init
         .iter()
@@ -125,6 +111,20 @@ fn attempt_once(
             _ => None,
         })
         .collect();
+    bind_furniture(
+        activity,
+        scene,
+        &built,
+        &kinematic,
+        library,
+        taxonomy,
+        rng,
+        &mut bindings,
+    )?;
+    let mut world = built.world;
+    // Bound furniture and floors already stand; the rest is placed below.
+    let mut placed: Vec<bool> = bindings.iter().map(Option::is_some).collect();
+    let show = |l: Literal| activity.show_literal(l);
 
     // Where the goal may want objects (every positive `inside`/`ontop` atom of the ground goal):
     // sizing takes these into account too, so that the goal stays reachable.
@@ -214,50 +214,45 @@ fn attempt_once(
         .map(|b| b.expect("every instance is bound"))
         .collect();
 
-    // Placement in dependency order: a literal is placed once its second object stands. An
-    // object with several placement literals is placed by `ontop`, `inside` or `under` when it
-    // can be (resting on a towel on the floor, under a table on the floor), by `onfloor` last.
+    // Placement in dependency order: an object is placed once everything it is to stand on, in,
+    // under or on the floor of stands, by all its placement literals at once (a soap on a towel on
+    // the floor; a shoe under a table and on the floor of the room that end of the table is in).
+    // It rests on what its first `ontop`, `inside` or `under` names, else on its floor.
     loop {
-        let mut progress = false;
-        for pass_onfloor in [false, true] {
-            for literal in &kinematic {
-                let (a, b) = (literal.atom.subject, literal.atom.object.expect("binary"));
-                let onfloor = literal.atom.predicate == Predicate::OnFloor;
-                if onfloor != pass_onfloor || placed[a.0 as usize] || !placed[b.0 as usize] {
-                    continue;
-                }
-                if onfloor
-                    && kinematic.iter().any(|o| {
-                        o.atom.subject == a
-                            && o.atom.predicate != Predicate::OnFloor
-                            && !placed[o.atom.object.expect("binary").0 as usize]
-                    })
-                {
-                    continue; // wait for its other support
-                }
-                let relation = match literal.atom.predicate {
-                    Predicate::OnTop => Relation::OnTop,
-                    Predicate::Inside => Relation::Inside,
-                    Predicate::Under => Relation::Under,
-                    _ => Relation::OnFloor,
-                };
-                let (object, target) = (bindings[a.0 as usize], bindings[b.0 as usize]);
-                world
-                    .place(object, relation, target, rng)
-                    .map_err(|e| SampleError::Literal {
-                        literal: show(*literal),
-                        reason: e.to_string(),
-                    })?;
-                placed[a.0 as usize] = true;
-                progress = true;
-            }
-            if progress {
-                break;
-            }
-        }
-        if !progress {
-            break;
-        }
+        let ready = (0..n).find(|&i| {
+            !placed[i]
+                && kinematic.iter().any(|l| l.atom.subject.0 as usize == i)
+                && kinematic.iter().all(|l| {
+                    l.atom.subject.0 as usize != i
+                        || placed[l.atom.object.expect("binary").0 as usize]
+                })
+        });
+        let Some(i) = ready else { break };
+        let mut literals: Vec<&Literal> = kinematic
+            .iter()
+            .filter(|l| l.atom.subject.0 as usize == i)
+            .collect();
+        literals.sort_by_key(|l| l.atom.predicate == Predicate::OnFloor);
+        let relations: Vec<(Relation, ObjectId)> = literals
+            .iter()
+            .map(|l| {
+                (
+                    relation_of(l.atom.predicate),
+                    bindings[l.atom.object.expect("binary").0 as usize],
+                )
+            })
+            .collect();
+        world
+            .place_jointly(bindings[i], &relations, rng)
+            .map_err(|e| SampleError::Literal {
+                literal: literals
+                    .iter()
+                    .map(|l| show(**l))
+                    .collect::<Vec<_>>()
+                    .join(" and "),
+                reason: e.to_string(),
+            })?;
+        placed[i] = true;
     }
     if let Some(i) = placed.iter().position(|p| !p) {
         return Err(SampleError::Literal {
@@ -334,12 +329,15 @@ pub fn first_unmet(
 
 /// Binds every instance with an `inroom` literal to a scene object (or room floor) of its synset
 /// or a descendant, in a room of the right type, by maximum matching per room type; ties are
-/// broken at random so seeds vary the choice.
+/// broken at random so seeds vary the choice. Only candidates that can host their own init
+/// literals take part (see [`hosts`]).
+#[allow(clippy::too_many_arguments)]
 fn bind_furniture(
     activity: &Activity,
     scene: &Scene,
-    scene_objects: &[ObjectId],
-    floors: &[ObjectId],
+    built: &BuiltScene,
+    kinematic: &[Literal],
+    library: &Library,
     taxonomy: &Taxonomy,
     rng: &mut ChaCha8Rng,
     bindings: &mut [Option<ObjectId>],
@@ -357,6 +355,60 @@ fn bind_furniture(
         })
         .collect();
     wanted.sort();
+    let fits = |i: InstanceId, synset: &str| {
+        let want = &activity.category(activity.instance(i).category).name;
+        match (taxonomy.get(synset), taxonomy.get(want)) {
+            (Some(have), Some(want)) => taxonomy.is_a(have, want),
+            _ => synset == want,
+        }
+    };
+    // Candidates of each instance: the room type's floors, or the objects of its kind standing in
+    // rooms of that type.
+    let mut candidates: Vec<Vec<ObjectId>> = vec![Vec::new(); activity.instances.len()];
+    for (i, room) in &wanted {
+        let list = &mut candidates[i.0 as usize];
+        for (k, r) in scene.rooms.iter().enumerate() {
+            if r.kind == *room && fits(*i, FLOOR_SYNSET) {
+                list.push(built.floors[k]);
+            }
+        }
+        for (k, o) in scene.objects.iter().enumerate() {
+            if scene.rooms[o.room].kind == *room && fits(*i, &o.synset) {
+                list.push(built.objects[k]);
+            }
+        }
+    }
+    let unmatched = |i: InstanceId, room: &str| SampleError::NoFurniture {
+        scene: scene.name.clone(),
+        instance: activity.instance(i).name.clone(),
+        synset: activity
+            .category(activity.instance(i).category)
+            .name
+            .clone(),
+        room: room.to_string(),
+    };
+    for (i, room) in &wanted {
+        if candidates[i.0 as usize].is_empty() {
+            return Err(unmatched(*i, room));
+        }
+    }
+    let hosting = hosts(activity, scene, kinematic, &candidates, library, rng)?;
+    for (i, _) in &wanted {
+        let (kept, why) = &hosting[i.0 as usize];
+        if kept.is_empty() {
+            return Err(SampleError::Literal {
+                literal: why.0.clone(),
+                reason: format!(
+                    "no {} of {} can take it: {}",
+                    activity.category(activity.instance(*i).category).name,
+                    scene.name,
+                    why.1
+                ),
+            });
+        }
+        candidates[i.0 as usize] = kept.clone();
+    }
+
     let mut rooms: Vec<String> = wanted.iter().map(|(_, r)| r.clone()).collect();
     rooms.sort();
     rooms.dedup();
@@ -366,41 +418,19 @@ fn bind_furniture(
             .filter(|(_, r)| *r == room)
             .map(|(i, _)| *i)
             .collect();
-        // Candidates: the room type's floors and the objects standing in rooms of that type.
-        let mut candidates: Vec<(ObjectId, String)> = Vec::new();
-        for (k, r) in scene.rooms.iter().enumerate() {
-            if r.kind == room {
-                candidates.push((floors[k], FLOOR_SYNSET.to_string()));
-            }
+        let mut columns: Vec<ObjectId> = instances
+            .iter()
+            .flat_map(|i| candidates[i.0 as usize].iter().copied())
+            .collect();
+        columns.sort();
+        columns.dedup();
+        if columns.len() < instances.len() {
+            return Err(unmatched(instances[columns.len()], &room));
         }
-        for (k, o) in scene.objects.iter().enumerate() {
-            if scene.rooms[o.room].kind == room {
-                candidates.push((scene_objects[k], o.synset.clone()));
-            }
-        }
-        let fits = |i: InstanceId, synset: &str| {
-            let want = &activity.category(activity.instance(i).category).name;
-            match (taxonomy.get(synset), taxonomy.get(want)) {
-                (Some(have), Some(want)) => taxonomy.is_a(have, want),
-                _ => synset == want,
-            }
-        };
-        let unmatched = |i: InstanceId| SampleError::NoFurniture {
-            scene: scene.name.clone(),
-            instance: activity.instance(i).name.clone(),
-            synset: activity
-                .category(activity.instance(i).category)
-                .name
-                .clone(),
-            room: room.clone(),
-        };
-        if candidates.len() < instances.len() {
-            return Err(unmatched(instances[candidates.len()]));
-        }
-        // Fitting pairs weigh 1000 plus a random tie-breaker; a full matching of fitting pairs
+        // Hosting pairs weigh 1000 plus a random tie-breaker; a full matching of such pairs
         // exists exactly when the best assignment scores at least 1000 per instance.
-        let weights = Matrix::from_fn(instances.len(), candidates.len(), |(r, c)| {
-            if fits(instances[r], &candidates[c].1) {
+        let weights = Matrix::from_fn(instances.len(), columns.len(), |(r, c)| {
+            if candidates[instances[r].0 as usize].contains(&columns[c]) {
                 1000 + i64::from(rng.next_u32() % 100)
             } else {
                 0
@@ -409,12 +439,164 @@ fn bind_furniture(
         let (_, assignment) = kuhn_munkres(&weights);
         for (r, &c) in assignment.iter().enumerate() {
             if weights[(r, c)] < 1000 {
-                return Err(unmatched(instances[r]));
+                return Err(unmatched(instances[r], &room));
             }
-            bindings[instances[r].0 as usize] = Some(candidates[c].0);
+            bindings[instances[r].0 as usize] = Some(columns[c]);
         }
     }
     Ok(())
+}
+
+/// A candidate kept, or the literal that rules candidates out and why (the last failure seen).
+type Hosting = (Vec<ObjectId>, (String, String));
+
+/// Which candidates can host their instance's init literals, as iGibson filters them before
+/// matching: for every object to be placed on, in or under the instance, a probe of that object's
+/// smallest size is placed there in a scratch copy of the home, together with its placements
+/// relative to other furniture (trying their candidates too). A candidate is kept if every probe
+/// finds a place. Instances without candidates keep their list empty with the reason.
+fn hosts(
+    activity: &Activity,
+    scene: &Scene,
+    kinematic: &[Literal],
+    candidates: &[Vec<ObjectId>],
+    library: &Library,
+    rng: &mut ChaCha8Rng,
+) -> Result<Vec<Hosting>, SampleError> {
+    let furniture = |i: InstanceId| !candidates[i.0 as usize].is_empty();
+    let mut scratch: Option<World> = None;
+    let mut probes: Vec<Option<(ObjectId, Pose)>> = vec![None; activity.instances.len()];
+    let mut out = Vec::with_capacity(candidates.len());
+    for (i, list) in candidates.iter().enumerate() {
+        let hosted: Vec<InstanceId> = kinematic
+            .iter()
+            .filter(|l| {
+                l.atom.object.is_some_and(|o| o.0 as usize == i) && !furniture(l.atom.subject)
+            })
+            .map(|l| l.atom.subject)
+            .collect();
+        if hosted.is_empty() {
+            out.push((list.clone(), (String::new(), String::new())));
+            continue;
+        }
+        let world = match &mut scratch {
+            Some(w) => w,
+            None => scratch.insert(scene.build(library)?.world),
+        };
+        let mut kept = Vec::new();
+        let mut why = (String::new(), String::new());
+        for &candidate in list {
+            let mut ok = true;
+            for &subject in &hosted {
+                let probe = match probes[subject.0 as usize] {
+                    Some(p) => p,
+                    None => {
+                        let p = add_probe(world, activity, subject, library)?;
+                        *probes[subject.0 as usize].insert(p)
+                    }
+                };
+                // Its placements relative to furniture: this candidate for `i`, every candidate
+                // (up to a few combinations) for the others.
+                let literals: Vec<&Literal> = kinematic
+                    .iter()
+                    .filter(|l| {
+                        l.atom.subject == subject && furniture(l.atom.object.expect("binary"))
+                    })
+                    .collect();
+                let mut options: Vec<Vec<(Relation, ObjectId)>> = vec![Vec::new()];
+                for l in &literals {
+                    let o = l.atom.object.expect("binary").0 as usize;
+                    let targets = if o == i {
+                        &[candidate][..]
+                    } else {
+                        &candidates[o][..]
+                    };
+                    options = options
+                        .iter()
+                        .flat_map(|prefix| {
+                            targets.iter().map(move |&t| {
+                                let mut v = prefix.clone();
+                                v.push((relation_of(l.atom.predicate), t));
+                                v
+                            })
+                        })
+                        .take(MAX_HOST_COMBINATIONS)
+                        .collect();
+                }
+                options
+                    .iter_mut()
+                    .for_each(|o| o.sort_by_key(|(r, _)| *r == Relation::OnFloor));
+                let mut last_error = None;
+                let placed = options.iter().any(|relations| {
+                    match world.place_jointly(probe.0, relations, rng) {
+                        Ok(_) => true,
+                        Err(e) => {
+                            last_error = Some(e.to_string());
+                            false
+                        }
+                    }
+                });
+                // Back to its parking spot, out of the next probe's way.
+                let _ = world.set_pose(probe.0, probe.1);
+                if !placed {
+                    why = (
+                        literals
+                            .iter()
+                            .map(|l| activity.show_literal(**l))
+                            .collect::<Vec<_>>()
+                            .join(" and "),
+                        last_error.unwrap_or_default(),
+                    );
+                    ok = false;
+                    break;
+                }
+            }
+            if ok {
+                kept.push(candidate);
+            }
+        }
+        out.push((kept, why));
+    }
+    Ok(out)
+}
+
+/// Joint placements tried per probe when its other furniture has several candidates.
+const MAX_HOST_COMBINATIONS: usize = 16;
+
+/// A probe for `subject`: its synset's archetype at the smallest size, parked far away.
+fn add_probe(
+    world: &mut World,
+    activity: &Activity,
+    subject: InstanceId,
+    library: &Library,
+) -> Result<(ObjectId, Pose), SampleError> {
+    let instance = activity.instance(subject);
+    let synset = &activity.category(instance.category).name;
+    let archetype = library.resolve(synset)?;
+    let mut spec = library.instance_of(
+        archetype,
+        synset,
+        &instance.name,
+        Vector::from_array(archetype.min),
+        0,
+    );
+    let park = Pose::from_translation(Vector::new(-1000.0 - 5.0 * subject.0 as f32, 1000.0, 0.0));
+    spec.pose = park;
+    spec.fixed = false;
+    let id = world.add(spec).map_err(|e| SampleError::Literal {
+        literal: instance.name.clone(),
+        reason: e.to_string(),
+    })?;
+    Ok((id, park))
+}
+
+fn relation_of(predicate: Predicate) -> Relation {
+    match predicate {
+        Predicate::OnTop => Relation::OnTop,
+        Predicate::Inside => Relation::Inside,
+        Predicate::Under => Relation::Under,
+        _ => Relation::OnFloor,
+    }
 }
 
 /// How many goal options (smallest first) [`goal_feasible`] tries before giving up.

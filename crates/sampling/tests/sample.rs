@@ -173,3 +173,92 @@ fn a_dusty_floor_survives_saving_and_loading() {
         .unwrap_or_else(|e| panic!("{e}"));
     assert!(all_init_literals_hold(&activity, &loaded));
 }
+
+/// The table a living room shares with its open dining room (see `behavior_assets::home`).
+fn table_across_the_opening(home: &Scene) -> String {
+    let dining = home
+        .rooms
+        .iter()
+        .find(|r| r.kind == "dining_room")
+        .expect("a dining room");
+    home.objects
+        .iter()
+        .find(|o| {
+            let reach = o.size[0] / 2.0;
+            home.rooms[o.room].kind == "living_room"
+                && o.synset == "table.n.02"
+                && o.position[0] + reach > dining.min[0]
+                && o.position[0] - reach < dining.max[0]
+        })
+        .expect("a table across the opening")
+        .name
+        .clone()
+}
+
+#[test]
+fn collect_misplaced_items_puts_the_shoe_under_the_living_room_table_on_the_dining_floor() {
+    // Its `:init` asks for the shoe under a living-room table and on the dining room's floor:
+    // only the table standing across the open plan's opening can host that, and candidate
+    // filtering binds it on every seed, at the first attempt.
+    let (data, knowledge) = setup();
+    let library = Library::new(&knowledge.taxonomy);
+    let activity = activity(&data, &knowledge, "collect_misplaced_items");
+    let needs = requirements(&activity);
+    let homes: Vec<Scene> = NAMED_HOMES
+        .iter()
+        .map(|(n, s)| generate(n, *s, &library).unwrap())
+        .filter(|h| missing(h, &needs, &knowledge.taxonomy).is_empty())
+        .take(3)
+        .collect();
+    assert_eq!(homes.len(), 3);
+    let table = activity
+        .instances
+        .iter()
+        .position(|i| i.name == "table.n.02_1")
+        .unwrap();
+    for home in &homes {
+        let across = table_across_the_opening(home);
+        for seed in 0..4 {
+            let instance = instantiate(&activity, home, seed, &library, &knowledge.taxonomy)
+                .unwrap_or_else(|e| panic!("{} seed {seed}: {e}", home.name));
+            assert_eq!(instance.attempt, 0, "{} seed {seed}", home.name);
+            assert_eq!(
+                instance.world.object(instance.bindings[table]).name,
+                across,
+                "{} seed {seed}",
+                home.name
+            );
+            assert!(all_init_literals_hold(&activity, &instance));
+            let loaded = SavedInstance::from_json(&instance.save().to_json())
+                .unwrap()
+                .load(&activity, &library)
+                .unwrap_or_else(|e| panic!("{e}"));
+            assert!(all_init_literals_hold(&activity, &loaded));
+        }
+    }
+}
+
+#[test]
+fn furniture_that_cannot_host_its_init_literals_is_not_bound() {
+    // Without the table across the opening, no living-room table can have the shoe under it and
+    // on the dining room's floor: the error names both literals and why.
+    let (data, knowledge) = setup();
+    let library = Library::new(&knowledge.taxonomy);
+    let activity = activity(&data, &knowledge, "collect_misplaced_items");
+    let mut home = covering_home(&activity, &library, &knowledge);
+    let across = table_across_the_opening(&home);
+    home.objects.retain(|o| o.name != across);
+    match instantiate(&activity, &home, 0, &library, &knowledge.taxonomy) {
+        Err(e @ SampleError::Literal { .. }) => {
+            assert!(
+            e.to_string().starts_with(
+                "(under gym_shoe.n.01_1 table.n.02_1) and (onfloor gym_shoe.n.01_1 floor.n.01_2) \
+                 could not be satisfied: no table.n.02 of"
+            ) && e.to_string().contains("the relations' areas do not overlap"),
+            "{e}"
+        )
+        }
+        Err(e) => panic!("unexpected error: {e}"),
+        Ok(_) => panic!("sampled without a table that can host the shoe"),
+    }
+}

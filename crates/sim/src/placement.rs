@@ -6,8 +6,11 @@
 //! `ontop` and `inside`, of anything for `under`, of the floor for `onfloor`), sets the object on
 //! it, 2 mm up, keeping its orientation, and accepts the pose if the object then overlaps nothing
 //! and the predicate holds. iGibson samples the same way (`sample_kinematics`, with 10 attempts);
-//! we allow [`PLACEMENT_ATTEMPTS`]. Settling is left to the caller, who usually places several
-//! objects first ([`World::settle`]).
+//! we allow [`PLACEMENT_ATTEMPTS`]. An object asked to stand in several relations at once is
+//! placed by the first, its centre drawn where the others' areas overlap it, and accepted only if
+//! all hold ([`World::place_jointly`]); iGibson instead places by each literal in turn, the last
+//! one winning. Settling is left to the caller, who usually places several objects first
+//! ([`World::settle`]).
 
 use crate::world::{ObjectId, World};
 use rand_chacha::ChaCha8Rng;
@@ -70,20 +73,44 @@ impl World {
         target: ObjectId,
         rng: &mut ChaCha8Rng,
     ) -> Result<Pose, PlacementError> {
+        self.place_jointly(object, &[(relation, target)], rng)
+    }
+
+    /// Places `object` so that every one of `relations` holds at once: the first picks the
+    /// surface it rests on, the others narrow where its centre may go (to their target's
+    /// footprint, or the floor's room) and must hold too — a shoe under a table and on the floor of
+    /// the room that part of the table stands in. On failure the object is back where it was.
+    pub fn place_jointly(
+        &mut self,
+        object: ObjectId,
+        relations: &[(Relation, ObjectId)],
+        rng: &mut ChaCha8Rng,
+    ) -> Result<Pose, PlacementError> {
         let original = self.pose(object);
-        let mut reason = String::from("no attempt made");
-        for _ in 0..PLACEMENT_ATTEMPTS {
-            match self.try_place(object, relation, target, rng) {
-                Ok(pose) => return Ok(pose),
-                Err(why) => reason = why,
+        let mut reason = String::from("no relation asked for");
+        if !relations.is_empty() {
+            for _ in 0..PLACEMENT_ATTEMPTS {
+                match self.try_place(object, relations, rng) {
+                    Ok(pose) => return Ok(pose),
+                    Err(why) => reason = why,
+                }
             }
         }
         // A pose that was valid before stays valid; restoring it cannot fail.
         let _ = self.set_pose(object, original);
+        let (relation, target) = relations
+            .first()
+            .map_or(("anywhere", String::new()), |&(r, t)| {
+                (r.name(), self.object(t).name.clone())
+            });
+        let mut target = target;
+        for &(r, t) in relations.iter().skip(1) {
+            target.push_str(&format!(" and {} {}", r.name(), self.object(t).name));
+        }
         Err(PlacementError {
             object: self.object(object).name.clone(),
-            relation: relation.name(),
-            target: self.object(target).name.clone(),
+            relation,
+            target,
             attempts: PLACEMENT_ATTEMPTS,
             reason,
         })
@@ -92,11 +119,11 @@ impl World {
     fn try_place(
         &mut self,
         object: ObjectId,
-        relation: Relation,
-        target: ObjectId,
+        relations: &[(Relation, ObjectId)],
         rng: &mut ChaCha8Rng,
     ) -> Result<Pose, String> {
-        if object == target {
+        let (relation, target) = relations[0];
+        if relations.iter().any(|&(_, t)| t == object) {
             return Err("an object cannot be placed relative to itself".into());
         }
         let pose = self.pose(object);
@@ -104,10 +131,11 @@ impl World {
         let half = (own.maxs - own.mins) * 0.5;
         // Where the object's box sits relative to its pose's origin.
         let center_offset = own.center() - pose.translation;
-        let area = match relation {
+        let area_of = |relation: Relation, target: ObjectId| match relation {
             Relation::OnFloor => self.floor_area(target),
             _ => self.aabb(target),
         };
+        let area = area_of(relation, target);
         let span = |lo: f32, hi: f32, h: f32| {
             if hi - lo > 2.0 * h {
                 (lo + h, hi - h)
@@ -115,8 +143,17 @@ impl World {
                 ((lo + hi) * 0.5, (lo + hi) * 0.5)
             }
         };
-        let (x0, x1) = span(area.mins.x, area.maxs.x, half.x);
-        let (y0, y1) = span(area.mins.y, area.maxs.y, half.y);
+        let (mut x0, mut x1) = span(area.mins.x, area.maxs.x, half.x);
+        let (mut y0, mut y1) = span(area.mins.y, area.maxs.y, half.y);
+        // The other relations only bound the centre: the object may reach beyond their area.
+        for &(r, t) in &relations[1..] {
+            let other = area_of(r, t);
+            (x0, x1) = (x0.max(other.mins.x), x1.min(other.maxs.x));
+            (y0, y1) = (y0.max(other.mins.y), y1.min(other.maxs.y));
+        }
+        if x0 > x1 || y0 > y1 {
+            return Err("the relations' areas do not overlap".into());
+        }
         let (x, y) = (uniform(rng, x0, x1), uniform(rng, y0, y1));
         let start_z = match relation {
             Relation::OnTop | Relation::OnFloor => area.maxs.z + 0.01,
@@ -153,20 +190,21 @@ impl World {
         }
         self.set_pose(object, candidate)
             .map_err(|e| e.to_string())?;
-        let holds = match relation {
-            Relation::OnTop => self.ontop(object, target),
-            Relation::Inside => self.inside(object, target),
-            Relation::Under => self.under(object, target),
-            Relation::OnFloor => self.onfloor(object, target),
-        };
-        if holds {
-            Ok(candidate)
-        } else {
-            Err(format!(
-                "`{}` does not hold at the sampled pose",
-                relation.name()
-            ))
+        for &(relation, target) in relations {
+            let holds = match relation {
+                Relation::OnTop => self.ontop(object, target),
+                Relation::Inside => self.inside(object, target),
+                Relation::Under => self.under(object, target),
+                Relation::OnFloor => self.onfloor(object, target),
+            };
+            if !holds {
+                return Err(format!(
+                    "`{}` does not hold at the sampled pose",
+                    relation.name()
+                ));
+            }
         }
+        Ok(candidate)
     }
 
     /// The footprint of the room whose floor `floor` is (at the floor's top), or the floor's box.

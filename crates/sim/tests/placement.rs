@@ -78,3 +78,42 @@ fn an_impossible_placement_is_a_clear_error_and_the_object_stays() {
     );
     assert_eq!(world.pose(table), before);
 }
+
+#[test]
+fn a_joint_placement_satisfies_every_relation_or_fails_naming_them_all() {
+    let mut world = World::default();
+    let (kitchen, living) = two_room_floor(&mut world);
+    // Rooms meet at x = 0 with no wall; this table (1.2 m long) stands in the kitchen and reaches
+    // 0.35 m into the living room.
+    let table = table(&mut world, -0.25, 0.0);
+    let shoe = apple(&mut world, "apple_1", v(0.0, 4.0, 0.1));
+    let mut rng = ChaCha8Rng::seed_from_u64(11);
+    world
+        .place_jointly(
+            shoe,
+            &[(Relation::Under, table), (Relation::OnFloor, living)],
+            &mut rng,
+        )
+        .unwrap();
+    assert!(world.under(shoe, table) && world.onfloor(shoe, living));
+    assert!(world.settle(300));
+    assert!(world.under(shoe, table) && world.onfloor(shoe, living));
+    assert!(!world.onfloor(shoe, kitchen));
+
+    // Under a table wholly in the kitchen and on the living room's floor cannot both hold.
+    let far = common::table(&mut world, -2.0, 2.0);
+    let before = world.pose(shoe);
+    let err = world
+        .place_jointly(
+            shoe,
+            &[(Relation::Under, far), (Relation::OnFloor, living)],
+            &mut rng,
+        )
+        .unwrap_err();
+    assert!(
+        err.to_string()
+            .starts_with("could not place apple_1 under table_1 and onfloor floor_living"),
+        "{err}"
+    );
+    assert_eq!(world.pose(shoe), before);
+}

@@ -14,6 +14,7 @@ use rapier3d::math::{Pose, Rotation, Vector};
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Shape {
     Ball,
+    /// A box (variant 0) or a worn one with chamfered edges (variant 1): books, soap, boxes.
     Block,
     Cylinder,
     /// Thin and lying flat: plates, trays, towels, papers.
@@ -22,7 +23,8 @@ pub enum Shape {
     Rod,
     /// A bottom and four walls.
     OpenContainer,
-    /// An open container with a lid hinged at its back edge.
+    /// An open container with a lid hinged at its back edge (variant 0) or at its right-hand side
+    /// (variant 1).
     LiddedContainer,
     Table,
     /// Open shelving: sides, back and boards.
@@ -47,7 +49,9 @@ pub enum Shape {
     Shower,
     /// A frame with a door leaf on a hinge.
     Door,
-    /// A frame with a casement on a hinge.
+    /// A frame with a casement on a hinge: a window with a sill at 0.9 m (variant 0) or a
+    /// floor-length one, from 5 cm up and 0.85 m taller (variant 1), that a lamp or a stool on
+    /// the floor can stand next to.
     Window,
     Floor,
     /// A stand-in body for the robot until embodiments exist: an upright capsule.
@@ -66,7 +70,10 @@ impl Shape {
             | Shape::Ball
             | Shape::Cylinder
             | Shape::Slab
-            | Shape::Rod => 2,
+            | Shape::Rod
+            | Shape::Window
+            | Shape::Block
+            | Shape::LiddedContainer => 2,
             _ => 1,
         }
     }
@@ -259,6 +266,23 @@ fn drawer(name: &str, min: Vector, max: Vector, t: f32, density: f32) -> LinkSpe
     }
 }
 
+/// The corners of a box with every edge cut by `c`.
+fn chamfered(min: Vector, max: Vector, c: f32) -> Vec<Vector> {
+    let mut points = Vec::with_capacity(24);
+    for x in [min.x, max.x] {
+        for y in [min.y, max.y] {
+            for z in [min.z, max.z] {
+                // One step in from the corner along each pair of axes.
+                let inward = |a: f32, lo: f32| if a == lo { a + c } else { a - c };
+                points.push(v(x, inward(y, min.y), inward(z, min.z)));
+                points.push(v(inward(x, min.x), y, inward(z, min.z)));
+                points.push(v(inward(x, min.x), inward(y, min.y), z));
+            }
+        }
+    }
+    points
+}
+
 fn hull(points: Vec<Vector>) -> Part {
     Part::new(Primitive::ConvexHull { points })
 }
@@ -388,6 +412,8 @@ impl Archetype {
                     offset: lying,
                 }]
             }
+            // Worn: every edge chamfered by a fifth of the thinnest side.
+            (Shape::Block, 1) => vec![hull(chamfered(min, max, 0.2 * w.min(d).min(h)))],
             (Shape::Block | Shape::Slab | Shape::Rod | Shape::Countertop | Shape::Floor, _) => {
                 vec![span(min, max)]
             }
@@ -416,12 +442,17 @@ impl Archetype {
                 }
             }
             (Shape::LiddedContainer, _) => {
+                let (anchor, axis) = if variant == 0 {
+                    (v(0.0, max.y, h), v(-1.0, 0.0, 0.0))
+                } else {
+                    (v(max.x, 0.0, h), v(0.0, 1.0, 0.0))
+                };
                 links.push(LinkSpec {
                     name: "lid".into(),
                     parts: vec![span(v(min.x, min.y, h), v(max.x, max.y, h + t))],
                     joint: JointKind::Revolute,
-                    anchor: v(0.0, max.y, h),
-                    axis: v(-1.0, 0.0, 0.0),
+                    anchor,
+                    axis,
                     range: 1.9,
                     damping: 1.0,
                     density,
@@ -634,10 +665,10 @@ impl Archetype {
             (Shape::Door | Shape::Window, _) => {
                 // A frame in the x–z plane (y is the wall's thickness) and a leaf on a hinge.
                 let frame = 0.05;
-                let sill = if self.shape == Shape::Window {
-                    0.9
-                } else {
-                    0.0
+                let (sill, h) = match (self.shape, variant) {
+                    (Shape::Window, 0) => (0.9, h),
+                    (Shape::Window, _) => (0.05, h + 0.85),
+                    _ => (0.0, h),
                 };
                 let parts = vec![
                     span(v(min.x, min.y, sill), v(min.x + frame, max.y, sill + h)),

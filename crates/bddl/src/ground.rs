@@ -106,6 +106,24 @@ impl GroundGoal {
         }
     }
 
+    /// The same goal with some atoms known to be false in any world (an object on top of itself):
+    /// its options then never ask for them. Truth is unchanged wherever those atoms are false.
+    pub fn assuming_false(&self, impossible: impl Fn(Atom) -> bool) -> GroundGoal {
+        let mut goal = self.clone();
+        for node in &mut goal.nodes {
+            if let Node::Lit(lit) = *node
+                && impossible(self.atom(lit.atom))
+            {
+                *node = if lit.positive {
+                    Node::Or(Vec::new())
+                } else {
+                    Node::And(Vec::new())
+                };
+            }
+        }
+        goal
+    }
+
     /// Whether the whole goal holds.
     pub fn holds(&self, oracle: &impl PredicateOracle) -> bool {
         self.node_holds(self.root, &|a| oracle.holds(self.atom(a)))

@@ -77,7 +77,7 @@ pub fn run(command: BddlCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
 }
 
 /// A path if one exists there, else an official activity name.
-fn source_of(data: &DataDir, file: &str) -> Result<Source> {
+pub fn source_of(data: &DataDir, file: &str) -> Result<Source> {
     let path = Path::new(file);
     if path.exists() {
         return Ok(data::read_source(path)?);

@@ -13,7 +13,7 @@ use std::time::Instant;
 
 #[derive(clap::Args)]
 pub struct SampleArgs {
-    /// An official activity name.
+    /// An official activity name or a problem file of one's own.
     activity: String,
     /// A named home or a scene file (default: the first named home that covers the activity).
     #[arg(long)]
@@ -60,7 +60,7 @@ pub fn sample(args: SampleArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let data = DataDir::locate(data_dir, |message| eprintln!("{message}"))?;
     let knowledge = data.knowledge()?;
     let library = Library::new(&knowledge.taxonomy);
-    let (activity, _) = knowledge.load(&data.problem_source(&args.activity)?)?;
+    let (activity, _) = knowledge.load(&crate::bddl::source_of(&data, &args.activity)?)?;
     let scene = match &args.scene {
         Some(name) => crate::scene::load_scene(name, &library)?,
         None => {

@@ -435,12 +435,28 @@ fn sample_prints_bindings_and_saves_an_instance() {
 
 #[test]
 fn sample_reports_an_activity_that_cannot_be_instantiated() {
-    // Its definition puts a shoe under a living-room table and on the dining-room floor at once.
-    let output = behavior(&["sample", "collect_misplaced_items"]);
+    // A definition of one's own that wants the apple on the kitchen table and in the fridge.
+    let file = scratch("apple_in_two_places.bddl");
+    std::fs::write(
+        &file,
+        "(define (problem apple_in_two_places_0) (:domain igibson)
+          (:objects apple.n.01_1 - apple.n.01 table.n.02_1 - table.n.02
+                    electric_refrigerator.n.01_1 - electric_refrigerator.n.01
+                    floor.n.01_1 - floor.n.01 agent.n.01_1 - agent.n.01)
+          (:init (ontop apple.n.01_1 table.n.02_1) (inside apple.n.01_1 electric_refrigerator.n.01_1)
+                 (inroom table.n.02_1 kitchen) (inroom electric_refrigerator.n.01_1 kitchen)
+                 (inroom floor.n.01_1 kitchen) (onfloor agent.n.01_1 floor.n.01_1))
+          (:goal (not (ontop ?apple.n.01_1 ?table.n.02_1))))",
+    )
+    .unwrap();
+    let output = behavior(&["sample", file.to_str().unwrap()]);
     assert_eq!(output.status.code(), Some(1));
     let err = String::from_utf8_lossy(&output.stderr);
     assert!(
-        err.contains("(onfloor gym_shoe.n.01_1 floor.n.01_2) could not be satisfied"),
+        err.contains(
+            "(ontop apple.n.01_1 table.n.02_1) and (inside apple.n.01_1 \
+             electric_refrigerator.n.01_1) could not be satisfied"
+        ),
         "{err}"
     );
 }

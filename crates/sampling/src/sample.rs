@@ -70,8 +70,10 @@ pub fn instantiate(
                     bindings,
                     created,
                 };
-                goal_feasible(activity, &instance)?;
-                return Ok(instance);
+                match goal_feasible(activity, &instance, &mut rng) {
+                    Ok(()) => return Ok(instance),
+                    Err(e) => last = Some(e),
+                }
             }
             Err(e) if e.retryable() => last = Some(e),
             Err(e) => return Err(e),
@@ -104,6 +106,8 @@ fn attempt_once(
                             | Predicate::Inside
                             | Predicate::Under
                             | Predicate::OnFloor
+                            | Predicate::NextTo
+                            | Predicate::Touching
                     ) =>
             {
                 Some(*l)
@@ -217,7 +221,8 @@ fn attempt_once(
     // Placement in dependency order: an object is placed once everything it is to stand on, in,
     // under or on the floor of stands, by all its placement literals at once (a soap on a towel on
     // the floor; a shoe under a table and on the floor of the room that end of the table is in).
-    // It rests on what its first `ontop`, `inside` or `under` names, else on its floor.
+    // It rests on what its first `ontop`, `inside` or `under` names, else beside what `nextto`
+    // names, else on its floor.
     loop {
         let ready = (0..n).find(|&i| {
             !placed[i]
@@ -228,12 +233,11 @@ fn attempt_once(
                 })
         });
         let Some(i) = ready else { break };
-        let mut literals: Vec<&Literal> = kinematic
+        let literals: Vec<&Literal> = kinematic
             .iter()
             .filter(|l| l.atom.subject.0 as usize == i)
             .collect();
-        literals.sort_by_key(|l| l.atom.predicate == Predicate::OnFloor);
-        let relations: Vec<(Relation, ObjectId)> = literals
+        let mut relations: Vec<(Relation, ObjectId)> = literals
             .iter()
             .map(|l| {
                 (
@@ -242,6 +246,7 @@ fn attempt_once(
                 )
             })
             .collect();
+        order_relations(&world, &mut relations);
         world
             .place_jointly(bindings[i], &relations, rng)
             .map_err(|e| SampleError::Literal {
@@ -257,7 +262,7 @@ fn attempt_once(
     if let Some(i) = placed.iter().position(|p| !p) {
         return Err(SampleError::Literal {
             literal: activity.instances[i].name.clone(),
-            reason: "no `ontop`, `inside`, `under` or `onfloor` literal places it relative to placed objects".into(),
+            reason: "no `ontop`, `inside`, `under`, `nextto` or `onfloor` literal places it relative to placed objects".into(),
         });
     }
 
@@ -523,9 +528,7 @@ fn hosts(
                         .take(MAX_HOST_COMBINATIONS)
                         .collect();
                 }
-                options
-                    .iter_mut()
-                    .for_each(|o| o.sort_by_key(|(r, _)| *r == Relation::OnFloor));
+                options.iter_mut().for_each(|o| order_relations(world, o));
                 let mut last_error = None;
                 let placed = options.iter().any(|relations| {
                     match world.place_jointly(probe.0, relations, rng) {
@@ -595,20 +598,56 @@ fn relation_of(predicate: Predicate) -> Relation {
         Predicate::OnTop => Relation::OnTop,
         Predicate::Inside => Relation::Inside,
         Predicate::Under => Relation::Under,
+        Predicate::NextTo => Relation::NextTo,
+        Predicate::Touching => Relation::Touching,
         _ => Relation::OnFloor,
     }
 }
 
+/// Puts first the relation that picks where an object rests ([`World::place_jointly`]): a support
+/// (`ontop`, `inside`, `under`) before a neighbour (`nextto`, `touching`) before a floor, and
+/// among equals the smallest target, whose narrow surroundings are the hardest to hit by chance.
+fn order_relations(world: &World, relations: &mut [(Relation, ObjectId)]) {
+    let rank = |r: Relation| match r {
+        Relation::OnTop | Relation::Inside | Relation::Under => 0,
+        Relation::NextTo | Relation::Touching => 1,
+        Relation::OnFloor => 2,
+    };
+    let volume = |t: ObjectId| {
+        let b = world.aabb(t);
+        let d = b.maxs - b.mins;
+        d.x * d.y * d.z
+    };
+    relations.sort_by(|a, b| {
+        rank(a.0)
+            .cmp(&rank(b.0))
+            .then(volume(a.1).total_cmp(&volume(b.1)))
+    });
+}
+
 /// How many goal options (smallest first) [`goal_feasible`] tries before giving up.
 pub const FEASIBILITY_OPTIONS: usize = 64;
+/// How many of those, having passed the size test, it places physically (iGibson tries 10).
+pub const PHYSICAL_OPTIONS: usize = 10;
 
 /// Checks that some goal option can be reached in this home: every object in a positive
-/// `ontop`, `inside` or `under` literal of the option fits where it is asked to go — inside a
-/// container whose box can hold its box (in some orientation), on a support whose widest side is at
-/// least its narrowest, under something whose largest side is at least its smallest. Other objects in the way do not count (the
-/// agent can move them). Options are tried smallest first; the error reports why the first fails.
-pub fn goal_feasible(activity: &Activity, instance: &Instance) -> Result<(), SampleError> {
-    let goal = behavior_bddl::GroundGoal::new(activity);
+/// `ontop`, `inside`, `under`, `nextto`, `touching` or `onfloor` literal of the option can be placed
+/// as it asks. Options are tried smallest first, leaving out those that relate an object to
+/// itself. Each must first pass a shape test — nothing resting on or in two things at once, inside a container
+/// whose box can hold its box (in some orientation), on a support whose widest side is at least
+/// its narrowest, under something whose largest side is at least its smallest — and then the first
+/// [`PHYSICAL_OPTIONS`] that do are placed for real in a copy of the world: the objects the option
+/// moves are lifted out, then put back targets first, each by all its literals at once, among
+/// the objects that stay (iGibson also places them physically). The error reports why the first
+/// option failed.
+pub fn goal_feasible(
+    activity: &Activity,
+    instance: &Instance,
+    rng: &mut ChaCha8Rng,
+) -> Result<(), SampleError> {
+    // No object is on, in, under, next to or touching itself: options asking so are skipped.
+    let goal = behavior_bddl::GroundGoal::new(activity)
+        .assuming_false(|atom| atom.object == Some(atom.subject));
     let world = &instance.world;
     let dims = |i: InstanceId| {
         let b = world.aabb(instance.bindings[i.0 as usize]);
@@ -617,11 +656,26 @@ pub fn goal_feasible(activity: &Activity, instance: &Instance) -> Result<(), Sam
         d
     };
     let mut first_failure: Option<(String, String)> = None;
+    let mut physical = 0;
     for option in behavior_bddl::options::options(&goal).take(FEASIBILITY_OPTIONS) {
-        let failure = option.iter().filter(|l| l.positive).find_map(|l| {
+        let too_big = option.iter().filter(|l| l.positive).find_map(|l| {
             let target = l.atom.object?;
             let (a, b) = (dims(l.atom.subject), dims(target));
+            let supports = |l: &Literal| {
+                matches!(l.atom.predicate, Predicate::OnTop | Predicate::Inside)
+                    .then_some(l.atom.object)
+                    .flatten()
+            };
             let reason = match l.atom.predicate {
+                Predicate::OnTop | Predicate::Inside
+                    if option.iter().any(|o| {
+                        o.positive
+                            && o.atom.subject == l.atom.subject
+                            && supports(o).is_some_and(|t| t != target)
+                    }) =>
+                {
+                    "it is asked to rest on or in two things at once".to_string()
+                }
                 Predicate::Inside if (0..3).any(|k| a[k] > 0.95 * b[k]) => {
                     format!("its box {a:.2?} does not fit in {:.2?}", b)
                 }
@@ -636,6 +690,14 @@ pub fn goal_feasible(activity: &Activity, instance: &Instance) -> Result<(), Sam
             };
             Some((activity.show_literal(*l), reason))
         });
+        let failure = match too_big {
+            Some(f) => Some(f),
+            None if physical < PHYSICAL_OPTIONS => {
+                physical += 1;
+                place_option(activity, instance, &option, rng).err()
+            }
+            None => continue,
+        };
         match failure {
             None => return Ok(()),
             Some(f) => {
@@ -646,4 +708,126 @@ pub fn goal_feasible(activity: &Activity, instance: &Instance) -> Result<(), Sam
     let (literal, reason) =
         first_failure.unwrap_or_else(|| ("the goal".into(), "it has no consistent option".into()));
     Err(SampleError::Infeasible { literal, reason })
+}
+
+/// Places a goal option's positive placement literals in a copy of the instance's world; the
+/// literal that could not be placed and why.
+fn place_option(
+    activity: &Activity,
+    instance: &Instance,
+    option: &[Literal],
+    rng: &mut ChaCha8Rng,
+) -> Result<(), (String, String)> {
+    let placements: Vec<&Literal> = option
+        .iter()
+        .filter(|l| {
+            l.positive
+                && matches!(
+                    l.atom.predicate,
+                    Predicate::OnTop
+                        | Predicate::Inside
+                        | Predicate::Under
+                        | Predicate::NextTo
+                        | Predicate::Touching
+                        | Predicate::OnFloor
+                )
+        })
+        .collect();
+    let mut subjects: Vec<InstanceId> = placements.iter().map(|l| l.atom.subject).collect();
+    subjects.sort();
+    subjects.dedup();
+    let symmetric =
+        |l: &Literal| matches!(l.atom.predicate, Predicate::NextTo | Predicate::Touching);
+    // Targets first: an object waits while something it goes on, in or under is still to be
+    // placed. `nextto` and `touching` are symmetric, so they make nothing wait: between two moved
+    // objects, the later one is placed beside the earlier.
+    let mut order = Vec::with_capacity(subjects.len());
+    while order.len() < subjects.len() {
+        let waiting = |s: InstanceId| {
+            placements.iter().any(|l| {
+                l.atom.subject == s
+                    && !symmetric(l)
+                    && l.atom
+                        .object
+                        .is_some_and(|t| t != s && subjects.contains(&t) && !order.contains(&t))
+            })
+        };
+        // Better one with something placed to go by than one that would stay where it was.
+        let anchored = |s: InstanceId| {
+            placements.iter().any(|l| {
+                l.atom.subject == s
+                    && l.atom
+                        .object
+                        .is_some_and(|t| !subjects.contains(&t) || order.contains(&t))
+            })
+        };
+        let free = |s: &InstanceId| !order.contains(s);
+        let next = subjects
+            .iter()
+            .copied()
+            .find(|&s| free(&s) && !waiting(s) && anchored(s))
+            .or_else(|| subjects.iter().copied().find(|&s| free(&s) && !waiting(s)))
+            // A cycle (a inside b, b inside a): place in order and let the check fail.
+            .or_else(|| subjects.iter().copied().find(free));
+        order.extend(next);
+    }
+    // What the goal moves is lifted out first, so it does not stand in its own way.
+    let mut world = instance.world.clone();
+    let mut parked_at = Vec::with_capacity(order.len());
+    for (k, &subject) in order.iter().enumerate() {
+        let id = instance.bindings[subject.0 as usize];
+        let original = world.pose(id);
+        let parked = Pose::from_parts(
+            Vector::new(-2000.0 - 5.0 * k as f32, -2000.0, 0.0),
+            original.rotation,
+        );
+        world
+            .set_pose(id, parked)
+            .map_err(|e| (activity.instance(subject).name.clone(), e.to_string()))?;
+        parked_at.push(original);
+    }
+    // Symmetric literals handed on to their (later) target, reversed.
+    let mut handed_on: Vec<(InstanceId, Literal)> = Vec::new();
+    for (k, &subject) in order.iter().enumerate() {
+        let later = |t: InstanceId| order[k + 1..].contains(&t);
+        let mut literals: Vec<Literal> = Vec::new();
+        for l in placements.iter().filter(|l| l.atom.subject == subject) {
+            let target = l.atom.object.expect("binary");
+            if symmetric(l) && later(target) {
+                let mut reversed = **l;
+                (reversed.atom.subject, reversed.atom.object) = (target, Some(subject));
+                handed_on.push((target, reversed));
+            } else {
+                literals.push(**l);
+            }
+        }
+        literals.extend(
+            handed_on
+                .iter()
+                .filter(|(t, _)| *t == subject)
+                .map(|(_, l)| *l),
+        );
+        let id = instance.bindings[subject.0 as usize];
+        if literals.is_empty() {
+            // Only symmetric literals, all handed on: it stays where it was.
+            let _ = world.set_pose(id, parked_at[k]);
+            continue;
+        }
+        let mut relations: Vec<(Relation, ObjectId)> = literals
+            .iter()
+            .map(|l| {
+                let target = l.atom.object.expect("binary");
+                (
+                    relation_of(l.atom.predicate),
+                    instance.bindings[target.0 as usize],
+                )
+            })
+            .collect();
+        order_relations(&world, &mut relations);
+        world.place_jointly(id, &relations, rng).map_err(|e| {
+            let shown: Vec<String> = literals.iter().map(|l| activity.show_literal(*l)).collect();
+            (shown.join(" and "), e.to_string())
+        })?;
+    }
+    Ok(())
 }

@@ -81,7 +81,46 @@ fn the_same_seed_gives_the_same_instance_and_another_seed_another() {
     let (a, b, c) = (sample(7), sample(7), sample(8));
     assert_eq!(a.world.motion_bits(), b.world.motion_bits());
     assert_eq!(a.created, b.created);
-    assert!(a.world.motion_bits() != c.world.motion_bits() || a.created != c.created);
+    // Another seed puts the created objects elsewhere...
+    let position = |s: &behavior_sampling::Instance, name: &str| {
+        let i = activity
+            .instances
+            .iter()
+            .position(|i| i.name == name)
+            .unwrap();
+        s.world.pose(s.bindings[i]).translation
+    };
+    let moved = a
+        .created
+        .iter()
+        .filter(|o| (position(&a, &o.instance) - position(&c, &o.instance)).length() > 0.01)
+        .count();
+    assert!(moved * 2 > a.created.len(), "only {moved} objects moved");
+    // ...and, over a few seeds, makes them from other archetypes and variants.
+    let looks = |s: &behavior_sampling::Instance| {
+        s.created
+            .iter()
+            .map(|o| (o.archetype.clone(), o.variant))
+            .collect::<Vec<_>>()
+    };
+    let mut seen: Vec<_> = (0..6).map(|seed| looks(&sample(seed))).collect();
+    seen.sort();
+    seen.dedup();
+    assert!(
+        seen.len() >= 5,
+        "{} distinct looks over 6 seeds",
+        seen.len()
+    );
+    let variants = |k: usize| {
+        let mut v: Vec<u32> = seen.iter().map(|look| look[k].1).collect();
+        v.sort();
+        v.dedup();
+        v.len()
+    };
+    assert!(
+        (0..a.created.len()).any(|k| variants(k) > 1),
+        "no object ever changes variant"
+    );
 }
 
 #[test]
@@ -260,5 +299,76 @@ fn furniture_that_cannot_host_its_init_literals_is_not_bound() {
         }
         Err(e) => panic!("unexpected error: {e}"),
         Ok(_) => panic!("sampled without a table that can host the shoe"),
+    }
+}
+
+#[test]
+fn nextto_in_an_init_is_sampled_too() {
+    // No official definition uses `nextto` in its `:init`; a researcher's own may.
+    let (_, knowledge) = setup();
+    let library = Library::new(&knowledge.taxonomy);
+    let text = "(define (problem side_by_side_0) (:domain igibson)
+      (:objects apple.n.01_1 - apple.n.01 bowl.n.01_1 - bowl.n.01 bucket.n.01_1 - bucket.n.01
+                table.n.02_1 - table.n.02 floor.n.01_1 - floor.n.01 agent.n.01_1 - agent.n.01)
+      (:init (ontop bowl.n.01_1 table.n.02_1) (ontop apple.n.01_1 table.n.02_1)
+             (nextto apple.n.01_1 bowl.n.01_1) (nextto bucket.n.01_1 table.n.02_1)
+             (inroom table.n.02_1 kitchen) (inroom floor.n.01_1 kitchen)
+             (onfloor agent.n.01_1 floor.n.01_1))
+      (:goal (inside ?apple.n.01_1 ?bowl.n.01_1)))";
+    let (activity, _) = knowledge
+        .load(&behavior_bddl::Source::new("side_by_side.bddl", text))
+        .unwrap();
+    let home = generate(NAMED_HOMES[0].0, NAMED_HOMES[0].1, &library).unwrap();
+    for seed in 0..3 {
+        let instance = instantiate(&activity, &home, seed, &library, &knowledge.taxonomy)
+            .unwrap_or_else(|e| panic!("seed {seed}: {e}"));
+        assert!(all_init_literals_hold(&activity, &instance), "seed {seed}");
+    }
+}
+
+#[test]
+fn a_goal_that_fits_by_size_but_cannot_be_placed_is_infeasible() {
+    // The apple is to be in the bowl, which stays in the fridge, and next to the kitchen table:
+    // every size fits, but no pose satisfies both.
+    let (_, knowledge) = setup();
+    let library = Library::new(&knowledge.taxonomy);
+    let text = "(define (problem fridge_and_table_0) (:domain igibson)
+      (:objects apple.n.01_1 - apple.n.01 bowl.n.01_1 - bowl.n.01
+                electric_refrigerator.n.01_1 - electric_refrigerator.n.01 table.n.02_1 - table.n.02
+                floor.n.01_1 - floor.n.01 agent.n.01_1 - agent.n.01)
+      (:init (inside bowl.n.01_1 electric_refrigerator.n.01_1) (ontop apple.n.01_1 table.n.02_1)
+             (inroom electric_refrigerator.n.01_1 kitchen) (inroom table.n.02_1 kitchen)
+             (inroom floor.n.01_1 kitchen) (onfloor agent.n.01_1 floor.n.01_1))
+      (:goal (and (inside ?apple.n.01_1 ?bowl.n.01_1) (nextto ?apple.n.01_1 ?table.n.02_1))))";
+    let (activity, _) = knowledge
+        .load(&behavior_bddl::Source::new("fridge_and_table.bddl", text))
+        .unwrap();
+    let home = generate(NAMED_HOMES[0].0, NAMED_HOMES[0].1, &library).unwrap();
+    match instantiate(&activity, &home, 0, &library, &knowledge.taxonomy) {
+        Err(e @ SampleError::Infeasible { .. }) => assert!(
+            e.to_string().starts_with(
+                "no goal option can be reached in this home: (inside apple.n.01_1 bowl.n.01_1) \
+                 and (nextto apple.n.01_1 table.n.02_1): could not place apple.n.01_1"
+            ),
+            "{e}"
+        ),
+        Err(e) => panic!("unexpected error: {e}"),
+        Ok(_) => panic!("an unreachable goal was accepted"),
+    }
+}
+
+#[test]
+fn goals_relating_objects_of_one_kind_are_feasible() {
+    // `sorting_mail` asks every envelope to touch one of the first four: its smallest options
+    // have an envelope touch itself, which no world allows; `thawing_frozen_food` puts a date
+    // next to a fish that is itself next to the sink.
+    let (data, knowledge) = setup();
+    let library = Library::new(&knowledge.taxonomy);
+    for name in ["sorting_mail", "thawing_frozen_food", "laying_wood_floors"] {
+        let activity = activity(&data, &knowledge, name);
+        let home = covering_home(&activity, &library, &knowledge);
+        let instance = instantiate(&activity, &home, 0, &library, &knowledge.taxonomy)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(all_init_literals_hold(&activity, &instance), "{name}");
     }
 }

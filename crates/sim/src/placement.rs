@@ -1,9 +1,12 @@
-//! Placement helpers for sampling initial states: put an object on, in or under another, or on a
-//! room's floor, at a sampled collision-free pose where the relation holds.
+//! Placement helpers for sampling initial states: put an object on, in, under or next to another,
+//! or on a room's floor, at a sampled collision-free pose where the relation holds.
 //!
-//! Each attempt draws a point over the target's footprint (inside its box, for `inside`), finds
-//! the supporting surface below it by a ray cast (an upward-facing surface of the target for
-//! `ontop` and `inside`, of anything for `under`, of the floor for `onfloor`), sets the object on
+//! Each attempt draws a point over the target's footprint (inside its box, for `inside`; beside
+//! one of its sides, up to [`NEXTTO_GAP`] away for `nextto` and within touching distance for
+//! `touching`), finds the supporting surface below it by a ray cast (an upward-facing surface of
+//! the target for `ontop` — looking down from its top or, for a shelf, from above one of its
+//! boards — of the container or what already lies in it for `inside`, of anything
+//! else for `under`, `nextto` and `touching`, of the floor for `onfloor`), sets the object on
 //! it, 2 mm up, keeping its orientation, and accepts the pose if the object then overlaps nothing
 //! and the predicate holds. iGibson samples the same way (`sample_kinematics`, with 10 attempts);
 //! we allow [`PLACEMENT_ATTEMPTS`]. An object asked to stand in several relations at once is
@@ -23,6 +26,11 @@ use rapier3d::prelude::Ray;
 pub const PLACEMENT_ATTEMPTS: usize = 20;
 /// Gap left under a placed object (m); it lands within a step.
 pub const DROP_GAP: f32 = 0.002;
+/// The widest gap left beside a target for `nextto` (m); the predicate allows a sixth of the
+/// two objects' mean extent.
+pub const NEXTTO_GAP: f32 = 0.03;
+/// Boards of a shelf closer than this (m) count as one level for `ontop`.
+pub const LEVEL_SPACING: f32 = 0.1;
 /// A support surface's normal must be this close to vertical.
 pub const SUPPORT_NORMAL_Z: f32 = 0.7;
 
@@ -32,6 +40,8 @@ pub enum Relation {
     Inside,
     Under,
     OnFloor,
+    NextTo,
+    Touching,
 }
 
 impl Relation {
@@ -41,6 +51,8 @@ impl Relation {
             Relation::Inside => "inside",
             Relation::Under => "under",
             Relation::OnFloor => "onfloor",
+            Relation::NextTo => "nextto",
+            Relation::Touching => "touching",
         }
     }
 }
@@ -131,32 +143,74 @@ impl World {
         let half = (own.maxs - own.mins) * 0.5;
         // Where the object's box sits relative to its pose's origin.
         let center_offset = own.center() - pose.translation;
+        // Where the object's centre may go for a relation: over the target (in its room, for a
+        // floor), or around it for `nextto`.
         let area_of = |relation: Relation, target: ObjectId| match relation {
             Relation::OnFloor => self.floor_area(target),
+            Relation::NextTo | Relation::Touching => {
+                self.aabb(target).loosened(half.max_element() + NEXTTO_GAP)
+            }
             _ => self.aabb(target),
         };
-        let area = area_of(relation, target);
-        let span = |lo: f32, hi: f32, h: f32| {
-            if hi - lo > 2.0 * h {
-                (lo + h, hi - h)
-            } else {
-                ((lo + hi) * 0.5, (lo + hi) * 0.5)
-            }
-        };
-        let (mut x0, mut x1) = span(area.mins.x, area.maxs.x, half.x);
-        let (mut y0, mut y1) = span(area.mins.y, area.maxs.y, half.y);
         // The other relations only bound the centre: the object may reach beyond their area.
+        let (mut x0, mut x1, mut y0, mut y1) = (f32::MIN, f32::MAX, f32::MIN, f32::MAX);
         for &(r, t) in &relations[1..] {
             let other = area_of(r, t);
             (x0, x1) = (x0.max(other.mins.x), x1.min(other.maxs.x));
             (y0, y1) = (y0.max(other.mins.y), y1.min(other.maxs.y));
         }
-        if x0 > x1 || y0 > y1 {
-            return Err("the relations' areas do not overlap".into());
+        let area = self.aabb(target);
+        let (x, y) = if matches!(relation, Relation::NextTo | Relation::Touching) {
+            // Beside one of the target's four sides, a small gap away, facing some part of it.
+            let gap = match relation {
+                Relation::NextTo => uniform(rng, 0.005, NEXTTO_GAP),
+                _ => uniform(rng, 0.0005, 0.8 * crate::kinematics::TOUCH_DISTANCE),
+            };
+            match rng.next_u32() % 4 {
+                0 => (
+                    area.maxs.x + gap + half.x,
+                    uniform(rng, area.mins.y, area.maxs.y),
+                ),
+                1 => (
+                    area.mins.x - gap - half.x,
+                    uniform(rng, area.mins.y, area.maxs.y),
+                ),
+                2 => (
+                    uniform(rng, area.mins.x, area.maxs.x),
+                    area.maxs.y + gap + half.y,
+                ),
+                _ => (
+                    uniform(rng, area.mins.x, area.maxs.x),
+                    area.mins.y - gap - half.y,
+                ),
+            }
+        } else {
+            let area = area_of(relation, target);
+            let span = |lo: f32, hi: f32, h: f32| {
+                if hi - lo > 2.0 * h {
+                    (lo + h, hi - h)
+                } else {
+                    ((lo + hi) * 0.5, (lo + hi) * 0.5)
+                }
+            };
+            let (a0, a1) = span(area.mins.x, area.maxs.x, half.x);
+            let (b0, b1) = span(area.mins.y, area.maxs.y, half.y);
+            (x0, x1, y0, y1) = (x0.max(a0), x1.min(a1), y0.max(b0), y1.min(b1));
+            if x0 > x1 || y0 > y1 {
+                return Err("the relations' areas do not overlap".into());
+            }
+            (uniform(rng, x0, x1), uniform(rng, y0, y1))
+        };
+        if !(x0..=x1).contains(&x) || !(y0..=y1).contains(&y) {
+            return Err("the relations' areas do not overlap there".into());
         }
-        let (x, y) = (uniform(rng, x0, x1), uniform(rng, y0, y1));
         let start_z = match relation {
-            Relation::OnTop | Relation::OnFloor => area.maxs.z + 0.01,
+            Relation::OnTop => {
+                let levels = self.support_levels(target);
+                levels[rng.next_u32() as usize % levels.len()] + 0.01
+            }
+            Relation::OnFloor => area_of(relation, target).maxs.z + 0.01,
+            Relation::NextTo | Relation::Touching => area.maxs.z + 0.01,
             Relation::Inside => uniform(
                 rng,
                 area.mins.z + half.z,
@@ -170,14 +224,14 @@ impl World {
             }
         };
         let support = match relation {
-            Relation::OnTop | Relation::Inside | Relation::OnFloor => {
-                self.surface_below(&[target], x, y, start_z)
-            }
-            Relation::Under => {
+            Relation::OnTop | Relation::OnFloor => self.surface_below(&[target], x, y, start_z),
+            // On whatever is there: the floor, the surface the target stands on, or (inside) the
+            // container's floor or what already lies on it.
+            Relation::Under | Relation::NextTo | Relation::Touching | Relation::Inside => {
                 let others: Vec<ObjectId> = self
                     .objects()
                     .map(|(id, _)| id)
-                    .filter(|&id| id != object && id != target)
+                    .filter(|&id| id != object && (id != target || relation == Relation::Inside))
                     .collect();
                 self.surface_below(&others, x, y, start_z)
             }
@@ -196,6 +250,8 @@ impl World {
                 Relation::Inside => self.inside(object, target),
                 Relation::Under => self.under(object, target),
                 Relation::OnFloor => self.onfloor(object, target),
+                Relation::NextTo => self.nextto(object, target),
+                Relation::Touching => self.touching(object, target),
             };
             if !holds {
                 return Err(format!(
@@ -205,6 +261,30 @@ impl World {
             }
         }
         Ok(candidate)
+    }
+
+    /// Heights from which `ontop` looks down for a surface of `target`: its top, and for an open
+    /// piece without doors, drawers or lids (a shelf, a bookcase) the top of each board below,
+    /// tops less than [`LEVEL_SPACING`] apart counting as one.
+    fn support_levels(&self, target: ObjectId) -> Vec<f32> {
+        let object = self.object(target);
+        let top = self.aabb(target).maxs.z;
+        if !object.links.is_empty() {
+            return vec![top];
+        }
+        let mut tops: Vec<f32> = object
+            .colliders
+            .iter()
+            .map(|&c| self.physics.colliders[c].compute_aabb().maxs.z)
+            .collect();
+        tops.sort_by(|a, b| b.total_cmp(a));
+        let mut levels = vec![top];
+        for t in tops {
+            if levels.last().is_some_and(|&l| l - t >= LEVEL_SPACING) {
+                levels.push(t);
+            }
+        }
+        levels
     }
 
     /// The footprint of the room whose floor `floor` is (at the floor's top), or the floor's box.

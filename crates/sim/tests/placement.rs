@@ -117,3 +117,28 @@ fn a_joint_placement_satisfies_every_relation_or_fails_naming_them_all() {
     );
     assert_eq!(world.pose(shoe), before);
 }
+
+#[test]
+fn nextto_places_beside_the_target_on_the_same_surface() {
+    let mut world = World::default();
+    two_room_floor(&mut world);
+    let table = table(&mut world, 1.0, 0.0);
+    let a = apple(&mut world, "apple_1", v(0.0, 4.0, 0.1));
+    let b = apple(&mut world, "apple_2", v(0.5, 4.0, 0.1));
+    let mut rng = ChaCha8Rng::seed_from_u64(5);
+    world.place(a, Relation::OnTop, table, &mut rng).unwrap();
+    world
+        .place_jointly(
+            b,
+            &[(Relation::OnTop, table), (Relation::NextTo, a)],
+            &mut rng,
+        )
+        .unwrap();
+    assert!(world.nextto(b, a) && world.ontop(b, table));
+    // Beside the table, on the floor.
+    let c = apple(&mut world, "apple_3", v(1.0, 4.0, 0.1));
+    world.place(c, Relation::NextTo, table, &mut rng).unwrap();
+    assert!(world.nextto(c, table) && !world.ontop(c, table));
+    assert!(world.settle(300));
+    assert!(world.nextto(b, a) && world.nextto(c, table));
+}

@@ -456,7 +456,7 @@ fn bind_furniture(
 type Hosting = (Vec<ObjectId>, (String, String));
 
 /// Which candidates can host their instance's init literals, as iGibson filters them before
-/// matching: for every object to be placed on, in or under the instance, a probe of that object's
+/// matching: for every object to be placed on, in, under or next to the instance, a probe of that object's
 /// smallest size is placed there in a scratch copy of the home, together with its placements
 /// relative to other furniture (trying their candidates too). A candidate is kept if every probe
 /// finds a place. Instances without candidates keep their list empty with the reason.
@@ -473,13 +473,14 @@ fn hosts(
     let mut probes: Vec<Option<(ObjectId, Pose)>> = vec![None; activity.instances.len()];
     let mut out = Vec::with_capacity(candidates.len());
     for (i, list) in candidates.iter().enumerate() {
-        let hosted: Vec<InstanceId> = kinematic
+        let mut hosted: Vec<InstanceId> = kinematic
             .iter()
             .filter(|l| {
                 l.atom.object.is_some_and(|o| o.0 as usize == i) && !furniture(l.atom.subject)
             })
             .map(|l| l.atom.subject)
             .collect();
+        hosted.dedup();
         if hosted.is_empty() {
             out.push((list.clone(), (String::new(), String::new())));
             continue;

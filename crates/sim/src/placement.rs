@@ -144,7 +144,7 @@ impl World {
         // Where the object's box sits relative to its pose's origin.
         let center_offset = own.center() - pose.translation;
         // Where the object's centre may go for a relation: over the target (in its room, for a
-        // floor), or around it for `nextto`.
+        // floor), or around it for `nextto` and `touching`.
         let area_of = |relation: Relation, target: ObjectId| match relation {
             Relation::OnFloor => self.floor_area(target),
             Relation::NextTo | Relation::Touching => {

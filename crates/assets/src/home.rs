@@ -10,7 +10,8 @@
 //! the microwave stands on a countertop. An item that does not fit is left out (coverage
 //! reports what a home lacks). [`NAMED_HOMES`] are fifteen fixed seeds forming the default set.
 //!
-//! A dining room, when there is one, adjoins the living room with no wall between them: an open
+//! A dining room, when there is one (the first, when there are several), adjoins the living room
+//! with no wall between them: an open
 //! plan, as in many homes and in iGibson's scans, where the rooms are told apart by the floor map
 //! only. One of the living room's tables stands at that opening, its centre just inside the living
 //! room and its far end over the dining room's floor. This is what makes
@@ -367,9 +368,18 @@ pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, Asset
             } else {
                 outer_y - half - 0.05
             };
-            // Its casement opens into the room too.
+            // Its casement opens into the room too; a floor-length one (variant 1) sweeps the
+            // floor in front of it, which is kept clear.
             let turns = if outer_y < door_y { 2 } else { 0 };
-            f.taken.push(footprint(x, y, size.x, 0.12, 0));
+            let sweep = if variant == 1 { size.x } else { 0.0 };
+            let inward = if outer_y < door_y { 1.0 } else { -1.0 };
+            f.taken.push(footprint(
+                x,
+                y + inward * sweep / 2.0,
+                size.x,
+                0.12 + sweep,
+                0,
+            ));
             objects.push(ObjectPlan {
                 name: next_name("window.n.01"),
                 synset: "window.n.01".into(),
@@ -561,25 +571,30 @@ struct Opening {
     toward_dining: f32,
 }
 
-/// The opening between the living room and a dining room beside it, if the home has both.
+/// The opening between the living room and a dining room beside it (the first, if a home drawn
+/// from a free seed has several), if the home has both.
 fn open_plan(rooms: &[RoomPlan]) -> Option<Opening> {
     let living = rooms.iter().position(|r| r.kind == "living_room")?;
-    let dining = rooms.iter().position(|r| r.kind == "dining_room")?;
-    let (l, d) = (&rooms[living], &rooms[dining]);
-    let (x, toward_dining) = if (l.max[0] - d.min[0]).abs() < 1e-4 {
-        (l.max[0], 1.0)
-    } else if (l.min[0] - d.max[0]).abs() < 1e-4 {
-        (l.min[0], -1.0)
-    } else {
-        return None;
-    };
-    let y = [l.min[1].max(d.min[1]), l.max[1].min(d.max[1])];
-    (y[1] - y[0] > 1.0).then_some(Opening {
-        living,
-        dining,
-        x,
-        y,
-        toward_dining,
+    let l = &rooms[living];
+    rooms.iter().enumerate().find_map(|(dining, d)| {
+        if d.kind != "dining_room" {
+            return None;
+        }
+        let (x, toward_dining) = if (l.max[0] - d.min[0]).abs() < 1e-4 {
+            (l.max[0], 1.0)
+        } else if (l.min[0] - d.max[0]).abs() < 1e-4 {
+            (l.min[0], -1.0)
+        } else {
+            return None;
+        };
+        let y = [l.min[1].max(d.min[1]), l.max[1].min(d.max[1])];
+        (y[1] - y[0] > 1.0).then_some(Opening {
+            living,
+            dining,
+            x,
+            y,
+            toward_dining,
+        })
     })
 }
 

@@ -218,33 +218,50 @@ fn attempt_once(
         .map(|b| b.expect("every instance is bound"))
         .collect();
 
-    // Placement in dependency order: an object is placed once everything it is to stand on, in,
-    // under or on the floor of stands, by all its placement literals at once (a soap on a towel on
-    // the floor; a shoe under a table and on the floor of the room that end of the table is in).
-    // It rests on what its first `ontop`, `inside` or `under` names, else beside what `nextto`
-    // names, else on its floor.
+    // Placement in dependency order: an object is placed once everything it is to stand on, in or
+    // under stands, by all its placement literals at once (a soap on a towel on the floor; a shoe
+    // under a table and on the floor of the room that end of the table is in). `nextto` and
+    // `touching` are symmetric: one towards an object not yet placed is handed on to that object,
+    // reversed, so two objects that touch each other do not wait for each other. An object rests on
+    // what its first `ontop`, `inside` or `under` names, else beside what `nextto` names, else on
+    // its floor.
+    let symmetric =
+        |l: &Literal| matches!(l.atom.predicate, Predicate::NextTo | Predicate::Touching);
+    let target_of = |l: &Literal| l.atom.object.expect("binary").0 as usize;
+    // (handed to, the literal as it is placed, the literal as the definition writes it)
+    let mut handed_on: Vec<(usize, Literal, Literal)> = Vec::new();
     loop {
+        let own = |i: usize| {
+            kinematic
+                .iter()
+                .filter(move |l| l.atom.subject.0 as usize == i)
+        };
         let ready = (0..n).find(|&i| {
             !placed[i]
-                && kinematic.iter().any(|l| l.atom.subject.0 as usize == i)
-                && kinematic.iter().all(|l| {
-                    l.atom.subject.0 as usize != i
-                        || placed[l.atom.object.expect("binary").0 as usize]
-                })
+                && own(i).all(|l| symmetric(l) || placed[target_of(l)])
+                && (own(i).any(|l| placed[target_of(l)]) || handed_on.iter().any(|h| h.0 == i))
         });
         let Some(i) = ready else { break };
-        let literals: Vec<&Literal> = kinematic
-            .iter()
-            .filter(|l| l.atom.subject.0 as usize == i)
-            .collect();
+        let mut literals: Vec<(Literal, Literal)> = Vec::new();
+        for l in own(i) {
+            if placed[target_of(l)] {
+                literals.push((*l, *l));
+            } else {
+                let mut reversed = *l;
+                (reversed.atom.subject, reversed.atom.object) =
+                    (InstanceId(target_of(l) as u32), Some(l.atom.subject));
+                handed_on.push((target_of(l), reversed, *l));
+            }
+        }
+        literals.extend(
+            handed_on
+                .iter()
+                .filter(|h| h.0 == i)
+                .map(|&(_, placed_as, written)| (placed_as, written)),
+        );
         let mut relations: Vec<(Relation, ObjectId)> = literals
             .iter()
-            .map(|l| {
-                (
-                    relation_of(l.atom.predicate),
-                    bindings[l.atom.object.expect("binary").0 as usize],
-                )
-            })
+            .map(|(l, _)| (relation_of(l.atom.predicate), bindings[target_of(l)]))
             .collect();
         order_relations(&world, &mut relations);
         world
@@ -252,7 +269,7 @@ fn attempt_once(
             .map_err(|e| SampleError::Literal {
                 literal: literals
                     .iter()
-                    .map(|l| show(**l))
+                    .map(|(_, written)| show(*written))
                     .collect::<Vec<_>>()
                     .join(" and "),
                 reason: e.to_string(),
@@ -262,7 +279,9 @@ fn attempt_once(
     if let Some(i) = placed.iter().position(|p| !p) {
         return Err(SampleError::Literal {
             literal: activity.instances[i].name.clone(),
-            reason: "no `ontop`, `inside`, `under`, `nextto` or `onfloor` literal places it relative to placed objects".into(),
+            reason: "no `ontop`, `inside`, `under`, `nextto`, `touching` or `onfloor` literal \
+                     places it relative to placed objects"
+                .into(),
         });
     }
 
@@ -398,20 +417,31 @@ fn bind_furniture(
         }
     }
     let hosting = hosts(activity, scene, kinematic, &candidates, library, rng)?;
-    for (i, _) in &wanted {
+    let candidates_before: Vec<usize> = candidates.iter().map(Vec::len).collect();
+    // When too few candidates can host, the error says which literal ruled them out. Probes are
+    // random, so another attempt may keep more.
+    let ruled_out = |i: InstanceId, room: &str| {
         let (kept, why) = &hosting[i.0 as usize];
-        if kept.is_empty() {
-            return Err(SampleError::Literal {
-                literal: why.0.clone(),
-                reason: format!(
-                    "no {} of {} can take it: {}",
-                    activity.category(activity.instance(*i).category).name,
-                    scene.name,
-                    why.1
-                ),
-            });
+        if kept.len() == candidates_before[i.0 as usize] {
+            return unmatched(i, room);
         }
-        candidates[i.0 as usize] = kept.clone();
+        SampleError::Literal {
+            literal: why.0.clone(),
+            reason: format!(
+                "{} of the {} {} in {}'s {room}s can take it: {}",
+                kept.len(),
+                candidates_before[i.0 as usize],
+                activity.category(activity.instance(i).category).name,
+                scene.name,
+                why.1
+            ),
+        }
+    };
+    for (i, room) in &wanted {
+        if hosting[i.0 as usize].0.is_empty() {
+            return Err(ruled_out(*i, room));
+        }
+        candidates[i.0 as usize] = hosting[i.0 as usize].0.clone();
     }
 
     let mut rooms: Vec<String> = wanted.iter().map(|(_, r)| r.clone()).collect();
@@ -429,8 +459,18 @@ fn bind_furniture(
             .collect();
         columns.sort();
         columns.dedup();
+        // Which instance to blame when no full matching exists: one that lost candidates to
+        // the hosting test, if any.
+        let blame = |fallback: InstanceId| {
+            let i = instances
+                .iter()
+                .copied()
+                .find(|i| hosting[i.0 as usize].0.len() < candidates_before[i.0 as usize])
+                .unwrap_or(fallback);
+            ruled_out(i, &room)
+        };
         if columns.len() < instances.len() {
-            return Err(unmatched(instances[columns.len()], &room));
+            return Err(blame(instances[columns.len()]));
         }
         // Hosting pairs weigh 1000 plus a random tie-breaker; a full matching of such pairs
         // exists exactly when the best assignment scores at least 1000 per instance.
@@ -444,7 +484,7 @@ fn bind_furniture(
         let (_, assignment) = kuhn_munkres(&weights);
         for (r, &c) in assignment.iter().enumerate() {
             if weights[(r, c)] < 1000 {
-                return Err(unmatched(instances[r], &room));
+                return Err(blame(instances[r]));
             }
             bindings[instances[r].0 as usize] = Some(columns[c]);
         }
@@ -473,6 +513,10 @@ fn hosts(
     let mut probes: Vec<Option<(ObjectId, Pose)>> = vec![None; activity.instances.len()];
     let mut out = Vec::with_capacity(candidates.len());
     for (i, list) in candidates.iter().enumerate() {
+        if list.is_empty() {
+            out.push((Vec::new(), (String::new(), String::new())));
+            continue; // not furniture: nothing to choose
+        }
         let mut hosted: Vec<InstanceId> = kinematic
             .iter()
             .filter(|l| {
@@ -480,6 +524,7 @@ fn hosts(
             })
             .map(|l| l.atom.subject)
             .collect();
+        hosted.sort();
         hosted.dedup();
         if hosted.is_empty() {
             out.push((list.clone(), (String::new(), String::new())));
@@ -634,7 +679,8 @@ pub const PHYSICAL_OPTIONS: usize = 10;
 /// Checks that some goal option can be reached in this home: every object in a positive
 /// `ontop`, `inside`, `under`, `nextto`, `touching` or `onfloor` literal of the option can be placed
 /// as it asks. Options are tried smallest first, leaving out those that relate an object to
-/// itself. Each must first pass a shape test — nothing resting on or in two things at once, inside a container
+/// itself. Each must first pass a shape test — nothing on, in or under two things that stay too
+/// far apart for it to reach both, inside a container
 /// whose box can hold its box (in some orientation), on a support whose widest side is at least
 /// its narrowest, under something whose largest side is at least its smallest — and then the first
 /// [`PHYSICAL_OPTIONS`] that do are placed for real in a copy of the world: the objects the option
@@ -659,23 +705,37 @@ pub fn goal_feasible(
     let mut first_failure: Option<(String, String)> = None;
     let mut physical = 0;
     for option in behavior_bddl::options::options(&goal).take(FEASIBILITY_OPTIONS) {
+        // Whether something the option moves goes on, in or under `target` and `other`, which
+        // both stay where they are, though they stand too far apart for it to reach both.
+        let moved = |i: InstanceId| option.iter().any(|l| l.positive && l.atom.subject == i);
+        let apart = |subject: InstanceId, target: InstanceId, other: InstanceId| {
+            let (t, o) = (
+                world.aabb(instance.bindings[target.0 as usize]),
+                world.aabb(instance.bindings[other.0 as usize]),
+            );
+            let gap = (t.mins - o.maxs).max(o.mins - t.maxs).max(Vector::ZERO);
+            !moved(target) && !moved(other) && gap.x.hypot(gap.y) > dims(subject)[2]
+        };
         let too_big = option.iter().filter(|l| l.positive).find_map(|l| {
             let target = l.atom.object?;
             let (a, b) = (dims(l.atom.subject), dims(target));
-            let supports = |l: &Literal| {
-                matches!(l.atom.predicate, Predicate::OnTop | Predicate::Inside)
-                    .then_some(l.atom.object)
-                    .flatten()
+            let support = |o: &Literal| {
+                matches!(
+                    o.atom.predicate,
+                    Predicate::OnTop | Predicate::Inside | Predicate::Under
+                ) && o.positive
+                    && o.atom.subject == l.atom.subject
             };
             let reason = match l.atom.predicate {
-                Predicate::OnTop | Predicate::Inside
+                Predicate::OnTop | Predicate::Inside | Predicate::Under
                     if option.iter().any(|o| {
-                        o.positive
-                            && o.atom.subject == l.atom.subject
-                            && supports(o).is_some_and(|t| t != target)
+                        support(o)
+                            && o.atom
+                                .object
+                                .is_some_and(|t| apart(l.atom.subject, target, t))
                     }) =>
                 {
-                    "it is asked to rest on or in two things at once".to_string()
+                    "it would have to be in two places at once".to_string()
                 }
                 Predicate::Inside if (0..3).any(|k| a[k] > 0.95 * b[k]) => {
                     format!("its box {a:.2?} does not fit in {:.2?}", b)
@@ -772,51 +832,46 @@ fn place_option(
             .or_else(|| subjects.iter().copied().find(free));
         order.extend(next);
     }
-    // What the goal moves is lifted out first, so it does not stand in its own way.
-    let mut world = instance.world.clone();
-    let mut parked_at = Vec::with_capacity(order.len());
+    // What each object is placed by: its own literals, and the symmetric ones of objects placed
+    // before it, handed on reversed (shown as the goal writes them).
+    let mut plans: Vec<Vec<(Literal, Literal)>> = vec![Vec::new(); order.len()];
     for (k, &subject) in order.iter().enumerate() {
+        for l in placements.iter().filter(|l| l.atom.subject == subject) {
+            let target = l.atom.object.expect("binary");
+            match order[k + 1..].iter().position(|&t| t == target) {
+                Some(later) if symmetric(l) => {
+                    let mut reversed = **l;
+                    (reversed.atom.subject, reversed.atom.object) = (target, Some(subject));
+                    plans[k + 1 + later].push((reversed, **l));
+                }
+                _ => plans[k].push((**l, **l)),
+            }
+        }
+    }
+    // What the goal moves is lifted out first, so it does not stand in its own way; an object
+    // whose literals were all handed on stays where it is, for the others to come to it.
+    let mut world = instance.world.clone();
+    for (k, &subject) in order.iter().enumerate() {
+        if plans[k].is_empty() {
+            continue;
+        }
         let id = instance.bindings[subject.0 as usize];
-        let original = world.pose(id);
         let parked = Pose::from_parts(
             Vector::new(-2000.0 - 5.0 * k as f32, -2000.0, 0.0),
-            original.rotation,
+            world.pose(id).rotation,
         );
         world
             .set_pose(id, parked)
             .map_err(|e| (activity.instance(subject).name.clone(), e.to_string()))?;
-        parked_at.push(original);
     }
-    // Symmetric literals handed on to their (later) target, reversed.
-    let mut handed_on: Vec<(InstanceId, Literal)> = Vec::new();
     for (k, &subject) in order.iter().enumerate() {
-        let later = |t: InstanceId| order[k + 1..].contains(&t);
-        let mut literals: Vec<Literal> = Vec::new();
-        for l in placements.iter().filter(|l| l.atom.subject == subject) {
-            let target = l.atom.object.expect("binary");
-            if symmetric(l) && later(target) {
-                let mut reversed = **l;
-                (reversed.atom.subject, reversed.atom.object) = (target, Some(subject));
-                handed_on.push((target, reversed));
-            } else {
-                literals.push(**l);
-            }
-        }
-        literals.extend(
-            handed_on
-                .iter()
-                .filter(|(t, _)| *t == subject)
-                .map(|(_, l)| *l),
-        );
-        let id = instance.bindings[subject.0 as usize];
+        let literals = &plans[k];
         if literals.is_empty() {
-            // Only symmetric literals, all handed on: it stays where it was.
-            let _ = world.set_pose(id, parked_at[k]);
             continue;
         }
         let mut relations: Vec<(Relation, ObjectId)> = literals
             .iter()
-            .map(|l| {
+            .map(|(l, _)| {
                 let target = l.atom.object.expect("binary");
                 (
                     relation_of(l.atom.predicate),
@@ -825,8 +880,12 @@ fn place_option(
             })
             .collect();
         order_relations(&world, &mut relations);
+        let id = instance.bindings[subject.0 as usize];
         world.place_jointly(id, &relations, rng).map_err(|e| {
-            let shown: Vec<String> = literals.iter().map(|l| activity.show_literal(*l)).collect();
+            let shown: Vec<String> = literals
+                .iter()
+                .map(|(_, written)| activity.show_literal(*written))
+                .collect();
             (shown.join(" and "), e.to_string())
         })?;
     }

@@ -308,7 +308,7 @@ fn furniture_that_cannot_host_its_init_literals_is_not_bound() {
             assert!(
             e.to_string().starts_with(
                 "(under gym_shoe.n.01_1 table.n.02_1) and (onfloor gym_shoe.n.01_1 floor.n.01_2) \
-                 could not be satisfied: no table.n.02 of"
+                 could not be satisfied: 0 of the 1 table.n.02 in"
             ) && e.to_string().contains("the relations' areas do not overlap"),
             "{e}"
         )
@@ -319,15 +319,19 @@ fn furniture_that_cannot_host_its_init_literals_is_not_bound() {
 }
 
 #[test]
-fn nextto_in_an_init_is_sampled_too() {
-    // No official definition uses `nextto` in its `:init`; a researcher's own may.
+fn nextto_and_touching_in_an_init_are_sampled_too() {
+    // No official definition uses `nextto` or `touching` in its `:init`; a researcher's own may,
+    // both ways round (the books touch each other).
     let (_, knowledge) = setup();
     let library = Library::new(&knowledge.taxonomy);
     let text = "(define (problem side_by_side_0) (:domain igibson)
       (:objects apple.n.01_1 - apple.n.01 bowl.n.01_1 - bowl.n.01 bucket.n.01_1 - bucket.n.01
+                book.n.02_1 book.n.02_2 - book.n.02
                 table.n.02_1 - table.n.02 floor.n.01_1 - floor.n.01 agent.n.01_1 - agent.n.01)
       (:init (ontop bowl.n.01_1 table.n.02_1) (ontop apple.n.01_1 table.n.02_1)
              (nextto apple.n.01_1 bowl.n.01_1) (nextto bucket.n.01_1 table.n.02_1)
+             (ontop book.n.02_1 table.n.02_1) (ontop book.n.02_2 table.n.02_1)
+             (touching book.n.02_1 book.n.02_2) (touching book.n.02_2 book.n.02_1)
              (inroom table.n.02_1 kitchen) (inroom floor.n.01_1 kitchen)
              (onfloor agent.n.01_1 floor.n.01_1))
       (:goal (inside ?apple.n.01_1 ?bowl.n.01_1)))";

@@ -263,9 +263,11 @@ impl World {
         Ok(candidate)
     }
 
-    /// Heights from which `ontop` looks down for a surface of `target`: its top, and for an open
-    /// piece without doors, drawers or lids (a shelf, a bookcase) the top of each board below,
-    /// tops less than [`LEVEL_SPACING`] apart counting as one.
+    /// Heights from which `ontop` looks down for a surface of `target`: its top, and for anything
+    /// without doors, drawers or lids the top of each of its parts below (a shelf's boards, a
+    /// sofa's seat, a sink's basin — where `ontop` holds too), tops less than [`LEVEL_SPACING`]
+    /// apart counting as one. Closed furniture offers its top only, so nothing sampled `ontop` a
+    /// cabinet ends up shut inside it.
     fn support_levels(&self, target: ObjectId) -> Vec<f32> {
         let object = self.object(target);
         let top = self.aabb(target).maxs.z;

@@ -16,6 +16,18 @@ fn behavior(args: &[&str]) -> Output {
         .expect("the behavior binary runs")
 }
 
+/// Runs the binary and requires success, showing its stderr otherwise.
+fn behavior_ok(args: &[&str]) -> Output {
+    let output = behavior(args);
+    assert!(
+        output.status.success(),
+        "behavior {}: {}",
+        args.join(" "),
+        String::from_utf8_lossy(&output.stderr)
+    );
+    output
+}
+
 fn stdout(output: &Output) -> String {
     String::from_utf8_lossy(&output.stdout).into_owned()
 }
@@ -34,8 +46,7 @@ fn conformance() -> Value {
 
 #[test]
 fn stats_json_lists_the_100_activities_with_exact_volumes() {
-    let output = behavior(&["bddl", "stats", "--json"]);
-    assert!(output.status.success());
+    let output = behavior_ok(&["bddl", "stats", "--json"]);
     let rows: Vec<Value> = serde_json::from_slice(&output.stdout).unwrap();
     assert_eq!(rows.len(), 100);
     let reference = conformance();
@@ -118,7 +129,7 @@ fn eval_agrees_with_an_independent_exact_evaluation_on_random_states() {
             let is_true = |a: Atom| state.contains(&a);
             let path = scratch(&format!("{name}-{seed}.json"));
             write_state(&activity, &state, &path);
-            let output = behavior(&[
+            let output = behavior_ok(&[
                 "bddl",
                 "eval",
                 name,
@@ -126,11 +137,6 @@ fn eval_agrees_with_an_independent_exact_evaluation_on_random_states() {
                 path.to_str().unwrap(),
                 "--json",
             ]);
-            assert!(
-                output.status.success(),
-                "{}",
-                String::from_utf8_lossy(&output.stderr)
-            );
             let report: Value = serde_json::from_slice(&output.stdout).unwrap();
             let (volume, q) = common::volume_and_q(&options, &is_true);
             let success = common::holds(&activity, &formula, &mut Vec::new(), &is_true);
@@ -164,7 +170,7 @@ fn eval_reports_each_conjunct_and_rejects_a_bad_state() {
         r#"{"facts": [["inside", "apple.n.01_1", "carton.n.02_1"], ["inside", "banana.n.02_1", "carton.n.02_2"]]}"#,
     )
     .unwrap();
-    let output = behavior(&[
+    let output = behavior_ok(&[
         "bddl",
         "eval",
         "packing_lunches",
@@ -172,7 +178,6 @@ fn eval_reports_each_conjunct_and_rejects_a_bad_state() {
         state.to_str().unwrap(),
         "--json",
     ]);
-    assert!(output.status.success());
     let report: Value = serde_json::from_slice(&output.stdout).unwrap();
     let holds: Vec<bool> = report["conjuncts"]
         .as_array()
@@ -282,8 +287,7 @@ fn check_accepts_an_unfamiliar_valid_file_and_warns_about_abilities() {
 
 #[test]
 fn check_without_paths_checks_the_100_official_definitions_and_the_domain() {
-    let output = behavior(&["bddl", "check"]);
-    assert!(output.status.success());
+    let output = behavior_ok(&["bddl", "check"]);
     assert!(
         stdout(&output).contains("checked 101 file(s): 0 with errors, 0 error(s), 0 warning(s)")
     );
@@ -291,8 +295,7 @@ fn check_without_paths_checks_the_100_official_definitions_and_the_domain() {
 
 #[test]
 fn options_lists_the_smallest_first() {
-    let output = behavior(&["bddl", "options", "setting_up_candles", "--limit", "3"]);
-    assert!(output.status.success());
+    let output = behavior_ok(&["bddl", "options", "setting_up_candles", "--limit", "3"]);
     let out = stdout(&output);
     assert!(
         out.starts_with("setting_up_candles_0: volume 6\noption 1 (6 literals)\n"),
@@ -337,8 +340,7 @@ fn check_recognizes_a_domain_file() {
 
 #[test]
 fn scene_list_names_fifteen_homes() {
-    let output = behavior(&["scene", "list"]);
-    assert!(output.status.success());
+    let output = behavior_ok(&["scene", "list"]);
     let out = stdout(&output);
     assert_eq!(out.lines().count(), 16, "{out}");
     assert!(out.contains("alder") && out.contains("willow") && out.contains("kitchen_0"));
@@ -347,7 +349,7 @@ fn scene_list_names_fifteen_homes() {
 #[test]
 fn scene_generate_writes_a_scene_file_that_round_trips() {
     let path = scratch("seed_42.json");
-    let output = behavior(&[
+    let output = behavior_ok(&[
         "scene",
         "generate",
         "--seed",
@@ -355,29 +357,19 @@ fn scene_generate_writes_a_scene_file_that_round_trips() {
         "--out",
         path.to_str().unwrap(),
     ]);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
     let text = std::fs::read_to_string(&path).unwrap();
     let scene = behavior_assets::Scene::from_json(&text).unwrap();
     assert_eq!(scene.seed, 42);
     assert_eq!(scene.to_json(), text);
     // The file draws as well as a named home does.
     let png = scratch("seed_42.png");
-    let output = behavior(&[
+    let output = behavior_ok(&[
         "scene",
         "show",
         path.to_str().unwrap(),
         "--png",
         png.to_str().unwrap(),
     ]);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
     let image = image::open(&png).unwrap();
     assert!(image.width() > 500 && image.height() > 300);
     // A broken file is a clear error.
@@ -395,8 +387,7 @@ fn scene_generate_writes_a_scene_file_that_round_trips() {
 
 #[test]
 fn scene_coverage_json_lists_at_least_three_homes_per_activity() {
-    let output = behavior(&["scene", "coverage", "--json"]);
-    assert!(output.status.success());
+    let output = behavior_ok(&["scene", "coverage", "--json"]);
     let rows: Vec<Value> = serde_json::from_slice(&output.stdout).unwrap();
     assert_eq!(rows.len(), 100);
     for row in &rows {
@@ -408,7 +399,7 @@ fn scene_coverage_json_lists_at_least_three_homes_per_activity() {
 #[test]
 fn sample_prints_bindings_and_saves_an_instance() {
     let out = scratch("lunches_instance.json");
-    let output = behavior(&[
+    let output = behavior_ok(&[
         "sample",
         "packing_lunches",
         "--seed",
@@ -417,11 +408,6 @@ fn sample_prints_bindings_and_saves_an_instance() {
         "--out",
         out.to_str().unwrap(),
     ]);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
     let report: Value = serde_json::from_slice(&output.stdout).unwrap();
     assert_eq!(report["activity"], "packing_lunches");
     assert_eq!(report["init_check"], "every init literal holds");

@@ -349,7 +349,7 @@ fn scene_list_names_fifteen_homes() {
 #[test]
 fn scene_generate_writes_a_scene_file_that_round_trips() {
     let path = scratch("seed_42.json");
-    let output = behavior_ok(&[
+    behavior_ok(&[
         "scene",
         "generate",
         "--seed",
@@ -363,7 +363,7 @@ fn scene_generate_writes_a_scene_file_that_round_trips() {
     assert_eq!(scene.to_json(), text);
     // The file draws as well as a named home does.
     let png = scratch("seed_42.png");
-    let output = behavior_ok(&[
+    behavior_ok(&[
         "scene",
         "show",
         path.to_str().unwrap(),

@@ -98,20 +98,7 @@ fn attempt_once(
         .init
         .iter()
         .filter_map(|l| match l {
-            InitLiteral::Atom(l)
-                if l.positive
-                    && matches!(
-                        l.atom.predicate,
-                        Predicate::OnTop
-                            | Predicate::Inside
-                            | Predicate::Under
-                            | Predicate::OnFloor
-                            | Predicate::NextTo
-                            | Predicate::Touching
-                    ) =>
-            {
-                Some(*l)
-            }
+            InitLiteral::Atom(l) if placement(l).is_some() => Some(*l),
             _ => None,
         })
         .collect();
@@ -225,8 +212,6 @@ fn attempt_once(
     // reversed, so two objects that touch each other do not wait for each other. An object rests on
     // what its first `ontop`, `inside` or `under` names, else beside what `nextto` names, else on
     // its floor.
-    let symmetric =
-        |l: &Literal| matches!(l.atom.predicate, Predicate::NextTo | Predicate::Touching);
     let target_of = |l: &Literal| l.atom.object.expect("binary").0 as usize;
     // (handed to, the literal as it is placed, the literal as the definition writes it)
     let mut handed_on: Vec<(usize, Literal, Literal)> = Vec::new();
@@ -238,7 +223,7 @@ fn attempt_once(
         };
         let ready = (0..n).find(|&i| {
             !placed[i]
-                && own(i).all(|l| symmetric(l) || placed[target_of(l)])
+                && own(i).all(|l| is_symmetric(l) || placed[target_of(l)])
                 && (own(i).any(|l| placed[target_of(l)]) || handed_on.iter().any(|h| h.0 == i))
         });
         let Some(i) = ready else { break };
@@ -247,10 +232,7 @@ fn attempt_once(
             if placed[target_of(l)] {
                 literals.push((*l, *l));
             } else {
-                let mut reversed = *l;
-                (reversed.atom.subject, reversed.atom.object) =
-                    (InstanceId(target_of(l) as u32), Some(l.atom.subject));
-                handed_on.push((target_of(l), reversed, *l));
+                handed_on.push((target_of(l), reversed(l), *l));
             }
         }
         literals.extend(
@@ -259,21 +241,8 @@ fn attempt_once(
                 .filter(|h| h.0 == i)
                 .map(|&(_, placed_as, written)| (placed_as, written)),
         );
-        let mut relations: Vec<(Relation, ObjectId)> = literals
-            .iter()
-            .map(|(l, _)| (relation_of(l.atom.predicate), bindings[target_of(l)]))
-            .collect();
-        order_relations(&world, &mut relations);
-        world
-            .place_jointly(bindings[i], &relations, rng)
-            .map_err(|e| SampleError::Literal {
-                literal: literals
-                    .iter()
-                    .map(|(_, written)| show(*written))
-                    .collect::<Vec<_>>()
-                    .join(" and "),
-                reason: e.to_string(),
-            })?;
+        place_by(&mut world, activity, &bindings, i, &literals, rng)
+            .map_err(|(literal, reason)| SampleError::Literal { literal, reason })?;
         placed[i] = true;
     }
     if let Some(i) = placed.iter().position(|p| !p) {
@@ -567,7 +536,7 @@ fn hosts(
                         .flat_map(|prefix| {
                             targets.iter().map(move |&t| {
                                 let mut v = prefix.clone();
-                                v.push((relation_of(l.atom.predicate), t));
+                                v.push((relation_of(l), t));
                                 v
                             })
                         })
@@ -589,11 +558,7 @@ fn hosts(
                 let _ = world.set_pose(probe.0, probe.1);
                 if !placed {
                     why = (
-                        literals
-                            .iter()
-                            .map(|l| activity.show_literal(**l))
-                            .collect::<Vec<_>>()
-                            .join(" and "),
+                        show_all(activity, literals.iter().copied()),
                         last_error.unwrap_or_default(),
                     );
                     ok = false;
@@ -639,15 +604,73 @@ fn add_probe(
     Ok((id, park))
 }
 
-fn relation_of(predicate: Predicate) -> Relation {
-    match predicate {
+/// The placement a literal asks for: a positive `ontop`, `inside`, `under`, `nextto`, `touching`
+/// or `onfloor`.
+fn placement(l: &Literal) -> Option<Relation> {
+    let relation = match l.atom.predicate {
         Predicate::OnTop => Relation::OnTop,
         Predicate::Inside => Relation::Inside,
         Predicate::Under => Relation::Under,
         Predicate::NextTo => Relation::NextTo,
         Predicate::Touching => Relation::Touching,
-        _ => Relation::OnFloor,
-    }
+        Predicate::OnFloor => Relation::OnFloor,
+        _ => return None,
+    };
+    l.positive.then_some(relation)
+}
+
+/// The relation of a literal already known to be a placement.
+fn relation_of(l: &Literal) -> Relation {
+    placement(l).expect("a placement literal")
+}
+
+fn is_symmetric(l: &Literal) -> bool {
+    placement(l).is_some_and(Relation::is_symmetric)
+}
+
+/// The same relation stated from its object's side (for symmetric ones).
+fn reversed(l: &Literal) -> Literal {
+    let mut r = *l;
+    (r.atom.subject, r.atom.object) = (l.atom.object.expect("binary"), Some(l.atom.subject));
+    r
+}
+
+/// Places instance `i` by all its `literals` at once, each given as placed (perhaps reversed from
+/// the other side) and as the definition writes it; on failure, the written ones and why.
+fn place_by(
+    world: &mut World,
+    activity: &Activity,
+    bindings: &[ObjectId],
+    i: usize,
+    literals: &[(Literal, Literal)],
+    rng: &mut ChaCha8Rng,
+) -> Result<(), (String, String)> {
+    let mut relations: Vec<(Relation, ObjectId)> = literals
+        .iter()
+        .map(|(l, _)| {
+            (
+                relation_of(l),
+                bindings[l.atom.object.expect("binary").0 as usize],
+            )
+        })
+        .collect();
+    order_relations(world, &mut relations);
+    world
+        .place_jointly(bindings[i], &relations, rng)
+        .map(|_| ())
+        .map_err(|e| {
+            let written = show_all(activity, literals.iter().map(|(_, w)| w));
+            (written, e.to_string())
+        })
+}
+
+/// Literals as an error shows them: `(a) and (b)`.
+fn show_all<'a>(activity: &Activity, literals: impl IntoIterator<Item = &'a Literal>) -> String {
+    literals
+        .into_iter()
+        .map(|l| activity.show_literal(*l))
+        .collect::<Vec<_>>()
+        .join(" and ")
 }
 
 /// Puts first the relation that picks where an object rests ([`World::place_jointly`]): a support
@@ -779,26 +802,10 @@ fn place_option(
     option: &[Literal],
     rng: &mut ChaCha8Rng,
 ) -> Result<(), (String, String)> {
-    let placements: Vec<&Literal> = option
-        .iter()
-        .filter(|l| {
-            l.positive
-                && matches!(
-                    l.atom.predicate,
-                    Predicate::OnTop
-                        | Predicate::Inside
-                        | Predicate::Under
-                        | Predicate::NextTo
-                        | Predicate::Touching
-                        | Predicate::OnFloor
-                )
-        })
-        .collect();
+    let placements: Vec<&Literal> = option.iter().filter(|l| placement(l).is_some()).collect();
     let mut subjects: Vec<InstanceId> = placements.iter().map(|l| l.atom.subject).collect();
     subjects.sort();
     subjects.dedup();
-    let symmetric =
-        |l: &Literal| matches!(l.atom.predicate, Predicate::NextTo | Predicate::Touching);
     // Targets first: an object waits while something it goes on, in or under is still to be
     // placed. `nextto` and `touching` are symmetric, so they make nothing wait: between two moved
     // objects, the later one is placed beside the earlier.
@@ -807,7 +814,7 @@ fn place_option(
         let waiting = |s: InstanceId| {
             placements.iter().any(|l| {
                 l.atom.subject == s
-                    && !symmetric(l)
+                    && !is_symmetric(l)
                     && l.atom
                         .object
                         .is_some_and(|t| t != s && subjects.contains(&t) && !order.contains(&t))
@@ -839,11 +846,7 @@ fn place_option(
         for l in placements.iter().filter(|l| l.atom.subject == subject) {
             let target = l.atom.object.expect("binary");
             match order[k + 1..].iter().position(|&t| t == target) {
-                Some(later) if symmetric(l) => {
-                    let mut reversed = **l;
-                    (reversed.atom.subject, reversed.atom.object) = (target, Some(subject));
-                    plans[k + 1 + later].push((reversed, **l));
-                }
+                Some(later) if is_symmetric(l) => plans[k + 1 + later].push((reversed(l), **l)),
                 _ => plans[k].push((**l, **l)),
             }
         }
@@ -865,29 +868,10 @@ fn place_option(
             .map_err(|e| (activity.instance(subject).name.clone(), e.to_string()))?;
     }
     for (k, &subject) in order.iter().enumerate() {
-        let literals = &plans[k];
-        if literals.is_empty() {
-            continue;
+        if !plans[k].is_empty() {
+            let i = subject.0 as usize;
+            place_by(&mut world, activity, &instance.bindings, i, &plans[k], rng)?;
         }
-        let mut relations: Vec<(Relation, ObjectId)> = literals
-            .iter()
-            .map(|(l, _)| {
-                let target = l.atom.object.expect("binary");
-                (
-                    relation_of(l.atom.predicate),
-                    instance.bindings[target.0 as usize],
-                )
-            })
-            .collect();
-        order_relations(&world, &mut relations);
-        let id = instance.bindings[subject.0 as usize];
-        world.place_jointly(id, &relations, rng).map_err(|e| {
-            let shown: Vec<String> = literals
-                .iter()
-                .map(|(_, written)| activity.show_literal(*written))
-                .collect();
-            (shown.join(" and "), e.to_string())
-        })?;
     }
     Ok(())
 }

@@ -45,6 +45,11 @@ pub enum Relation {
 }
 
 impl Relation {
+    /// `nextto` and `touching` hold both ways round.
+    pub fn is_symmetric(self) -> bool {
+        matches!(self, Relation::NextTo | Relation::Touching)
+    }
+
     pub fn name(self) -> &'static str {
         match self {
             Relation::OnTop => "ontop",
@@ -160,7 +165,7 @@ impl World {
             (y0, y1) = (y0.max(other.mins.y), y1.min(other.maxs.y));
         }
         let area = self.aabb(target);
-        let (x, y) = if matches!(relation, Relation::NextTo | Relation::Touching) {
+        let (x, y) = if relation.is_symmetric() {
             // Beside one of the target's four sides, a small gap away, facing some part of it.
             let gap = match relation {
                 Relation::NextTo => uniform(rng, 0.005, NEXTTO_GAP),

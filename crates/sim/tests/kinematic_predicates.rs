@@ -3,17 +3,23 @@
 
 mod common;
 
-use behavior_sim::World;
+use behavior_sim::{ObjectId, World};
 use common::*;
 
-#[test]
-fn ontop_an_apple_dropped_on_a_plate_on_a_table() {
+/// A table with a plate dropped on it and an apple dropped on the plate, settled.
+fn apple_on_plate_on_table() -> (World, ObjectId, ObjectId, ObjectId) {
     let mut world = World::default();
     two_room_floor(&mut world);
     let table = table(&mut world, -1.0, 0.0);
     let plate = plate(&mut world, v(-1.0, 0.0, 0.80));
     let apple = apple(&mut world, "apple_1", v(-1.0, 0.0, 1.0));
     settle(&mut world, 2.0);
+    (world, table, plate, apple)
+}
+
+#[test]
+fn ontop_an_apple_dropped_on_a_plate_on_a_table() {
+    let (world, table, plate, apple) = apple_on_plate_on_table();
     assert!(world.ontop(apple, plate));
     assert!(
         !world.ontop(apple, table),
@@ -26,12 +32,7 @@ fn ontop_an_apple_dropped_on_a_plate_on_a_table() {
 
 #[test]
 fn touching_only_what_is_in_contact() {
-    let mut world = World::default();
-    two_room_floor(&mut world);
-    let table = table(&mut world, -1.0, 0.0);
-    let plate = plate(&mut world, v(-1.0, 0.0, 0.80));
-    let apple = apple(&mut world, "apple_1", v(-1.0, 0.0, 1.0));
-    settle(&mut world, 2.0);
+    let (world, table, plate, apple) = apple_on_plate_on_table();
     assert!(world.touching(apple, plate) && world.touching(plate, apple));
     assert!(world.touching(plate, table));
     assert!(!world.touching(apple, table));

@@ -2,16 +2,14 @@
 //! `cargo bench -p behavior-assets`.
 
 use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
-use behavior_bddl::data::DataDir;
+use behavior_data::DataDir;
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::time::Duration;
 
 fn benches(c: &mut Criterion) {
-    let taxonomy = DataDir::locate(None, |m| eprintln!("{m}"))
-        .unwrap()
-        .taxonomy()
-        .unwrap();
+    let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
+    let taxonomy = behavior_bddl::load::read_taxonomy(&data.taxonomy_path()).unwrap();
     let library = Library::new(&taxonomy);
     let (name, seed) = NAMED_HOMES[0];
     c.bench_function("generate_a_home", |b| {

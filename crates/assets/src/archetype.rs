@@ -6,7 +6,8 @@
 //! doors, drawers and lids its shape has. Abilities and the named points they need are added by
 //! the [`crate::library::Library`], from the taxonomy of the synset asked for.
 
-use behavior_sim::{JointKind, LinkSpec, ObjectSpec, Part, Primitive};
+pub use behavior_sim::Material;
+use behavior_sim::{BodyKind, JointKind, JointSpec, LinkSpec, ObjectSpec, Part, Primitive, Visual};
 use rapier3d::math::{Pose, Rotation, Vector};
 
 /// A family of procedural geometry. Containers have real walls and an opening, so `inside` is
@@ -111,41 +112,6 @@ impl Shape {
     }
 }
 
-/// What an object's surface is made of: it sets the friction of its colliders.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Material {
-    Wood,
-    Metal,
-    Plastic,
-    Glass,
-    Ceramic,
-    Cloth,
-    Paper,
-    Food,
-    Rubber,
-    Stone,
-}
-
-impl Material {
-    /// Coulomb friction coefficient against typical household surfaces (engineering-table values:
-    /// wood on wood ~0.4, metal ~0.4, plastic ~0.35, glass and glazed ceramic ~0.25–0.3, cloth and
-    /// rubber high).
-    pub fn friction(self) -> f32 {
-        match self {
-            Material::Wood => 0.45,
-            Material::Metal => 0.4,
-            Material::Plastic => 0.35,
-            Material::Glass => 0.25,
-            Material::Ceramic => 0.3,
-            Material::Cloth => 0.7,
-            Material::Paper => 0.5,
-            Material::Food => 0.6,
-            Material::Rubber => 0.9,
-            Material::Stone => 0.55,
-        }
-    }
-}
-
 /// An object family for one synset.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Archetype {
@@ -222,11 +188,14 @@ fn side_door(name: &str, min: Vector, max: Vector, t: f32, density: f32) -> Link
     LinkSpec {
         name: name.into(),
         parts: vec![span(v(min.x, min.y - t, min.z), v(max.x, min.y, max.z))],
-        joint: JointKind::Revolute,
-        anchor: v(min.x, min.y - t, 0.0),
-        axis: v(0.0, 0.0, -1.0),
-        range: 1.9,
-        damping: 2.0,
+        parent: None,
+        joint: JointSpec::opening(
+            JointKind::Revolute,
+            v(min.x, min.y - t, 0.0),
+            v(0.0, 0.0, -1.0),
+            1.9,
+            2.0,
+        ),
         density,
     }
 }
@@ -236,11 +205,14 @@ fn drop_door(min: Vector, max: Vector, t: f32, density: f32) -> LinkSpec {
     LinkSpec {
         name: "door".into(),
         parts: vec![span(v(min.x, min.y - t, min.z), v(max.x, min.y, max.z))],
-        joint: JointKind::Revolute,
-        anchor: v(0.0, min.y - t, min.z),
-        axis: v(1.0, 0.0, 0.0),
-        range: 1.5,
-        damping: 2.0,
+        parent: None,
+        joint: JointSpec::opening(
+            JointKind::Revolute,
+            v(0.0, min.y - t, min.z),
+            v(1.0, 0.0, 0.0),
+            1.5,
+            2.0,
+        ),
         density,
     }
 }
@@ -257,11 +229,14 @@ fn drawer(name: &str, min: Vector, max: Vector, t: f32, density: f32) -> LinkSpe
     LinkSpec {
         name: name.into(),
         parts,
-        joint: JointKind::Prismatic,
-        anchor: Vector::ZERO,
-        axis: v(0.0, -1.0, 0.0),
-        range: 0.8 * (max.y - min.y),
-        damping: 2.0,
+        parent: None,
+        joint: JointSpec::opening(
+            JointKind::Prismatic,
+            Vector::ZERO,
+            v(0.0, -1.0, 0.0),
+            0.8 * (max.y - min.y),
+            2.0,
+        ),
         density,
     }
 }
@@ -410,6 +385,7 @@ impl Archetype {
                         half_height: (w / 2.0 - radius).max(0.001),
                     },
                     offset: lying,
+                    visual: None,
                 }]
             }
             // Worn: every edge chamfered by a fifth of the thinnest side.
@@ -450,11 +426,8 @@ impl Archetype {
                 links.push(LinkSpec {
                     name: "lid".into(),
                     parts: vec![span(v(min.x, min.y, h), v(max.x, max.y, h + t))],
-                    joint: JointKind::Revolute,
-                    anchor,
-                    axis,
-                    range: 1.9,
-                    damping: 1.0,
+                    parent: None,
+                    joint: JointSpec::opening(JointKind::Revolute, anchor, axis, 1.9, 1.0),
                     density,
                 });
                 tub(min, max, t)
@@ -681,11 +654,14 @@ impl Archetype {
                         v(min.x + frame, min.y + d / 4.0, sill + 0.01),
                         v(max.x - frame, max.y - d / 4.0, sill + h - frame),
                     )],
-                    joint: JointKind::Revolute,
-                    anchor: v(min.x + frame, 0.0, 0.0),
-                    axis: v(0.0, 0.0, -1.0),
-                    range: 1.6,
-                    damping: 2.0,
+                    parent: None,
+                    joint: JointSpec::opening(
+                        JointKind::Revolute,
+                        v(min.x + frame, 0.0, 0.0),
+                        v(0.0, 0.0, -1.0),
+                        1.6,
+                        2.0,
+                    ),
                     density,
                 });
                 layout.front_button = v(max.x - frame - 0.05, min.y - 0.01, sill + h * 0.5);
@@ -693,9 +669,17 @@ impl Archetype {
             }
         };
         let mut spec = ObjectSpec::new(name, self.synset, parts);
-        spec.fixed = self.shape.is_fixed();
+        spec.body = if self.shape.is_fixed() {
+            BodyKind::Fixed
+        } else {
+            BodyKind::Dynamic
+        };
         spec.density = density;
         spec.friction = self.material.friction();
+        spec.visual = Visual {
+            color: self.color,
+            material: self.material,
+        };
         spec.links = links;
         (spec, layout)
     }

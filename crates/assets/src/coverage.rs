@@ -7,10 +7,11 @@ use crate::scene::Scene;
 use behavior_bddl::Taxonomy;
 use behavior_bddl::activity::{Activity, InitLiteral};
 use behavior_bddl::taxonomy::FLOOR_SYNSET;
+use behavior_core::RoomType;
 use std::collections::BTreeMap;
 
 /// (room type, synset) → how many instances the activity places in rooms of that type.
-pub type Requirements = BTreeMap<(String, String), usize>;
+pub type Requirements = BTreeMap<(RoomType, String), usize>;
 
 pub fn requirements(activity: &Activity) -> Requirements {
     let mut needs = Requirements::new();
@@ -25,7 +26,7 @@ pub fn requirements(activity: &Activity) -> Requirements {
                 .category(activity.instance(*instance).category)
                 .name
                 .clone();
-            *needs.entry((room.clone(), synset)).or_insert(0) += 1;
+            *needs.entry((*room, synset)).or_insert(0) += 1;
         }
     }
     needs

@@ -20,6 +20,7 @@
 
 use crate::library::{AssetError, Library};
 use crate::scene::{ObjectPlan, RoomPlan, Scene, WALL_HEIGHT, WallPlan};
+use behavior_core::RoomType;
 use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::{Rng, SeedableRng};
 use std::collections::BTreeMap;
@@ -52,36 +53,36 @@ pub const DOOR_CLEARANCE: f32 = 1.1;
 const GAP: f32 = 0.05;
 
 /// Room types every home has, and the others it draws from.
-const CORE_ROOMS: [&str; 4] = ["kitchen", "living_room", "bathroom", "bedroom"];
-const EXTRA_ROOMS: [&str; 6] = [
-    "dining_room",
-    "garage",
-    "home_office",
-    "storage_room",
-    "utility_room",
-    "closet",
+const CORE_ROOMS: [RoomType; 4] = [RoomType::Kitchen, RoomType::LivingRoom, RoomType::Bathroom, RoomType::Bedroom];
+const EXTRA_ROOMS: [RoomType; 6] = [
+    RoomType::DiningRoom,
+    RoomType::Garage,
+    RoomType::HomeOffice,
+    RoomType::StorageRoom,
+    RoomType::UtilityRoom,
+    RoomType::Closet,
 ];
 
 /// Width and depth ranges (m) of a room type.
-fn room_size(kind: &str) -> ([f32; 2], [f32; 2]) {
+fn room_size(kind: RoomType) -> ([f32; 2], [f32; 2]) {
     match kind {
-        "kitchen" => ([4.4, 5.4], [4.2, 5.0]),
-        "living_room" => ([4.8, 6.0], [4.5, 5.5]),
-        "bedroom" => ([3.8, 4.6], [3.8, 4.6]),
-        "bathroom" => ([3.0, 3.6], [3.2, 3.8]),
-        "dining_room" => ([3.6, 4.4], [3.6, 4.4]),
-        "garage" => ([5.0, 6.0], [5.0, 6.0]),
-        "home_office" => ([3.2, 4.0], [3.2, 4.0]),
-        "storage_room" => ([2.8, 3.6], [2.8, 3.4]),
-        "utility_room" => ([3.0, 3.6], [3.0, 3.4]),
+        RoomType::Kitchen => ([4.4, 5.4], [4.2, 5.0]),
+        RoomType::LivingRoom => ([4.8, 6.0], [4.5, 5.5]),
+        RoomType::Bedroom => ([3.8, 4.6], [3.8, 4.6]),
+        RoomType::Bathroom => ([3.0, 3.6], [3.2, 3.8]),
+        RoomType::DiningRoom => ([3.6, 4.4], [3.6, 4.4]),
+        RoomType::Garage => ([5.0, 6.0], [5.0, 6.0]),
+        RoomType::HomeOffice => ([3.2, 4.0], [3.2, 4.0]),
+        RoomType::StorageRoom => ([2.8, 3.6], [2.8, 3.4]),
+        RoomType::UtilityRoom => ([3.0, 3.6], [3.0, 3.4]),
         _ => ([2.4, 3.0], [2.4, 3.0]), // closet
     }
 }
 
 /// What stands in a room of each type, biggest first; `table` and `chair` go in the middle.
-fn furniture(kind: &str) -> &'static [&'static str] {
+fn furniture(kind: RoomType) -> &'static [&'static str] {
     match kind {
-        "kitchen" => &[
+        RoomType::Kitchen => &[
             "electric_refrigerator.n.01",
             "countertop.n.01",
             "countertop.n.01",
@@ -95,41 +96,41 @@ fn furniture(kind: &str) -> &'static [&'static str] {
             "chair.n.01",
             "microwave.n.02",
         ],
-        "living_room" => &[
+        RoomType::LivingRoom => &[
             "sofa.n.01",
             "shelf.n.01",
             "cabinet.n.01",
             "table.n.02",
             "table.n.02",
         ],
-        "bedroom" => &[
+        RoomType::Bedroom => &[
             "bed.n.01",
             "cabinet.n.01",
             "cabinet.n.01",
             "cabinet.n.01",
             "table.n.02",
         ],
-        "bathroom" => &["bathtub.n.01", "shower.n.01", "toilet.n.02", "sink.n.01"],
-        "dining_room" => &["table.n.02", "chair.n.01", "chair.n.01"],
-        "garage" => &["shelf.n.01", "cabinet.n.01"],
-        "home_office" => &["cabinet.n.01", "table.n.02", "chair.n.01"],
-        "storage_room" => &["shelf.n.01", "sink.n.01", "table.n.02"],
-        "utility_room" => &["washer.n.03", "dryer.n.01", "sink.n.01", "cabinet.n.01"],
+        RoomType::Bathroom => &["bathtub.n.01", "shower.n.01", "toilet.n.02", "sink.n.01"],
+        RoomType::DiningRoom => &["table.n.02", "chair.n.01", "chair.n.01"],
+        RoomType::Garage => &["shelf.n.01", "cabinet.n.01"],
+        RoomType::HomeOffice => &["cabinet.n.01", "table.n.02", "chair.n.01"],
+        RoomType::StorageRoom => &["shelf.n.01", "sink.n.01", "table.n.02"],
+        RoomType::UtilityRoom => &["washer.n.03", "dryer.n.01", "sink.n.01", "cabinet.n.01"],
         _ => &["shelf.n.01", "cabinet.n.01"], // closet
     }
 }
 
 /// How many windows a room type gets on its outer wall.
-fn windows(kind: &str) -> usize {
+fn windows(kind: RoomType) -> usize {
     match kind {
-        "living_room" => 2,
-        "kitchen" | "bedroom" | "dining_room" | "home_office" => 1,
+        RoomType::LivingRoom => 2,
+        RoomType::Kitchen | RoomType::Bedroom | RoomType::DiningRoom | RoomType::HomeOffice => 1,
         _ => 0,
     }
 }
 
 fn uniform(rng: &mut ChaCha8Rng, range: [f32; 2]) -> f32 {
-    behavior_sim::placement::uniform(rng, range[0], range[1])
+    behavior_core::rng::uniform(rng, range[0], range[1])
 }
 
 /// An axis-aligned footprint on the floor.
@@ -179,7 +180,7 @@ pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, Asset
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     // The program: the core rooms and three others. The named homes cycle through the other
     // types so that each appears in several of them.
-    let mut kinds: Vec<&str> = CORE_ROOMS.to_vec();
+    let mut kinds: Vec<RoomType> = CORE_ROOMS.to_vec();
     let named = NAMED_HOMES
         .iter()
         .position(|&(n, s)| n == name && s == seed);
@@ -196,25 +197,25 @@ pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, Asset
         kinds.swap(i, j);
     }
     // The dining room goes beside the living room, on the same side of the corridor.
-    if let Some(d) = kinds.iter().position(|&k| k == "dining_room") {
+    if let Some(d) = kinds.iter().position(|&k| k == RoomType::DiningRoom) {
         kinds.remove(d);
         let l = kinds
             .iter()
-            .position(|&k| k == "living_room")
+            .position(|&k| k == RoomType::LivingRoom)
             .expect("a core room");
         if l + 2 <= kinds.len() {
-            kinds.insert(l + 2, "dining_room");
+            kinds.insert(l + 2, RoomType::DiningRoom);
         } else {
-            kinds.insert(l - 1, "dining_room");
+            kinds.insert(l - 1, RoomType::DiningRoom);
         }
     }
     // Alternate rooms north and south of the corridor, west to east.
     let mut rooms: Vec<RoomPlan> = Vec::new();
     let mut cursor = [0.0f32, 0.0f32];
-    let mut counts: BTreeMap<&str, u32> = BTreeMap::new();
+    let mut counts: BTreeMap<RoomType, u32> = BTreeMap::new();
     let mut doorways: Vec<(usize, f32, f32)> = Vec::new(); // (room, x centre, wall y)
     for (k, kind) in kinds.iter().enumerate() {
-        let (wr, dr) = room_size(kind);
+        let (wr, dr) = room_size(*kind);
         let (w, d) = (
             (uniform(&mut rng, wr) * 10.0).round() / 10.0,
             (uniform(&mut rng, dr) * 10.0).round() / 10.0,
@@ -226,9 +227,9 @@ pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, Asset
         } else {
             (-d, 0.0)
         };
-        let instance = counts.entry(kind).or_insert(0);
+        let instance = counts.entry(*kind).or_insert(0);
         rooms.push(RoomPlan {
-            kind: kind.to_string(),
+            kind: *kind,
             instance: *instance,
             min: [x0, y0],
             max: [x0 + w, y1],
@@ -257,7 +258,7 @@ pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, Asset
         }
     }
     rooms.push(RoomPlan {
-        kind: "corridor".into(),
+        kind: RoomType::Corridor,
         instance: 0,
         min: [0.0, 0.0],
         max: [length, CORRIDOR_WIDTH],
@@ -358,11 +359,11 @@ pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, Asset
         } else {
             room.max[1]
         };
-        for k in 0..windows(&room.kind) {
+        for k in 0..windows(room.kind) {
             let (size, variant) = library.sample("window.n.01", &mut rng)?;
             let x = room.min[0]
                 + (k as f32 + 1.0) * (room.max[0] - room.min[0])
-                    / (windows(&room.kind) as f32 + 1.0);
+                    / (windows(room.kind) as f32 + 1.0);
             let y = if outer_y < door_y {
                 outer_y + half + 0.05
             } else {
@@ -391,7 +392,7 @@ pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, Asset
                 joints: vec![0.0],
             });
         }
-        for synset in furniture(&room.kind) {
+        for synset in furniture(room.kind) {
             if *synset == "table.n.02" && tables_to_skip > 0 {
                 tables_to_skip -= 1;
                 continue;
@@ -574,10 +575,10 @@ struct Opening {
 /// The opening between the living room and a dining room beside it (the first, if a home drawn
 /// from a free seed has several), if the home has both.
 fn open_plan(rooms: &[RoomPlan]) -> Option<Opening> {
-    let living = rooms.iter().position(|r| r.kind == "living_room")?;
+    let living = rooms.iter().position(|r| r.kind == RoomType::LivingRoom)?;
     let l = &rooms[living];
     rooms.iter().enumerate().find_map(|(dining, d)| {
-        if d.kind != "dining_room" {
+        if d.kind != RoomType::DiningRoom {
             return None;
         }
         let (x, toward_dining) = if (l.max[0] - d.min[0]).abs() < 1e-4 {

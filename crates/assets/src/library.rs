@@ -3,7 +3,7 @@
 use crate::archetype::{Archetype, Layout, Shape};
 use crate::catalog::CATALOG;
 use behavior_bddl::Taxonomy;
-use behavior_bddl::taxonomy::Ability;
+use behavior_core::Ability;
 use behavior_sim::{ObjectSpec, PointKind};
 use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::Rng;
@@ -101,7 +101,7 @@ impl<'t> Library<'t> {
     ) -> Result<(&'static Archetype, Vector, u32), AssetError> {
         let archetype = self.choose(synset, rng)?;
         let size = Vector::from_array(std::array::from_fn(|k| {
-            behavior_sim::placement::uniform(rng, archetype.min[k], archetype.max[k])
+            behavior_core::rng::uniform(rng, archetype.min[k], archetype.max[k])
         }));
         Ok((archetype, size, rng.next_u32() % archetype.shape.variants()))
     }
@@ -110,7 +110,7 @@ impl<'t> Library<'t> {
     pub fn sample(&self, synset: &str, rng: &mut ChaCha8Rng) -> Result<(Vector, u32), AssetError> {
         let archetype = self.resolve(synset)?;
         let size = Vector::from_array(std::array::from_fn(|k| {
-            behavior_sim::placement::uniform(rng, archetype.min[k], archetype.max[k])
+            behavior_core::rng::uniform(rng, archetype.min[k], archetype.max[k])
         }));
         Ok((size, rng.next_u32() % archetype.shape.variants()))
     }
@@ -137,7 +137,9 @@ impl<'t> Library<'t> {
     ) -> ObjectSpec {
         let (mut spec, layout) = archetype.build(name, size, variant);
         spec.category = synset.to_string();
-        spec.abilities_from(self.taxonomy);
+        if let Some(abilities) = self.taxonomy.abilities(&spec.category) {
+            spec.abilities = abilities.clone();
+        }
         if spec.abilities.contains_key(&Ability::Sliceable) {
             spec.halves = Some(archetype.halves(size, variant));
         }

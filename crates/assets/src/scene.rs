@@ -17,6 +17,7 @@
 //! Every room gets a floor object named `floor_<kind>_<instance>`.
 
 use crate::library::{AssetError, Library};
+use behavior_core::RoomType;
 use behavior_sim::{ObjectId, ObjectSpec, Part, Primitive, Room, World, WorldError};
 use rapier3d::math::{Pose, Rotation, Vector};
 use serde::{Deserialize, Serialize};
@@ -37,7 +38,7 @@ pub struct Scene {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RoomPlan {
-    pub kind: String,
+    pub kind: RoomType,
     pub instance: u32,
     pub min: [f32; 2],
     pub max: [f32; 2],
@@ -140,10 +141,12 @@ impl Scene {
             .at(center)
             .fixed();
             // Floors get dusty and stained like any surface.
-            spec.abilities_from(library.taxonomy());
+            if let Some(abilities) = library.taxonomy().abilities(&spec.category) {
+                spec.abilities = abilities.clone();
+            }
             let floor = world.add(spec)?;
             world.add_room(Room {
-                kind: room.kind.clone(),
+                kind: room.kind,
                 instance: room.instance,
                 min: room.min,
                 max: room.max,
@@ -196,7 +199,9 @@ impl Scene {
             let id = world.add(spec)?;
             let links = world.object(id).links.len();
             for (link, &q) in plan.joints.iter().enumerate().take(links) {
-                world.set_joint_position(id, link, q);
+                world
+                    .set_joint_position(id, link, q)
+                    .map_err(SceneError::World)?;
             }
             objects.push(id);
         }

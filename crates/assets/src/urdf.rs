@@ -8,7 +8,7 @@
 //! visual mesh standing in for missing collision geometry is split into convex parts with parry's
 //! V-HACD (or, if that yields only flat parts, replaced by its convex hull). Joint limits must start at 0 (closed); a `continuous` joint opens up to a full turn.
 
-use behavior_sim::{JointKind, LinkSpec, ObjectSpec, Part, Primitive};
+use behavior_sim::{JointKind, JointSpec, LinkSpec, ObjectSpec, Part, Primitive};
 use rapier3d::math::{Pose, Rotation, Vector};
 use rapier3d::parry::shape::ConvexPolyhedron;
 use rapier3d::parry::transformation::vhacd::{VHACD, VHACDParameters};
@@ -138,11 +138,8 @@ pub fn import_urdf(path: &Path, name: &str, category: &str) -> Result<ObjectSpec
         spec.links.push(LinkSpec {
             name: j.name.clone(),
             parts,
-            joint: kind,
-            anchor: frame.translation,
-            axis: frame.rotation * j.axis,
-            range,
-            damping: 2.0,
+            parent: None,
+            joint: JointSpec::opening(kind, frame.translation, frame.rotation * j.axis, range, 2.0),
             density: spec.density,
         });
     }
@@ -323,6 +320,7 @@ fn link_parts(link: roxmltree::Node, dir: &Path, pose: Pose) -> Result<Vec<Part>
                         parts.extend(hulls.into_iter().map(|hull| Part {
                             primitive: Primitive::ConvexHull { points: hull },
                             offset: at,
+                            visual: None,
                         }));
                         continue;
                     }
@@ -337,6 +335,7 @@ fn link_parts(link: roxmltree::Node, dir: &Path, pose: Pose) -> Result<Vec<Part>
         parts.push(Part {
             primitive,
             offset: at,
+            visual: None,
         });
     }
     Ok(parts)

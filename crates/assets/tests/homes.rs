@@ -3,16 +3,17 @@
 
 use behavior_assets::coverage::{missing, requirements};
 use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
-use behavior_bddl::data::DataDir;
+use behavior_core::RoomType;
+use behavior_data::DataDir;
 
 #[test]
 fn named_homes_generate_build_and_round_trip_exactly() {
     let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
-    let taxonomy = data.taxonomy().unwrap();
+    let taxonomy = behavior_bddl::load::read_taxonomy(&data.taxonomy_path()).unwrap();
     let library = Library::new(&taxonomy);
     for (name, seed) in NAMED_HOMES {
         let scene = generate(name, seed, &library).unwrap();
-        let kinds: Vec<&str> = scene.rooms.iter().map(|r| r.kind.as_str()).collect();
+        let kinds: Vec<&str> = scene.rooms.iter().map(|r| r.kind.name()).collect();
         for core in ["kitchen", "living_room", "bathroom", "bedroom", "corridor"] {
             assert!(kinds.contains(&core), "{name} lacks a {core}");
         }
@@ -24,7 +25,7 @@ fn named_homes_generate_build_and_round_trip_exactly() {
         assert_eq!(built.objects.len(), scene.objects.len());
         // Every object stands in the room it is filed under.
         for (plan, &id) in scene.objects.iter().zip(&built.objects) {
-            let c = built.world.aabb(id).center();
+            let c = built.world.core().aabb(id).center();
             assert_eq!(
                 scene.room_at(c.x, c.y),
                 Some(plan.room),
@@ -47,7 +48,7 @@ fn named_homes_generate_build_and_round_trip_exactly() {
 #[test]
 fn furniture_does_not_overlap_and_settles_in_place() {
     let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
-    let taxonomy = data.taxonomy().unwrap();
+    let taxonomy = behavior_bddl::load::read_taxonomy(&data.taxonomy_path()).unwrap();
     let library = Library::new(&taxonomy);
     let (name, seed) = NAMED_HOMES[0];
     let scene = generate(name, seed, &library).unwrap();
@@ -55,7 +56,7 @@ fn furniture_does_not_overlap_and_settles_in_place() {
     let boxes: Vec<_> = built
         .objects
         .iter()
-        .map(|&id| built.world.aabb(id))
+        .map(|&id| built.world.core().aabb(id))
         .collect();
     for i in 0..boxes.len() {
         for j in i + 1..boxes.len() {
@@ -90,7 +91,7 @@ fn furniture_does_not_overlap_and_settles_in_place() {
 #[test]
 fn every_official_activity_is_covered_by_at_least_three_named_homes() {
     let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
-    let knowledge = data.knowledge().unwrap();
+    let knowledge = behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();
     let library = Library::new(&knowledge.taxonomy);
     let homes: Vec<Scene> = NAMED_HOMES
         .iter()
@@ -99,7 +100,7 @@ fn every_official_activity_is_covered_by_at_least_three_named_homes() {
     let mut short = Vec::new();
     for name in data.activities().unwrap() {
         let (activity, _) = knowledge
-            .load(&data.problem_source(&name).unwrap())
+            .load(&behavior_bddl::load::read_source(&data.problem_path(&name).unwrap()).unwrap())
             .unwrap();
         let needs = requirements(&activity);
         let covering = homes
@@ -120,7 +121,7 @@ fn every_official_activity_is_covered_by_at_least_three_named_homes() {
 #[test]
 fn a_dining_room_opens_onto_the_living_room_with_a_table_across() {
     let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
-    let taxonomy = data.taxonomy().unwrap();
+    let taxonomy = behavior_bddl::load::read_taxonomy(&data.taxonomy_path()).unwrap();
     let library = Library::new(&taxonomy);
     let mut open = 0;
     // The named homes, and homes of free seeds, which may draw several dining rooms.
@@ -130,15 +131,15 @@ fn a_dining_room_opens_onto_the_living_room_with_a_table_across() {
         let living = scene
             .rooms
             .iter()
-            .position(|r| r.kind == "living_room")
+            .position(|r| r.kind == RoomType::LivingRoom)
             .unwrap();
         let l = &scene.rooms[living];
         let beside = |d: &&behavior_assets::scene::RoomPlan| {
-            d.kind == "dining_room" && (l.max[0] == d.min[0] || l.min[0] == d.max[0])
+            d.kind == RoomType::DiningRoom && (l.max[0] == d.min[0] || l.min[0] == d.max[0])
         };
         let Some(d) = scene.rooms.iter().find(beside) else {
             assert!(
-                !scene.rooms.iter().any(|r| r.kind == "dining_room"),
+                !scene.rooms.iter().any(|r| r.kind == RoomType::DiningRoom),
                 "{name} {seed}: no dining room beside the living room"
             );
             continue;
@@ -163,7 +164,7 @@ fn a_dining_room_opens_onto_the_living_room_with_a_table_across() {
         // A living-room table reaches at least 30 cm over the dining room's floor.
         let built = scene.build(&library).unwrap();
         let across = scene.objects.iter().zip(&built.objects).any(|(o, &id)| {
-            let b = built.world.aabb(id);
+            let b = built.world.core().aabb(id);
             let over = (b.maxs.x.min(d.max[0]) - b.mins.x.max(d.min[0])).max(0.0);
             o.room == living && o.synset == "table.n.02" && over >= 0.3
         });

@@ -3,9 +3,9 @@
 
 use behavior_assets::catalog::CATALOG;
 use behavior_assets::{Library, Shape};
-use behavior_bddl::Predicate;
-use behavior_bddl::data::DataDir;
-use behavior_bddl::taxonomy::Ability;
+use behavior_core::Predicate;
+use behavior_data::DataDir;
+use behavior_core::Ability;
 use behavior_sim::{ObjectSpec, Part, Primitive, Relation, World};
 use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::SeedableRng;
@@ -13,20 +13,18 @@ use rapier3d::math::Vector;
 use std::collections::BTreeSet;
 
 fn taxonomy() -> behavior_bddl::Taxonomy {
-    DataDir::locate(None, |m| eprintln!("{m}"))
-        .unwrap()
-        .taxonomy()
-        .unwrap()
+    let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
+    behavior_bddl::load::read_taxonomy(&data.taxonomy_path()).unwrap()
 }
 
 /// Every category declared by the 100 official activities.
 fn official_synsets() -> BTreeSet<String> {
     let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
-    let knowledge = data.knowledge().unwrap();
+    let knowledge = behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();
     let mut synsets = BTreeSet::new();
     for name in data.activities().unwrap() {
         let (activity, _) = knowledge
-            .load(&data.problem_source(&name).unwrap())
+            .load(&behavior_bddl::load::read_source(&data.problem_path(&name).unwrap()).unwrap())
             .unwrap();
         synsets.extend(activity.categories.iter().map(|c| c.name.clone()));
     }
@@ -95,7 +93,7 @@ fn every_archetype_builds_in_every_variant_and_openables_open() {
         for variant in 0..a.shape.variants() {
             let mid = Vector::from_array(std::array::from_fn(|k| (a.min[k] + a.max[k]) / 2.0));
             let (mut spec, _) = a.build(&format!("{}_1", a.synset), mid, variant);
-            spec.abilities_from(&taxonomy);
+            spec.abilities = taxonomy.abilities(a.synset).cloned().unwrap_or_default();
             let openable = spec.abilities.contains_key(&Ability::Openable);
             let mut world = World::default();
             let id = world
@@ -188,9 +186,9 @@ fn containers_used_with_inside_hold_an_object_inside() {
             )
             .unwrap();
         let mut spec = library.spawn(synset, "container", &mut rng).unwrap();
-        spec.fixed = true;
+        spec.body = behavior_sim::BodyKind::Fixed;
         let container = world.add(spec).unwrap();
-        let size = world.aabb(container).maxs - world.aabb(container).mins;
+        let size = world.core().aabb(container).maxs - world.core().aabb(container).mins;
         let radius = (size.x.min(size.y).min(size.z) / 8.0).clamp(0.005, 0.04);
         let ball = world
             .add(
@@ -206,7 +204,7 @@ fn containers_used_with_inside_hold_an_object_inside() {
             .place(ball, Relation::Inside, container, &mut rng)
             .unwrap_or_else(|e| panic!("{synset}: {e}"));
         world.settle(200);
-        assert!(world.inside(ball, container), "{synset}: the ball fell out");
+        assert!(world.core().inside(ball, container), "{synset}: the ball fell out");
     }
 }
 
@@ -268,10 +266,10 @@ fn sliceables_split_into_their_archetype_halves() {
             assert!(spec.halves.is_some(), "{}", a.synset);
             let mut world = World::default();
             let whole = world.add(spec).unwrap();
-            let mass = world.mass(whole);
+            let mass = world.core().mass(whole);
             world.set_state(whole, Predicate::Sliced, true).unwrap();
             let [h1, h2] = world.halves(whole).unwrap();
-            let halves = world.mass(h1) + world.mass(h2);
+            let halves = world.core().mass(h1) + world.core().mass(h2);
             assert!(
                 (halves - mass).abs() <= 0.1 * mass,
                 "{} v{variant}: {mass} kg into {halves} kg",
@@ -279,7 +277,7 @@ fn sliceables_split_into_their_archetype_halves() {
             );
             // Each half lies on its own side of the cut.
             assert!(
-                world.aabb(h1).center().x < world.aabb(h2).center().x,
+                world.core().aabb(h1).center().x < world.core().aabb(h2).center().x,
                 "{}",
                 a.synset
             );
@@ -319,7 +317,7 @@ fn resting_orientations_are_stable_on_a_floor() {
             spec.pose = Pose::from_parts(Vector::new(0.0, 0.0, 1.5), rotation);
             let id = world.add(spec).unwrap();
             // Lower it onto the floor, 5 mm up.
-            let bottom = world.aabb(id).mins.z;
+            let bottom = world.core().aabb(id).mins.z;
             world
                 .set_pose(
                     id,

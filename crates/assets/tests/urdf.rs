@@ -1,8 +1,8 @@
 //! Importing a URDF written by the test itself, with an OBJ door and an STL drawer.
 
 use behavior_assets::urdf::import_urdf;
-use behavior_bddl::Predicate;
-use behavior_bddl::taxonomy::Ability;
+use behavior_core::Predicate;
+use behavior_core::Ability;
 use behavior_sim::{Primitive, World};
 use std::path::{Path, PathBuf};
 
@@ -128,9 +128,9 @@ fn a_urdf_with_obj_and_stl_meshes_becomes_an_articulated_object() {
         .find(|l| l.name == "drawer_slide")
         .unwrap();
     assert_eq!(drawer.parts.len(), 1, "a collision mesh is its convex hull");
-    assert!((drawer.range - 0.3).abs() < 1e-6);
+    assert_eq!(drawer.joint.limits, Some([0.0, 0.3]));
 
-    spec.fixed = true;
+    spec.body = behavior_sim::BodyKind::Fixed;
     spec = spec.ability(Ability::Openable, &[]);
     let mut world = World::default();
     let id = world.add(spec).unwrap();
@@ -138,12 +138,12 @@ fn a_urdf_with_obj_and_stl_meshes_becomes_an_articulated_object() {
         world.step();
     }
     assert!(!world.state(id, Predicate::Open));
-    world.set_joint_position(id, 1, 0.25);
-    assert!((world.joint_position(id, 1) - 0.25).abs() < 1e-4);
+    world.set_joint_position(id, 1, 0.25).unwrap();
+    assert!((world.core().joint_position(id, 1) - 0.25).abs() < 1e-4);
     assert!(world.state(id, Predicate::Open));
     world.set_state(id, Predicate::Open, false).unwrap();
     assert!(!world.state(id, Predicate::Open));
-    let aabb = world.aabb(id);
+    let aabb = world.core().aabb(id);
     assert!(aabb.maxs.z > 0.6 && aabb.mins.x < -0.24, "{aabb:?}");
 }
 

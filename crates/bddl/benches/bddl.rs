@@ -4,7 +4,8 @@
 //! Per-activity medians and the side-by-side with the reference Python implementation come from
 //! `behavior bddl bench` and `bench/side_by_side.sh`.
 
-use behavior_bddl::data::DataDir;
+use behavior_bddl::load::{Knowledge, read_source};
+use behavior_data::DataDir;
 use behavior_bddl::{FactSet, GroundGoal, Optimizer};
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
@@ -12,12 +13,12 @@ use std::time::Duration;
 
 fn benches(c: &mut Criterion) {
     let data = DataDir::locate(None, |m| eprintln!("{m}")).expect("official data");
-    let knowledge = data.knowledge().unwrap();
+    let knowledge = Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();
     let sources: Vec<_> = data
         .activities()
         .unwrap()
         .iter()
-        .map(|a| data.problem_source(a).unwrap())
+        .map(|a| read_source(&data.problem_path(a).unwrap()).unwrap())
         .collect();
 
     c.bench_function("parse_and_check_all_100", |b| {

@@ -7,31 +7,14 @@ use crate::diagnostics::{Diagnostic, Diagnostics, Source, SourceErrors, Span};
 use crate::parser;
 use crate::predicate::Predicate;
 use crate::taxonomy::{SynsetId, Taxonomy, is_synset_name};
+pub use behavior_core::{Atom, InstanceId};
+use behavior_core::RoomType;
 use std::collections::HashMap;
 use std::fmt;
-
-/// The room types the official activities place furniture in (`inroom`).
-pub const ROOM_TYPES: [&str; 11] = [
-    "kitchen",
-    "living_room",
-    "bedroom",
-    "bathroom",
-    "dining_room",
-    "garage",
-    "home_office",
-    "storage_room",
-    "corridor",
-    "utility_room",
-    "closet",
-];
 
 /// Goals that ground to more nodes than this are rejected: they would exhaust memory or time, and
 /// no household activity comes near (the largest official goal, `packing_picnics`, grounds to 112).
 pub const MAX_GROUND_NODES: u64 = 5_000_000;
-
-/// Index of an object instance (`apple.n.01_1`) in its activity, in `:objects` order.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct InstanceId(pub u32);
 
 /// Index of a declared category (`apple.n.01`) in its activity, in `:objects` order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -51,32 +34,6 @@ pub struct Category {
     pub instances: Vec<InstanceId>,
 }
 
-/// A ground atomic formula over an activity's instances: `(ontop apple.n.01_1 table.n.02_1)`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct Atom {
-    pub predicate: Predicate,
-    pub subject: InstanceId,
-    /// The second argument of a binary predicate.
-    pub object: Option<InstanceId>,
-}
-
-impl Atom {
-    pub fn unary(predicate: Predicate, subject: InstanceId) -> Atom {
-        Atom {
-            predicate,
-            subject,
-            object: None,
-        }
-    }
-    pub fn binary(predicate: Predicate, subject: InstanceId, object: InstanceId) -> Atom {
-        Atom {
-            predicate,
-            subject,
-            object: Some(object),
-        }
-    }
-}
-
 /// A ground atom or its negation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct Literal {
@@ -90,7 +47,7 @@ pub enum InitLiteral {
     Atom(Literal),
     InRoom {
         instance: InstanceId,
-        room: String,
+        room: RoomType,
         positive: bool,
     },
 }
@@ -508,14 +465,20 @@ impl Checker<'_> {
         let predicate = self.predicate(predicate, args.len())?;
         if predicate == Predicate::InRoom {
             let instance = self.instance(&args[0])?;
-            let room = args[1].text.clone();
-            if !ROOM_TYPES.contains(&room.as_str()) {
-                self.diagnostics.push(
-                    Diagnostic::warning(args[1].span, format!("unfamiliar room type `{room}`"))
-                        .with_label("homes have no such room")
-                        .with_note(format!("room types: {}", ROOM_TYPES.join(", "))),
-                );
-            }
+            // An unknown room type is an error: no home has such a room, so no instance of the
+            // activity could ever be sampled.
+            let room = match args[1].text.parse::<RoomType>() {
+                Ok(room) => room,
+                Err(unknown) => {
+                    let names: Vec<&str> = RoomType::ALL.iter().map(|r| r.name()).collect();
+                    self.diagnostics.push(
+                        Diagnostic::error(args[1].span, format!("unknown room type `{}`", unknown.0))
+                            .with_label("homes have no such room")
+                            .with_note(format!("room types: {}", names.join(", "))),
+                    );
+                    return None;
+                }
+            };
             return Some(InitLiteral::InRoom {
                 instance,
                 room,

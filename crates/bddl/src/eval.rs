@@ -8,16 +8,7 @@ use crate::activity::{Activity, Atom};
 use crate::predicate::Predicate;
 use serde::Deserialize;
 
-/// Answers the truth of ground atoms in the current state.
-pub trait PredicateOracle {
-    fn holds(&self, atom: Atom) -> bool;
-}
-
-impl<F: Fn(Atom) -> bool> PredicateOracle for F {
-    fn holds(&self, atom: Atom) -> bool {
-        self(atom)
-    }
-}
+pub use behavior_core::PredicateOracle;
 
 /// A state as the set of atoms that are true; every other atom is false.
 ///

@@ -2,7 +2,7 @@
 //! evaluation.
 //!
 //! The pipeline, one module per step:
-//! [`data`] finds the official definitions → [`sexpr`] reads text → [`parser`] builds the
+//! [`load`] reads files → [`sexpr`] reads text → [`parser`] builds the
 //! [`ast`] → [`activity`] checks it against the [`taxonomy`] and the [`predicate`] vocabulary
 //! ([`domain`] checks domain files against the same vocabulary) →
 //! [`ground`] grounds the goal over the activity's instances → [`eval`], [`optimize`] and
@@ -30,11 +30,11 @@
 
 pub mod activity;
 pub mod ast;
-pub mod data;
 pub mod diagnostics;
 pub mod domain;
 pub mod eval;
 pub mod ground;
+pub mod load;
 pub mod matching;
 pub mod optimize;
 pub mod options;
@@ -43,9 +43,11 @@ pub mod predicate;
 pub mod sexpr;
 pub mod taxonomy;
 
-pub use activity::{Activity, Atom, CheckContext, InstanceId, Literal};
+pub use activity::{Activity, CheckContext, Literal};
+pub use behavior_core::{Atom, InstanceId, RoomType};
 pub use diagnostics::{Diagnostic, Diagnostics, Source, SourceErrors};
 pub use eval::{FactSet, PredicateOracle};
+pub use load::{Knowledge, LoadError};
 pub use ground::GroundGoal;
 pub use optimize::{Optimizer, Ratio};
 pub use predicate::Predicate;

@@ -7,128 +7,12 @@
 
 use serde::Deserialize;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
-use std::fmt;
-use std::str::FromStr;
 
-/// The synset every activity uses for the robot; absent from `hierarchy_owned.json`.
-pub const AGENT_SYNSET: &str = "agent.n.01";
-/// The synset of room floors; bound to room floors rather than sampled as objects.
-pub const FLOOR_SYNSET: &str = "floor.n.01";
+pub use behavior_core::{AGENT_SYNSET, Ability, AbilityParams, FLOOR_SYNSET, ParamValue};
 
 /// Index of a synset in a [`Taxonomy`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct SynsetId(pub u32);
-
-/// What an object of a synset can do or undergo, as annotated in the taxonomy.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub enum Ability {
-    Breakable,
-    Burnable,
-    CleaningTool,
-    ColdSource,
-    Cookable,
-    Dustyable,
-    Freezable,
-    HeatSource,
-    Liquid,
-    Openable,
-    Perishable,
-    Screwable,
-    Sliceable,
-    Slicer,
-    Soakable,
-    Stainable,
-    TimeSetable,
-    Toggleable,
-    WaterSource,
-}
-
-impl Ability {
-    pub const ALL: [Ability; 19] = [
-        Ability::Breakable,
-        Ability::Burnable,
-        Ability::CleaningTool,
-        Ability::ColdSource,
-        Ability::Cookable,
-        Ability::Dustyable,
-        Ability::Freezable,
-        Ability::HeatSource,
-        Ability::Liquid,
-        Ability::Openable,
-        Ability::Perishable,
-        Ability::Screwable,
-        Ability::Sliceable,
-        Ability::Slicer,
-        Ability::Soakable,
-        Ability::Stainable,
-        Ability::TimeSetable,
-        Ability::Toggleable,
-        Ability::WaterSource,
-    ];
-
-    /// The spelling used in the taxonomy file.
-    pub fn name(self) -> &'static str {
-        match self {
-            Ability::Breakable => "breakable",
-            Ability::Burnable => "burnable",
-            Ability::CleaningTool => "cleaningTool",
-            Ability::ColdSource => "coldSource",
-            Ability::Cookable => "cookable",
-            Ability::Dustyable => "dustyable",
-            Ability::Freezable => "freezable",
-            Ability::HeatSource => "heatSource",
-            Ability::Liquid => "liquid",
-            Ability::Openable => "openable",
-            Ability::Perishable => "perishable",
-            Ability::Screwable => "screwable",
-            Ability::Sliceable => "sliceable",
-            Ability::Slicer => "slicer",
-            Ability::Soakable => "soakable",
-            Ability::Stainable => "stainable",
-            Ability::TimeSetable => "timeSetable",
-            Ability::Toggleable => "toggleable",
-            Ability::WaterSource => "waterSource",
-        }
-    }
-}
-
-impl FromStr for Ability {
-    type Err = ();
-    fn from_str(s: &str) -> Result<Self, ()> {
-        Ability::ALL.into_iter().find(|a| a.name() == s).ok_or(())
-    }
-}
-
-impl fmt::Display for Ability {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-/// One parameter of an ability, e.g. `cook_temperature: 70.0` or `requires_closed: true`.
-#[derive(Clone, Copy, Debug, PartialEq, Deserialize)]
-#[serde(untagged)]
-pub enum ParamValue {
-    Bool(bool),
-    Number(f64),
-}
-
-impl ParamValue {
-    pub fn as_f64(self) -> Option<f64> {
-        match self {
-            ParamValue::Number(x) => Some(x),
-            ParamValue::Bool(_) => None,
-        }
-    }
-    pub fn as_bool(self) -> Option<bool> {
-        match self {
-            ParamValue::Bool(b) => Some(b),
-            ParamValue::Number(_) => None,
-        }
-    }
-}
-
-pub type AbilityParams = BTreeMap<String, ParamValue>;
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct Synset {
@@ -275,6 +159,11 @@ impl Taxonomy {
         (0..self.synsets.len() as u32).map(SynsetId)
     }
 
+    /// The abilities, with their parameters, of the synset of that name.
+    pub fn abilities(&self, name: &str) -> Option<&BTreeMap<Ability, AbilityParams>> {
+        self.get(name).map(|id| &self.synset(id).abilities)
+    }
+
     pub fn has_ability(&self, id: SynsetId, ability: Ability) -> bool {
         self.synset(id).abilities.contains_key(&ability)
     }
@@ -358,6 +247,8 @@ pub(crate) mod tests {
         let parents: Vec<_> = t.synset(stove).parents.iter().map(|&p| t.name(p)).collect();
         assert_eq!(parents, ["furniture.n.01", "device.n.01"]);
         assert!(t.has_ability(stove, Ability::Toggleable));
+        assert!(t.abilities("stove.n.01").unwrap().contains_key(&Ability::HeatSource));
+        assert!(t.abilities("zzz.n.01").is_none());
         let heat = t.ability(stove, Ability::HeatSource).unwrap();
         assert_eq!(heat["temperature"].as_f64(), Some(500.0));
         assert_eq!(heat["requires_toggled_on"].as_bool(), Some(true));

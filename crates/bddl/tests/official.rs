@@ -1,10 +1,11 @@
 //! Tests on the 100 official BEHAVIOR-100 definitions (fetched from PyPI on first use, see
-//! `behavior_bddl::data`), compared with the reference implementation's recorded outputs in
+//! `behavior_data`), compared with the reference implementation's recorded outputs in
 //! `../shared/reference/bddl-1.0.1-conformance.json`.
 
 mod common;
 
-use behavior_bddl::data::{DataDir, Knowledge};
+use behavior_bddl::load::{Knowledge, read_source};
+use behavior_data::DataDir;
 use behavior_bddl::options::options;
 use behavior_bddl::{Activity, FactSet, GroundGoal, Optimizer, Source};
 use serde_json::Value;
@@ -16,13 +17,13 @@ fn data() -> DataDir {
 
 fn all_activities() -> (DataDir, Knowledge, Vec<(String, Source, Activity)>) {
     let data = data();
-    let knowledge = data.knowledge().unwrap();
+    let knowledge = Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();
     let activities = data
         .activities()
         .unwrap()
         .into_iter()
         .map(|name| {
-            let source = data.problem_source(&name).unwrap();
+            let source = read_source(&data.problem_path(&name).unwrap()).unwrap();
             let (activity, _) = knowledge.load(&source).unwrap_or_else(|e| panic!("{e}"));
             (name, source, activity)
         })
@@ -41,11 +42,11 @@ fn conformance() -> Value {
 #[test]
 fn all_100_official_definitions_parse_and_check_without_errors_or_warnings() {
     let data = data();
-    let knowledge = data.knowledge().unwrap();
+    let knowledge = Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();
     let names = data.activities().unwrap();
     assert_eq!(names.len(), 100);
     for name in names {
-        let source = data.problem_source(&name).unwrap();
+        let source = read_source(&data.problem_path(&name).unwrap()).unwrap();
         let (_, warnings) = knowledge.load(&source).unwrap_or_else(|e| panic!("{e}"));
         // A warning here would be a finding about the official data; there are none.
         assert!(warnings.0.is_empty(), "{}", warnings.render(&source));
@@ -171,7 +172,7 @@ fn no_truncation_or_mutation_of_an_official_file_panics() {
             variants.push(m);
         }
         for variant in variants {
-            match behavior_bddl::data::source_from_bytes(name.clone(), variant) {
+            match behavior_bddl::load::source_from_bytes(name.clone(), variant) {
                 Ok(source) => {
                     if let Err(e) = knowledge.load(&source) {
                         rejected += 1;
@@ -200,7 +201,7 @@ fn no_truncation_or_mutation_of_an_official_file_panics() {
 #[test]
 fn the_official_taxonomy_folds_into_a_dag_with_abilities() {
     use behavior_bddl::taxonomy::Ability;
-    let taxonomy = data().taxonomy().unwrap();
+    let taxonomy = behavior_bddl::load::read_taxonomy(&data().taxonomy_path()).unwrap();
     let id = |name: &str| taxonomy.get(name).unwrap_or_else(|| panic!("{name}"));
     assert_eq!(taxonomy.len(), 757); // 756 synsets in the file, plus agent.n.01
     let stove = id("stove.n.01");

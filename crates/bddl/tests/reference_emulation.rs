@@ -8,7 +8,8 @@
 
 use behavior_bddl::GroundGoal;
 use behavior_bddl::activity::{Activity, Atom, Goal, InstanceId, Term};
-use behavior_bddl::data::DataDir;
+use behavior_bddl::load::{Knowledge, read_source};
+use behavior_data::DataDir;
 use behavior_bddl::options::options;
 use serde_json::{Value, json};
 use sha2::{Digest, Sha256};
@@ -342,11 +343,11 @@ fn the_emulated_reference_reproduces_the_recorded_options_and_ours_are_them_unca
         .join("../../../shared/reference/bddl-1.0.1-conformance.json");
     let reference: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
     let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
-    let knowledge = data.knowledge().unwrap();
+    let knowledge = Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();
     let mut capped = BTreeSet::new();
     for name in data.activities().unwrap() {
         let (activity, _) = knowledge
-            .load(&data.problem_source(&name).unwrap())
+            .load(&read_source(&data.problem_path(&name).unwrap()).unwrap())
             .unwrap();
         let expected = &reference["activities"][&name];
         let mut emulator = Emulator {

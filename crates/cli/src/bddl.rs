@@ -2,7 +2,8 @@
 //! the timing run used for the side-by-side comparison with the reference implementation.
 
 use anyhow::{Context, Result, bail};
-use behavior_bddl::data::{self, DataDir, Knowledge};
+use behavior_bddl::Knowledge;
+use behavior_data::DataDir;
 use behavior_bddl::domain::{is_domain_text, load_domain};
 use behavior_bddl::options::options;
 use behavior_bddl::{Activity, FactSet, GroundGoal, Optimizer, Source};
@@ -60,7 +61,7 @@ pub enum BddlCommand {
 
 pub fn run(command: BddlCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
     let data = DataDir::locate(data_dir, |message| eprintln!("{message}"))?;
-    let knowledge = data.knowledge()?;
+    let knowledge = behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path())?;
     match command {
         BddlCommand::Check { paths } => check(&data, &knowledge, &paths),
         BddlCommand::Stats { json } => stats(&data, &knowledge, json),
@@ -80,10 +81,12 @@ pub fn run(command: BddlCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
 pub fn source_of(data: &DataDir, file: &str) -> Result<Source> {
     let path = Path::new(file);
     if path.exists() {
-        return Ok(data::read_source(path)?);
+        return Ok(behavior_bddl::load::read_source(path)?);
     }
-    data.problem_source(file)
-        .with_context(|| format!("`{file}` is neither a file nor an official activity"))
+    let path = data
+        .problem_path(file)
+        .with_context(|| format!("`{file}` is neither a file nor an official activity"))?;
+    Ok(behavior_bddl::load::read_source(&path)?)
 }
 
 fn load(knowledge: &Knowledge, source: &Source) -> Result<Activity> {
@@ -100,7 +103,7 @@ fn check(data: &DataDir, knowledge: &Knowledge, paths: &[PathBuf]) -> Result<Exi
             .activities()?
             .iter()
             .map(|a| data.problem_path(a))
-            .collect();
+            .collect::<Result<_, _>>()?;
         all.push(data.domain_path());
         all
     } else {
@@ -108,7 +111,7 @@ fn check(data: &DataDir, knowledge: &Knowledge, paths: &[PathBuf]) -> Result<Exi
     };
     let (mut errors, mut warnings, mut failed_files) = (0, 0, 0);
     for path in &paths {
-        let source = match data::read_source(path) {
+        let source = match behavior_bddl::load::read_source(path) {
             Ok(source) => source,
             Err(e) => {
                 println!("{e}");
@@ -155,7 +158,7 @@ struct StatsRow {
 fn stats(data: &DataDir, knowledge: &Knowledge, json: bool) -> Result<ExitCode> {
     let mut rows = Vec::new();
     for name in data.activities()? {
-        let activity = load(knowledge, &data.problem_source(&name)?)?;
+        let activity = load(knowledge, &behavior_bddl::load::read_source(&data.problem_path(&name)?)?)?;
         let goal = GroundGoal::new(&activity);
         let optimizer = Optimizer::new(&goal);
         let state: FactSet = activity.initial_facts().into_iter().collect();
@@ -330,7 +333,7 @@ fn bench(
     };
     let mut rows = Vec::new();
     for name in names {
-        let activity = load(knowledge, &data.problem_source(&name)?)?;
+        let activity = load(knowledge, &behavior_bddl::load::read_source(&data.problem_path(&name)?)?)?;
         let goal = GroundGoal::new(&activity);
         let optimizer = Optimizer::new(&goal);
         let state: FactSet = activity.initial_facts().into_iter().collect();

@@ -7,8 +7,8 @@ use image::{Rgb, RgbImage};
 
 const MARGIN: f32 = 0.6;
 
-fn room_color(kind: &str) -> Rgb<u8> {
-    Rgb(match kind {
+fn room_color(kind: behavior_core::RoomType) -> Rgb<u8> {
+    Rgb(match kind.name() {
         "kitchen" => [255, 236, 179],
         "living_room" => [200, 230, 201],
         "bedroom" => [187, 222, 251],
@@ -80,7 +80,7 @@ pub fn render(scene: &Scene, scale: f32) -> RgbImage {
         }
     };
     for r in &scene.rooms {
-        fill(&mut img, r.min, r.max, room_color(&r.kind));
+        fill(&mut img, r.min, r.max, room_color(r.kind));
     }
     for w in &scene.walls {
         fill(

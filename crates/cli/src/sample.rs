@@ -3,7 +3,8 @@
 use anyhow::{Context, Result, bail};
 use behavior_assets::coverage::{missing, requirements};
 use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
-use behavior_bddl::data::{DataDir, Knowledge};
+use behavior_bddl::Knowledge;
+use behavior_data::DataDir;
 use behavior_sampling::instantiate;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
@@ -58,7 +59,7 @@ fn named_homes(library: &Library) -> Result<Vec<Scene>> {
 
 pub fn sample(args: SampleArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let data = DataDir::locate(data_dir, |message| eprintln!("{message}"))?;
-    let knowledge = data.knowledge()?;
+    let knowledge = behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path())?;
     let library = Library::new(&knowledge.taxonomy);
     let (activity, _) = knowledge.load(&crate::bddl::source_of(&data, &args.activity)?)?;
     let scene = match &args.scene {
@@ -85,7 +86,7 @@ pub fn sample(args: SampleArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
             .iter()
             .zip(&activity.instances)
             .map(|(&id, i)| {
-                let b = instance.world.aabb(id);
+                let b = instance.world.core().aabb(id);
                 (i.name.clone(), b.mins.to_array(), b.maxs.to_array())
             })
             .collect();
@@ -125,7 +126,7 @@ pub fn sample(args: SampleArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
 
 pub fn sample_all(args: SampleAllArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let data = DataDir::locate(data_dir, |message| eprintln!("{message}"))?;
-    let knowledge = data.knowledge()?;
+    let knowledge = behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path())?;
     let library = Library::new(&knowledge.taxonomy);
     let homes = named_homes(&library)?;
     let mut jobs: Vec<(String, usize, u64)> = Vec::new();
@@ -217,7 +218,7 @@ fn load_all(
     data.activities()?
         .into_iter()
         .map(|name| {
-            let (activity, _) = knowledge.load(&data.problem_source(&name)?)?;
+            let (activity, _) = knowledge.load(&behavior_bddl::load::read_source(&data.problem_path(&name)?)?)?;
             Ok((name, activity))
         })
         .collect()

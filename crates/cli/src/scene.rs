@@ -4,7 +4,7 @@
 use anyhow::{Context, Result};
 use behavior_assets::coverage::{missing, requirements};
 use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
-use behavior_bddl::data::DataDir;
+use behavior_data::DataDir;
 use clap::Subcommand;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -41,7 +41,7 @@ pub enum SceneCommand {
 
 pub fn run(command: SceneCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
     let data = DataDir::locate(data_dir, |message| eprintln!("{message}"))?;
-    let knowledge = data.knowledge()?;
+    let knowledge = behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path())?;
     let library = Library::new(&knowledge.taxonomy);
     match command {
         SceneCommand::List => {
@@ -89,7 +89,7 @@ pub fn run(command: SceneCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
                 .collect::<Result<_, _>>()?;
             let mut rows = Vec::new();
             for name in data.activities()? {
-                let (activity, _) = knowledge.load(&data.problem_source(&name)?)?;
+                let (activity, _) = knowledge.load(&behavior_bddl::load::read_source(&data.problem_path(&name)?)?)?;
                 let needs = requirements(&activity);
                 let scenes = homes
                     .iter()

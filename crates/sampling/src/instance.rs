@@ -86,7 +86,7 @@ impl Instance {
                     position: pose.translation.to_array(),
                     rotation: pose.rotation.to_array(),
                     joints: (0..o.links.len())
-                        .map(|k| w.joint_position(id, k))
+                        .map(|k| w.core().joint_position(id, k))
                         .collect(),
                     states: Predicate::UNARY_STATES
                         .iter()
@@ -156,7 +156,9 @@ impl SavedInstance {
                 .enumerate()
                 .take(world.object(id).links.len())
             {
-                world.set_joint_position(id, k, q);
+                world
+                    .set_joint_position(id, k, q)
+                    .map_err(|e| bad(format!("{}: {e}", saved.name)))?;
             }
             for p in Predicate::UNARY_STATES {
                 let on = saved.states.iter().any(|s| s == p.name());

@@ -174,7 +174,7 @@ fn attempt_once(
             let Some(target) = bindings[o.0 as usize] else {
                 continue;
             };
-            let b = world.aabb(target);
+            let b = world.core().aabb(target);
             let room = b.maxs - b.mins;
             let share = 1.0 / (holds(o.0 as usize) as f32).sqrt().ceil().max(1.0);
             let cap = match l.atom.predicate {
@@ -186,7 +186,7 @@ fn attempt_once(
         }
         let mut spec = library.instance_of(archetype, &synset, &instance.name, size, variant);
         spec.pose = Pose::from_translation(Vector::new(1000.0 + 5.0 * i as f32, 1000.0, 0.0));
-        spec.fixed = false;
+        spec.body = behavior_sim::BodyKind::Dynamic;
         let id = world.add(spec).map_err(|e| SampleError::Literal {
             literal: instance.name.clone(),
             reason: e.to_string(),
@@ -306,12 +306,15 @@ pub fn first_unmet(
                 positive,
             } => {
                 let object = bindings[instance.0 as usize];
-                let here = world.room_of(object).unwrap_or("no room");
-                if (here == room) != *positive {
+                let here = world.core().room_of(object);
+                if (here == Some(*room)) != *positive {
                     let name = &activity.instance(*instance).name;
                     return Some((
                         format!("(inroom {name} {room})"),
-                        format!("it stands in {here}"),
+                        format!(
+                            "it stands in {}",
+                            here.map_or("no room", |r| r.name())
+                        ),
                     ));
                 }
             }
@@ -335,7 +338,7 @@ fn bind_furniture(
     rng: &mut ChaCha8Rng,
     bindings: &mut [Option<ObjectId>],
 ) -> Result<(), SampleError> {
-    let mut wanted: Vec<(InstanceId, String)> = activity
+    let mut wanted: Vec<(InstanceId, behavior_bddl::RoomType)> = activity
         .init
         .iter()
         .filter_map(|l| match l {
@@ -343,7 +346,7 @@ fn bind_furniture(
                 instance,
                 room,
                 positive: true,
-            } => Some((*instance, room.clone())),
+            } => Some((*instance, *room)),
             _ => None,
         })
         .collect();
@@ -371,7 +374,7 @@ fn bind_furniture(
             }
         }
     }
-    let unmatched = |i: InstanceId, room: &str| SampleError::NoFurniture {
+    let unmatched = |i: InstanceId, room: &behavior_bddl::RoomType| SampleError::NoFurniture {
         scene: scene.name.clone(),
         instance: activity.instance(i).name.clone(),
         synset: activity
@@ -389,7 +392,7 @@ fn bind_furniture(
     let candidates_before: Vec<usize> = candidates.iter().map(Vec::len).collect();
     // When too few candidates can host, the error says which literal ruled them out. Probes are
     // random, so another attempt may keep more.
-    let ruled_out = |i: InstanceId, room: &str| {
+    let ruled_out = |i: InstanceId, room: &behavior_bddl::RoomType| {
         let (kept, why) = &hosting[i.0 as usize];
         if kept.len() == candidates_before[i.0 as usize] {
             return unmatched(i, room);
@@ -413,7 +416,7 @@ fn bind_furniture(
         candidates[i.0 as usize] = hosting[i.0 as usize].0.clone();
     }
 
-    let mut rooms: Vec<String> = wanted.iter().map(|(_, r)| r.clone()).collect();
+    let mut rooms: Vec<behavior_bddl::RoomType> = wanted.iter().map(|(_, r)| *r).collect();
     rooms.sort();
     rooms.dedup();
     for room in rooms {
@@ -596,7 +599,7 @@ fn add_probe(
     );
     let park = Pose::from_translation(Vector::new(-1000.0 - 5.0 * subject.0 as f32, 1000.0, 0.0));
     spec.pose = park;
-    spec.fixed = false;
+    spec.body = behavior_sim::BodyKind::Dynamic;
     let id = world.add(spec).map_err(|e| SampleError::Literal {
         literal: instance.name.clone(),
         reason: e.to_string(),
@@ -683,7 +686,7 @@ fn order_relations(world: &World, relations: &mut [(Relation, ObjectId)]) {
         Relation::OnFloor => 2,
     };
     let volume = |t: ObjectId| {
-        let b = world.aabb(t);
+        let b = world.core().aabb(t);
         let d = b.maxs - b.mins;
         d.x * d.y * d.z
     };
@@ -720,7 +723,7 @@ pub fn goal_feasible(
         .assuming_false(|atom| atom.object == Some(atom.subject));
     let world = &instance.world;
     let dims = |i: InstanceId| {
-        let b = world.aabb(instance.bindings[i.0 as usize]);
+        let b = world.core().aabb(instance.bindings[i.0 as usize]);
         let mut d = (b.maxs - b.mins).to_array();
         d.sort_by(f32::total_cmp);
         d
@@ -733,8 +736,8 @@ pub fn goal_feasible(
         let moved = |i: InstanceId| option.iter().any(|l| l.positive && l.atom.subject == i);
         let apart = |subject: InstanceId, target: InstanceId, other: InstanceId| {
             let (t, o) = (
-                world.aabb(instance.bindings[target.0 as usize]),
-                world.aabb(instance.bindings[other.0 as usize]),
+                world.core().aabb(instance.bindings[target.0 as usize]),
+                world.core().aabb(instance.bindings[other.0 as usize]),
             );
             let gap = (t.mins - o.maxs).max(o.mins - t.maxs).max(Vector::ZERO);
             !moved(target) && !moved(other) && gap.x.hypot(gap.y) > dims(subject)[2]

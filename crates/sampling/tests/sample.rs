@@ -3,19 +3,20 @@
 use behavior_assets::coverage::{missing, requirements};
 use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
 use behavior_bddl::activity::InitLiteral;
-use behavior_bddl::data::{DataDir, Knowledge};
+use behavior_bddl::Knowledge;
+use behavior_data::DataDir;
 use behavior_bddl::{Activity, PredicateOracle};
 use behavior_sampling::{SampleError, SavedInstance, instantiate};
 
 fn setup() -> (DataDir, Knowledge) {
     let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
-    let knowledge = data.knowledge().unwrap();
+    let knowledge = behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();
     (data, knowledge)
 }
 
 fn activity(data: &DataDir, knowledge: &Knowledge, name: &str) -> Activity {
     knowledge
-        .load(&data.problem_source(name).unwrap())
+        .load(&behavior_bddl::load::read_source(&data.problem_path(name).unwrap()).unwrap())
         .unwrap()
         .0
 }
@@ -41,7 +42,7 @@ fn all_init_literals_hold(activity: &Activity, instance: &behavior_sampling::Ins
             room,
             positive,
         } => {
-            (instance.world.room_of(instance.bindings[i.0 as usize]) == Some(room.as_str()))
+            (instance.world.core().room_of(instance.bindings[i.0 as usize]) == Some(*room))
                 == *positive
         }
     })
@@ -79,7 +80,7 @@ fn the_same_seed_gives_the_same_instance_and_another_seed_another() {
     let home = covering_home(&activity, &library, &knowledge);
     let sample = |seed| instantiate(&activity, &home, seed, &library, &knowledge.taxonomy).unwrap();
     let (a, b, c) = (sample(7), sample(7), sample(8));
-    assert_eq!(a.world.motion_bits(), b.world.motion_bits());
+    assert_eq!(a.world.core().motion_bits(), b.world.core().motion_bits());
     assert_eq!(a.created, b.created);
     // Another seed puts the created objects elsewhere...
     let position = |s: &behavior_sampling::Instance, name: &str| {
@@ -234,13 +235,13 @@ fn table_across_the_opening(home: &Scene) -> String {
     let dining = home
         .rooms
         .iter()
-        .find(|r| r.kind == "dining_room")
+        .find(|r| r.kind == behavior_core::RoomType::DiningRoom)
         .expect("a dining room");
     home.objects
         .iter()
         .find(|o| {
             let reach = o.size[0] / 2.0;
-            home.rooms[o.room].kind == "living_room"
+            home.rooms[o.room].kind == behavior_core::RoomType::LivingRoom
                 && o.synset == "table.n.02"
                 && o.position[0] + reach > dining.min[0]
                 && o.position[0] - reach < dining.max[0]

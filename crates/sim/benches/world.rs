@@ -3,8 +3,10 @@
 //! `cargo bench -p behavior-sim`. Awake physics and the PyBullet comparison:
 //! `bench/physics_side_by_side.sh`.
 
-use behavior_bddl::Predicate;
-use behavior_sim::bench_scene::resting_home;
+use behavior_core::Predicate;
+mod common;
+
+use common::resting_home;
 use behavior_sim::{ObjectId, Substeps, World};
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
@@ -29,12 +31,12 @@ fn all_predicates(world: &World, objects: &[ObjectId]) -> usize {
             true_count += usize::from(world.state(a, p));
         }
         for &b in objects {
-            true_count += usize::from(world.ontop(a, b))
-                + usize::from(world.inside(a, b))
-                + usize::from(world.under(a, b))
-                + usize::from(world.nextto(a, b))
-                + usize::from(world.touching(a, b))
-                + usize::from(world.onfloor(a, b));
+            true_count += usize::from(world.core().ontop(a, b))
+                + usize::from(world.core().inside(a, b))
+                + usize::from(world.core().under(a, b))
+                + usize::from(world.core().nextto(a, b))
+                + usize::from(world.core().touching(a, b))
+                + usize::from(world.core().onfloor(a, b));
         }
     }
     true_count
@@ -54,7 +56,7 @@ fn benches(c: &mut Criterion) {
     objects.extend((11..28).map(ObjectId));
     c.bench_function("all_15_predicates_over_20_objects_cold", |b| {
         b.iter(|| {
-            world.forget_predicates();
+            world.forget_relations();
             black_box(all_predicates(&world, &objects))
         })
     });

@@ -8,7 +8,10 @@
 //! sleeping on; "awake": the same with sleeping disabled. `bench/physics_side_by_side.sh` runs
 //! this and the PyBullet script on the same scene file.
 
-use behavior_sim::bench_scene::resting_home as scene;
+#[path = "../benches/common/mod.rs"]
+mod common;
+
+use common::resting_home as scene;
 use behavior_sim::{ObjectSpec, Primitive, Substeps, World};
 use std::time::Instant;
 
@@ -17,7 +20,7 @@ fn build(substeps: Substeps, sleeping: bool) -> World {
     for spec in scene() {
         world.add(spec).expect("the benchmark scene is valid");
     }
-    world.set_sleeping_allowed(sleeping);
+    world.core_mut().set_sleeping_allowed(sleeping);
     world
 }
 
@@ -29,7 +32,7 @@ fn time(substeps: Substeps, sleeping: bool, steps: usize, repeats: usize) -> (f6
     }
     let asleep = world
         .objects()
-        .filter(|(id, o)| !o.fixed && world.is_sleeping(*id))
+        .filter(|(id, o)| !o.is_fixed() && world.core().is_sleeping(*id))
         .count();
     let mut samples: Vec<f64> = (0..repeats)
         .map(|_| {
@@ -67,7 +70,7 @@ fn scene_json(specs: &[ObjectSpec]) -> serde_json::Value {
             let t = s.pose.translation;
             let r = s.pose.rotation;
             serde_json::json!({
-                "name": s.name, "fixed": s.fixed, "position": [t.x, t.y, t.z],
+                "name": s.name, "fixed": s.body == behavior_sim::BodyKind::Fixed, "position": [t.x, t.y, t.z],
                 "orientation_xyzw": [r.x, r.y, r.z, r.w], "density": s.density, "friction": s.friction,
                 "parts": parts,
             })
@@ -93,7 +96,7 @@ fn main() {
     }
     let (steps, repeats) = if quick { (20, 1) } else { (100, 5) };
     let specs = scene();
-    let dynamic = specs.iter().filter(|s| !s.fixed).count();
+    let dynamic = specs.iter().filter(|s| s.body != behavior_sim::BodyKind::Fixed).count();
     let (idle, asleep) = time(Substeps::Hz300, true, steps, repeats);
     let (awake, _) = time(Substeps::Hz300, false, steps, repeats);
     let (idle_120, _) = time(Substeps::Hz120, true, steps, repeats);

@@ -29,12 +29,15 @@
 //! A sliced object relates as its halves do: both halves must satisfy a predicate it is the
 //! subject of, either half one it is the object of.
 //!
-//! Values are memoized per pair and kept until either object moves: after a step, an object
+//! Values are memoized per pair (a mutex-guarded map, so that worlds are `Sync`) and kept until either object moves: after a step, an object
 //! whose body (or a link's) is awake counts as moved, and so does one that is teleported. A
 //! settled scene therefore answers every predicate from the cache.
 
-use crate::world::{ObjectId, World};
-use behavior_bddl::Predicate;
+use crate::core::Core;
+use crate::object::ObjectId;
+use behavior_core::{Predicate, RoomType};
+use std::collections::HashMap;
+use std::sync::Mutex;
 use rapier3d::math::Vector;
 use rapier3d::parry::bounding_volume::BoundingVolume;
 use rapier3d::parry::query;
@@ -44,29 +47,61 @@ use rapier3d::prelude::Ray;
 pub const TOUCH_DISTANCE: f32 = 0.005;
 /// A support normal must be within 45° of vertical.
 pub const SUPPORT_COS: f32 = std::f32::consts::FRAC_1_SQRT_2;
+/// How far up and down `under` looks (m).
 pub const VERTICAL_RANGE: f32 = 5.0;
+/// How far sideways `nextto` looks (m).
 pub const HORIZONTAL_RANGE: f32 = 1.0;
 /// An object whose bottom is this close above a floor is on it, even lying on a mat or a towel.
 pub const ONFLOOR_HEIGHT: f32 = 0.1;
+/// How many horizontal directions `nextto` looks in.
 pub const HORIZONTAL_DIRECTIONS: usize = 16;
 
-impl World {
+/// Memoized binary relations: (predicate, a, b) → (value, motion counts of a and b when it was
+/// computed). Behind a mutex so that a world is `Sync`: readers on several threads share it. It
+/// is only ever looked up, never iterated, so its order cannot reach the simulation.
+#[derive(Default)]
+pub(crate) struct RelationMemo(Mutex<HashMap<(Predicate, ObjectId, ObjectId), (bool, (u64, u64))>>);
+
+impl Clone for RelationMemo {
+    fn clone(&self) -> Self {
+        RelationMemo(Mutex::new(self.lock().clone()))
+    }
+}
+
+impl RelationMemo {
+    fn lock(&self) -> std::sync::MutexGuard<'_, HashMap<(Predicate, ObjectId, ObjectId), (bool, (u64, u64))>> {
+        // A panic while holding the lock cannot leave the map half-written (inserts are atomic
+        // from the map's point of view), so a poisoned lock is still good.
+        self.0.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
+    pub(crate) fn clear(&self) {
+        self.lock().clear();
+    }
+}
+
+impl Core {
+    /// `touching(a, b)` (see the module docs).
     pub fn touching(&self, a: ObjectId, b: ObjectId) -> bool {
         self.relate(Predicate::Touching, a, b)
     }
 
+    /// `ontop(a, b)` (see the module docs).
     pub fn ontop(&self, a: ObjectId, b: ObjectId) -> bool {
         self.relate(Predicate::OnTop, a, b)
     }
 
+    /// `under(a, b)` (see the module docs).
     pub fn under(&self, a: ObjectId, b: ObjectId) -> bool {
         self.relate(Predicate::Under, a, b)
     }
 
+    /// `inside(a, b)` (see the module docs).
     pub fn inside(&self, a: ObjectId, b: ObjectId) -> bool {
         self.relate(Predicate::Inside, a, b)
     }
 
+    /// `nextto(a, b)` (see the module docs).
     pub fn nextto(&self, a: ObjectId, b: ObjectId) -> bool {
         self.relate(Predicate::NextTo, a, b)
     }
@@ -91,8 +126,7 @@ impl World {
 
     /// The halves that replaced a sliced object.
     fn replaced_by(&self, id: ObjectId) -> Option<[ObjectId; 2]> {
-        let s = self.object_state(id);
-        if s.sliced { s.halves } else { None }
+        self.object(id).replaced_by
     }
 
     /// A memoized predicate: valid while neither object has moved (see [`World::motion`]).
@@ -105,13 +139,14 @@ impl World {
     ) -> bool {
         let stamp = (self.motion(a), self.motion(b));
         let key = (predicate, a, b);
-        if let Some(&(value, seen)) = self.cache.borrow().get(&key)
+        if let Some(&(value, seen)) = self.memo.lock().get(&key)
             && seen == stamp
         {
             return value;
         }
+        // Computed without the lock: relations of sliced objects recurse into this.
         let value = compute();
-        self.cache.borrow_mut().insert(key, (value, stamp));
+        self.memo.lock().insert(key, (value, stamp));
         value
     }
 
@@ -212,6 +247,7 @@ impl World {
         })
     }
 
+    /// `onfloor(a, floor)` (see the module docs).
     pub fn onfloor(&self, a: ObjectId, floor: ObjectId) -> bool {
         if let Some(halves) = self.replaced_by(a) {
             return halves.iter().all(|&h| self.onfloor(h, floor));
@@ -239,7 +275,7 @@ impl World {
         let ray = Ray::new(from, -Vector::Z);
         let mut best: Option<(f32, ObjectId)> = None;
         for (id, object) in self.objects() {
-            if id == except || !object.fixed || !self.present(id) {
+            if id == except || !object.is_fixed() || !self.present(id) {
                 continue;
             }
             for &c in &object.colliders {
@@ -256,13 +292,13 @@ impl World {
 
     /// Whether an object is in the world: not replaced by its halves.
     pub fn present(&self, id: ObjectId) -> bool {
-        !self.object_state(id).sliced
+        self.object(id).is_present()
     }
 
     /// The type of the room at the centre of the object's box.
-    pub fn room_of(&self, a: ObjectId) -> Option<&str> {
+    pub fn room_of(&self, a: ObjectId) -> Option<RoomType> {
         let c = self.aabb(a).center();
-        self.room_at(c.x, c.y).map(|r| r.kind.as_str())
+        self.room_at(c.x, c.y).map(|r| r.kind)
     }
 
     /// Whether a ray hits `target` within `range`. Rays are tested against the target's own

@@ -1,12 +1,15 @@
-//! The BEHAVIOR world: objects made of rigid bodies with compound colliders, rooms and floors,
-//! rigid-body physics (rapier3d, z up, SI units), the step pipeline, snapshots, and the BDDL
-//! predicates computed from them.
+//! The BEHAVIOR world: objects made of rigid bodies with compound colliders and jointed links,
+//! rooms and floors, rigid-body physics (rapier3d, z up, SI units), the state systems (water,
+//! toggling, temperature, dirt, slicing), the kinematic predicates, queries for agents (rays,
+//! shapes, contacts), attachments, appearance, and a step with hooks for the code that must run
+//! inside it.
 //!
-//! It implements the BDDL [`behavior_bddl::PredicateOracle`] through [`oracle::BoundWorld`]; it
-//! knows nothing of BDDL text, activities' goals, homes, assets or rendering.
+//! It answers the language's predicates through [`BoundWorld`], a [`behavior_core::PredicateOracle`];
+//! it knows nothing of BDDL text, activities, homes, assets, robots or rendering — those crates
+//! read the world through [`World::core`] and act on it through the API below.
 //!
 //! ```
-//! use behavior_sim::world::{ObjectSpec, Part, Primitive, World};
+//! use behavior_sim::{ObjectSpec, Part, Primitive, World};
 //! use rapier3d::math::Vector;
 //!
 //! let mut world = World::default();
@@ -17,26 +20,70 @@
 //! for _ in 0..60 {
 //!     world.step();
 //! }
-//! assert!(world.ontop(apple, table));
+//! assert!(world.core().ontop(apple, table));
 //! ```
+//!
+//! Layout: [`World`] (`world.rs`) holds a [`Core`] (`core.rs`: objects, bodies, rooms, physics)
+//! and the state systems (`states/`); `object.rs` says what an object is made of,
+//! `construct.rs` builds one, `step.rs` runs a step and its hooks, `kinematics.rs` computes the
+//! relations, `joints.rs`, `dynamics.rs`, `attachments.rs`, `contacts.rs` and `query.rs` are what
+//! robots, cameras and planners use, `visual.rs` is what renderers draw, `placement.rs` is what
+//! the sampler places with, `oracle.rs` the bridge to the language.
 
-pub mod articulation;
-pub mod bench_scene;
-pub mod kinematics;
-pub mod oracle;
-pub mod particles;
-pub mod placement;
-pub mod slicing;
-pub mod states;
-pub mod temperature;
-pub mod toggling;
-pub mod water;
-pub mod world;
+#![warn(missing_docs)]
 
-pub use oracle::BoundWorld;
-pub use placement::{PlacementError, Relation};
-pub use states::StateError;
-pub use world::{
-    JointKind, LinkSpec, ObjectId, ObjectSpec, Part, PointKind, Primitive, Room, Snapshot,
-    Substeps, World, WorldError,
+mod attachments;
+mod construct;
+mod contacts;
+mod core;
+mod dynamics;
+mod joints;
+mod kinematics;
+mod object;
+mod oracle;
+mod placement;
+mod query;
+mod room;
+mod states;
+mod step;
+mod visual;
+mod world;
+
+pub use attachments::{AttachmentId, AttachmentKind, AttachmentSpec, AttachmentState};
+pub use contacts::{Contact, groups};
+pub use core::{Core, STEP_SECONDS, Substeps, WorldError};
+pub use dynamics::Velocity;
+pub use joints::{Drive, JointState, OPEN_FRACTION};
+pub use kinematics::{
+    HORIZONTAL_DIRECTIONS, HORIZONTAL_RANGE, ONFLOOR_HEIGHT, SUPPORT_COS, TOUCH_DISTANCE,
+    VERTICAL_RANGE,
 };
+pub use object::{
+    BodyKind, BodyRef, JointKind, JointModel, JointSpec, Link, LinkSpec, Object, ObjectId,
+    ObjectSpec, Part, PointKind, Primitive,
+};
+pub use oracle::BoundWorld;
+pub use placement::{
+    DROP_GAP, LEVEL_SPACING, NEXTTO_GAP, PLACEMENT_ATTEMPTS, PlacementError, PlacementFailure,
+    Relation, SUPPORT_NORMAL_Z,
+};
+pub use query::{Proximity, QueryFilter, RayHit};
+pub use room::Room;
+pub use states::StateError;
+pub use states::dirt::{
+    CLEAN_THRESHOLD, CLEANING_REACH, FLOOR_CLEAN_THRESHOLD, MIN_PARTICLES, PARTICLES_PER_SET,
+    WIPE_MARGIN,
+};
+pub use states::slicing::{EDGE_REACH, SLICE_FORCE};
+pub use states::temperature::{
+    DECAY_RATE, DEFAULT_BURN_TEMPERATURE, DEFAULT_COOK_TEMPERATURE, DEFAULT_DISTANCE_THRESHOLD,
+    DEFAULT_FREEZE_TEMPERATURE, DEFAULT_HEATING_RATE, DEFAULT_SOURCE_TEMPERATURE, ROOM_TEMPERATURE,
+};
+pub use states::toggling::{TOGGLE_DISTANCE, TOGGLE_STEPS};
+pub use states::water::{
+    DROP_LIFETIME_STEPS, DROP_MASS, DROP_RADII, DROPS_PER_SOURCE, OUTLET_OFFSET,
+    STEPS_BETWEEN_DROPS,
+};
+pub use step::StepHooks;
+pub use visual::{Material, Visual, VisualMesh, VisualPart, VisualShape};
+pub use world::{Snapshot, World};

@@ -1,13 +1,16 @@
-//! The world answers BDDL predicates: activity instances bound to objects, and each atom computed
+//! The world answers the language's predicates: activity instances bound to objects, and each atom computed
 //! by the world's geometry or read from its states.
 
-use crate::world::{ObjectId, World};
-use behavior_bddl::{Atom, InstanceId, Predicate, PredicateOracle};
+use crate::World;
+use crate::object::ObjectId;
+use behavior_core::{Atom, InstanceId, Predicate, PredicateOracle};
 
 /// A world seen through an activity's bindings: `bindings[i]` is the object of instance `i`.
 /// Floors (`floor.n.01_k`) are bound to room floor objects; an unbound instance satisfies nothing.
 pub struct BoundWorld<'a> {
+    /// The world.
     pub world: &'a World,
+    /// The object of each instance, by instance index.
     pub bindings: &'a [Option<ObjectId>],
 }
 
@@ -23,14 +26,14 @@ impl PredicateOracle for BoundWorld<'_> {
             return false;
         };
         let b = atom.object.and_then(|o| self.object(o));
-        let w = self.world;
+        let (w, c) = (self.world, self.world.core());
         match (atom.predicate, b) {
-            (Predicate::OnTop, Some(b)) => w.ontop(a, b),
-            (Predicate::Inside, Some(b)) => w.inside(a, b),
-            (Predicate::Under, Some(b)) => w.under(a, b),
-            (Predicate::NextTo, Some(b)) => w.nextto(a, b),
-            (Predicate::Touching, Some(b)) => w.touching(a, b),
-            (Predicate::OnFloor, Some(b)) => w.onfloor(a, b),
+            (Predicate::OnTop, Some(b)) => c.ontop(a, b),
+            (Predicate::Inside, Some(b)) => c.inside(a, b),
+            (Predicate::Under, Some(b)) => c.under(a, b),
+            (Predicate::NextTo, Some(b)) => c.nextto(a, b),
+            (Predicate::Touching, Some(b)) => c.touching(a, b),
+            (Predicate::OnFloor, Some(b)) => c.onfloor(a, b),
             (p, _) if p.arity() == 1 => w.state(a, p),
             _ => false,
         }

@@ -15,14 +15,18 @@
 //! one winning. Settling is left to the caller, who usually places several objects first
 //! ([`World::settle`]).
 
-use crate::world::{ObjectId, World};
-use rand_chacha::ChaCha8Rng;
+use crate::World;
+use crate::core::Core;
+use crate::object::ObjectId;
+use behavior_core::rng::{SimRng, uniform};
 use rand_chacha::rand_core::Rng;
+use std::fmt;
 use rapier3d::math::{Pose, Vector};
 use rapier3d::parry::bounding_volume::{Aabb, BoundingVolume};
 use rapier3d::parry::query;
 use rapier3d::prelude::Ray;
 
+/// Poses tried before giving up.
 pub const PLACEMENT_ATTEMPTS: usize = 20;
 /// Gap left under a placed object (m); it lands within a step.
 pub const DROP_GAP: f32 = 0.002;
@@ -34,13 +38,20 @@ pub const LEVEL_SPACING: f32 = 0.1;
 /// A support surface's normal must be this close to vertical.
 pub const SUPPORT_NORMAL_Z: f32 = 0.7;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// A kinematic relation a placement makes true.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Relation {
+    /// `ontop`
     OnTop,
+    /// `inside`
     Inside,
+    /// `under`
     Under,
+    /// `onfloor`
     OnFloor,
+    /// `nextto`
     NextTo,
+    /// `touching`
     Touching,
 }
 
@@ -50,6 +61,7 @@ impl Relation {
         matches!(self, Relation::NextTo | Relation::Touching)
     }
 
+    /// The BDDL predicate's name.
     pub fn name(self) -> &'static str {
         match self {
             Relation::OnTop => "ontop",
@@ -62,37 +74,112 @@ impl Relation {
     }
 }
 
-#[derive(Debug, thiserror::Error, PartialEq, Eq)]
-#[error("could not place {object} {relation} {target} in {attempts} attempts: {reason}")]
-pub struct PlacementError {
-    pub object: String,
-    pub relation: &'static str,
-    pub target: String,
-    pub attempts: usize,
-    /// Why the last attempt failed.
-    pub reason: String,
+/// Why a sampled pose was rejected.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum PlacementFailure {
+    /// No relation was asked for.
+    #[error("no relation asked for")]
+    NothingAsked,
+    /// An object was asked to stand in a relation to itself.
+    #[error("an object cannot be placed relative to itself")]
+    ToItself,
+    /// The areas where the relations allow the object's centre do not overlap.
+    #[error("the relations' areas do not overlap")]
+    AreasDisjoint,
+    /// For `under`: the target has no surface above the sampled point.
+    #[error("the target has no underside there")]
+    NoUnderside,
+    /// Nothing facing up to rest on below the sampled point.
+    #[error("no surface facing up below the sampled point")]
+    NoSurface,
+    /// The object would intersect another.
+    #[error("it would overlap {other}")]
+    Overlaps {
+        /// The other object's name.
+        other: String,
+    },
+    /// The pose was valid but a relation does not hold there.
+    #[error("`{relation}` does not hold at the sampled pose")]
+    DoesNotHold {
+        /// The relation that failed.
+        relation: Relation,
+    },
 }
 
-/// A uniform draw in `[lo, hi)` from 24 random bits: the one way the project turns its seeded
-/// generator into floats.
-pub fn uniform(rng: &mut ChaCha8Rng, lo: f32, hi: f32) -> f32 {
-    let unit = (rng.next_u32() >> 8) as f32 / (1u32 << 24) as f32;
-    lo + (hi - lo) * unit
+/// A placement that found no pose in [`PLACEMENT_ATTEMPTS`] attempts; the object is back where
+/// it was.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct PlacementError {
+    /// The object's name.
+    pub object: String,
+    /// The relations asked for, with their targets' names.
+    pub relations: Vec<(Relation, String)>,
+    /// How many poses were tried.
+    pub attempts: usize,
+    /// Why the last one failed.
+    pub reason: PlacementFailure,
+}
+
+impl fmt::Display for PlacementError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "could not place {}", self.object)?;
+        for (k, (relation, target)) in self.relations.iter().enumerate() {
+            let and = if k == 0 { "" } else { " and" };
+            write!(f, "{and} {relation} {target}")?;
+        }
+        write!(f, " in {} attempts: {}", self.attempts, self.reason)
+    }
+}
+
+impl std::error::Error for PlacementError {}
+
+impl fmt::Display for Relation {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
 }
 
 impl World {
     /// Places `object` in `relation` to `target` (see the module docs); returns the pose chosen.
     /// On failure the object is back where it was.
+    ///
+    /// ```
+    /// use behavior_core::rng::seeded;
+    /// use behavior_sim::{ObjectSpec, Part, Primitive, Relation, World};
+    /// use rapier3d::math::Vector;
+    ///
+    /// let mut world = World::default();
+    /// let top = Primitive::Box { half_extents: Vector::new(0.5, 0.4, 0.02) };
+    /// let table = ObjectSpec::new("table_1", "table.n.02", vec![Part::at(top, Vector::new(0.0, 0.0, 0.75))]);
+    /// let table = world.add(table.fixed()).unwrap();
+    /// let ball = Part::new(Primitive::Sphere { radius: 0.04 });
+    /// let apple = world.add(ObjectSpec::new("apple_1", "apple.n.01", vec![ball])).unwrap();
+    /// world.place(apple, Relation::OnTop, table, &mut seeded(1)).unwrap();
+    /// assert!(world.core().ontop(apple, table));
+    /// ```
     pub fn place(
         &mut self,
         object: ObjectId,
         relation: Relation,
         target: ObjectId,
-        rng: &mut ChaCha8Rng,
+        rng: &mut SimRng,
     ) -> Result<Pose, PlacementError> {
-        self.place_jointly(object, &[(relation, target)], rng)
+        self.core.place_jointly(object, &[(relation, target)], rng)
     }
 
+    /// Places `object` so that every one of `relations` holds at once (see
+    /// [`Core::place_jointly`]).
+    pub fn place_jointly(
+        &mut self,
+        object: ObjectId,
+        relations: &[(Relation, ObjectId)],
+        rng: &mut SimRng,
+    ) -> Result<Pose, PlacementError> {
+        self.core.place_jointly(object, relations, rng)
+    }
+}
+
+impl Core {
     /// Places `object` so that every one of `relations` holds at once: the first picks the
     /// surface it rests on, the others narrow where its centre may go (to their target's
     /// footprint, or the floor's room) and must hold too — a shoe under a table and on the floor of
@@ -101,10 +188,10 @@ impl World {
         &mut self,
         object: ObjectId,
         relations: &[(Relation, ObjectId)],
-        rng: &mut ChaCha8Rng,
+        rng: &mut SimRng,
     ) -> Result<Pose, PlacementError> {
         let original = self.pose(object);
-        let mut reason = String::from("no relation asked for");
+        let mut reason = PlacementFailure::NothingAsked;
         if !relations.is_empty() {
             for _ in 0..PLACEMENT_ATTEMPTS {
                 match self.try_place(object, relations, rng) {
@@ -115,19 +202,12 @@ impl World {
         }
         // A pose that was valid before stays valid; restoring it cannot fail.
         let _ = self.set_pose(object, original);
-        let (relation, target) = relations
-            .first()
-            .map_or(("anywhere", String::new()), |&(r, t)| {
-                (r.name(), self.object(t).name.clone())
-            });
-        let mut target = target;
-        for &(r, t) in relations.iter().skip(1) {
-            target.push_str(&format!(" and {} {}", r.name(), self.object(t).name));
-        }
         Err(PlacementError {
             object: self.object(object).name.clone(),
-            relation,
-            target,
+            relations: relations
+                .iter()
+                .map(|&(r, t)| (r, self.object(t).name.clone()))
+                .collect(),
             attempts: PLACEMENT_ATTEMPTS,
             reason,
         })
@@ -137,11 +217,11 @@ impl World {
         &mut self,
         object: ObjectId,
         relations: &[(Relation, ObjectId)],
-        rng: &mut ChaCha8Rng,
-    ) -> Result<Pose, String> {
+        rng: &mut SimRng,
+    ) -> Result<Pose, PlacementFailure> {
         let (relation, target) = relations[0];
         if relations.iter().any(|&(_, t)| t == object) {
-            return Err("an object cannot be placed relative to itself".into());
+            return Err(PlacementFailure::ToItself);
         }
         let pose = self.pose(object);
         let own = self.aabb(object);
@@ -202,12 +282,12 @@ impl World {
             let (b0, b1) = span(area.mins.y, area.maxs.y, half.y);
             (x0, x1, y0, y1) = (x0.max(a0), x1.min(a1), y0.max(b0), y1.min(b1));
             if x0 > x1 || y0 > y1 {
-                return Err("the relations' areas do not overlap".into());
+                return Err(PlacementFailure::AreasDisjoint);
             }
             (uniform(rng, x0, x1), uniform(rng, y0, y1))
         };
         if !(x0..=x1).contains(&x) || !(y0..=y1).contains(&y) {
-            return Err("the relations' areas do not overlap there".into());
+            return Err(PlacementFailure::AreasDisjoint);
         }
         let start_z = match relation {
             Relation::OnTop => {
@@ -224,7 +304,7 @@ impl World {
             // Just below the target's underside at (x, y).
             Relation::Under => {
                 self.underside(target, x, y, area.mins.z - 1.0)
-                    .ok_or("the target has no underside there")?
+                    .ok_or(PlacementFailure::NoUnderside)?
                     - 0.001
             }
         };
@@ -241,14 +321,16 @@ impl World {
                 self.surface_below(&others, x, y, start_z)
             }
         }
-        .ok_or("no surface facing up below the sampled point")?;
+        .ok_or(PlacementFailure::NoSurface)?;
         let bottom_center = Vector::new(x, y, support + DROP_GAP + half.z);
         let candidate = Pose::from_parts(bottom_center - center_offset, pose.rotation);
         if let Some(other) = self.overlap_at(object, candidate) {
-            return Err(format!("it would overlap {}", self.object(other).name));
+            return Err(PlacementFailure::Overlaps {
+                other: self.object(other).name.clone(),
+            });
         }
-        self.set_pose(object, candidate)
-            .map_err(|e| e.to_string())?;
+        // The candidate is built from finite values, so the teleport cannot fail.
+        let _ = self.set_pose(object, candidate);
         for &(relation, target) in relations {
             let holds = match relation {
                 Relation::OnTop => self.ontop(object, target),
@@ -259,10 +341,7 @@ impl World {
                 Relation::Touching => self.touching(object, target),
             };
             if !holds {
-                return Err(format!(
-                    "`{}` does not hold at the sampled pose",
-                    relation.name()
-                ));
+                return Err(PlacementFailure::DoesNotHold { relation });
             }
         }
         Ok(candidate)
@@ -381,16 +460,5 @@ impl World {
             }
         }
         None
-    }
-
-    /// Steps until every body sleeps or `max_steps` have passed; whether the world came to rest.
-    pub fn settle(&mut self, max_steps: usize) -> bool {
-        for _ in 0..max_steps {
-            self.step();
-            if self.quiet {
-                return true;
-            }
-        }
-        false
     }
 }

@@ -20,23 +20,23 @@ fn apple_on_plate_on_table() -> (World, ObjectId, ObjectId, ObjectId) {
 #[test]
 fn ontop_an_apple_dropped_on_a_plate_on_a_table() {
     let (world, table, plate, apple) = apple_on_plate_on_table();
-    assert!(world.ontop(apple, plate));
+    assert!(world.core().ontop(apple, plate));
     assert!(
-        !world.ontop(apple, table),
+        !world.core().ontop(apple, table),
         "the apple rests on the plate, not the table"
     );
-    assert!(world.ontop(plate, table));
-    assert!(!world.ontop(plate, apple) && !world.ontop(table, plate));
-    assert!(world.is_sleeping(apple), "a settled scene sleeps");
+    assert!(world.core().ontop(plate, table));
+    assert!(!world.core().ontop(plate, apple) && !world.core().ontop(table, plate));
+    assert!(world.core().is_sleeping(apple), "a settled scene sleeps");
 }
 
 #[test]
 fn touching_only_what_is_in_contact() {
     let (world, table, plate, apple) = apple_on_plate_on_table();
-    assert!(world.touching(apple, plate) && world.touching(plate, apple));
-    assert!(world.touching(plate, table));
-    assert!(!world.touching(apple, table));
-    assert!(!world.touching(apple, apple));
+    assert!(world.core().touching(apple, plate) && world.core().touching(plate, apple));
+    assert!(world.core().touching(plate, table));
+    assert!(!world.core().touching(apple, table));
+    assert!(!world.core().touching(apple, apple));
 }
 
 #[test]
@@ -47,10 +47,10 @@ fn inside_an_apple_dropped_into_a_bin_and_not_one_beside_it() {
     let inner = apple(&mut world, "apple_1", v(1.0, 1.0, 0.6));
     let outer = apple(&mut world, "apple_2", v(1.6, 1.0, 0.3));
     settle(&mut world, 2.0);
-    assert!(world.inside(inner, bin));
-    assert!(!world.inside(outer, bin));
-    assert!(!world.inside(bin, inner));
-    assert!(world.ontop(inner, bin), "it rests on the bin's bottom");
+    assert!(world.core().inside(inner, bin));
+    assert!(!world.core().inside(outer, bin));
+    assert!(!world.core().inside(bin, inner));
+    assert!(world.core().ontop(inner, bin), "it rests on the bin's bottom");
 }
 
 #[test]
@@ -61,11 +61,11 @@ fn under_a_ball_below_a_table_top() {
     let below = apple(&mut world, "apple_1", v(-1.0, 0.1, 0.1));
     let beside = apple(&mut world, "apple_2", v(-3.0, 0.0, 0.1));
     settle(&mut world, 1.0);
-    assert!(world.under(below, table));
-    assert!(!world.under(beside, table));
-    assert!(!world.under(table, below));
+    assert!(world.core().under(below, table));
+    assert!(!world.core().under(beside, table));
+    assert!(!world.core().under(table, below));
     assert!(
-        !world.under(below, kitchen_floor),
+        !world.core().under(below, kitchen_floor),
         "the floor is below, not above"
     );
 }
@@ -78,8 +78,8 @@ fn nextto_two_apples_close_together_and_not_far_apart() {
     let b = apple(&mut world, "apple_2", v(-1.0, 2.1, 0.05));
     let far = apple(&mut world, "apple_3", v(-1.0, 3.5, 0.05));
     settle(&mut world, 1.0);
-    assert!(world.nextto(a, b) && world.nextto(b, a));
-    assert!(!world.nextto(a, far));
+    assert!(world.core().nextto(a, b) && world.core().nextto(b, a));
+    assert!(!world.core().nextto(a, far));
 }
 
 #[test]
@@ -90,14 +90,14 @@ fn onfloor_in_the_room_where_the_object_lies() {
     let dropped = apple(&mut world, "apple_1", v(-2.0, -2.0, 0.3));
     let on_table = apple(&mut world, "apple_2", v(-1.0, 0.0, 1.0));
     settle(&mut world, 2.0);
-    assert!(world.onfloor(dropped, kitchen));
-    assert!(!world.onfloor(dropped, living));
+    assert!(world.core().onfloor(dropped, kitchen));
+    assert!(!world.core().onfloor(dropped, living));
     assert!(
-        !world.onfloor(on_table, kitchen),
+        !world.core().onfloor(on_table, kitchen),
         "resting on the table, not the floor"
     );
-    assert_eq!(world.room_of(dropped), Some("kitchen"));
-    assert_eq!(world.room_of(table), Some("kitchen"));
+    assert_eq!(world.core().room_of(dropped), Some(behavior_core::RoomType::Kitchen));
+    assert_eq!(world.core().room_of(table), Some(behavior_core::RoomType::Kitchen));
 }
 
 #[test]
@@ -132,15 +132,15 @@ fn ontop_memo_survives_sleep_and_is_invalidated_by_motion() {
     let table = table(&mut world, -1.0, 0.0);
     let apple = apple(&mut world, "apple_1", v(-1.0, 0.0, 0.9));
     settle(&mut world, 3.0);
-    assert!(world.ontop(apple, table));
-    let count = world.motion(apple);
+    assert!(world.core().ontop(apple, table));
+    let count = world.core().motion(apple);
     settle(&mut world, 1.0);
     assert_eq!(
-        world.motion(apple),
+        world.core().motion(apple),
         count,
         "a sleeping apple does not count as moving"
     );
-    assert!(world.ontop(apple, table));
+    assert!(world.core().ontop(apple, table));
     world
         .set_pose(
             apple,
@@ -148,10 +148,10 @@ fn ontop_memo_survives_sleep_and_is_invalidated_by_motion() {
         )
         .unwrap();
     assert!(
-        !world.ontop(apple, table),
+        !world.core().ontop(apple, table),
         "a teleport invalidates the memo"
     );
-    assert!(world.touching(apple, world.object_named("floor_kitchen").unwrap()));
+    assert!(world.core().touching(apple, world.object_named("floor_kitchen").unwrap()));
 }
 
 #[test]
@@ -172,14 +172,14 @@ fn onfloor_includes_lying_on_a_mat_but_not_sitting_in_a_low_bin() {
     let bin = open_box(&mut world, -1.0, -2.0);
     let in_bin = apple(&mut world, "apple_2", v(-1.0, -2.0, 0.3));
     settle(&mut world, 2.0);
-    assert!(world.ontop(on_mat, mat) && !world.touching(on_mat, kitchen));
+    assert!(world.core().ontop(on_mat, mat) && !world.core().touching(on_mat, kitchen));
     assert!(
-        world.onfloor(on_mat, kitchen),
+        world.core().onfloor(on_mat, kitchen),
         "lying on a mat on the floor"
     );
-    assert!(world.inside(in_bin, bin));
+    assert!(world.core().inside(in_bin, bin));
     assert!(
-        !world.onfloor(in_bin, kitchen),
+        !world.core().onfloor(in_bin, kitchen),
         "in a bin on the floor is not on the floor"
     );
 }

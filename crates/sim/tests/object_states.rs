@@ -2,8 +2,8 @@
 
 mod common;
 
-use behavior_bddl::Predicate;
-use behavior_sim::World;
+use behavior_core::Predicate;
+use behavior_sim::{Drive, World};
 use common::*;
 
 #[test]
@@ -13,7 +13,7 @@ fn cooked_then_burnt_on_a_lit_stove_at_the_thresholds_and_cooling_afterwards() {
     let stove = stove(&mut world, -1.0, 0.0);
     let apple = sliceable_apple(&mut world, "apple_1", v(-1.0, 0.0, 1.0));
     settle(&mut world, 1.0);
-    assert!(world.ontop(apple, stove));
+    assert!(world.core().ontop(apple, stove));
     // Off, nothing happens.
     settle(&mut world, 5.0);
     assert!(!world.state(apple, Predicate::Cooked));
@@ -69,7 +69,7 @@ fn frozen_and_inside_in_a_closed_fridge_but_not_with_the_door_open() {
     let fridge = fridge(&mut world, -2.0, 0.0);
     let apple = sliceable_apple(&mut world, "apple_1", v(-2.0, 0.0, 0.3));
     settle(&mut world, 1.0);
-    assert!(world.inside(apple, fridge));
+    assert!(world.core().inside(apple, fridge));
     assert!(!world.state(fridge, Predicate::Open));
     // −18 °C at 0.02 /s from 23 °C crosses 0 °C after ln(41/18)/0.02 ≈ 41 s.
     settle(&mut world, 40.0);
@@ -101,29 +101,29 @@ fn open_when_the_door_is_beyond_five_percent_of_its_range() {
     two_room_floor(&mut world);
     let fridge = fridge(&mut world, -2.0, 0.0);
     settle(&mut world, 0.5);
-    assert!(world.joint_position(fridge, 0).abs() < 1e-3);
-    world.set_joint_position(fridge, 0, 0.04 * 2.0);
+    assert!(world.core().joint_position(fridge, 0).abs() < 1e-3);
+    world.set_joint_position(fridge, 0, 0.04 * 2.0).unwrap();
     settle(&mut world, 0.5);
     assert!(
         !world.state(fridge, Predicate::Open),
         "{}",
-        world.joint_position(fridge, 0)
+        world.core().joint_position(fridge, 0)
     );
-    world.set_joint_position(fridge, 0, 0.06 * 2.0);
+    world.set_joint_position(fridge, 0, 0.06 * 2.0).unwrap();
     settle(&mut world, 0.5);
     assert!(
         world.state(fridge, Predicate::Open),
         "{}",
-        world.joint_position(fridge, 0)
+        world.core().joint_position(fridge, 0)
     );
     world.set_state(fridge, Predicate::Open, false).unwrap();
     assert!(!world.state(fridge, Predicate::Open));
     world.set_state(fridge, Predicate::Open, true).unwrap();
     settle(&mut world, 1.0);
     assert!(
-        (world.joint_position(fridge, 0) - 2.0).abs() < 0.05,
+        (world.core().joint_position(fridge, 0) - 2.0).abs() < 0.05,
         "{}",
-        world.joint_position(fridge, 0)
+        world.core().joint_position(fridge, 0)
     );
     let apple = sliceable_apple(&mut world, "apple_1", v(2.0, 0.0, 0.1));
     assert!(world.set_state(apple, Predicate::Open, true).is_err());
@@ -169,7 +169,7 @@ fn soaked_a_rag_under_a_running_faucet() {
     let rag = rag(&mut world, v(-1.0, 0.15, 0.7));
     let dry = common::rag(&mut world, v(-2.5, 0.0, 0.1));
     settle(&mut world, 1.0);
-    assert!(world.inside(rag, sink) || world.ontop(rag, sink));
+    assert!(world.core().inside(rag, sink) || world.core().ontop(rag, sink));
     settle(&mut world, 2.0);
     assert!(!world.state(rag, Predicate::Soaked), "the tap is off");
     world.set_state(sink, Predicate::ToggledOn, true).unwrap();
@@ -186,7 +186,7 @@ fn stained_only_a_soaked_rag_cleans_and_dusty_any_rag_does() {
     let table = table(&mut world, -1.0, 0.0);
     let plate = dirty_plate(&mut world, v(-1.0, 0.0, 0.8));
     settle(&mut world, 1.0);
-    assert!(world.ontop(plate, table));
+    assert!(world.core().ontop(plate, table));
     world.set_state(plate, Predicate::Stained, true).unwrap();
     world.set_state(plate, Predicate::Dusty, true).unwrap();
     assert!(world.state(plate, Predicate::Stained) && world.state(plate, Predicate::Dusty));
@@ -194,7 +194,7 @@ fn stained_only_a_soaked_rag_cleans_and_dusty_any_rag_does() {
     // A dry rag laid over the plate takes the dust but not the stains.
     let rag = rag(&mut world, v(-1.0, 0.0, 0.8));
     settle(&mut world, 1.0);
-    assert!(world.touching(rag, plate));
+    assert!(world.core().touching(rag, plate));
     assert!(!world.state(plate, Predicate::Dusty));
     assert!(world.state(plate, Predicate::Stained));
     // Soaked, it takes the stains too.
@@ -227,7 +227,7 @@ fn sliced_a_knife_dropped_onto_a_tomato() {
     );
     assert!(!world.state(knife, Predicate::Sliced));
     settle(&mut world, 1.0);
-    assert!(world.ontop(a, table) || world.ontop(b, table));
+    assert!(world.core().ontop(a, table) || world.core().ontop(b, table));
     assert!(world.set_state(tomato, Predicate::Sliced, false).is_err());
 }
 
@@ -237,55 +237,30 @@ fn open_by_a_motor_driving_the_door() {
     two_room_floor(&mut world);
     let fridge = fridge(&mut world, -2.0, 0.0);
     settle(&mut world, 0.5);
-    world.set_joint_motor(fridge, 0, 1.0, 100.0);
+    world
+        .core_mut()
+        .drive_joint(fridge, 0, Drive::velocity(1.0, 100.0, 1000.0))
+        .unwrap();
     settle(&mut world, 1.0);
     assert!(
         world.state(fridge, Predicate::Open),
         "{}",
-        world.joint_position(fridge, 0)
+        world.core().joint_position(fridge, 0)
     );
     // Released, the damped door coasts on but does not swing shut: nothing pulls it closed.
-    world.set_joint_motor(fridge, 0, 0.0, 5.0);
-    let opened = world.joint_position(fridge, 0);
+    world.core_mut().release_joint(fridge, 0).unwrap();
+    let opened = world.core().joint_position(fridge, 0);
     settle(&mut world, 2.0);
-    assert!(world.joint_position(fridge, 0) >= opened - 0.01);
+    assert!(world.core().joint_position(fridge, 0) >= opened - 0.01);
     assert!(
-        world.joint_position(fridge, 0) <= 2.0 + 0.05,
+        world.core().joint_position(fridge, 0) <= 2.0 + 0.05,
         "the joint limit holds"
     );
 }
 
 #[test]
-fn abilities_come_from_the_taxonomy() {
-    use behavior_bddl::taxonomy::{Ability, Taxonomy};
-    let taxonomy = Taxonomy::from_json(
-        r#"{"name": "entity.n.01", "children": [{"name": "apple.n.01", "abilities": {"cookable": {"cook_temperature": 60}, "sliceable": {}}}]}"#,
-    )
-    .unwrap();
-    let mut spec = behavior_sim::ObjectSpec::new(
-        "apple_1",
-        "apple.n.01",
-        vec![behavior_sim::Part::new(behavior_sim::Primitive::Sphere {
-            radius: 0.04,
-        })],
-    );
-    assert!(spec.abilities_from(&taxonomy));
-    let mut world = World::default();
-    let apple = world.add(spec).unwrap();
-    assert!(world.object(apple).has(Ability::Sliceable));
-    assert_eq!(
-        world
-            .object(apple)
-            .param(Ability::Cookable, "cook_temperature", 70.0),
-        60.0
-    );
-    let mut unknown = behavior_sim::ObjectSpec::new("x", "zzz.n.01", vec![]);
-    assert!(!unknown.abilities_from(&taxonomy));
-}
-
-#[test]
 fn sliced_only_by_the_edge_not_by_the_handle() {
-    use behavior_bddl::taxonomy::Ability;
+    use behavior_core::Ability;
     use behavior_sim::{ObjectSpec, Part, PointKind};
     let knife_with_edge = |world: &mut World, at| {
         // The blade is the +x half; its edge runs along the bottom of that half.
@@ -322,7 +297,7 @@ fn cooked_in_a_microwave_only_when_on_closed_and_inside() {
     let inside = sliceable_apple(&mut world, "apple_1", v(-2.0, 0.0, 1.0));
     let outside = sliceable_apple(&mut world, "apple_2", v(-2.0, -0.5, 0.05));
     settle(&mut world, 1.0);
-    assert!(world.inside(inside, microwave) && !world.inside(outside, microwave));
+    assert!(world.core().inside(inside, microwave) && !world.core().inside(outside, microwave));
     // Off: nothing.
     settle(&mut world, 3.0);
     assert!(world.temperature(inside) < 24.0);
@@ -349,13 +324,13 @@ fn open_state_survives_teleporting_the_object_with_its_door() {
     let mut world = World::default();
     two_room_floor(&mut world);
     let fridge_id = fridge(&mut world, -2.0, 0.0);
-    world.set_joint_position(fridge_id, 0, 0.8);
-    let before = world.joint_position(fridge_id, 0);
+    world.set_joint_position(fridge_id, 0, 0.8).unwrap();
+    let before = world.core().joint_position(fridge_id, 0);
     let mut pose = world.pose(fridge_id);
     pose.translation.x += 1.0;
     world.set_pose(fridge_id, pose).unwrap();
     assert!(
-        (world.joint_position(fridge_id, 0) - before).abs() < 1e-4,
+        (world.core().joint_position(fridge_id, 0) - before).abs() < 1e-4,
         "the door moved with the body"
     );
     settle(&mut world, 1.0);

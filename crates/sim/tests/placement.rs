@@ -29,13 +29,13 @@ fn ontop_inside_under_and_onfloor_placements_hold_after_settling() {
     world
         .place(floor, Relation::OnFloor, living, &mut rng)
         .unwrap();
-    assert!(world.ontop(on, table) && world.inside(inside, bin) && world.under(under, table));
-    assert!(world.onfloor(floor, living) && !world.onfloor(floor, kitchen));
+    assert!(world.core().ontop(on, table) && world.core().inside(inside, bin) && world.core().under(under, table));
+    assert!(world.core().onfloor(floor, living) && !world.core().onfloor(floor, kitchen));
     assert!(world.settle(300), "the world comes to rest");
-    assert!(world.ontop(on, table));
-    assert!(world.inside(inside, bin));
-    assert!(world.under(under, table));
-    assert!(world.onfloor(floor, living));
+    assert!(world.core().ontop(on, table));
+    assert!(world.core().inside(inside, bin));
+    assert!(world.core().under(under, table));
+    assert!(world.core().onfloor(floor, living));
 }
 
 #[test]
@@ -95,10 +95,10 @@ fn a_joint_placement_satisfies_every_relation_or_fails_naming_them_all() {
             &mut rng,
         )
         .unwrap();
-    assert!(world.under(shoe, table) && world.onfloor(shoe, living));
+    assert!(world.core().under(shoe, table) && world.core().onfloor(shoe, living));
     assert!(world.settle(300));
-    assert!(world.under(shoe, table) && world.onfloor(shoe, living));
-    assert!(!world.onfloor(shoe, kitchen));
+    assert!(world.core().under(shoe, table) && world.core().onfloor(shoe, living));
+    assert!(!world.core().onfloor(shoe, kitchen));
 
     // Under a table wholly in the kitchen and on the living room's floor cannot both hold.
     let far = common::table(&mut world, -2.0, 2.0);
@@ -134,11 +134,11 @@ fn nextto_places_beside_the_target_on_the_same_surface() {
             &mut rng,
         )
         .unwrap();
-    assert!(world.nextto(b, a) && world.ontop(b, table));
+    assert!(world.core().nextto(b, a) && world.core().ontop(b, table));
     // Beside the table, on the floor.
     let c = apple(&mut world, "apple_3", v(1.0, 4.0, 0.1));
     world.place(c, Relation::NextTo, table, &mut rng).unwrap();
-    assert!(world.nextto(c, table) && !world.ontop(c, table));
+    assert!(world.core().nextto(c, table) && !world.core().ontop(c, table));
     assert!(world.settle(300));
-    assert!(world.nextto(b, a) && world.nextto(c, table));
+    assert!(world.core().nextto(b, a) && world.core().nextto(c, table));
 }

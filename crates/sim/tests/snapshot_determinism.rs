@@ -49,30 +49,30 @@ fn snapshot_determinism_two_runs_and_a_resumed_run_are_bit_identical() {
     run(&mut first, 500);
     run(&mut second, 500);
     assert_eq!(
-        first.motion_bits(),
-        second.motion_bits(),
+        first.core().motion_bits(),
+        second.core().motion_bits(),
         "same steps, same state"
     );
     let midway = first.snapshot();
 
     run(&mut first, 500);
     run(&mut second, 500);
-    assert_eq!(first.motion_bits(), second.motion_bits());
+    assert_eq!(first.core().motion_bits(), second.core().motion_bits());
 
     // Resume from the midway snapshot in a fresh world, and by rewinding the first one.
     let mut resumed = falling_pile();
     resumed.restore(&midway);
     run(&mut resumed, 500);
     assert_eq!(
-        resumed.motion_bits(),
-        first.motion_bits(),
+        resumed.core().motion_bits(),
+        first.core().motion_bits(),
         "resumed from a snapshot"
     );
-    let end = first.motion_bits();
+    let end = first.core().motion_bits();
     first.restore(&midway);
     assert_eq!(first.steps(), 500);
     run(&mut first, 500);
-    assert_eq!(first.motion_bits(), end, "rewound and replayed");
+    assert_eq!(first.core().motion_bits(), end, "rewound and replayed");
 
     // The pile really moved and came to rest.
     let moved = (0..first.objects().len())
@@ -81,7 +81,7 @@ fn snapshot_determinism_two_runs_and_a_resumed_run_are_bit_identical() {
     assert!(moved > 40, "only {moved} objects fell");
     let asleep = first
         .objects()
-        .filter(|(id, o)| !o.fixed && first.is_sleeping(*id))
+        .filter(|(id, o)| !o.is_fixed() && first.core().is_sleeping(*id))
         .count();
     assert!(
         asleep > 40,
@@ -93,7 +93,7 @@ fn snapshot_determinism_two_runs_and_a_resumed_run_are_bit_identical() {
 /// bit-identically from a snapshot too.
 #[test]
 fn snapshot_determinism_covers_temperatures_water_and_particles() {
-    use behavior_bddl::Predicate;
+    use behavior_core::Predicate;
     let scene = || {
         let mut world = World::default();
         two_room_floor(&mut world);
@@ -114,7 +114,7 @@ fn snapshot_determinism_covers_temperatures_water_and_particles() {
             .flat_map(|d| [d.x.to_bits(), d.y.to_bits(), d.z.to_bits()])
             .collect();
         (
-            world.motion_bits(),
+            world.core().motion_bits(),
             world.temperature(apple).to_bits(),
             world.state(rag, Predicate::Soaked),
             drops,

@@ -2,6 +2,7 @@
 
 #![allow(dead_code)]
 
+use behavior_core::RoomType;
 use behavior_sim::{ObjectId, ObjectSpec, Part, Primitive, Room, World};
 use rapier3d::math::Vector;
 
@@ -41,14 +42,14 @@ pub fn two_room_floor(world: &mut World) -> (ObjectId, ObjectId) {
         )
         .unwrap();
     world.add_room(Room {
-        kind: "kitchen".into(),
+        kind: RoomType::Kitchen,
         instance: 0,
         min: [-5.0, -5.0],
         max: [0.0, 5.0],
         floor: Some(kitchen),
     });
     world.add_room(Room {
-        kind: "living_room".into(),
+        kind: RoomType::LivingRoom,
         instance: 0,
         min: [0.0, -5.0],
         max: [5.0, 5.0],
@@ -94,7 +95,7 @@ pub fn apple(world: &mut World, name: &str, at: Vector) -> ObjectId {
 }
 
 pub fn sliceable_apple(world: &mut World, name: &str, at: Vector) -> ObjectId {
-    use behavior_bddl::taxonomy::{Ability, ParamValue};
+    use behavior_core::{Ability, ParamValue};
     let mut spec = ObjectSpec::new(
         name,
         "apple.n.01",
@@ -140,8 +141,8 @@ pub fn settle(world: &mut World, seconds: f32) {
     }
 }
 
-use behavior_bddl::taxonomy::{Ability, ParamValue};
-use behavior_sim::{JointKind, LinkSpec, PointKind};
+use behavior_core::{Ability, ParamValue};
+use behavior_sim::{JointKind, JointSpec, LinkSpec, PointKind};
 
 pub fn num(x: f32) -> ParamValue {
     ParamValue::Number(f64::from(x))
@@ -192,11 +193,14 @@ pub fn fridge(world: &mut World, x: f32, y: f32) -> ObjectId {
     let door = LinkSpec {
         name: "door".into(),
         parts: vec![Part::at(cuboid(w, t, h / 2.0), v(0.0, -d - t, h / 2.0))],
-        joint: JointKind::Revolute,
-        anchor: v(-w, -d - t, 0.0),
-        axis: v(0.0, 0.0, -1.0),
-        range: 2.0,
-        damping: 5.0,
+        parent: None,
+        joint: JointSpec::opening(
+            JointKind::Revolute,
+            v(-w, -d - t, 0.0),
+            v(0.0, 0.0, -1.0),
+            2.0,
+            5.0,
+        ),
         density: 300.0,
     };
     let spec = ObjectSpec::new("fridge_1", "electric_refrigerator.n.01", parts)
@@ -295,11 +299,14 @@ pub fn microwave(world: &mut World, x: f32, y: f32) -> ObjectId {
             cuboid(w, t, h / 2.0),
             v(0.0, -d - t, z0 + h / 2.0),
         )],
-        joint: JointKind::Revolute,
-        anchor: v(-w, -d - t, 0.0),
-        axis: v(0.0, 0.0, -1.0),
-        range: 1.8,
-        damping: 5.0,
+        parent: None,
+        joint: JointSpec::opening(
+            JointKind::Revolute,
+            v(-w, -d - t, 0.0),
+            v(0.0, 0.0, -1.0),
+            1.8,
+            5.0,
+        ),
         density: 300.0,
     };
     let spec = ObjectSpec::new("microwave_1", "microwave.n.02", parts)

@@ -9,18 +9,27 @@
 //! to be) and closed (if it needs to be). Constants and per-synset parameters are iGibson 2.0's
 //! (`../shared/reference/igibson-2.0-reference.md` §1.4), read from the taxonomy's abilities.
 
-use crate::world::{ObjectId, PointKind, World};
-use behavior_bddl::taxonomy::Ability;
+use crate::core::Core;
+use crate::object::{ObjectId, PointKind};
+use crate::states::toggling::Toggles;
+use behavior_core::Ability;
+use rapier3d::math::Vector;
 
+/// °C.
 pub const ROOM_TEMPERATURE: f32 = 23.0;
 /// Per second, toward room temperature, when no source reaches the object.
 pub const DECAY_RATE: f32 = 0.02;
+/// °C, when the taxonomy gives none.
 pub const DEFAULT_COOK_TEMPERATURE: f32 = 70.0;
+/// °C, when the taxonomy gives none.
 pub const DEFAULT_BURN_TEMPERATURE: f32 = 200.0;
+/// °C.
 pub const DEFAULT_FREEZE_TEMPERATURE: f32 = 0.0;
 /// Defaults of a heat source whose ability lists no parameters.
 pub const DEFAULT_SOURCE_TEMPERATURE: f32 = 200.0;
+/// Per second, of the gap to the source's temperature.
 pub const DEFAULT_HEATING_RATE: f32 = 0.04;
+/// How far a heating element reaches (m).
 pub const DEFAULT_DISTANCE_THRESHOLD: f32 = 0.2;
 
 /// What a source does to objects this step.
@@ -30,13 +39,49 @@ struct Source {
     rate: f32,
     /// The elements' world positions (a stove has several burners) and their reach, or `None`
     /// when the object must be inside.
-    elements: Option<(Vec<rapier3d::math::Vector>, f32)>,
+    elements: Option<(Vec<Vector>, f32)>,
 }
 
-impl World {
-    fn active_sources(&self) -> Vec<Source> {
+/// The temperature system: each object's temperature and the highest it ever reached.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Temperatures {
+    now: Vec<f32>,
+    /// `-inf` before the first step.
+    max: Vec<f32>,
+}
+
+impl Temperatures {
+    pub(crate) fn add_object(&mut self) {
+        self.now.push(ROOM_TEMPERATURE);
+        self.max.push(f32::NEG_INFINITY);
+    }
+
+    /// °C now.
+    pub(crate) fn now(&self, id: ObjectId) -> f32 {
+        self.now[id.0 as usize]
+    }
+
+    /// The highest temperature ever reached (°C).
+    pub(crate) fn max(&self, id: ObjectId) -> f32 {
+        self.max[id.0 as usize]
+    }
+
+    /// Sets the current and highest temperatures, keeping the highest at least the current.
+    pub(crate) fn set(&mut self, id: ObjectId, now: f32, max: f32) {
+        self.now[id.0 as usize] = now;
+        self.max[id.0 as usize] = max.max(now);
+    }
+
+    /// A half made by slicing starts at the whole's temperatures.
+    pub(crate) fn inherit(&mut self, from: ObjectId, to: ObjectId) {
+        let (f, t) = (from.0 as usize, to.0 as usize);
+        self.now[t] = self.now[f];
+        self.max[t] = self.max[f];
+    }
+
+    fn active_sources(core: &Core, toggles: &Toggles) -> Vec<Source> {
         let mut sources = Vec::new();
-        for (id, object) in self.objects() {
+        for (id, object) in core.objects() {
             let Some(ability) = [Ability::HeatSource, Ability::ColdSource]
                 .into_iter()
                 .find(|&a| object.has(a))
@@ -46,14 +91,13 @@ impl World {
             let needs_on = object.flag(ability, "requires_toggled_on", false);
             let needs_closed = object.flag(ability, "requires_closed", false);
             let needs_inside = object.flag(ability, "requires_inside", false);
-            if (needs_on && !self.object_state(id).toggled_on) || (needs_closed && self.is_open(id))
-            {
+            if (needs_on && !toggles.is_on(id)) || (needs_closed && core.is_open(id)) {
                 continue;
             }
             let elements = if needs_inside {
                 None
             } else {
-                let pose = self.pose(id);
+                let pose = core.pose(id);
                 let points: Vec<_> = object
                     .points
                     .iter()
@@ -78,19 +122,18 @@ impl World {
     }
 
     /// One step of the temperature rule.
-    pub(crate) fn update_temperatures(&mut self, dt: f32) {
-        let sources = self.active_sources();
-        for i in 0..self.states.len() {
-            let id = ObjectId(i as u32);
-            let object = self.object(id);
+    pub(crate) fn update(&mut self, core: &Core, toggles: &Toggles, dt: f32) {
+        let sources = Self::active_sources(core, toggles);
+        for (id, object) in core.objects() {
             if ![Ability::Cookable, Ability::Burnable, Ability::Freezable]
                 .into_iter()
                 .any(|a| object.has(a))
             {
                 continue;
             }
-            let old = self.states[i].temperature;
-            let center = self.aabb(id).center();
+            let i = id.0 as usize;
+            let old = self.now[i];
+            let center = core.aabb(id).center();
             let mut new = old;
             let mut reached = false;
             for source in sources.iter().filter(|s| s.id != id) {
@@ -98,7 +141,7 @@ impl World {
                     Some((points, reach)) => {
                         points.iter().any(|at| (center - *at).length() <= *reach)
                     }
-                    None => self.inside(id, source.id),
+                    None => core.inside(id, source.id),
                 };
                 if reaches {
                     new += (source.temperature - old) * source.rate * dt;
@@ -108,9 +151,8 @@ impl World {
             if !reached {
                 new += (ROOM_TEMPERATURE - old) * DECAY_RATE * dt;
             }
-            let s = &mut self.states[i];
-            s.temperature = new;
-            s.max_temperature = s.max_temperature.max(new);
+            self.now[i] = new;
+            self.max[i] = self.max[i].max(new);
         }
     }
 }

@@ -1,50 +1,67 @@
 //! The official BEHAVIOR-100 data: the 100 activity definitions, the domain file and the synset
-//! taxonomy, from the MIT-licensed PyPI package `bddl==1.0.1`. They are never copied into this
-//! repository; this module finds them or fetches them into a cache on first use.
+//! taxonomy, from the MIT-licensed PyPI package `bddl==1.0.1`. They are never copied into the
+//! repository; this crate finds them, or fetches them into a cache on first use.
 //!
 //! Where the data comes from, in order:
 //! 1. an explicit directory (the CLI's `--data-dir`);
 //! 2. the `BEHAVIOR_DATA_DIR` environment variable;
 //! 3. the cache `$XDG_CACHE_HOME/behavior/bddl-1.0.1` (default `~/.cache/behavior/bddl-1.0.1`),
 //!    filled on first use by `python3 -m pip download --no-deps --no-binary :all: bddl==1.0.1`
-//!    and unpacked.
+//!    and unpacked. Processes that start at once (parallel tests) fetch once: the first takes a
+//!    lock file, the others wait for its result.
 //!
 //! A data directory is the package's `bddl/` folder: it holds `activity_definitions/<activity>/
 //! problem0.bddl`, `activity_definitions/domain_igibson.bddl`, `hierarchy_owned.json` and
-//! `activity_manifest.txt`.
+//! `activity_manifest.txt`. This crate hands out paths; reading them is the language's business
+//! (`behavior-bddl`).
 
-use crate::activity::{Activity, CheckContext};
-use crate::ast::DomainFile;
-use crate::diagnostics::{Diagnostics, Source, SourceErrors};
-use crate::taxonomy::{Taxonomy, TaxonomyError};
+#![warn(missing_docs)]
+
 use std::fs;
 use std::io;
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use std::time::{Duration, Instant};
 
+/// The PyPI package holding the data.
 pub const PACKAGE: &str = "bddl";
+/// Its version.
 pub const VERSION: &str = "1.0.1";
+/// The environment variable naming a data directory.
 pub const ENV_VAR: &str = "BEHAVIOR_DATA_DIR";
+/// How long a process waits for another one's fetch before giving up.
+const FETCH_WAIT: Duration = Duration::from_secs(300);
 
+/// Why the data could not be found or fetched.
 #[derive(Debug, thiserror::Error)]
 pub enum DataError {
+    /// The directory lacks a file every data directory has.
     #[error(
         "{path} is not a bddl data directory: {missing} is missing (expected the `bddl/` folder of the bddl {VERSION} package)"
     )]
-    NotADataDir { path: PathBuf, missing: String },
+    NotADataDir {
+        /// The directory given.
+        path: PathBuf,
+        /// The file it lacks, relative to it.
+        missing: String,
+    },
+    /// pip, the network or unpacking failed.
     #[error(
         "could not fetch bddl=={VERSION} from PyPI: {reason}\n  Fetch it by hand with `python3 -m pip download --no-deps --no-binary :all: bddl=={VERSION}`, unpack it, and point {ENV_VAR} (or --data-dir) at its `bddl/` folder."
     )]
-    Fetch { reason: String },
-    #[error("cannot read {path}: {source}")]
-    Io { path: PathBuf, source: io::Error },
-    #[error("{path}: {source}")]
-    Taxonomy {
-        path: PathBuf,
-        source: TaxonomyError,
+    Fetch {
+        /// What went wrong.
+        reason: String,
     },
-    #[error("{0}")]
-    Source(#[from] SourceErrors),
+    /// A file or directory could not be read or written.
+    #[error("cannot read {path}: {source}")]
+    Io {
+        /// The path involved.
+        path: PathBuf,
+        /// The system's error.
+        source: io::Error,
+    },
+    /// No official activity has this name.
     #[error("no official activity named `{0}` (see activity_manifest.txt)")]
     UnknownActivity(String),
 }
@@ -81,11 +98,7 @@ impl DataDir {
         if cache.join("hierarchy_owned.json").is_file() {
             return DataDir::open(&cache);
         }
-        progress(&format!(
-            "fetching the official activity definitions (bddl=={VERSION} from PyPI) into {}",
-            cache.display()
-        ));
-        fetch_into(&cache)?;
+        fetch_once(&cache, progress)?;
         DataDir::open(&cache)
     }
 
@@ -107,6 +120,7 @@ impl DataDir {
         })
     }
 
+    /// The `bddl/` folder.
     pub fn root(&self) -> &Path {
         &self.root
     }
@@ -125,114 +139,32 @@ impl DataDir {
         Ok(names)
     }
 
-    pub fn problem_path(&self, activity: &str) -> PathBuf {
-        self.root
+    /// The definition of an official activity, `activity_definitions/<activity>/problem0.bddl`.
+    pub fn problem_path(&self, activity: &str) -> Result<PathBuf, DataError> {
+        let path = self
+            .root
             .join("activity_definitions")
             .join(activity)
-            .join("problem0.bddl")
+            .join("problem0.bddl");
+        // A name with a separator could reach outside the data; it is no activity's name.
+        let plain = !activity.is_empty() && !activity.contains(['/', '\\']) && activity != "..";
+        if plain && path.is_file() {
+            Ok(path)
+        } else {
+            Err(DataError::UnknownActivity(activity.to_string()))
+        }
     }
 
+    /// The domain file, `activity_definitions/domain_igibson.bddl`.
     pub fn domain_path(&self) -> PathBuf {
         self.root.join("activity_definitions/domain_igibson.bddl")
     }
 
+    /// The synset taxonomy with abilities, `hierarchy_owned.json`.
     pub fn taxonomy_path(&self) -> PathBuf {
         self.root.join("hierarchy_owned.json")
     }
 
-    /// The source of an official activity's definition.
-    pub fn problem_source(&self, activity: &str) -> Result<Source, DataError> {
-        let path = self.problem_path(activity);
-        if !path.is_file() {
-            return Err(DataError::UnknownActivity(activity.to_string()));
-        }
-        read_source(&path)
-    }
-
-    pub fn taxonomy(&self) -> Result<Taxonomy, DataError> {
-        let path = self.taxonomy_path();
-        let text = fs::read_to_string(&path).map_err(io_error(&path))?;
-        Taxonomy::from_json(&text).map_err(|source| DataError::Taxonomy { path, source })
-    }
-
-    pub fn domain(&self) -> Result<DomainFile, DataError> {
-        let source = read_source(&self.domain_path())?;
-        Ok(crate::domain::load_domain(&source)?.0)
-    }
-
-    /// Loads everything needed to check definitions.
-    pub fn knowledge(&self) -> Result<Knowledge, DataError> {
-        Ok(Knowledge {
-            taxonomy: self.taxonomy()?,
-            domain: self.domain()?,
-        })
-    }
-}
-
-/// The taxonomy and domain that problems are checked against.
-#[derive(Clone, Debug)]
-pub struct Knowledge {
-    pub taxonomy: Taxonomy,
-    pub domain: DomainFile,
-}
-
-impl Knowledge {
-    pub fn context(&self) -> CheckContext<'_> {
-        CheckContext {
-            taxonomy: Some(&self.taxonomy),
-            domain: Some(&self.domain),
-        }
-    }
-
-    /// Parses and checks a problem source; warnings come back with the activity.
-    pub fn load(&self, source: &Source) -> Result<(Activity, Diagnostics), SourceErrors> {
-        Activity::load(source, self.context())
-    }
-}
-
-/// Reads a file as a [`Source`] named by its path. Invalid UTF-8 is an error located at the
-/// first bad byte.
-pub fn read_source(path: &Path) -> Result<Source, DataError> {
-    let bytes = fs::read(path).map_err(io_error(path))?;
-    let name = path.display().to_string();
-    source_from_bytes(name, bytes).map_err(DataError::Source)
-}
-
-/// Makes a [`Source`] from raw bytes, rejecting invalid UTF-8 with a located diagnostic.
-pub fn source_from_bytes(name: String, bytes: Vec<u8>) -> Result<Source, SourceErrors> {
-    if bytes.len() >= u32::MAX as usize {
-        // Spans are 32-bit; no definition comes near 4 GiB.
-        let mut diagnostics = Diagnostics::default();
-        diagnostics.push(crate::diagnostics::Diagnostic::error(
-            crate::diagnostics::Span::new(0, 0),
-            format!(
-                "the file is {} bytes; definitions must be under 4 GiB",
-                bytes.len()
-            ),
-        ));
-        return Err(SourceErrors {
-            source: Source::new(name, String::new()),
-            diagnostics,
-        });
-    }
-    match String::from_utf8(bytes) {
-        Ok(text) => Ok(Source::new(name, text)),
-        Err(e) => {
-            let valid = e.utf8_error().valid_up_to();
-            let text = String::from_utf8_lossy(e.as_bytes()).into_owned();
-            let source = Source::new(name, text);
-            let at = crate::diagnostics::Span::new(valid, valid + 1);
-            let mut diagnostics = Diagnostics::default();
-            diagnostics.push(
-                crate::diagnostics::Diagnostic::error(at, "the file is not valid UTF-8")
-                    .with_label("invalid byte here"),
-            );
-            Err(SourceErrors {
-                source,
-                diagnostics,
-            })
-        }
-    }
 }
 
 fn cache_dir() -> Option<PathBuf> {
@@ -241,6 +173,44 @@ fn cache_dir() -> Option<PathBuf> {
         .map(PathBuf::from)
         .or_else(|| std::env::var_os("HOME").map(|h| PathBuf::from(h).join(".cache")))?;
     Some(base.join("behavior").join(format!("{PACKAGE}-{VERSION}")))
+}
+
+/// Fills the cache unless another process is doing it; then waits for that one to finish.
+fn fetch_once(cache: &Path, progress: impl FnOnce(&str)) -> Result<(), DataError> {
+    let parent = cache.parent().ok_or_else(|| DataError::Fetch {
+        reason: format!("{} has no parent directory", cache.display()),
+    })?;
+    fs::create_dir_all(parent).map_err(io_error(parent))?;
+    let lock = parent.join(format!(".{PACKAGE}-{VERSION}.lock"));
+    let started = Instant::now();
+    loop {
+        match fs::OpenOptions::new().write(true).create_new(true).open(&lock) {
+            Ok(_) => break,
+            Err(e) if e.kind() == io::ErrorKind::AlreadyExists => {
+                if cache.join("hierarchy_owned.json").is_file() {
+                    return Ok(());
+                }
+                if started.elapsed() > FETCH_WAIT {
+                    // The holder died without cleaning up: take over.
+                    let _ = fs::remove_file(&lock);
+                    continue;
+                }
+                std::thread::sleep(Duration::from_millis(200));
+            }
+            Err(e) => return Err(io_error(&lock)(e)),
+        }
+    }
+    let result = if cache.join("hierarchy_owned.json").is_file() {
+        Ok(())
+    } else {
+        progress(&format!(
+            "fetching the official activity definitions (bddl=={VERSION} from PyPI) into {}",
+            cache.display()
+        ));
+        fetch_into(cache)
+    };
+    let _ = fs::remove_file(&lock);
+    result
 }
 
 /// Downloads the sdist with pip and unpacks its `bddl/` folder into `target`, atomically: the
@@ -279,6 +249,15 @@ fn download_and_unpack(work: &Path, target: &Path) -> Result<(), DataError> {
         });
     }
     let archive = download.join(format!("{PACKAGE}-{VERSION}.tar.gz"));
+    if !archive.is_file() {
+        return Err(DataError::Fetch {
+            reason: format!(
+                "pip reported success but saved no {}: {}",
+                archive.display(),
+                String::from_utf8_lossy(&output.stdout).trim()
+            ),
+        });
+    }
     let file = fs::File::open(&archive).map_err(io_error(&archive))?;
     let unpacked = work.join("unpacked");
     tar::Archive::new(flate2::read::GzDecoder::new(file))

@@ -2,9 +2,10 @@
 //!
 //! A 20 × 20 m floor, 10 tables (a top on four legs) and 190 small boxes, cylinders and balls
 //! resting on the tables and the floor. Used by the physics benchmarks and written out for the
-//! PyBullet side-by-side (`bench/physics_side_by_side.sh`).
+//! PyBullet side-by-side (`bench/physics_side_by_side.sh`). Shared by the benches and the
+//! `physics_bench` example; not part of the library's API.
 
-use crate::world::{ObjectSpec, Part, Primitive};
+use behavior_sim::{ObjectSpec, Part, Primitive};
 use rapier3d::math::Vector;
 
 fn v(x: f32, y: f32, z: f32) -> Vector {

@@ -1,5 +1,7 @@
-//! The world as a BDDL predicate oracle: an activity's goal evaluated on a physical scene.
+//! The world as a BDDL predicate oracle: an activity's goal evaluated on a physical scene. It
+//! lives here, where the language and the world meet; the scene helpers are the world's own.
 
+#[path = "../../sim/tests/common/mod.rs"]
 mod common;
 
 use behavior_bddl::activity::CheckContext;

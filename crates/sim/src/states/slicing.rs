@@ -8,10 +8,11 @@
 //! ([`crate::ObjectSpec::halves`]), or else the two halves of its bounding box, split across its
 //! longer horizontal side. Slicing cannot be undone.
 
+use crate::World;
+use crate::core::{Core, DROP_TAG};
+use crate::object::{ObjectId, ObjectSpec, Part, PointKind, Primitive};
 use crate::states::StateError;
-use crate::world::{ObjectId, ObjectSpec, Part, PointKind, Primitive, World};
-use behavior_bddl::Predicate;
-use behavior_bddl::taxonomy::Ability;
+use behavior_core::{Ability, Predicate};
 use rapier3d::math::{Pose, Vector};
 
 /// Newtons.
@@ -19,7 +20,7 @@ pub const SLICE_FORCE: f32 = 10.0;
 /// How close to a slicer's [`PointKind::SlicingEdge`] a contact must be to cut (m).
 pub const EDGE_REACH: f32 = 0.05;
 
-impl World {
+impl Core {
     /// Sliceable objects pressed by a slicer with more than [`SLICE_FORCE`] in the last substep.
     pub(crate) fn pressed_by_slicers(&self) -> Vec<ObjectId> {
         let dt = self.physics.integration_parameters.dt;
@@ -42,14 +43,14 @@ impl World {
                         continue;
                     };
                     let id = ObjectId(other.user_data as u32);
-                    if other.user_data == crate::world::DROP_TAG
+                    if other.user_data == DROP_TAG
                         || id == slicer
-                        || id.0 as usize >= self.states.len()
+                        || id.0 as usize >= self.objects.len()
                     {
                         continue;
                     }
                     let sliceable =
-                        self.object(id).has(Ability::Sliceable) && !self.object_state(id).sliced;
+                        self.object(id).has(Ability::Sliceable) && self.object(id).is_present();
                     let at_edge = match edge {
                         None => true,
                         Some(edge) => {
@@ -74,29 +75,27 @@ impl World {
         pressed
     }
 
-    /// The two halves made when an object was sliced.
-    pub fn halves(&self, id: ObjectId) -> Option<[ObjectId; 2]> {
-        self.object_state(id).halves
-    }
+}
 
+impl World {
+    /// Replaces a sliceable object by its two halves (see the module docs).
     pub(crate) fn set_sliced(&mut self, id: ObjectId, sliced: bool) -> Result<(), StateError> {
-        let state = self.object_state(id);
-        if state.sliced == sliced {
+        if self.core.object(id).replaced_by.is_some() == sliced {
             return Ok(());
         }
         if !sliced {
             return Err(StateError::Unsupported {
-                object: self.object(id).name.clone(),
+                object: self.core.object(id).name.clone(),
                 predicate: Predicate::Sliced,
                 value: false,
                 reason: "slicing cannot be undone".into(),
             });
         }
-        let object = self.object(id);
+        let object = self.core.object(id);
         let mut specs = Vec::new();
         if let Some(halves) = &object.halves {
             // The archetype's halves, where the whole object stands.
-            let pose = self.pose(id);
+            let pose = self.core.pose(id);
             for (k, parts) in halves.iter().enumerate() {
                 let mut spec = ObjectSpec::new(
                     &format!("{}_half_{}", object.name, k + 1),
@@ -108,10 +107,10 @@ impl World {
                 specs.push(spec);
             }
         } else {
-            let aabb = self.aabb(id);
+            let aabb = self.core.aabb(id);
             let half = (aabb.maxs - aabb.mins) * 0.5;
             let center = aabb.center();
-            let mass = self.physics.bodies[object.body].mass();
+            let mass = self.core.physics.bodies[object.body].mass();
             // Split across the longer horizontal side.
             let along = if half.x >= half.y {
                 Vector::X
@@ -136,28 +135,25 @@ impl World {
         for spec in &mut specs {
             spec.abilities = object.abilities.clone();
             spec.abilities.remove(&Ability::Sliceable);
+            spec.visual = object.visual;
         }
-        let inherited = self.object_state(id).clone();
         let mut halves = [id; 2];
         for (k, spec) in specs.into_iter().enumerate() {
-            let half_id = self.add(spec).map_err(|e| StateError::Unsupported {
-                object: self.object(id).name.clone(),
+            let half = self.add(spec).map_err(|e| StateError::Unsupported {
+                object: self.core.object(id).name.clone(),
                 predicate: Predicate::Sliced,
                 value: true,
                 reason: e.to_string(),
             })?;
-            let mut s = inherited.clone();
-            s.halves = None;
-            self.states[half_id.0 as usize] = s;
-            halves[k] = half_id;
+            self.systems.inherit(id, half);
+            halves[k] = half;
         }
-        let body = self.object(id).body;
-        self.physics.bodies[body].set_enabled(false);
-        self.moved(id);
-        self.refresh();
-        let s = &mut self.states[id.0 as usize];
-        s.sliced = true;
-        s.halves = Some(halves);
+        let core = &mut self.core;
+        let body = core.objects[id.0 as usize].body;
+        core.physics.bodies[body].set_enabled(false);
+        core.objects[id.0 as usize].replaced_by = Some(halves);
+        core.moved(id);
+        core.refresh();
         Ok(())
     }
 }

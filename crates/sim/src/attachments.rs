@@ -1,0 +1,175 @@
+//! Attachments: a constraint added at run time between two bodies at a point, as assisted
+//! grasping makes between a hand and what it holds (iGibson 2.0: a fixed constraint of at most
+//! 500 N, or point-to-point for a link of articulated furniture, released when its violation
+//! exceeds 0.1 m — reference §4.2).
+//!
+//! An attachment pulls with at most its maximum force: rapier's joints have no force limit, so the
+//! world reads the force each constraint applied in every substep and removes one that needed
+//! more, which then reports as broken. Contacts between the two bodies are off while attached (a
+//! hand does not push what it holds). Its violation — how far apart its two anchor points have
+//! drifted — is the caller's to watch: a robot releases past its own threshold.
+
+use crate::core::{Core, WorldError};
+use crate::object::BodyRef;
+use rapier3d::dynamics::{FixedJointBuilder, GenericJoint, ImpulseJointHandle, SphericalJointBuilder};
+use rapier3d::math::{Pose, Vector};
+use std::collections::BTreeMap;
+
+/// Identifies an attachment for the world's life.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct AttachmentId(pub u64);
+
+/// How an attachment holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AttachmentKind {
+    /// Keeps the two bodies' relative pose (a grasp).
+    Fixed,
+    /// Keeps one point of each together; they may turn about it (a handle of a door).
+    Point,
+}
+
+/// What to attach.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AttachmentSpec {
+    /// The holder (a hand).
+    pub holder: BodyRef,
+    /// What it holds.
+    pub held: BodyRef,
+    /// The point where they are joined, in the world, now.
+    pub at: Vector,
+    /// Fixed or point-to-point.
+    pub kind: AttachmentKind,
+    /// The largest force it may apply (N) before it breaks.
+    pub max_force: f32,
+}
+
+/// An attachment's condition after the last step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AttachmentState {
+    /// As it was made.
+    pub spec: AttachmentSpec,
+    /// The force it applied in the last substep (N).
+    pub force: f32,
+    /// How far apart its anchor points are now (m).
+    pub violation: f32,
+    /// It needed more than its maximum force and was removed.
+    pub broken: bool,
+}
+
+#[derive(Clone, Debug)]
+struct Record {
+    spec: AttachmentSpec,
+    joint: Option<ImpulseJointHandle>,
+    /// The joining point in each body's frame.
+    local: [Vector; 2],
+    force: f32,
+}
+
+/// The attachments of a world.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Attachments {
+    records: BTreeMap<AttachmentId, Record>,
+    next: u64,
+}
+
+impl Core {
+    /// Joins two bodies at a point (see the module docs); contacts between them are off until
+    /// [`Core::detach`] or until it breaks.
+    pub fn attach(&mut self, spec: AttachmentSpec) -> Result<AttachmentId, WorldError> {
+        if !(spec.at.is_finite() && spec.max_force.is_finite() && spec.max_force > 0.0) {
+            return Err(WorldError::NotFinite {
+                what: "an attachment's point and positive maximum force",
+                value: spec.max_force,
+            });
+        }
+        if spec.holder == spec.held {
+            return Err(WorldError::BadObject {
+                name: self.object(spec.holder.object).name.clone(),
+                reason: "a body cannot be attached to itself".into(),
+            });
+        }
+        let (h1, h2) = (self.handle(spec.holder)?, self.handle(spec.held)?);
+        let (p1, p2) = (self.body_pose(spec.holder)?, self.body_pose(spec.held)?);
+        let local = [p1.inverse_transform_point(spec.at), p2.inverse_transform_point(spec.at)];
+        let joint: GenericJoint = match spec.kind {
+            AttachmentKind::Fixed => {
+                // Frames that coincide now: the relative pose is kept as it is.
+                let frame1 = Pose::from_translation(local[0]);
+                let frame2 = p2.inv_mul(&(p1 * frame1));
+                FixedJointBuilder::new()
+                    .local_frame1(frame1)
+                    .local_frame2(frame2)
+                    .contacts_enabled(false)
+                    .build()
+                    .into()
+            }
+            AttachmentKind::Point => SphericalJointBuilder::new()
+                .local_anchor1(local[0])
+                .local_anchor2(local[1])
+                .contacts_enabled(false)
+                .build()
+                .into(),
+        };
+        let handle = self.physics.insert_impulse_joint(h1, h2, joint);
+        let id = AttachmentId(self.attachments.next);
+        self.attachments.next += 1;
+        self.attachments.records.insert(
+            id,
+            Record {
+                spec,
+                joint: Some(handle),
+                local,
+                force: 0.0,
+            },
+        );
+        self.wake(h1);
+        self.wake(h2);
+        Ok(id)
+    }
+
+    /// Removes an attachment (broken or not); `false` if there was none by that id.
+    pub fn detach(&mut self, id: AttachmentId) -> bool {
+        let Some(record) = self.attachments.records.remove(&id) else {
+            return false;
+        };
+        if let Some(joint) = record.joint {
+            self.physics.impulse_joints.remove(joint, true);
+        }
+        self.quiet = false;
+        true
+    }
+
+    /// An attachment's condition, or `None` if it was detached.
+    pub fn attachment(&self, id: AttachmentId) -> Option<AttachmentState> {
+        let record = self.attachments.records.get(&id)?;
+        let at = |body: BodyRef, local: Vector| self.body_pose(body).map(|p| p.transform_point(local));
+        let violation = match (at(record.spec.holder, record.local[0]), at(record.spec.held, record.local[1])) {
+            (Ok(a), Ok(b)) => (a - b).length(),
+            _ => f32::INFINITY,
+        };
+        Some(AttachmentState {
+            spec: record.spec,
+            force: record.force,
+            violation,
+            broken: record.joint.is_none(),
+        })
+    }
+
+    /// After a substep: records each attachment's force and breaks those that needed too much.
+    pub(crate) fn watch_attachments(&mut self) {
+        let dt = self.physics.integration_parameters.dt;
+        for record in self.attachments.records.values_mut() {
+            let Some(handle) = record.joint else { continue };
+            let Some(joint) = self.physics.impulse_joints.get(handle) else {
+                record.joint = None;
+                continue;
+            };
+            let i = joint.impulses;
+            record.force = Vector::new(i[0], i[1], i[2]).length() / dt;
+            if record.force > record.spec.max_force {
+                self.physics.impulse_joints.remove(handle, true);
+                record.joint = None;
+            }
+        }
+    }
+}

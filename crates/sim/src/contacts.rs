@@ -1,0 +1,166 @@
+//! Contacts and who may touch whom: a body's contacts as the last physics substep found them,
+//! collision groups (a robot ignores water drops), and pairs of bodies whose contacts are ignored
+//! (a hand and the object it holds).
+
+use crate::core::{Core, DROP_TAG, WorldError, untag};
+use crate::object::{BodyRef, ObjectId};
+use rapier3d::dynamics::RigidBodySet;
+use rapier3d::geometry::{ColliderHandle, Group, InteractionGroups, InteractionTestMode, SolverFlags};
+use rapier3d::math::Vector;
+use rapier3d::pipeline::{ActiveHooks, PairFilterContext, PhysicsHooks};
+use std::collections::BTreeSet;
+
+/// Collision groups: bit masks saying what a body is and what it collides with. Two bodies
+/// collide when each one's membership meets the other's filter.
+pub mod groups {
+    /// Furniture, objects, walls and floors: everything by default.
+    pub const SCENE: u32 = 1;
+    /// Robots' bodies.
+    pub const ROBOT: u32 = 1 << 1;
+    /// Water drops.
+    pub const WATER: u32 = 1 << 2;
+    /// Every group.
+    pub const ALL: u32 = u32::MAX;
+}
+
+/// One contact point of a body with another, from the last physics substep.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Contact {
+    /// The other body, or `None` for a water drop.
+    pub other: Option<BodyRef>,
+    /// Where, in the world (on this body's surface).
+    pub point: Vector,
+    /// Unit normal pointing from this body toward the other.
+    pub normal: Vector,
+    /// The normal impulse the solver applied there in the last substep (N·s); divide by the
+    /// substep's length for a force.
+    pub impulse: f32,
+    /// Penetration is negative; resting contacts sit within a millimetre.
+    pub distance: f32,
+}
+
+/// Contact points farther apart than this are predictions, not contacts (m).
+const CONTACT_DISTANCE: f32 = 0.001;
+
+impl Core {
+    /// The contacts of a body (or of an object's body and all its links, with `link: None` in
+    /// [`Core::object_contacts`]) found by the last physics substep, sorted by the other body.
+    pub fn contacts(&self, body: BodyRef) -> Result<Vec<Contact>, WorldError> {
+        let handle = self.handle(body)?;
+        let colliders = self.physics.bodies[handle].colliders().to_vec();
+        Ok(self.contacts_of(&colliders))
+    }
+
+    /// The contacts of an object's body and all its links.
+    pub fn object_contacts(&self, id: ObjectId) -> Vec<Contact> {
+        self.contacts_of(&self.object(id).colliders)
+    }
+
+    fn contacts_of(&self, colliders: &[rapier3d::geometry::ColliderHandle]) -> Vec<Contact> {
+        let mut out = Vec::new();
+        for &c in colliders {
+            for pair in self.physics.narrow_phase.contact_pairs_with(c) {
+                let (mine_first, other) = if pair.collider1 == c {
+                    (true, pair.collider2)
+                } else {
+                    (false, pair.collider1)
+                };
+                if colliders.contains(&other) && other != c {
+                    continue; // within the same body or object
+                }
+                let Some(other_collider) = self.physics.colliders.get(other) else {
+                    continue;
+                };
+                let mine = &self.physics.colliders[c];
+                for manifold in pair.manifolds() {
+                    let local_normal = if mine_first {
+                        manifold.local_n1
+                    } else {
+                        manifold.local_n2
+                    };
+                    let normal: Vector = mine.position().rotation * local_normal;
+                    for p in manifold.points.iter().filter(|p| p.dist <= CONTACT_DISTANCE) {
+                        let local = if mine_first { p.local_p1 } else { p.local_p2 };
+                        out.push(Contact {
+                            other: untag(other_collider.user_data),
+                            point: mine.position().transform_point(local),
+                            normal,
+                            impulse: p.data.impulse,
+                            distance: p.dist,
+                        });
+                    }
+                }
+            }
+        }
+        out.sort_by(|a, b| a.other.cmp(&b.other));
+        out
+    }
+
+    /// Sets what an object's bodies (all its links too) are and collide with; see [`groups`].
+    pub fn set_collision_groups(&mut self, id: ObjectId, memberships: u32, filter: u32) {
+        let groups = InteractionGroups::new(
+            Group::from_bits_retain(memberships),
+            Group::from_bits_retain(filter),
+            InteractionTestMode::And,
+        );
+        for &c in &self.objects[id.0 as usize].colliders.clone() {
+            self.physics.colliders[c].set_collision_groups(groups);
+        }
+        self.wake(self.object(id).body);
+    }
+
+    /// Ignores (or again allows) contacts between two bodies.
+    pub fn ignore_contacts(&mut self, a: BodyRef, b: BodyRef, ignore: bool) -> Result<(), WorldError> {
+        let (ha, hb) = (self.handle(a)?, self.handle(b)?);
+        let pair = if a <= b { (a, b) } else { (b, a) };
+        if ignore {
+            self.ignored.insert(pair);
+            for h in [ha, hb] {
+                for c in self.physics.bodies[h].colliders().to_vec() {
+                    let collider = &mut self.physics.colliders[c];
+                    let hooks = collider.active_hooks() | ActiveHooks::FILTER_CONTACT_PAIRS;
+                    collider.set_active_hooks(hooks);
+                }
+            }
+        } else {
+            self.ignored.remove(&pair);
+        }
+        self.wake(ha);
+        self.wake(hb);
+        Ok(())
+    }
+
+    /// Whether contacts between two bodies are ignored.
+    pub fn contacts_ignored(&self, a: BodyRef, b: BodyRef) -> bool {
+        let pair = if a <= b { (a, b) } else { (b, a) };
+        self.ignored.contains(&pair)
+    }
+}
+
+/// The physics hooks of one step: drops ignored pairs and otherwise behaves as rapier's default
+/// filter (no contacts between two bodies that never move).
+pub(crate) struct ContactFilter<'a> {
+    pub(crate) ignored: &'a BTreeSet<(BodyRef, BodyRef)>,
+}
+
+impl PhysicsHooks for ContactFilter<'_> {
+    fn filter_contact_pair(&self, context: &PairFilterContext) -> Option<SolverFlags> {
+        let dynamic = |bodies: &RigidBodySet, h: Option<rapier3d::dynamics::RigidBodyHandle>| {
+            h.is_some_and(|h| bodies[h].is_dynamic())
+        };
+        if !dynamic(context.bodies, context.rigid_body1) && !dynamic(context.bodies, context.rigid_body2) {
+            return None;
+        }
+        let body = |c: ColliderHandle| {
+            let data = context.colliders[c].user_data;
+            (data != DROP_TAG).then(|| untag(data)).flatten()
+        };
+        if let (Some(a), Some(b)) = (body(context.collider1), body(context.collider2)) {
+            let pair = if a <= b { (a, b) } else { (b, a) };
+            if self.ignored.contains(&pair) {
+                return None;
+            }
+        }
+        Some(SolverFlags::COMPUTE_RIGID_IMPULSES)
+    }
+}

@@ -1,0 +1,399 @@
+//! The world's core: objects, their bodies and joints, rooms, and the physics engine (rapier3d),
+//! with the bookkeeping every other module reads — how often each object has moved (which keeps
+//! memoized relations valid), the step count, and whether the scene is at rest.
+//!
+//! The state systems ([`crate::states`]) own everything beyond this; the core knows nothing of
+//! temperature, water, dirt or toggling.
+
+use crate::attachments::Attachments;
+use crate::kinematics::RelationMemo;
+use crate::object::{BodyRef, JointHandle, Object, ObjectId};
+use crate::query::QueryIndex;
+use crate::room::Room;
+use rapier3d::dynamics::{CCDSolver, RigidBodyActivation, RigidBodyHandle};
+use rapier3d::math::{Pose, Vector};
+use rapier3d::parry::bounding_volume::BoundingVolume;
+use rapier3d::pipeline::{CollisionPipeline, PhysicsPipeline, PhysicsWorld};
+use rapier3d::prelude::Aabb;
+use std::collections::BTreeMap;
+use std::sync::OnceLock;
+
+/// One action step, in seconds.
+pub const STEP_SECONDS: f32 = 1.0 / 30.0;
+
+/// `user_data` of water drops' bodies and colliders, which belong to no object.
+pub(crate) const DROP_TAG: u128 = u128::MAX;
+
+/// How finely each action step is integrated.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Substeps {
+    /// 10 substeps of 1/300 s: stable stacking of small objects.
+    #[default]
+    Hz300,
+    /// 4 substeps of 1/120 s: faster, for scenes without small stacked objects.
+    Hz120,
+}
+
+impl Substeps {
+    /// Physics substeps per action step.
+    pub fn count(self) -> u32 {
+        match self {
+            Substeps::Hz300 => 10,
+            Substeps::Hz120 => 4,
+        }
+    }
+}
+
+/// Why an object or a request about it was refused.
+#[derive(Debug, thiserror::Error, PartialEq)]
+pub enum WorldError {
+    /// The object's spec or a value given for it is malformed.
+    #[error("object `{name}`: {reason}")]
+    BadObject {
+        /// The object's name.
+        name: String,
+        /// What is wrong.
+        reason: String,
+    },
+    /// A link index beyond the object's links.
+    #[error("object `{name}` has no link {link} (it has {count})")]
+    NoLink {
+        /// The object's name.
+        name: String,
+        /// The index asked for.
+        link: usize,
+        /// How many links it has.
+        count: usize,
+    },
+    /// A value that must be a finite number is not.
+    #[error("{what} must be finite, got {value}")]
+    NotFinite {
+        /// What the value is.
+        what: &'static str,
+        /// The value.
+        value: f32,
+    },
+}
+
+/// Objects, bodies, joints, rooms and the physics engine.
+pub struct Core {
+    pub(crate) physics: PhysicsWorld,
+    pub(crate) objects: Vec<Object>,
+    pub(crate) rooms: Vec<Room>,
+    /// Per object: how many times it has moved (see [`Core::motion`]).
+    motion: Vec<u64>,
+    pub(crate) memo: RelationMemo,
+    /// A ray and shape query structure over every collider, rebuilt on first use after a change.
+    pub(crate) index: OnceLock<QueryIndex>,
+    pub(crate) attachments: Attachments,
+    /// Bodies whose contacts with each other are ignored (a hand and what it holds).
+    pub(crate) ignored: std::collections::BTreeSet<(BodyRef, BodyRef)>,
+    /// Bodies given a force or torque for the current step, cleared after it.
+    pub(crate) pushed: Vec<RigidBodyHandle>,
+    /// The last physics step left every body asleep and nothing has changed since, so further
+    /// substeps would change nothing: they are skipped until something wakes.
+    pub(crate) quiet: bool,
+    pub(crate) steps: u64,
+    pub(crate) substeps: Substeps,
+    pub(crate) drives: BTreeMap<(ObjectId, usize), crate::joints::Drive>,
+}
+
+impl Clone for Core {
+    fn clone(&self) -> Self {
+        let p = &self.physics;
+        Core {
+            // The pipelines and CCD solver are scratch space, rebuilt on demand.
+            physics: PhysicsWorld {
+                gravity: p.gravity,
+                integration_parameters: p.integration_parameters,
+                physics_pipeline: PhysicsPipeline::new(),
+                collision_pipeline: CollisionPipeline::new(),
+                islands: p.islands.clone(),
+                broad_phase: p.broad_phase.clone(),
+                narrow_phase: p.narrow_phase.clone(),
+                bodies: p.bodies.clone(),
+                colliders: p.colliders.clone(),
+                impulse_joints: p.impulse_joints.clone(),
+                multibody_joints: p.multibody_joints.clone(),
+                soft_bodies: p.soft_bodies.clone(),
+                ccd_solver: CCDSolver::new(),
+            },
+            objects: self.objects.clone(),
+            rooms: self.rooms.clone(),
+            motion: self.motion.clone(),
+            memo: self.memo.clone(),
+            index: self.index.clone(),
+            attachments: self.attachments.clone(),
+            ignored: self.ignored.clone(),
+            pushed: self.pushed.clone(),
+            quiet: self.quiet,
+            steps: self.steps,
+            substeps: self.substeps,
+            drives: self.drives.clone(),
+        }
+    }
+}
+
+/// The `user_data` that tags a body and its colliders with the body they belong to.
+pub(crate) fn tag(body: BodyRef) -> u128 {
+    u128::from(body.object.0) | (body.link.map_or(0, |l| l as u128 + 1) << 32)
+}
+
+/// The body a `user_data` tag names, or `None` for a water drop.
+pub(crate) fn untag(data: u128) -> Option<BodyRef> {
+    if data == DROP_TAG {
+        return None;
+    }
+    let object = ObjectId(data as u32);
+    let link = ((data >> 32) as u32).checked_sub(1).map(|l| l as usize);
+    Some(BodyRef { object, link })
+}
+
+impl Core {
+    pub(crate) fn new(substeps: Substeps) -> Core {
+        let mut physics = PhysicsWorld::new();
+        physics.gravity = Vector::new(0.0, 0.0, -9.81);
+        physics.integration_parameters.dt = STEP_SECONDS / substeps.count() as f32;
+        Core {
+            physics,
+            objects: Vec::new(),
+            rooms: Vec::new(),
+            motion: Vec::new(),
+            memo: RelationMemo::default(),
+            index: OnceLock::new(),
+            attachments: Attachments::default(),
+            ignored: Default::default(),
+            pushed: Vec::new(),
+            quiet: false,
+            steps: 0,
+            substeps,
+            drives: BTreeMap::new(),
+        }
+    }
+
+    /// Every object with its id, in the order they were added.
+    pub fn objects(&self) -> impl ExactSizeIterator<Item = (ObjectId, &Object)> {
+        self.objects
+            .iter()
+            .enumerate()
+            .map(|(i, o)| (ObjectId(i as u32), o))
+    }
+
+    /// An object. Ids come from this world, so an unknown one is a programming error and panics,
+    /// like an index out of range.
+    pub fn object(&self, id: ObjectId) -> &Object {
+        &self.objects[id.0 as usize]
+    }
+
+    /// The first object of that name.
+    pub fn object_named(&self, name: &str) -> Option<ObjectId> {
+        self.objects
+            .iter()
+            .position(|o| o.name == name)
+            .map(|i| ObjectId(i as u32))
+    }
+
+    /// Every room.
+    pub fn rooms(&self) -> &[Room] {
+        &self.rooms
+    }
+
+    /// The room whose footprint contains (x, y); the first one added wins on shared walls.
+    pub fn room_at(&self, x: f32, y: f32) -> Option<&Room> {
+        self.rooms.iter().find(|r| r.contains(x, y))
+    }
+
+    /// Action steps taken so far.
+    pub fn steps(&self) -> u64 {
+        self.steps
+    }
+
+    /// How finely each action step is integrated.
+    pub fn substeps(&self) -> Substeps {
+        self.substeps
+    }
+
+    /// The pose of an object's body.
+    pub fn pose(&self, id: ObjectId) -> Pose {
+        *self.physics.bodies[self.object(id).body].position()
+    }
+
+    /// The pose of a link's body. Its parts are given in the object's frame at zero joint
+    /// position, so this pose maps them to the world.
+    pub fn link_pose(&self, id: ObjectId, link: usize) -> Pose {
+        *self.physics.bodies[self.object(id).links[link].body].position()
+    }
+
+    /// The rapier handle of a body, after checking that the link exists.
+    pub(crate) fn handle(&self, body: BodyRef) -> Result<RigidBodyHandle, WorldError> {
+        let object = self.object(body.object);
+        match body.link {
+            None => Ok(object.body),
+            Some(l) => object.links.get(l).map(|l| l.body).ok_or(WorldError::NoLink {
+                name: object.name.clone(),
+                link: l,
+                count: object.links.len(),
+            }),
+        }
+    }
+
+    /// The pose of any body.
+    pub fn body_pose(&self, body: BodyRef) -> Result<Pose, WorldError> {
+        Ok(*self.physics.bodies[self.handle(body)?].position())
+    }
+
+    /// The mass of an object's body (its links excluded), kg.
+    pub fn mass(&self, id: ObjectId) -> f32 {
+        self.physics.bodies[self.object(id).body].mass()
+    }
+
+    /// Whether the object's body is asleep.
+    pub fn is_sleeping(&self, id: ObjectId) -> bool {
+        self.physics.bodies[self.object(id).body].is_sleeping()
+    }
+
+    /// The axis-aligned box around all of an object's colliders.
+    pub fn aabb(&self, id: ObjectId) -> Aabb {
+        let colliders = &self.object(id).colliders;
+        let mut aabb = self.physics.colliders[colliders[0]].compute_aabb();
+        for &c in &colliders[1..] {
+            aabb.merge(&self.physics.colliders[c].compute_aabb());
+        }
+        aabb
+    }
+
+    /// How many times an object has moved: a step in which its body or a link was awake, or a
+    /// teleport. Memoized relations are valid while the counts of their objects are unchanged.
+    pub fn motion(&self, id: ObjectId) -> u64 {
+        self.motion[id.0 as usize]
+    }
+
+    /// Moves an object (teleport) with its links, at rest, waking it.
+    pub fn set_pose(&mut self, id: ObjectId, pose: Pose) -> Result<(), WorldError> {
+        if !pose_is_finite(&pose) {
+            return Err(WorldError::BadObject {
+                name: self.object(id).name.clone(),
+                reason: "the requested pose is not finite".into(),
+            });
+        }
+        // Links move with the body, keeping their joint positions.
+        let object = &self.objects[id.0 as usize];
+        let old = *self.physics.bodies[object.body].position();
+        let moves: Vec<(RigidBodyHandle, Pose)> = std::iter::once((object.body, pose))
+            .chain(object.links.iter().map(|l| {
+                let relative = old.inv_mul(self.physics.bodies[l.body].position());
+                (l.body, pose * relative)
+            }))
+            .collect();
+        for (handle, target) in moves {
+            let body = &mut self.physics.bodies[handle];
+            body.set_position(target, true);
+            body.set_linvel(Vector::ZERO, true);
+            body.set_angvel(Vector::ZERO, true);
+        }
+        self.sync_multibody(id);
+        self.moved(id);
+        self.refresh();
+        Ok(())
+    }
+
+    /// After a teleport, tells a multibody whose root moved where its links now are.
+    pub(crate) fn sync_multibody(&mut self, id: ObjectId) {
+        let object = &self.objects[id.0 as usize];
+        let Some(first) = object.links.iter().find_map(|l| match l.handle {
+            JointHandle::Multibody(h) => Some(h),
+            JointHandle::Impulse(_) => None,
+        }) else {
+            return;
+        };
+        let physics = &mut self.physics;
+        if let Some((multibody, _)) = physics.multibody_joints.get_mut(first) {
+            // The root takes the body's new pose; joint coordinates are kept.
+            multibody.forward_kinematics(&physics.bodies, true);
+            multibody.update_rigid_bodies(&mut physics.bodies, false);
+        }
+    }
+
+    /// Lets resting bodies sleep (the default) or keeps every body simulated, for benchmarks of
+    /// an awake scene.
+    pub fn set_sleeping_allowed(&mut self, allowed: bool) {
+        for (_, body) in self.physics.bodies.iter_mut() {
+            if body.is_dynamic() {
+                *body.activation_mut() = if allowed {
+                    RigidBodyActivation::active()
+                } else {
+                    RigidBodyActivation::cannot_sleep()
+                };
+                body.wake_up(true);
+            }
+        }
+        self.quiet = false;
+    }
+
+    /// Positions, orientations and velocities of every object's body and links as raw bits:
+    /// equal digests mean bit-identical motion state.
+    pub fn motion_bits(&self) -> Vec<u32> {
+        let mut bits = Vec::with_capacity(self.objects.len() * 13);
+        for object in &self.objects {
+            let handles = std::iter::once(object.body).chain(object.links.iter().map(|l| l.body));
+            for handle in handles {
+                let body = &self.physics.bodies[handle];
+                let p = body.position();
+                let (t, r) = (p.translation, p.rotation);
+                let (v, w) = (body.linvel(), body.angvel());
+                for x in [
+                    t.x, t.y, t.z, r.x, r.y, r.z, r.w, v.x, v.y, v.z, w.x, w.y, w.z,
+                ] {
+                    bits.push(x.to_bits());
+                }
+            }
+        }
+        bits
+    }
+
+    /// Moves colliders with their teleported bodies now rather than at the next step, so that
+    /// relations see the change at once, and drops the query structure. (Running rapier's
+    /// collision pipeline here instead would consume its record of changed bodies and keep new
+    /// bodies from ever waking.)
+    pub(crate) fn refresh(&mut self) {
+        self.quiet = false;
+        self.index = OnceLock::new();
+        let physics = &mut self.physics;
+        physics
+            .bodies
+            .propagate_modified_body_positions_to_colliders(&mut physics.colliders);
+    }
+
+    /// Marks an object as moved: its memoized relations are stale.
+    pub(crate) fn moved(&mut self, id: ObjectId) {
+        self.motion[id.0 as usize] += 1;
+    }
+
+    /// A new object's bookkeeping.
+    pub(crate) fn push_object(&mut self, object: Object) -> ObjectId {
+        let id = ObjectId(self.objects.len() as u32);
+        self.objects.push(object);
+        self.motion.push(0);
+        id
+    }
+
+    /// Marks every object whose body or a link was awake during the last substeps as moved.
+    pub(crate) fn note_motion(&mut self) {
+        for (i, object) in self.objects.iter().enumerate() {
+            let awake = |b: RigidBodyHandle| {
+                let body = &self.physics.bodies[b];
+                body.is_enabled() && !body.is_fixed() && !body.is_sleeping()
+            };
+            if awake(object.body) || object.links.iter().any(|l| awake(l.body)) {
+                self.motion[i] += 1;
+            }
+        }
+    }
+}
+
+/// Finite, with a rotation that is a unit quaternion up to rounding (a zero one would become NaN).
+pub(crate) fn pose_is_finite(pose: &Pose) -> bool {
+    pose.translation.is_finite()
+        && pose.rotation.is_finite()
+        && (pose.rotation.length() - 1.0).abs() < 1e-3
+}

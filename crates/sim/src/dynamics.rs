@@ -1,0 +1,130 @@
+//! Moving bodies by hand: velocities, forces, torques and impulses, and the targets of kinematic
+//! bodies. This is how controllers act, usually from [`crate::StepHooks::before_substep`].
+//!
+//! Forces and torques act for the rest of the current action step (every remaining substep) and
+//! are then cleared, so a controller states each step what it pushes with. Impulses act at once.
+
+use crate::core::{Core, WorldError, pose_is_finite};
+use crate::object::{BodyKind, BodyRef};
+use rapier3d::dynamics::RigidBodyHandle;
+use rapier3d::math::{Pose, Vector};
+
+/// A body's velocity.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Velocity {
+    /// m/s, of its centre of mass, in the world frame.
+    pub linear: Vector,
+    /// rad/s, in the world frame.
+    pub angular: Vector,
+}
+
+fn finite(what: &'static str, v: Vector) -> Result<(), WorldError> {
+    if v.is_finite() {
+        Ok(())
+    } else {
+        Err(WorldError::NotFinite {
+            what,
+            value: v.x + v.y + v.z,
+        })
+    }
+}
+
+impl Core {
+    /// A body's velocity.
+    pub fn velocity(&self, body: BodyRef) -> Result<Velocity, WorldError> {
+        let b = &self.physics.bodies[self.handle(body)?];
+        Ok(Velocity {
+            linear: b.linvel(),
+            angular: b.angvel(),
+        })
+    }
+
+    /// Sets a dynamic or velocity-driven kinematic body's velocity, waking it.
+    pub fn set_velocity(&mut self, body: BodyRef, velocity: Velocity) -> Result<(), WorldError> {
+        finite("a linear velocity", velocity.linear)?;
+        finite("an angular velocity", velocity.angular)?;
+        let handle = self.handle(body)?;
+        let b = &mut self.physics.bodies[handle];
+        b.set_linvel(velocity.linear, true);
+        b.set_angvel(velocity.angular, true);
+        self.touched(handle);
+        Ok(())
+    }
+
+    /// Where a position-driven kinematic body must be at the end of the next substep; it moves
+    /// there with the velocity that takes, pushing what is in the way.
+    pub fn set_kinematic_target(&mut self, body: BodyRef, pose: Pose) -> Result<(), WorldError> {
+        if !pose_is_finite(&pose) {
+            return Err(WorldError::NotFinite {
+                what: "a kinematic target",
+                value: f32::NAN,
+            });
+        }
+        let kind = self.object(body.object).body_kind;
+        if body.link.is_some() || kind != BodyKind::KinematicPosition {
+            return Err(WorldError::BadObject {
+                name: self.object(body.object).name.clone(),
+                reason: format!("only a {:?} body takes pose targets; this one is {kind:?}", BodyKind::KinematicPosition),
+            });
+        }
+        let handle = self.handle(body)?;
+        self.physics.bodies[handle].set_next_kinematic_position(pose);
+        self.touched(handle);
+        Ok(())
+    }
+
+    /// Pushes a body's centre of mass with a force (N) for the rest of this action step.
+    pub fn apply_force(&mut self, body: BodyRef, force: Vector) -> Result<(), WorldError> {
+        finite("a force", force)?;
+        let handle = self.handle(body)?;
+        self.physics.bodies[handle].add_force(force, true);
+        self.pushed.push(handle);
+        self.touched(handle);
+        Ok(())
+    }
+
+    /// Pushes a body at a world point with a force (N) for the rest of this action step.
+    pub fn apply_force_at(&mut self, body: BodyRef, force: Vector, point: Vector) -> Result<(), WorldError> {
+        finite("a force", force)?;
+        finite("a point", point)?;
+        let handle = self.handle(body)?;
+        self.physics.bodies[handle].add_force_at_point(force, point, true);
+        self.pushed.push(handle);
+        self.touched(handle);
+        Ok(())
+    }
+
+    /// Twists a body with a torque (N·m, world frame) for the rest of this action step.
+    pub fn apply_torque(&mut self, body: BodyRef, torque: Vector) -> Result<(), WorldError> {
+        finite("a torque", torque)?;
+        let handle = self.handle(body)?;
+        self.physics.bodies[handle].add_torque(torque, true);
+        self.pushed.push(handle);
+        self.touched(handle);
+        Ok(())
+    }
+
+    /// Gives a body's centre of mass an impulse (N·s), changing its velocity at once.
+    pub fn apply_impulse(&mut self, body: BodyRef, impulse: Vector) -> Result<(), WorldError> {
+        finite("an impulse", impulse)?;
+        let handle = self.handle(body)?;
+        self.physics.bodies[handle].apply_impulse(impulse, true);
+        self.touched(handle);
+        Ok(())
+    }
+
+    /// A body was set in motion by hand: the scene is no longer at rest and queries are stale.
+    fn touched(&mut self, handle: RigidBodyHandle) {
+        self.wake(handle);
+    }
+
+    /// Clears the forces and torques of the step just taken.
+    pub(crate) fn clear_forces(&mut self) {
+        for handle in std::mem::take(&mut self.pushed) {
+            if let Some(b) = self.physics.bodies.get_mut(handle) {
+                b.reset_forces(false);
+                b.reset_torques(false);
+            }
+        }
+    }
+}

@@ -1,0 +1,366 @@
+//! Joints: positions, velocities and efforts, teleporting a joint to a position, drives (position
+//! and velocity motors), and `open`.
+//!
+//! A joint's position is read from the pose of its link relative to its parent (the object's body
+//! or an earlier link): the angle about the axis for a revolute joint, the displacement along it for
+//! a prismatic one — the same reading for impulse and multibody joints, since both start at zero
+//! with the link where the spec put it. An object is open when any joint with limits is beyond
+//! 5 % of its range from its lower limit (iGibson's `_JOINT_THRESHOLD_BY_TYPE`).
+//!
+//! Efforts: rapier does not report the impulses of multibody motors, so a joint's effort is what
+//! its drive commands at the current state — `stiffness·(target − q) + damping·(v_target − v)`,
+//! clamped to the drive's maximum force (N or N·m) — or, without a drive, its passive damping
+//! torque. This is the force a motor with that law applies, which is what PyBullet's joint
+//! readouts report for motor-driven joints.
+
+use crate::core::{Core, WorldError};
+use crate::object::{JointHandle, JointKind, ObjectId};
+use crate::states::StateError;
+use rapier3d::dynamics::{GenericJoint, JointAxis, MotorModel};
+use rapier3d::math::{Pose, Rotation, Vector};
+
+/// Fraction of a joint's range beyond which it counts as open.
+pub const OPEN_FRACTION: f32 = 0.05;
+
+/// A joint's state.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct JointState {
+    /// Radians or metres.
+    pub position: f32,
+    /// Radians or metres per second.
+    pub velocity: f32,
+    /// N·m or N: what its drive applies now (see the module docs).
+    pub effort: f32,
+}
+
+/// A motor on a joint: toward a position (a spring-damper) and/or a velocity, with a force limit.
+/// Gains are physical (N·m/rad and N·m·s/rad, or N/m and N·s/m).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Drive {
+    /// The position it pulls toward, if any.
+    pub target_position: Option<f32>,
+    /// The velocity it drives toward.
+    pub target_velocity: f32,
+    /// Pull per unit of position error.
+    pub stiffness: f32,
+    /// Pull per unit of velocity error.
+    pub damping: f32,
+    /// The most it applies (N·m or N).
+    pub max_force: f32,
+}
+
+impl Drive {
+    /// A position servo, as a robot's arm joint: `stiffness` toward `target`, `damping` against
+    /// motion, at most `max_force`.
+    pub fn position(target: f32, stiffness: f32, damping: f32, max_force: f32) -> Drive {
+        Drive {
+            target_position: Some(target),
+            target_velocity: 0.0,
+            stiffness,
+            damping,
+            max_force,
+        }
+    }
+
+    /// A velocity motor, as a wheel: `damping` toward `velocity`, at most `max_force`.
+    pub fn velocity(velocity: f32, damping: f32, max_force: f32) -> Drive {
+        Drive {
+            target_position: None,
+            target_velocity: velocity,
+            stiffness: 0.0,
+            damping,
+            max_force,
+        }
+    }
+
+    fn is_valid(&self) -> bool {
+        let non_negative = |x: f32| x.is_finite() && x >= 0.0;
+        self.target_position.is_none_or(f32::is_finite)
+            && self.target_velocity.is_finite()
+            && non_negative(self.stiffness)
+            && non_negative(self.damping)
+            && non_negative(self.max_force)
+    }
+
+    /// What the motor law applies at position `q` and velocity `v`.
+    fn effort(&self, q: f32, v: f32) -> f32 {
+        let spring = self.target_position.map_or(0.0, |t| self.stiffness * (t - q));
+        (spring + self.damping * (self.target_velocity - v)).clamp(-self.max_force, self.max_force)
+    }
+}
+
+/// The rapier axis a joint kind moves along.
+pub(crate) fn free_axis(kind: JointKind) -> Option<JointAxis> {
+    match kind {
+        JointKind::Revolute => Some(JointAxis::AngX),
+        JointKind::Prismatic => Some(JointAxis::LinX),
+        JointKind::Fixed => None,
+    }
+}
+
+impl Core {
+    fn check_link(&self, id: ObjectId, link: usize) -> Result<(), WorldError> {
+        let object = self.object(id);
+        if link < object.links.len() {
+            Ok(())
+        } else {
+            Err(WorldError::NoLink {
+                name: object.name.clone(),
+                link,
+                count: object.links.len(),
+            })
+        }
+    }
+
+    /// The pose of a link's parent body.
+    fn parent_pose(&self, id: ObjectId, link: usize) -> Pose {
+        match self.object(id).links[link].parent {
+            None => self.pose(id),
+            Some(p) => self.link_pose(id, p),
+        }
+    }
+
+    /// The position of a link's joint: 0 where the spec put it, the upper limit fully open.
+    /// Panics if the link does not exist; see [`Core::joint_state`] for a checked reading.
+    pub fn joint_position(&self, id: ObjectId, link: usize) -> f32 {
+        let l = &self.object(id).links[link];
+        let relative = self.parent_pose(id, link).inv_mul(&self.link_pose(id, link));
+        match l.joint.kind {
+            JointKind::Revolute => {
+                let q = relative.rotation;
+                let along = Vector::new(q.x, q.y, q.z).dot(l.joint.axis);
+                2.0 * along.atan2(q.w)
+            }
+            JointKind::Prismatic => relative.translation.dot(l.joint.axis),
+            JointKind::Fixed => 0.0,
+        }
+    }
+
+    /// Position, velocity and effort of a link's joint.
+    pub fn joint_state(&self, id: ObjectId, link: usize) -> Result<JointState, WorldError> {
+        self.check_link(id, link)?;
+        let l = &self.object(id).links[link];
+        let position = self.joint_position(id, link);
+        let velocity = self.joint_velocity(id, link);
+        let effort = match self.drives.get(&(id, link)) {
+            Some(drive) => drive.effort(position, velocity),
+            None => -l.joint.damping * velocity,
+        };
+        Ok(JointState {
+            position,
+            velocity,
+            effort,
+        })
+    }
+
+    fn joint_velocity(&self, id: ObjectId, link: usize) -> f32 {
+        let l = &self.object(id).links[link];
+        let parent = match l.parent {
+            None => self.object(id).body,
+            Some(p) => self.object(id).links[p].body,
+        };
+        let (pb, cb) = (&self.physics.bodies[parent], &self.physics.bodies[l.body]);
+        let axis = pb.position().rotation * l.joint.axis;
+        match l.joint.kind {
+            JointKind::Revolute => (cb.angvel() - pb.angvel()).dot(axis),
+            JointKind::Prismatic => {
+                let at = cb.center_of_mass();
+                (cb.linvel() - pb.velocity_at_point(at)).dot(axis)
+            }
+            JointKind::Fixed => 0.0,
+        }
+    }
+
+    /// Moves a link to a joint position (clamped to its limits), at rest, keeping its children
+    /// where they are relative to it.
+    pub fn set_joint_position(&mut self, id: ObjectId, link: usize, position: f32) -> Result<(), WorldError> {
+        self.check_link(id, link)?;
+        if !position.is_finite() {
+            return Err(WorldError::NotFinite {
+                what: "a joint position",
+                value: position,
+            });
+        }
+        let joint = self.object(id).links[link].joint.clone();
+        let q = joint.limits.map_or(position, |[lo, hi]| position.clamp(lo, hi));
+        let local = match joint.kind {
+            JointKind::Revolute => {
+                let turn = Pose::from_rotation(Rotation::from_axis_angle(joint.axis, q));
+                Pose::from_translation(joint.anchor) * turn * Pose::from_translation(-joint.anchor)
+            }
+            JointKind::Prismatic => Pose::from_translation(joint.axis * q),
+            JointKind::Fixed => Pose::IDENTITY,
+        };
+        let old = self.link_pose(id, link);
+        let new = self.parent_pose(id, link) * local;
+        // The link's descendants keep their pose relative to it.
+        let mut moves = vec![(link, new)];
+        for (i, l) in self.object(id).links.iter().enumerate().skip(link + 1) {
+            if self.descends_from(id, i, link) {
+                let _ = l;
+                moves.push((i, new * old.inv_mul(&self.link_pose(id, i))));
+            }
+        }
+        for (i, pose) in moves {
+            let handle = self.object(id).links[i].body;
+            let body = &mut self.physics.bodies[handle];
+            body.set_position(pose, true);
+            body.set_linvel(Vector::ZERO, true);
+            body.set_angvel(Vector::ZERO, true);
+        }
+        self.set_multibody_coordinate(id, link, q);
+        self.moved(id);
+        self.refresh();
+        Ok(())
+    }
+
+    fn descends_from(&self, id: ObjectId, link: usize, ancestor: usize) -> bool {
+        let links = &self.object(id).links;
+        let mut at = links[link].parent;
+        while let Some(p) = at {
+            if p == ancestor {
+                return true;
+            }
+            at = links[p].parent;
+        }
+        false
+    }
+
+    /// A multibody keeps its own joint coordinates: a teleported joint must be told.
+    fn set_multibody_coordinate(&mut self, id: ObjectId, link: usize, q: f32) {
+        let JointHandle::Multibody(handle) = self.object(id).links[link].handle else {
+            return;
+        };
+        let physics = &mut self.physics;
+        if let Some((multibody, index)) = physics.multibody_joints.get_mut(handle) {
+            let current = self::coordinate(multibody.link(index).map(|l| &l.joint));
+            if let Some(current) = current {
+                let ndofs = multibody.ndofs();
+                let mut displacement = vec![0.0; ndofs];
+                let offset = multibody.link(index).map_or(0, |l| l.assembly_id());
+                if offset < ndofs {
+                    displacement[offset] = q - current;
+                    multibody.apply_displacements(&displacement);
+                }
+            }
+            multibody.generalized_velocity_mut().fill(0.0);
+            multibody.forward_kinematics(&physics.bodies, true);
+            multibody.update_rigid_bodies(&mut physics.bodies, false);
+        }
+    }
+
+    /// Sets a drive on a link's joint (replacing any earlier one) until [`Core::release_joint`].
+    pub fn drive_joint(&mut self, id: ObjectId, link: usize, drive: Drive) -> Result<(), WorldError> {
+        self.check_link(id, link)?;
+        if !drive.is_valid() {
+            return Err(WorldError::BadObject {
+                name: self.object(id).name.clone(),
+                reason: format!("the drive of link {link} has a non-finite or negative value: {drive:?}"),
+            });
+        }
+        let l = &self.object(id).links[link];
+        let Some(axis) = free_axis(l.joint.kind) else {
+            return Err(WorldError::BadObject {
+                name: self.object(id).name.clone(),
+                reason: format!("link {link} is on a fixed joint and cannot be driven"),
+            });
+        };
+        let (handle, body) = (l.handle, l.body);
+        self.with_joint(handle, |joint| {
+            joint.set_motor_model(axis, MotorModel::ForceBased);
+            joint.set_motor(
+                axis,
+                drive.target_position.unwrap_or(0.0),
+                drive.target_velocity,
+                drive.stiffness,
+                drive.damping,
+            );
+            joint.set_motor_max_force(axis, drive.max_force);
+        });
+        self.drives.insert((id, link), drive);
+        self.wake(body);
+        Ok(())
+    }
+
+    /// Takes a joint's drive off: it goes back to its passive damping.
+    pub fn release_joint(&mut self, id: ObjectId, link: usize) -> Result<(), WorldError> {
+        self.check_link(id, link)?;
+        let l = &self.object(id).links[link];
+        let (handle, body, damping) = (l.handle, l.body, l.joint.damping);
+        if let Some(axis) = free_axis(l.joint.kind) {
+            self.with_joint(handle, |joint| {
+                joint.set_motor_model(axis, MotorModel::AccelerationBased);
+                joint.set_motor(axis, 0.0, 0.0, 0.0, damping);
+                joint.set_motor_max_force(axis, f32::MAX);
+            });
+        }
+        self.drives.remove(&(id, link));
+        self.wake(body);
+        Ok(())
+    }
+
+    fn with_joint(&mut self, handle: JointHandle, change: impl FnOnce(&mut GenericJoint)) {
+        match handle {
+            JointHandle::Impulse(h) => {
+                if let Some(joint) = self.physics.impulse_joints.get_mut(h, true) {
+                    change(&mut joint.data);
+                }
+            }
+            JointHandle::Multibody(h) => {
+                if let Some((multibody, index)) = self.physics.multibody_joints.get_mut(h)
+                    && let Some(link) = multibody.link_mut(index)
+                {
+                    change(&mut link.joint.data);
+                }
+            }
+        }
+    }
+
+    pub(crate) fn wake(&mut self, body: rapier3d::dynamics::RigidBodyHandle) {
+        self.physics.bodies[body].wake_up(true);
+        self.quiet = false;
+    }
+
+    /// Whether any joint with limits is beyond [`OPEN_FRACTION`] of its range.
+    pub fn is_open(&self, id: ObjectId) -> bool {
+        let links = &self.object(id).links;
+        links.iter().enumerate().any(|(i, l)| {
+            l.joint
+                .limits
+                .is_some_and(|[lo, hi]| self.joint_position(id, i) - lo > OPEN_FRACTION * (hi - lo))
+        })
+    }
+
+    /// Opens every joint with limits fully, or closes them all.
+    pub(crate) fn set_open(&mut self, id: ObjectId, open: bool) -> Result<(), StateError> {
+        let targets: Vec<(usize, f32)> = self
+            .object(id)
+            .links
+            .iter()
+            .enumerate()
+            .filter_map(|(i, l)| l.joint.limits.map(|[lo, hi]| (i, if open { hi } else { lo })))
+            .collect();
+        if targets.is_empty() {
+            return Err(StateError::NoJoints {
+                object: self.object(id).name.clone(),
+            });
+        }
+        for (i, target) in targets {
+            // The link exists and the target is finite: this cannot fail.
+            let _ = self.set_joint_position(id, i, target);
+        }
+        Ok(())
+    }
+}
+
+/// A one-degree-of-freedom multibody joint's coordinate.
+fn coordinate(joint: Option<&rapier3d::dynamics::MultibodyJoint>) -> Option<f32> {
+    let joint = joint?;
+    let coords = joint.coords();
+    Some(if joint.data.locked_axes.contains(rapier3d::dynamics::JointAxesMask::LIN_X) {
+        // Revolute: the angle is the first angular coordinate.
+        coords[3]
+    } else {
+        coords[0]
+    })
+}

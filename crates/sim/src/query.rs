@@ -1,0 +1,256 @@
+//! Questions about space asked without stepping: the first thing a ray hits, many rays at once
+//! (lidar), which bodies a shape at some pose would overlap, and how far the nearest one is
+//! (motion planning).
+//!
+//! Queries run against a bounding-volume hierarchy over every collider (parry's `Bvh`), built on
+//! the first query after anything moved and kept until the next change, so a planner that asks a
+//! thousand questions of one configuration pays for one build. It never uses rapier's broad phase,
+//! which lags teleports until the next physics step.
+
+use crate::construct::colliders_of;
+use crate::core::{Core, WorldError, pose_is_finite, untag};
+use crate::object::{BodyRef, ObjectId, Part, Primitive};
+use rapier3d::geometry::{Collider, ColliderHandle};
+use rapier3d::math::{Pose, Vector};
+use rapier3d::parry::bounding_volume::{Aabb, BoundingVolume};
+use rapier3d::parry::partitioning::{Bvh, BvhBuildStrategy};
+use rapier3d::parry::query;
+use rapier3d::prelude::Ray;
+
+/// What a query ignores.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct QueryFilter {
+    /// Objects to ignore entirely (the robot itself).
+    pub exclude_objects: Vec<ObjectId>,
+    /// Single bodies to ignore (a hand, the object it holds).
+    pub exclude_bodies: Vec<BodyRef>,
+    /// Whether water drops count (they are ignored by default).
+    pub include_drops: bool,
+}
+
+impl QueryFilter {
+    /// Ignores these objects.
+    pub fn excluding(objects: &[ObjectId]) -> QueryFilter {
+        QueryFilter {
+            exclude_objects: objects.to_vec(),
+            ..QueryFilter::default()
+        }
+    }
+
+    fn admits(&self, collider: &Collider) -> bool {
+        if !collider.is_enabled() {
+            return false;
+        }
+        match untag(collider.user_data) {
+            None => self.include_drops,
+            Some(body) => {
+                !self.exclude_objects.contains(&body.object) && !self.exclude_bodies.contains(&body)
+            }
+        }
+    }
+}
+
+/// The first hit of a ray.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RayHit {
+    /// The body hit, or `None` for a water drop.
+    pub body: Option<BodyRef>,
+    /// Along the ray, m.
+    pub distance: f32,
+    /// Where, in the world.
+    pub point: Vector,
+    /// The surface's outward normal there.
+    pub normal: Vector,
+}
+
+/// The nearest body to a shape.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Proximity {
+    /// The body.
+    pub body: BodyRef,
+    /// The gap between them, m; 0 when they overlap.
+    pub distance: f32,
+}
+
+/// Every enabled collider in a bounding-volume hierarchy.
+#[derive(Clone)]
+pub(crate) struct QueryIndex {
+    bvh: Bvh,
+    colliders: Vec<ColliderHandle>,
+}
+
+impl QueryIndex {
+    fn build(core: &Core) -> QueryIndex {
+        let (colliders, boxes): (Vec<ColliderHandle>, Vec<Aabb>) = core
+            .physics
+            .colliders
+            .iter()
+            .filter(|(_, c)| c.is_enabled())
+            .map(|(h, c)| (h, c.compute_aabb()))
+            .unzip();
+        QueryIndex {
+            bvh: Bvh::from_leaves(BvhBuildStrategy::Binned, &boxes),
+            colliders,
+        }
+    }
+}
+
+impl Core {
+    fn index(&self) -> &QueryIndex {
+        self.index.get_or_init(|| QueryIndex::build(self))
+    }
+
+    /// The first thing a ray from `origin` along `direction` hits within `max_distance`.
+    pub fn cast_ray(
+        &self,
+        origin: Vector,
+        direction: Vector,
+        max_distance: f32,
+        filter: &QueryFilter,
+    ) -> Result<Option<RayHit>, WorldError> {
+        let ray = checked_ray(origin, direction, max_distance)?;
+        Ok(self.first_hit(&ray, max_distance, filter))
+    }
+
+    /// Many rays at once (a lidar sweep): the first hit of each, in order.
+    pub fn cast_rays(
+        &self,
+        rays: &[(Vector, Vector)],
+        max_distance: f32,
+        filter: &QueryFilter,
+    ) -> Result<Vec<Option<RayHit>>, WorldError> {
+        let rays: Vec<Ray> = rays
+            .iter()
+            .map(|&(o, d)| checked_ray(o, d, max_distance))
+            .collect::<Result<_, _>>()?;
+        Ok(rays
+            .iter()
+            .map(|ray| self.first_hit(ray, max_distance, filter))
+            .collect())
+    }
+
+    fn first_hit(&self, ray: &Ray, max_distance: f32, filter: &QueryFilter) -> Option<RayHit> {
+        let index = self.index();
+        let colliders = &self.physics.colliders;
+        let (leaf, distance) = index.bvh.cast_ray(ray, max_distance, |leaf, best| {
+            let c = &colliders[index.colliders[leaf as usize]];
+            if !filter.admits(c) {
+                return None;
+            }
+            c.shape().cast_ray(c.position(), ray, best, true)
+        })?;
+        let c = &colliders[index.colliders[leaf as usize]];
+        let normal = c
+            .shape()
+            .cast_ray_and_get_normal(c.position(), ray, distance + 1e-4, true)
+            .map_or(-ray.dir, |hit| hit.normal);
+        Some(RayHit {
+            body: untag(c.user_data),
+            distance,
+            point: ray.point_at(distance),
+            normal,
+        })
+    }
+
+    /// The bodies that a shape at `pose` would overlap, each once, in id order.
+    pub fn overlaps(
+        &self,
+        shape: &Primitive,
+        pose: Pose,
+        filter: &QueryFilter,
+    ) -> Result<Vec<BodyRef>, WorldError> {
+        let probe = probe(shape, pose)?;
+        let mut hits: Vec<BodyRef> = self
+            .near(&probe, 0.0, filter)
+            .filter(|c| {
+                query::intersection_test(probe.position(), probe.shape(), c.position(), c.shape())
+                    .map_or(true, |i| i.intersecting)
+            })
+            .filter_map(|c| untag(c.user_data))
+            .collect();
+        hits.sort();
+        hits.dedup();
+        Ok(hits)
+    }
+
+    /// The nearest body within `max_distance` of a shape at `pose`.
+    pub fn nearest(
+        &self,
+        shape: &Primitive,
+        pose: Pose,
+        max_distance: f32,
+        filter: &QueryFilter,
+    ) -> Result<Option<Proximity>, WorldError> {
+        if !(max_distance.is_finite() && max_distance >= 0.0) {
+            return Err(WorldError::NotFinite {
+                what: "a query's distance",
+                value: max_distance,
+            });
+        }
+        let probe = probe(shape, pose)?;
+        let mut best: Option<Proximity> = None;
+        for c in self.near(&probe, max_distance, filter) {
+            let Some(body) = untag(c.user_data) else {
+                continue;
+            };
+            let Ok(d) = query::distance(probe.position(), probe.shape(), c.position(), c.shape())
+            else {
+                continue;
+            };
+            let d = d.distance.max(0.0);
+            let better = best.is_none_or(|b| d < b.distance || (d == b.distance && body < b.body));
+            if d <= max_distance && better {
+                best = Some(Proximity { body, distance: d });
+            }
+        }
+        Ok(best)
+    }
+
+    /// Admitted colliders whose boxes come within `margin` of the probe's.
+    fn near<'a>(
+        &'a self,
+        probe: &Collider,
+        margin: f32,
+        filter: &'a QueryFilter,
+    ) -> impl Iterator<Item = &'a Collider> + 'a {
+        let index = self.index();
+        let area = probe.compute_aabb().loosened(margin);
+        let leaves: Vec<u32> = index.bvh.intersect_aabb(&area).collect();
+        leaves
+            .into_iter()
+            .map(move |leaf| &self.physics.colliders[index.colliders[leaf as usize]])
+            .filter(move |c| filter.admits(c))
+    }
+}
+
+fn checked_ray(origin: Vector, direction: Vector, max_distance: f32) -> Result<Ray, WorldError> {
+    let length = direction.length();
+    if !(origin.is_finite() && length.is_finite() && length > 1e-9) {
+        return Err(WorldError::NotFinite {
+            what: "a ray's origin and non-zero direction",
+            value: length,
+        });
+    }
+    if !(max_distance.is_finite() && max_distance >= 0.0) {
+        return Err(WorldError::NotFinite {
+            what: "a ray's length",
+            value: max_distance,
+        });
+    }
+    Ok(Ray::new(origin, direction / length))
+}
+
+/// A free collider for a query shape at a pose.
+fn probe(shape: &Primitive, pose: Pose) -> Result<Collider, WorldError> {
+    let bad = || WorldError::BadObject {
+        name: "query shape".into(),
+        reason: "its size or pose is not finite and positive".into(),
+    };
+    if !pose_is_finite(&pose) {
+        return Err(bad());
+    }
+    let mut colliders = colliders_of(&[Part::new(shape.clone())], 1.0, 0.0, 0).ok_or_else(bad)?;
+    let mut probe = colliders.pop().ok_or_else(bad)?;
+    probe.set_position(pose);
+    Ok(probe)
+}

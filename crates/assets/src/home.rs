@@ -53,7 +53,12 @@ pub const DOOR_CLEARANCE: f32 = 1.1;
 const GAP: f32 = 0.05;
 
 /// Room types every home has, and the others it draws from.
-const CORE_ROOMS: [RoomType; 4] = [RoomType::Kitchen, RoomType::LivingRoom, RoomType::Bathroom, RoomType::Bedroom];
+const CORE_ROOMS: [RoomType; 4] = [
+    RoomType::Kitchen,
+    RoomType::LivingRoom,
+    RoomType::Bathroom,
+    RoomType::Bedroom,
+];
 const EXTRA_ROOMS: [RoomType; 6] = [
     RoomType::DiningRoom,
     RoomType::Garage,

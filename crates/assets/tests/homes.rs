@@ -91,7 +91,8 @@ fn furniture_does_not_overlap_and_settles_in_place() {
 #[test]
 fn every_official_activity_is_covered_by_at_least_three_named_homes() {
     let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
-    let knowledge = behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();
+    let knowledge =
+        behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();
     let library = Library::new(&knowledge.taxonomy);
     let homes: Vec<Scene> = NAMED_HOMES
         .iter()

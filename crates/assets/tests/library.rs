@@ -3,9 +3,9 @@
 
 use behavior_assets::catalog::CATALOG;
 use behavior_assets::{Library, Shape};
+use behavior_core::Ability;
 use behavior_core::Predicate;
 use behavior_data::DataDir;
-use behavior_core::Ability;
 use behavior_sim::{ObjectSpec, Part, Primitive, Relation, World};
 use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::SeedableRng;
@@ -20,7 +20,8 @@ fn taxonomy() -> behavior_bddl::Taxonomy {
 /// Every category declared by the 100 official activities.
 fn official_synsets() -> BTreeSet<String> {
     let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
-    let knowledge = behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();
+    let knowledge =
+        behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();
     let mut synsets = BTreeSet::new();
     for name in data.activities().unwrap() {
         let (activity, _) = knowledge
@@ -204,7 +205,10 @@ fn containers_used_with_inside_hold_an_object_inside() {
             .place(ball, Relation::Inside, container, &mut rng)
             .unwrap_or_else(|e| panic!("{synset}: {e}"));
         world.settle(200);
-        assert!(world.core().inside(ball, container), "{synset}: the ball fell out");
+        assert!(
+            world.core().inside(ball, container),
+            "{synset}: the ball fell out"
+        );
     }
 }
 

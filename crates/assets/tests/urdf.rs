@@ -1,8 +1,8 @@
 //! Importing a URDF written by the test itself, with an OBJ door and an STL drawer.
 
 use behavior_assets::urdf::import_urdf;
-use behavior_core::Predicate;
 use behavior_core::Ability;
+use behavior_core::Predicate;
 use behavior_sim::{Primitive, World};
 use std::path::{Path, PathBuf};
 

@@ -5,8 +5,8 @@
 //! `behavior bddl bench` and `bench/side_by_side.sh`.
 
 use behavior_bddl::load::{Knowledge, read_source};
-use behavior_data::DataDir;
 use behavior_bddl::{FactSet, GroundGoal, Optimizer};
+use behavior_data::DataDir;
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::time::Duration;

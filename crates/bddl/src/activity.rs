@@ -7,8 +7,8 @@ use crate::diagnostics::{Diagnostic, Diagnostics, Source, SourceErrors, Span};
 use crate::parser;
 use crate::predicate::Predicate;
 use crate::taxonomy::{SynsetId, Taxonomy, is_synset_name};
-pub use behavior_core::{Atom, InstanceId};
 use behavior_core::RoomType;
+pub use behavior_core::{Atom, InstanceId};
 use std::collections::HashMap;
 use std::fmt;
 
@@ -472,9 +472,12 @@ impl Checker<'_> {
                 Err(unknown) => {
                     let names: Vec<&str> = RoomType::ALL.iter().map(|r| r.name()).collect();
                     self.diagnostics.push(
-                        Diagnostic::error(args[1].span, format!("unknown room type `{}`", unknown.0))
-                            .with_label("homes have no such room")
-                            .with_note(format!("room types: {}", names.join(", "))),
+                        Diagnostic::error(
+                            args[1].span,
+                            format!("unknown room type `{}`", unknown.0),
+                        )
+                        .with_label("homes have no such room")
+                        .with_note(format!("room types: {}", names.join(", "))),
                     );
                     return None;
                 }

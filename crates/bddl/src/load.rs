@@ -131,4 +131,3 @@ pub fn source_from_bytes(name: String, bytes: Vec<u8>) -> Result<Source, SourceE
         }
     }
 }
-

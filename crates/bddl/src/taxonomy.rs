@@ -247,7 +247,11 @@ pub(crate) mod tests {
         let parents: Vec<_> = t.synset(stove).parents.iter().map(|&p| t.name(p)).collect();
         assert_eq!(parents, ["furniture.n.01", "device.n.01"]);
         assert!(t.has_ability(stove, Ability::Toggleable));
-        assert!(t.abilities("stove.n.01").unwrap().contains_key(&Ability::HeatSource));
+        assert!(
+            t.abilities("stove.n.01")
+                .unwrap()
+                .contains_key(&Ability::HeatSource)
+        );
         assert!(t.abilities("zzz.n.01").is_none());
         let heat = t.ability(stove, Ability::HeatSource).unwrap();
         assert_eq!(heat["temperature"].as_f64(), Some(500.0));

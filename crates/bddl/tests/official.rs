@@ -5,9 +5,9 @@
 mod common;
 
 use behavior_bddl::load::{Knowledge, read_source};
-use behavior_data::DataDir;
 use behavior_bddl::options::options;
 use behavior_bddl::{Activity, FactSet, GroundGoal, Optimizer, Source};
+use behavior_data::DataDir;
 use serde_json::Value;
 use std::path::PathBuf;
 

@@ -9,8 +9,8 @@
 use behavior_bddl::GroundGoal;
 use behavior_bddl::activity::{Activity, Atom, Goal, InstanceId, Term};
 use behavior_bddl::load::{Knowledge, read_source};
-use behavior_data::DataDir;
 use behavior_bddl::options::options;
+use behavior_data::DataDir;
 use serde_json::{Value, json};
 use sha2::{Digest, Sha256};
 use std::collections::BTreeSet;

@@ -3,10 +3,10 @@
 
 use anyhow::{Context, Result, bail};
 use behavior_bddl::Knowledge;
-use behavior_data::DataDir;
 use behavior_bddl::domain::{is_domain_text, load_domain};
 use behavior_bddl::options::options;
 use behavior_bddl::{Activity, FactSet, GroundGoal, Optimizer, Source};
+use behavior_data::DataDir;
 use clap::Subcommand;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -158,7 +158,10 @@ struct StatsRow {
 fn stats(data: &DataDir, knowledge: &Knowledge, json: bool) -> Result<ExitCode> {
     let mut rows = Vec::new();
     for name in data.activities()? {
-        let activity = load(knowledge, &behavior_bddl::load::read_source(&data.problem_path(&name)?)?)?;
+        let activity = load(
+            knowledge,
+            &behavior_bddl::load::read_source(&data.problem_path(&name)?)?,
+        )?;
         let goal = GroundGoal::new(&activity);
         let optimizer = Optimizer::new(&goal);
         let state: FactSet = activity.initial_facts().into_iter().collect();
@@ -333,7 +336,10 @@ fn bench(
     };
     let mut rows = Vec::new();
     for name in names {
-        let activity = load(knowledge, &behavior_bddl::load::read_source(&data.problem_path(&name)?)?)?;
+        let activity = load(
+            knowledge,
+            &behavior_bddl::load::read_source(&data.problem_path(&name)?)?,
+        )?;
         let goal = GroundGoal::new(&activity);
         let optimizer = Optimizer::new(&goal);
         let state: FactSet = activity.initial_facts().into_iter().collect();

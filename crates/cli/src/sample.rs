@@ -218,7 +218,9 @@ fn load_all(
     data.activities()?
         .into_iter()
         .map(|name| {
-            let (activity, _) = knowledge.load(&behavior_bddl::load::read_source(&data.problem_path(&name)?)?)?;
+            let (activity, _) = knowledge.load(&behavior_bddl::load::read_source(
+                &data.problem_path(&name)?,
+            )?)?;
             Ok((name, activity))
         })
         .collect()

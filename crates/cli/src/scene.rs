@@ -89,7 +89,9 @@ pub fn run(command: SceneCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
                 .collect::<Result<_, _>>()?;
             let mut rows = Vec::new();
             for name in data.activities()? {
-                let (activity, _) = knowledge.load(&behavior_bddl::load::read_source(&data.problem_path(&name)?)?)?;
+                let (activity, _) = knowledge.load(&behavior_bddl::load::read_source(
+                    &data.problem_path(&name)?,
+                )?)?;
                 let needs = requirements(&activity);
                 let scenes = homes
                     .iter()

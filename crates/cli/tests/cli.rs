@@ -3,8 +3,8 @@
 #[path = "../../bddl/tests/common/mod.rs"]
 mod common;
 
-use behavior_data::DataDir;
 use behavior_bddl::{Activity, Atom};
+use behavior_data::DataDir;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -103,7 +103,8 @@ fn write_state(activity: &Activity, atoms: &[Atom], path: &Path) {
 #[test]
 fn eval_agrees_with_an_independent_exact_evaluation_on_random_states() {
     let data = DataDir::locate(None, |_| ()).unwrap();
-    let knowledge = behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();
+    let knowledge =
+        behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();
     let activities = [
         "packing_lunches",
         "setting_up_candles",
@@ -116,7 +117,9 @@ fn eval_agrees_with_an_independent_exact_evaluation_on_random_states() {
     ];
     let mut checked = 0;
     for name in activities {
-        let (activity, _) = knowledge.load(&behavior_bddl::load::read_source(&data.problem_path(name).unwrap()).unwrap()).unwrap();
+        let (activity, _) = knowledge
+            .load(&behavior_bddl::load::read_source(&data.problem_path(name).unwrap()).unwrap())
+            .unwrap();
         let formula = activity.goal_formula();
         let options =
             common::dnf(&activity, &formula, &mut Vec::new(), true).expect("small enough");

@@ -73,7 +73,12 @@ pub struct UnknownRoomType(pub String);
 impl fmt::Display for UnknownRoomType {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let known: Vec<&str> = RoomType::ALL.iter().map(|r| r.name()).collect();
-        write!(f, "unknown room type `{}` (known: {})", self.0, known.join(", "))
+        write!(
+            f,
+            "unknown room type `{}` (known: {})",
+            self.0,
+            known.join(", ")
+        )
     }
 }
 

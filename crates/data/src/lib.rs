@@ -164,7 +164,6 @@ impl DataDir {
     pub fn taxonomy_path(&self) -> PathBuf {
         self.root.join("hierarchy_owned.json")
     }
-
 }
 
 fn cache_dir() -> Option<PathBuf> {
@@ -184,7 +183,11 @@ fn fetch_once(cache: &Path, progress: impl FnOnce(&str)) -> Result<(), DataError
     let lock = parent.join(format!(".{PACKAGE}-{VERSION}.lock"));
     let started = Instant::now();
     loop {
-        match fs::OpenOptions::new().write(true).create_new(true).open(&lock) {
+        match fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(&lock)
+        {
             Ok(_) => break,
             Err(e) if e.kind() == io::ErrorKind::AlreadyExists => {
                 if cache.join("hierarchy_owned.json").is_file() {

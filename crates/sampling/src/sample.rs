@@ -311,10 +311,7 @@ pub fn first_unmet(
                     let name = &activity.instance(*instance).name;
                     return Some((
                         format!("(inroom {name} {room})"),
-                        format!(
-                            "it stands in {}",
-                            here.map_or("no room", |r| r.name())
-                        ),
+                        format!("it stands in {}", here.map_or("no room", |r| r.name())),
                     ));
                 }
             }

@@ -2,15 +2,16 @@
 
 use behavior_assets::coverage::{missing, requirements};
 use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
-use behavior_bddl::activity::InitLiteral;
 use behavior_bddl::Knowledge;
-use behavior_data::DataDir;
+use behavior_bddl::activity::InitLiteral;
 use behavior_bddl::{Activity, PredicateOracle};
+use behavior_data::DataDir;
 use behavior_sampling::{SampleError, SavedInstance, instantiate};
 
 fn setup() -> (DataDir, Knowledge) {
     let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
-    let knowledge = behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();
+    let knowledge =
+        behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();
     (data, knowledge)
 }
 
@@ -42,7 +43,11 @@ fn all_init_literals_hold(activity: &Activity, instance: &behavior_sampling::Ins
             room,
             positive,
         } => {
-            (instance.world.core().room_of(instance.bindings[i.0 as usize]) == Some(*room))
+            (instance
+                .world
+                .core()
+                .room_of(instance.bindings[i.0 as usize])
+                == Some(*room))
                 == *positive
         }
     })

@@ -6,8 +6,8 @@
 use behavior_core::Predicate;
 mod common;
 
-use common::resting_home;
 use behavior_sim::{ObjectId, Substeps, World};
+use common::resting_home;
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::time::Duration;

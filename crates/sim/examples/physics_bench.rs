@@ -11,8 +11,8 @@
 #[path = "../benches/common/mod.rs"]
 mod common;
 
-use common::resting_home as scene;
 use behavior_sim::{ObjectSpec, Primitive, Substeps, World};
+use common::resting_home as scene;
 use std::time::Instant;
 
 fn build(substeps: Substeps, sleeping: bool) -> World {
@@ -96,7 +96,10 @@ fn main() {
     }
     let (steps, repeats) = if quick { (20, 1) } else { (100, 5) };
     let specs = scene();
-    let dynamic = specs.iter().filter(|s| s.body != behavior_sim::BodyKind::Fixed).count();
+    let dynamic = specs
+        .iter()
+        .filter(|s| s.body != behavior_sim::BodyKind::Fixed)
+        .count();
     let (idle, asleep) = time(Substeps::Hz300, true, steps, repeats);
     let (awake, _) = time(Substeps::Hz300, false, steps, repeats);
     let (idle_120, _) = time(Substeps::Hz120, true, steps, repeats);

@@ -11,7 +11,9 @@
 
 use crate::core::{Core, WorldError};
 use crate::object::BodyRef;
-use rapier3d::dynamics::{FixedJointBuilder, GenericJoint, ImpulseJointHandle, SphericalJointBuilder};
+use rapier3d::dynamics::{
+    FixedJointBuilder, GenericJoint, ImpulseJointHandle, SphericalJointBuilder,
+};
 use rapier3d::math::{Pose, Vector};
 use std::collections::BTreeMap;
 
@@ -90,7 +92,10 @@ impl Core {
         }
         let (h1, h2) = (self.handle(spec.holder)?, self.handle(spec.held)?);
         let (p1, p2) = (self.body_pose(spec.holder)?, self.body_pose(spec.held)?);
-        let local = [p1.inverse_transform_point(spec.at), p2.inverse_transform_point(spec.at)];
+        let local = [
+            p1.inverse_transform_point(spec.at),
+            p2.inverse_transform_point(spec.at),
+        ];
         let joint: GenericJoint = match spec.kind {
             AttachmentKind::Fixed => {
                 // Frames that coincide now: the relative pose is kept as it is.
@@ -142,8 +147,12 @@ impl Core {
     /// An attachment's condition, or `None` if it was detached.
     pub fn attachment(&self, id: AttachmentId) -> Option<AttachmentState> {
         let record = self.attachments.records.get(&id)?;
-        let at = |body: BodyRef, local: Vector| self.body_pose(body).map(|p| p.transform_point(local));
-        let violation = match (at(record.spec.holder, record.local[0]), at(record.spec.held, record.local[1])) {
+        let at =
+            |body: BodyRef, local: Vector| self.body_pose(body).map(|p| p.transform_point(local));
+        let violation = match (
+            at(record.spec.holder, record.local[0]),
+            at(record.spec.held, record.local[1]),
+        ) {
             (Ok(a), Ok(b)) => (a - b).length(),
             _ => f32::INFINITY,
         };
@@ -157,7 +166,10 @@ impl Core {
 
     /// After a substep: records each attachment's force and breaks those that needed too much.
     pub(crate) fn watch_attachments(&mut self) {
-        let dt = self.physics.integration_parameters.dt;
+        // Joint impulses are those of the solver's last internal iteration, which spans
+        // dt / iterations.
+        let params = &self.physics.integration_parameters;
+        let dt = params.dt / params.num_solver_iterations.max(1) as f32;
         for record in self.attachments.records.values_mut() {
             let Some(handle) = record.joint else { continue };
             let Some(joint) = self.physics.impulse_joints.get(handle) else {

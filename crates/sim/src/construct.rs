@@ -29,9 +29,15 @@ impl Core {
             .ok_or_else(|| bad("a part has a non-positive or non-finite size or offset".into()))?;
         let mut link_builders = Vec::with_capacity(spec.links.len());
         for (i, link) in spec.links.iter().enumerate() {
-            check_link(link, i, &spec.links).map_err(|r| bad(format!("link `{}`: {r}", link.name)))?;
-            let colliders = colliders_of(&link.parts, link.density, spec.friction, tag(BodyRef::link(id, i)))
-                .ok_or_else(|| bad(format!("link `{}` has a malformed part", link.name)))?;
+            check_link(link, i, &spec.links)
+                .map_err(|r| bad(format!("link `{}`: {r}", link.name)))?;
+            let colliders = colliders_of(
+                &link.parts,
+                link.density,
+                spec.friction,
+                tag(BodyRef::link(id, i)),
+            )
+            .ok_or_else(|| bad(format!("link `{}` has a malformed part", link.name)))?;
             link_builders.push(colliders);
         }
         let body = self.insert_body(&spec, spec.body, tag(id.into()), 0.0);
@@ -41,8 +47,13 @@ impl Core {
             .collect();
         let mut links: Vec<Link> = Vec::with_capacity(spec.links.len());
         for (i, (link, builders)) in spec.links.iter().zip(link_builders).enumerate() {
-            let extra = if link.parts.is_empty() { FRAME_MASS } else { 0.0 };
-            let link_body = self.insert_body(&spec, BodyKind::Dynamic, tag(BodyRef::link(id, i)), extra);
+            let extra = if link.parts.is_empty() {
+                FRAME_MASS
+            } else {
+                0.0
+            };
+            let link_body =
+                self.insert_body(&spec, BodyKind::Dynamic, tag(BodyRef::link(id, i)), extra);
             colliders.extend(
                 builders
                     .into_iter()
@@ -51,7 +62,12 @@ impl Core {
             let parent = link.parent.map_or(body, |p| links[p].body);
             let handle = self
                 .insert_joint(parent, link_body, &link.joint)
-                .ok_or_else(|| bad(format!("link `{}` would close a loop of multibody joints", link.name)))?;
+                .ok_or_else(|| {
+                    bad(format!(
+                        "link `{}` would close a loop of multibody joints",
+                        link.name
+                    ))
+                })?;
             let mut joint = link.joint.clone();
             joint.axis = joint.axis.normalize();
             links.push(Link {
@@ -84,7 +100,13 @@ impl Core {
         Ok(id)
     }
 
-    fn insert_body(&mut self, spec: &ObjectSpec, kind: BodyKind, tag: u128, extra_mass: f32) -> RigidBodyHandle {
+    fn insert_body(
+        &mut self,
+        spec: &ObjectSpec,
+        kind: BodyKind,
+        tag: u128,
+        extra_mass: f32,
+    ) -> RigidBodyHandle {
         let builder = match kind {
             BodyKind::Fixed => RigidBodyBuilder::fixed(),
             BodyKind::Dynamic => RigidBodyBuilder::dynamic(),
@@ -102,11 +124,22 @@ impl Core {
 
     /// The joint between a link and its parent. Both bodies start at the object's pose, so the
     /// anchor is the same point in both frames.
-    fn insert_joint(&mut self, parent: RigidBodyHandle, child: RigidBodyHandle, spec: &JointSpec) -> Option<JointHandle> {
+    fn insert_joint(
+        &mut self,
+        parent: RigidBodyHandle,
+        child: RigidBodyHandle,
+        spec: &JointSpec,
+    ) -> Option<JointHandle> {
         let joint = generic_joint(spec);
         Some(match spec.model {
-            JointModel::Impulse => JointHandle::Impulse(self.physics.insert_impulse_joint(parent, child, joint)),
-            JointModel::Multibody => JointHandle::Multibody(self.physics.multibody_joints.insert(parent, child, joint, true)?),
+            JointModel::Impulse => {
+                JointHandle::Impulse(self.physics.insert_impulse_joint(parent, child, joint))
+            }
+            JointModel::Multibody => JointHandle::Multibody(
+                self.physics
+                    .multibody_joints
+                    .insert(parent, child, joint, true)?,
+            ),
         })
     }
 }
@@ -118,14 +151,12 @@ fn generic_joint(spec: &JointSpec) -> GenericJoint {
         JointKind::Revolute => RevoluteJointBuilder::new(axis)
             .local_anchor1(spec.anchor)
             .local_anchor2(spec.anchor)
-            .motor_velocity(0.0, spec.damping)
             .contacts_enabled(false)
             .build()
             .into(),
         JointKind::Prismatic => PrismaticJointBuilder::new(axis)
             .local_anchor1(spec.anchor)
             .local_anchor2(spec.anchor)
-            .motor_velocity(0.0, spec.damping)
             .contacts_enabled(false)
             .build()
             .into(),
@@ -136,8 +167,11 @@ fn generic_joint(spec: &JointSpec) -> GenericJoint {
             .build()
             .into(),
     };
-    if let (Some(limits), Some(axis)) = (spec.limits, crate::joints::free_axis(spec.kind)) {
-        joint.set_limits(axis, limits);
+    if let Some(axis) = crate::joints::free_axis(spec.kind) {
+        if let Some(limits) = spec.limits {
+            joint.set_limits(axis, limits);
+        }
+        crate::joints::passive(&mut joint, axis, spec.damping);
     }
     joint
 }
@@ -170,7 +204,10 @@ fn check_spec(spec: &ObjectSpec) -> Result<(), String> {
     for mesh in &spec.meshes {
         let n = mesh.vertices.len() as u32;
         let link_ok = mesh.link.is_none_or(|l| l < spec.links.len());
-        if !link_ok || !mesh.vertices.iter().all(|v| v.is_finite()) || mesh.triangles.iter().flatten().any(|&i| i >= n) {
+        if !link_ok
+            || !mesh.vertices.iter().all(|v| v.is_finite())
+            || mesh.triangles.iter().flatten().any(|&i| i >= n)
+        {
             return Err("a visual mesh has a bad link, vertex or triangle index".into());
         }
     }
@@ -206,7 +243,12 @@ fn check_link(link: &LinkSpec, index: usize, all: &[LinkSpec]) -> Result<(), Str
 }
 
 /// Colliders for parts, tagged; `None` if a part is malformed.
-pub(crate) fn colliders_of(parts: &[Part], density: f32, friction: f32, tag: u128) -> Option<Vec<Collider>> {
+pub(crate) fn colliders_of(
+    parts: &[Part],
+    density: f32,
+    friction: f32,
+    tag: u128,
+) -> Option<Vec<Collider>> {
     parts
         .iter()
         .map(|part| {

@@ -5,7 +5,9 @@
 use crate::core::{Core, DROP_TAG, WorldError, untag};
 use crate::object::{BodyRef, ObjectId};
 use rapier3d::dynamics::RigidBodySet;
-use rapier3d::geometry::{ColliderHandle, Group, InteractionGroups, InteractionTestMode, SolverFlags};
+use rapier3d::geometry::{
+    ColliderHandle, Group, InteractionGroups, InteractionTestMode, SolverFlags,
+};
 use rapier3d::math::Vector;
 use rapier3d::pipeline::{ActiveHooks, PairFilterContext, PhysicsHooks};
 use std::collections::BTreeSet;
@@ -32,15 +34,16 @@ pub struct Contact {
     pub point: Vector,
     /// Unit normal pointing from this body toward the other.
     pub normal: Vector,
-    /// The normal impulse the solver applied there in the last substep (N·s); divide by the
-    /// substep's length for a force.
+    /// The normal impulse the solver applied there over the last physics substep (N·s); divided
+    /// by the substep's length it is the contact force.
     pub impulse: f32,
-    /// Penetration is negative; resting contacts sit within a millimetre.
+    /// Penetration is negative; resting contacts sit about a millimetre apart.
     pub distance: f32,
 }
 
-/// Contact points farther apart than this are predictions, not contacts (m).
-const CONTACT_DISTANCE: f32 = 0.001;
+/// Contact points farther apart than this are predictions, not contacts (m): the touching
+/// distance, as resting bodies settle about 1 mm apart in rapier.
+const CONTACT_DISTANCE: f32 = crate::kinematics::TOUCH_DISTANCE;
 
 impl Core {
     /// The contacts of a body (or of an object's body and all its links, with `link: None` in
@@ -79,7 +82,11 @@ impl Core {
                         manifold.local_n2
                     };
                     let normal: Vector = mine.position().rotation * local_normal;
-                    for p in manifold.points.iter().filter(|p| p.dist <= CONTACT_DISTANCE) {
+                    for p in manifold
+                        .points
+                        .iter()
+                        .filter(|p| p.dist <= CONTACT_DISTANCE)
+                    {
                         let local = if mine_first { p.local_p1 } else { p.local_p2 };
                         out.push(Contact {
                             other: untag(other_collider.user_data),
@@ -92,7 +99,7 @@ impl Core {
                 }
             }
         }
-        out.sort_by(|a, b| a.other.cmp(&b.other));
+        out.sort_by_key(|c| c.other);
         out
     }
 
@@ -110,7 +117,12 @@ impl Core {
     }
 
     /// Ignores (or again allows) contacts between two bodies.
-    pub fn ignore_contacts(&mut self, a: BodyRef, b: BodyRef, ignore: bool) -> Result<(), WorldError> {
+    pub fn ignore_contacts(
+        &mut self,
+        a: BodyRef,
+        b: BodyRef,
+        ignore: bool,
+    ) -> Result<(), WorldError> {
         let (ha, hb) = (self.handle(a)?, self.handle(b)?);
         let pair = if a <= b { (a, b) } else { (b, a) };
         if ignore {
@@ -148,7 +160,9 @@ impl PhysicsHooks for ContactFilter<'_> {
         let dynamic = |bodies: &RigidBodySet, h: Option<rapier3d::dynamics::RigidBodyHandle>| {
             h.is_some_and(|h| bodies[h].is_dynamic())
         };
-        if !dynamic(context.bodies, context.rigid_body1) && !dynamic(context.bodies, context.rigid_body2) {
+        if !dynamic(context.bodies, context.rigid_body1)
+            && !dynamic(context.bodies, context.rigid_body2)
+        {
             return None;
         }
         let body = |c: ColliderHandle| {

@@ -229,11 +229,15 @@ impl Core {
         let object = self.object(body.object);
         match body.link {
             None => Ok(object.body),
-            Some(l) => object.links.get(l).map(|l| l.body).ok_or(WorldError::NoLink {
-                name: object.name.clone(),
-                link: l,
-                count: object.links.len(),
-            }),
+            Some(l) => object
+                .links
+                .get(l)
+                .map(|l| l.body)
+                .ok_or(WorldError::NoLink {
+                    name: object.name.clone(),
+                    link: l,
+                    count: object.links.len(),
+                }),
         }
     }
 

@@ -64,7 +64,10 @@ impl Core {
         if body.link.is_some() || kind != BodyKind::KinematicPosition {
             return Err(WorldError::BadObject {
                 name: self.object(body.object).name.clone(),
-                reason: format!("only a {:?} body takes pose targets; this one is {kind:?}", BodyKind::KinematicPosition),
+                reason: format!(
+                    "only a {:?} body takes pose targets; this one is {kind:?}",
+                    BodyKind::KinematicPosition
+                ),
             });
         }
         let handle = self.handle(body)?;
@@ -84,7 +87,12 @@ impl Core {
     }
 
     /// Pushes a body at a world point with a force (N) for the rest of this action step.
-    pub fn apply_force_at(&mut self, body: BodyRef, force: Vector, point: Vector) -> Result<(), WorldError> {
+    pub fn apply_force_at(
+        &mut self,
+        body: BodyRef,
+        force: Vector,
+        point: Vector,
+    ) -> Result<(), WorldError> {
         finite("a force", force)?;
         finite("a point", point)?;
         let handle = self.handle(body)?;

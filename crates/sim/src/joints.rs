@@ -10,8 +10,14 @@
 //! Efforts: rapier does not report the impulses of multibody motors, so a joint's effort is what
 //! its drive commands at the current state — `stiffness·(target − q) + damping·(v_target − v)`,
 //! clamped to the drive's maximum force (N or N·m) — or, without a drive, its passive damping
-//! torque. This is the force a motor with that law applies, which is what PyBullet's joint
-//! readouts report for motor-driven joints.
+//! torque. For a single driven joint this is the torque the solver applies (a test holds a bar
+//! against gravity and reads its weight's moment to 1 %). In a chain it is only approximate:
+//! rapier solves the chain's motors together in 4 iterations without warm starting, so the
+//! settled errors, and with them the commanded efforts, differ from the loads — measured on a
+//! horizontal 3-link arm at stiffness 2,000 N·m/rad: 1.16×, 1.42× and 0.68× the gravity moments
+//! from shoulder to wrist (1.01×, 1.04×, 0.97× with 4 internal solver iterations, which would cost
+//! every scene), and 3.0× at the shoulder of the same arm bent to (0.5, −0.3, 0.4) rad. Choosing
+//! the solver settings for robots belongs with the robots and their benchmark.
 
 use crate::core::{Core, WorldError};
 use crate::object::{JointHandle, JointKind, ObjectId};
@@ -84,7 +90,9 @@ impl Drive {
 
     /// What the motor law applies at position `q` and velocity `v`.
     fn effort(&self, q: f32, v: f32) -> f32 {
-        let spring = self.target_position.map_or(0.0, |t| self.stiffness * (t - q));
+        let spring = self
+            .target_position
+            .map_or(0.0, |t| self.stiffness * (t - q));
         (spring + self.damping * (self.target_velocity - v)).clamp(-self.max_force, self.max_force)
     }
 }
@@ -124,7 +132,9 @@ impl Core {
     /// Panics if the link does not exist; see [`Core::joint_state`] for a checked reading.
     pub fn joint_position(&self, id: ObjectId, link: usize) -> f32 {
         let l = &self.object(id).links[link];
-        let relative = self.parent_pose(id, link).inv_mul(&self.link_pose(id, link));
+        let relative = self
+            .parent_pose(id, link)
+            .inv_mul(&self.link_pose(id, link));
         match l.joint.kind {
             JointKind::Revolute => {
                 let q = relative.rotation;
@@ -173,7 +183,12 @@ impl Core {
 
     /// Moves a link to a joint position (clamped to its limits), at rest, keeping its children
     /// where they are relative to it.
-    pub fn set_joint_position(&mut self, id: ObjectId, link: usize, position: f32) -> Result<(), WorldError> {
+    pub fn set_joint_position(
+        &mut self,
+        id: ObjectId,
+        link: usize,
+        position: f32,
+    ) -> Result<(), WorldError> {
         self.check_link(id, link)?;
         if !position.is_finite() {
             return Err(WorldError::NotFinite {
@@ -182,7 +197,9 @@ impl Core {
             });
         }
         let joint = self.object(id).links[link].joint.clone();
-        let q = joint.limits.map_or(position, |[lo, hi]| position.clamp(lo, hi));
+        let q = joint
+            .limits
+            .map_or(position, |[lo, hi]| position.clamp(lo, hi));
         let local = match joint.kind {
             JointKind::Revolute => {
                 let turn = Pose::from_rotation(Rotation::from_axis_angle(joint.axis, q));
@@ -250,12 +267,19 @@ impl Core {
     }
 
     /// Sets a drive on a link's joint (replacing any earlier one) until [`Core::release_joint`].
-    pub fn drive_joint(&mut self, id: ObjectId, link: usize, drive: Drive) -> Result<(), WorldError> {
+    pub fn drive_joint(
+        &mut self,
+        id: ObjectId,
+        link: usize,
+        drive: Drive,
+    ) -> Result<(), WorldError> {
         self.check_link(id, link)?;
         if !drive.is_valid() {
             return Err(WorldError::BadObject {
                 name: self.object(id).name.clone(),
-                reason: format!("the drive of link {link} has a non-finite or negative value: {drive:?}"),
+                reason: format!(
+                    "the drive of link {link} has a non-finite or negative value: {drive:?}"
+                ),
             });
         }
         let l = &self.object(id).links[link];
@@ -288,11 +312,7 @@ impl Core {
         let l = &self.object(id).links[link];
         let (handle, body, damping) = (l.handle, l.body, l.joint.damping);
         if let Some(axis) = free_axis(l.joint.kind) {
-            self.with_joint(handle, |joint| {
-                joint.set_motor_model(axis, MotorModel::AccelerationBased);
-                joint.set_motor(axis, 0.0, 0.0, 0.0, damping);
-                joint.set_motor_max_force(axis, f32::MAX);
-            });
+            self.with_joint(handle, |joint| passive(joint, axis, damping));
         }
         self.drives.remove(&(id, link));
         self.wake(body);
@@ -317,7 +337,9 @@ impl Core {
     }
 
     pub(crate) fn wake(&mut self, body: rapier3d::dynamics::RigidBodyHandle) {
-        self.physics.bodies[body].wake_up(true);
+        // Through the physics world, so that the island manager hears of it (a sleeping
+        // multibody wakes as a whole).
+        self.physics.wake_up(body, true);
         self.quiet = false;
     }
 
@@ -338,7 +360,11 @@ impl Core {
             .links
             .iter()
             .enumerate()
-            .filter_map(|(i, l)| l.joint.limits.map(|[lo, hi]| (i, if open { hi } else { lo })))
+            .filter_map(|(i, l)| {
+                l.joint
+                    .limits
+                    .map(|[lo, hi]| (i, if open { hi } else { lo }))
+            })
             .collect();
         if targets.is_empty() {
             return Err(StateError::NoJoints {
@@ -353,14 +379,29 @@ impl Core {
     }
 }
 
+/// A joint's passive state: a velocity motor toward 0 of factor `damping`, or no motor at all
+/// (a motor with zero gains would lock the joint rigidly).
+pub(crate) fn passive(joint: &mut GenericJoint, axis: JointAxis, damping: f32) {
+    joint.set_motor_model(axis, MotorModel::AccelerationBased);
+    joint.set_motor(axis, 0.0, 0.0, 0.0, damping);
+    let max_force = if damping > 0.0 { f32::MAX } else { 0.0 };
+    joint.set_motor_max_force(axis, max_force);
+}
+
 /// A one-degree-of-freedom multibody joint's coordinate.
 fn coordinate(joint: Option<&rapier3d::dynamics::MultibodyJoint>) -> Option<f32> {
     let joint = joint?;
     let coords = joint.coords();
-    Some(if joint.data.locked_axes.contains(rapier3d::dynamics::JointAxesMask::LIN_X) {
-        // Revolute: the angle is the first angular coordinate.
-        coords[3]
-    } else {
-        coords[0]
-    })
+    Some(
+        if joint
+            .data
+            .locked_axes
+            .contains(rapier3d::dynamics::JointAxesMask::LIN_X)
+        {
+            // Revolute: the angle is the first angular coordinate.
+            coords[3]
+        } else {
+            coords[0]
+        },
+    )
 }

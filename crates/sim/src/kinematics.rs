@@ -36,12 +36,12 @@
 use crate::core::Core;
 use crate::object::ObjectId;
 use behavior_core::{Predicate, RoomType};
-use std::collections::HashMap;
-use std::sync::Mutex;
 use rapier3d::math::Vector;
 use rapier3d::parry::bounding_volume::BoundingVolume;
 use rapier3d::parry::query;
 use rapier3d::prelude::Ray;
+use std::collections::HashMap;
+use std::sync::Mutex;
 
 /// Colliders closer than this touch (m). Resting contacts sit within rapier's contact margin.
 pub const TOUCH_DISTANCE: f32 = 0.005;
@@ -60,7 +60,10 @@ pub const HORIZONTAL_DIRECTIONS: usize = 16;
 /// computed). Behind a mutex so that a world is `Sync`: readers on several threads share it. It
 /// is only ever looked up, never iterated, so its order cannot reach the simulation.
 #[derive(Default)]
-pub(crate) struct RelationMemo(Mutex<HashMap<(Predicate, ObjectId, ObjectId), (bool, (u64, u64))>>);
+pub(crate) struct RelationMemo(Mutex<MemoMap>);
+
+/// (predicate, a, b) → (value, motion counts of a and b).
+type MemoMap = HashMap<(Predicate, ObjectId, ObjectId), (bool, (u64, u64))>;
 
 impl Clone for RelationMemo {
     fn clone(&self) -> Self {
@@ -69,7 +72,7 @@ impl Clone for RelationMemo {
 }
 
 impl RelationMemo {
-    fn lock(&self) -> std::sync::MutexGuard<'_, HashMap<(Predicate, ObjectId, ObjectId), (bool, (u64, u64))>> {
+    fn lock(&self) -> std::sync::MutexGuard<'_, MemoMap> {
         // A panic while holding the lock cannot leave the map half-written (inserts are atomic
         // from the map's point of view), so a poisoned lock is still good.
         self.0.lock().unwrap_or_else(|e| e.into_inner())

@@ -247,7 +247,13 @@ impl JointSpec {
     /// The joint of a door, drawer or lid on an object's body: closed at 0, fully open at `range`
     /// (radians for [`JointKind::Revolute`], metres for [`JointKind::Prismatic`]), with passive
     /// damping so it stays where it is left.
-    pub fn opening(kind: JointKind, anchor: Vector, axis: Vector, range: f32, damping: f32) -> Self {
+    pub fn opening(
+        kind: JointKind,
+        anchor: Vector,
+        axis: Vector,
+        range: f32,
+        damping: f32,
+    ) -> Self {
         JointSpec {
             kind,
             model: JointModel::Impulse,

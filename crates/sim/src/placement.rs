@@ -20,11 +20,11 @@ use crate::core::Core;
 use crate::object::ObjectId;
 use behavior_core::rng::{SimRng, uniform};
 use rand_chacha::rand_core::Rng;
-use std::fmt;
 use rapier3d::math::{Pose, Vector};
 use rapier3d::parry::bounding_volume::{Aabb, BoundingVolume};
 use rapier3d::parry::query;
 use rapier3d::prelude::Ray;
+use std::fmt;
 
 /// Poses tried before giving up.
 pub const PLACEMENT_ATTEMPTS: usize = 20;

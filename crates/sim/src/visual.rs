@@ -124,13 +124,22 @@ impl Core {
             Some(l) => self.link_pose(id, l),
         };
         let mut out = Vec::new();
-        let bodies = std::iter::once((None, &object.parts))
-            .chain(object.links.iter().enumerate().map(|(i, l)| (Some(i), &l.parts)));
+        let bodies = std::iter::once((None, &object.parts)).chain(
+            object
+                .links
+                .iter()
+                .enumerate()
+                .map(|(i, l)| (Some(i), &l.parts)),
+        );
         for (link, list) in bodies {
-            let meshes: Vec<&VisualMesh> = object.meshes.iter().filter(|m| m.link == link).collect();
+            let meshes: Vec<&VisualMesh> =
+                object.meshes.iter().filter(|m| m.link == link).collect();
             let pose = frame(link);
             if meshes.is_empty() {
-                out.extend(list.iter().map(|part| drawn_part(part, pose, link, object.visual)));
+                out.extend(
+                    list.iter()
+                        .map(|part| drawn_part(part, pose, link, object.visual)),
+                );
             } else {
                 out.extend(meshes.into_iter().map(|mesh| VisualPart {
                     shape: VisualShape::Mesh(mesh),

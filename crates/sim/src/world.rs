@@ -135,7 +135,12 @@ impl World {
     }
 
     /// Moves a link to a joint position (clamped to its limits), at rest.
-    pub fn set_joint_position(&mut self, id: ObjectId, link: usize, position: f32) -> Result<(), WorldError> {
+    pub fn set_joint_position(
+        &mut self,
+        id: ObjectId,
+        link: usize,
+        position: f32,
+    ) -> Result<(), WorldError> {
         self.core.set_joint_position(id, link, position)
     }
 

@@ -50,7 +50,10 @@ fn inside_an_apple_dropped_into_a_bin_and_not_one_beside_it() {
     assert!(world.core().inside(inner, bin));
     assert!(!world.core().inside(outer, bin));
     assert!(!world.core().inside(bin, inner));
-    assert!(world.core().ontop(inner, bin), "it rests on the bin's bottom");
+    assert!(
+        world.core().ontop(inner, bin),
+        "it rests on the bin's bottom"
+    );
 }
 
 #[test]
@@ -96,8 +99,14 @@ fn onfloor_in_the_room_where_the_object_lies() {
         !world.core().onfloor(on_table, kitchen),
         "resting on the table, not the floor"
     );
-    assert_eq!(world.core().room_of(dropped), Some(behavior_core::RoomType::Kitchen));
-    assert_eq!(world.core().room_of(table), Some(behavior_core::RoomType::Kitchen));
+    assert_eq!(
+        world.core().room_of(dropped),
+        Some(behavior_core::RoomType::Kitchen)
+    );
+    assert_eq!(
+        world.core().room_of(table),
+        Some(behavior_core::RoomType::Kitchen)
+    );
 }
 
 #[test]
@@ -151,7 +160,11 @@ fn ontop_memo_survives_sleep_and_is_invalidated_by_motion() {
         !world.core().ontop(apple, table),
         "a teleport invalidates the memo"
     );
-    assert!(world.core().touching(apple, world.object_named("floor_kitchen").unwrap()));
+    assert!(
+        world
+            .core()
+            .touching(apple, world.object_named("floor_kitchen").unwrap())
+    );
 }
 
 #[test]

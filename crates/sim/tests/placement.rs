@@ -29,7 +29,11 @@ fn ontop_inside_under_and_onfloor_placements_hold_after_settling() {
     world
         .place(floor, Relation::OnFloor, living, &mut rng)
         .unwrap();
-    assert!(world.core().ontop(on, table) && world.core().inside(inside, bin) && world.core().under(under, table));
+    assert!(
+        world.core().ontop(on, table)
+            && world.core().inside(inside, bin)
+            && world.core().under(under, table)
+    );
     assert!(world.core().onfloor(floor, living) && !world.core().onfloor(floor, kitchen));
     assert!(world.settle(300), "the world comes to rest");
     assert!(world.core().ontop(on, table));

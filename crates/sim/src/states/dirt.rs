@@ -52,12 +52,20 @@ impl Dirt {
     }
 
     fn set(&self, id: ObjectId, kind: Predicate) -> &ParticleSet {
-        let sets = if kind == Predicate::Dusty { &self.dust } else { &self.stain };
+        let sets = if kind == Predicate::Dusty {
+            &self.dust
+        } else {
+            &self.stain
+        };
         &sets[id.0 as usize]
     }
 
     fn set_mut(&mut self, id: ObjectId, kind: Predicate) -> &mut ParticleSet {
-        let sets = if kind == Predicate::Dusty { &mut self.dust } else { &mut self.stain };
+        let sets = if kind == Predicate::Dusty {
+            &mut self.dust
+        } else {
+            &mut self.stain
+        };
         &mut sets[id.0 as usize]
     }
 
@@ -72,7 +80,11 @@ impl Dirt {
     /// Particles of an object in world coordinates.
     pub(crate) fn positions(&self, core: &Core, id: ObjectId, kind: Predicate) -> Vec<Vector> {
         let pose = core.pose(id);
-        self.set(id, kind).points.iter().map(|&p| pose.transform_point(p)).collect()
+        self.set(id, kind)
+            .points
+            .iter()
+            .map(|&p| pose.transform_point(p))
+            .collect()
     }
 
     pub(crate) fn is_dirty(&self, core: &Core, id: ObjectId, kind: Predicate) -> bool {
@@ -85,7 +97,13 @@ impl Dirt {
         set.placed > 0 && set.points.len() as f32 > threshold * set.placed as f32
     }
 
-    pub(crate) fn set_dirty(&mut self, core: &Core, id: ObjectId, kind: Predicate, dirty: bool) -> Result<(), StateError> {
+    pub(crate) fn set_dirty(
+        &mut self,
+        core: &Core,
+        id: ObjectId,
+        kind: Predicate,
+        dirty: bool,
+    ) -> Result<(), StateError> {
         if !dirty {
             *self.set_mut(id, kind) = ParticleSet::default();
             return Ok(());
@@ -137,14 +155,16 @@ impl Dirt {
                 }
                 let pose = core.pose(dirty);
                 for &kind in kinds {
-                    self.set_mut(dirty, kind).points.retain(|&p| !wipes(pose.transform_point(p)));
+                    self.set_mut(dirty, kind)
+                        .points
+                        .retain(|&p| !wipes(pose.transform_point(p)));
                 }
             }
         }
     }
 }
 
-    /// Up to [`PARTICLES_PER_SET`] points on the object's surfaces that face up, in its frame.
+/// Up to [`PARTICLES_PER_SET`] points on the object's surfaces that face up, in its frame.
 fn sample_top_surface(core: &Core, id: ObjectId, salt: u64) -> Vec<Vector> {
     let aabb = core.aabb(id);
     let pose = core.pose(id);
@@ -182,7 +202,6 @@ fn sample_top_surface(core: &Core, id: ObjectId, salt: u64) -> Vec<Vector> {
     }
     points
 }
-
 
 fn splitmix(mut x: u64) -> u64 {
     x = x.wrapping_add(0x9e37_79b9_7f4a_7c15);

@@ -178,9 +178,17 @@ impl World {
     fn threshold(&self, id: ObjectId, predicate: Predicate) -> f32 {
         let object = self.core.object(id);
         if predicate == Predicate::Cooked {
-            object.param(Ability::Cookable, "cook_temperature", DEFAULT_COOK_TEMPERATURE)
+            object.param(
+                Ability::Cookable,
+                "cook_temperature",
+                DEFAULT_COOK_TEMPERATURE,
+            )
         } else {
-            object.param(Ability::Burnable, "burn_temperature", DEFAULT_BURN_TEMPERATURE)
+            object.param(
+                Ability::Burnable,
+                "burn_temperature",
+                DEFAULT_BURN_TEMPERATURE,
+            )
         }
     }
 

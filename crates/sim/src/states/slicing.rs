@@ -74,7 +74,6 @@ impl Core {
         pressed.sort();
         pressed
     }
-
 }
 
 impl World {

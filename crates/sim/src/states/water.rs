@@ -170,12 +170,24 @@ fn touched_by_drop(core: &Core, drop: RigidBodyHandle) -> Vec<ObjectId> {
     let radius = body
         .colliders()
         .first()
-        .and_then(|&c| core.physics.colliders[c].shape().as_ball().map(|b| b.radius))
+        .and_then(|&c| {
+            core.physics.colliders[c]
+                .shape()
+                .as_ball()
+                .map(|b| b.radius)
+        })
         .unwrap_or(DROP_RADII[0]);
     let probe = Ball::new(radius + TOUCH_DISTANCE);
     let not_a_drop = |_, c: &rapier3d::geometry::Collider| c.user_data != DROP_TAG;
+    // What ignores water (a robot's body) is not wetted either.
+    let groups = body
+        .colliders()
+        .first()
+        .map(|&c| core.physics.colliders[c].collision_groups())
+        .unwrap_or_default();
     let filter = QueryFilter::default()
         .exclude_rigid_body(drop)
+        .groups(groups)
         .predicate(&not_a_drop);
     // Drops move only by physics, so rapier's broad phase is current for them.
     let mut hit: Vec<ObjectId> = core

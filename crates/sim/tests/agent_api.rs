@@ -1,0 +1,785 @@
+//! What robots, cameras and planners need from the world, each in a small real scene: kinematic
+//! bodies, velocities and forces, multibody arms with drives, attachments, contacts, collision
+//! filtering, ray and shape queries, appearance, step hooks, threads and snapshots.
+
+mod common;
+
+use behavior_core::Ability;
+use behavior_sim::{
+    AttachmentKind, AttachmentSpec, BodyKind, BodyRef, Drive, JointKind, JointModel, JointSpec,
+    LinkSpec, Material, ObjectId, ObjectSpec, Part, PointKind, Primitive, QueryFilter, StepHooks,
+    Velocity, Visual, VisualShape, World, groups,
+};
+use common::*;
+use rapier3d::math::{Pose, Rotation, Vector};
+
+/// A 10 × 10 m floor slab whose top is at z = 0.
+fn floor(world: &mut World) -> ObjectId {
+    world
+        .add(
+            ObjectSpec::new(
+                "floor",
+                "floor.n.01",
+                vec![Part::new(cuboid(5.0, 5.0, 0.05))],
+            )
+            .at(v(0.0, 0.0, -0.05))
+            .fixed(),
+        )
+        .unwrap()
+}
+
+/// A dynamic cube of side 2·`half` resting on the floor at (x, y).
+fn cube(world: &mut World, name: &str, x: f32, y: f32, half: f32) -> ObjectId {
+    let mut spec = ObjectSpec::new(name, "box.n.01", vec![Part::new(cuboid(half, half, half))])
+        .at(v(x, y, half + 0.001));
+    spec.density = 250.0;
+    world.add(spec).unwrap()
+}
+
+fn paddle(world: &mut World, kind: BodyKind, at: Vector) -> ObjectId {
+    world
+        .add(
+            ObjectSpec::new(
+                "paddle",
+                "paddle.n.01",
+                vec![Part::new(cuboid(0.02, 0.3, 0.1))],
+            )
+            .at(at)
+            .body(kind),
+        )
+        .unwrap()
+}
+
+fn steps(world: &mut World, n: usize) {
+    for _ in 0..n {
+        world.step();
+    }
+}
+
+#[test]
+fn a_kinematic_paddle_driven_by_velocity_pushes_a_box() {
+    let mut world = World::default();
+    floor(&mut world);
+    let cube = cube(&mut world, "cube", 0.0, 0.0, 0.1);
+    let paddle = paddle(&mut world, BodyKind::KinematicVelocity, v(-0.5, 0.0, 0.12));
+    steps(&mut world, 15);
+    let start = world.pose(cube).translation;
+    let forward = Velocity {
+        linear: v(0.5, 0.0, 0.0),
+        angular: Vector::ZERO,
+    };
+    world
+        .core_mut()
+        .set_velocity(paddle.into(), forward)
+        .unwrap();
+    steps(&mut world, 60); // 2 s at 0.5 m/s: the paddle travels 1 m, through where the box was
+    let paddle_x = world.pose(paddle).translation.x;
+    assert!((paddle_x - 0.5).abs() < 0.01, "paddle at x = {paddle_x}");
+    let pushed = world.pose(cube).translation.x - start.x;
+    assert!(pushed > 0.35, "the box moved only {pushed} m");
+    assert!(
+        world.pose(cube).translation.x > paddle_x,
+        "the box stays ahead of the paddle"
+    );
+    // Nothing pushes a kinematic body back.
+    let velocity = world.core().velocity(paddle.into()).unwrap();
+    assert_eq!(velocity.linear, v(0.5, 0.0, 0.0));
+}
+
+/// Sweeps a position-driven paddle along +y at 0.5 m/s, one target per substep.
+struct Sweep {
+    paddle: ObjectId,
+    y: f32,
+}
+
+impl StepHooks for Sweep {
+    fn before_substep(&mut self, world: &mut World, _substep: u32) {
+        self.y += 0.5 / 300.0;
+        let target = Pose::from_translation(v(0.0, self.y, 0.12));
+        world
+            .core_mut()
+            .set_kinematic_target(BodyRef::from(self.paddle), target)
+            .unwrap();
+    }
+}
+
+#[test]
+fn a_kinematic_paddle_driven_by_pose_targets_in_a_hook_pushes_a_box() {
+    let mut world = World::default();
+    floor(&mut world);
+    let cube = cube(&mut world, "cube", 0.0, 0.0, 0.1);
+    let paddle = world
+        .add(
+            ObjectSpec::new(
+                "paddle",
+                "paddle.n.01",
+                vec![Part::new(cuboid(0.3, 0.02, 0.1))],
+            )
+            .at(v(0.0, -0.5, 0.12))
+            .body(BodyKind::KinematicPosition),
+        )
+        .unwrap();
+    steps(&mut world, 15);
+    let mut sweep = Sweep { paddle, y: -0.5 };
+    for _ in 0..60 {
+        world.step_with(&mut sweep);
+    }
+    let paddle_y = world.pose(paddle).translation.y;
+    assert!((paddle_y - 0.5).abs() < 0.01, "paddle at y = {paddle_y}");
+    assert!(
+        world.pose(cube).translation.y > 0.35,
+        "the box was not pushed"
+    );
+    // Pose targets are for position-driven bodies only.
+    let err = world
+        .core_mut()
+        .set_kinematic_target(cube.into(), Pose::IDENTITY)
+        .unwrap_err();
+    assert!(err.to_string().contains("KinematicPosition"), "{err}");
+}
+
+#[test]
+fn velocities_forces_torques_and_impulses_act_as_newton_says() {
+    let mut world = World::default();
+    world.core_mut().set_sleeping_allowed(false);
+    let ball = world
+        .add(
+            ObjectSpec::new(
+                "ball",
+                "ball.n.01",
+                vec![Part::new(Primitive::Sphere { radius: 0.1 })],
+            )
+            .at(v(0.0, 0.0, 10.0)),
+        )
+        .unwrap();
+    let mass = world.core().mass(ball);
+    world
+        .core_mut()
+        .apply_impulse(ball.into(), v(mass, 0.0, 0.0))
+        .unwrap();
+    let after_impulse = world.core().velocity(ball.into()).unwrap().linear;
+    assert!(
+        (after_impulse.x - 1.0).abs() < 1e-5,
+        "impulse m·1 m/s gave {after_impulse}"
+    );
+    // A force of 2 m along y for one step (1/30 s) adds 2/30 m/s, then it is cleared.
+    world
+        .core_mut()
+        .apply_force(ball.into(), v(0.0, 2.0 * mass, 0.0))
+        .unwrap();
+    world.step();
+    let vy = world.core().velocity(ball.into()).unwrap().linear.y;
+    assert!((vy - 2.0 / 30.0).abs() < 1e-3, "vy = {vy}");
+    world.step();
+    let vy2 = world.core().velocity(ball.into()).unwrap().linear.y;
+    assert!(
+        (vy2 - vy).abs() < 1e-5,
+        "the force was cleared after its step"
+    );
+    // Gravity pulled for two steps meanwhile.
+    let vz = world.core().velocity(ball.into()).unwrap().linear.z;
+    assert!((vz + 9.81 * 2.0 / 30.0).abs() < 0.01, "vz = {vz}");
+    world
+        .core_mut()
+        .apply_torque(ball.into(), v(0.0, 0.0, 0.01))
+        .unwrap();
+    world.step();
+    assert!(world.core().velocity(ball.into()).unwrap().angular.z > 0.0);
+    let set = Velocity {
+        linear: v(0.0, 0.0, 3.0),
+        angular: v(1.0, 0.0, 0.0),
+    };
+    world.core_mut().set_velocity(ball.into(), set).unwrap();
+    assert_eq!(world.core().velocity(ball.into()).unwrap(), set);
+    let nan = world
+        .core_mut()
+        .apply_force(ball.into(), v(f32::NAN, 0.0, 0.0));
+    assert!(nan.is_err(), "a NaN force is refused");
+}
+
+/// A post with a three-link arm whose revolute joints turn about y (so gravity loads them), each
+/// link a 0.3 m bar along x, on multibody joints.
+fn arm(world: &mut World) -> ObjectId {
+    let mut spec = ObjectSpec::new(
+        "arm",
+        "robot.n.01",
+        vec![Part::at(cuboid(0.05, 0.05, 0.5), v(0.0, 0.0, 0.5))],
+    )
+    .fixed();
+    for k in 0..3 {
+        let x0 = 0.3 * k as f32;
+        spec = spec.link(LinkSpec {
+            name: format!("link_{k}"),
+            parts: vec![Part::at(cuboid(0.15, 0.02, 0.02), v(x0 + 0.15, 0.0, 1.0))],
+            parent: if k == 0 { None } else { Some(k - 1) },
+            joint: JointSpec {
+                kind: JointKind::Revolute,
+                model: JointModel::Multibody,
+                anchor: v(x0, 0.0, 1.0),
+                axis: v(0.0, 1.0, 0.0),
+                limits: Some([-2.5, 2.5]),
+                damping: 0.0,
+            },
+            density: 500.0,
+        });
+    }
+    world.add(spec).unwrap()
+}
+
+#[test]
+fn a_three_link_multibody_arm_reaches_its_joint_targets_and_reports_its_state() {
+    let mut world = World::default();
+    let arm = arm(&mut world);
+    let targets = [0.5, -0.3, 0.4];
+    for (k, &target) in targets.iter().enumerate() {
+        world
+            .core_mut()
+            .drive_joint(arm, k, Drive::position(target, 2000.0, 100.0, 500.0))
+            .unwrap();
+    }
+    steps(&mut world, 90);
+    for (k, &target) in targets.iter().enumerate() {
+        let state = world.core().joint_state(arm, k).unwrap();
+        assert!(
+            (state.position - target).abs() < 0.01,
+            "joint {k} at {} for {target}",
+            state.position
+        );
+        assert!(
+            state.velocity.abs() < 0.01,
+            "joint {k} still moves at {}",
+            state.velocity
+        );
+    }
+    // The shoulder holds all three links against gravity. About y a positive angle turns a bar's
+    // tip down (x × y = z), so gravity pushes the angle up and the drive pulls back: a negative
+    // effort of the weight's moment's order (a chain's efforts are approximate: 3.0× here, see
+    // `joints.rs`).
+    let shoulder = world.core().joint_state(arm, 0).unwrap();
+    let bar = 0.3 * 0.04 * 0.04 * 500.0; // kg
+    let (a0, a1, a2) = (0.5f32, 0.2f32, 0.6f32); // each bar's angle from the horizontal
+    let lever = 0.15 * a0.cos()
+        + (0.3 * a0.cos() + 0.15 * a1.cos())
+        + (0.3 * a0.cos() + 0.3 * a1.cos() + 0.15 * a2.cos());
+    let moment = bar * 9.81 * lever;
+    assert!(
+        shoulder.effort < 0.0 && (0.5..4.0).contains(&(-shoulder.effort / moment)),
+        "shoulder effort {} for a gravity moment of {moment} N·m",
+        shoulder.effort
+    );
+    // Forward kinematics: the last link's frame turned by the sum of the angles about y.
+    let last = world.core().link_pose(arm, 2);
+    let (_, angle) = last.rotation.to_axis_angle();
+    assert!(
+        (angle - 0.6).abs() < 0.02,
+        "the last link turned {angle} rad in all"
+    );
+    // Teleporting a joint is read back at once, and the chain follows.
+    world.set_joint_position(arm, 1, 0.0).unwrap();
+    assert!(world.core().joint_state(arm, 1).unwrap().position.abs() < 1e-4);
+    let bad = world
+        .core_mut()
+        .drive_joint(arm, 7, Drive::velocity(1.0, 1.0, 1.0));
+    assert!(bad.unwrap_err().to_string().contains("no link 7"));
+}
+
+#[test]
+fn a_single_driven_joint_reports_the_torque_that_holds_its_load() {
+    let mut world = World::default();
+    let bar = LinkSpec {
+        name: "bar".into(),
+        parts: vec![Part::at(cuboid(0.15, 0.02, 0.02), v(0.15, 0.0, 1.0))],
+        parent: None,
+        joint: JointSpec {
+            kind: JointKind::Revolute,
+            model: JointModel::Multibody,
+            anchor: v(0.0, 0.0, 1.0),
+            axis: v(0.0, 1.0, 0.0),
+            limits: None,
+            damping: 0.0,
+        },
+        density: 500.0,
+    };
+    let post = ObjectSpec::new(
+        "post",
+        "post.n.04",
+        vec![Part::at(cuboid(0.05, 0.05, 0.5), v(0.0, 0.0, 0.5))],
+    );
+    let post = world.add(post.fixed().link(bar)).unwrap();
+    world
+        .core_mut()
+        .drive_joint(post, 0, Drive::position(0.0, 2000.0, 10.0, 100.0))
+        .unwrap();
+    steps(&mut world, 150);
+    let state = world.core().joint_state(post, 0).unwrap();
+    let moment = 0.3 * 0.04 * 0.04 * 500.0 * 9.81 * 0.15;
+    assert!(
+        (state.effort + moment).abs() < 0.01 * moment,
+        "effort {} for {moment}",
+        state.effort
+    );
+    // Released, the bar swings down; passive joints report their damping torque.
+    world.core_mut().release_joint(post, 0).unwrap();
+    steps(&mut world, 10);
+    let falling = world.core().joint_state(post, 0).unwrap();
+    assert!(
+        falling.position > 0.1 && falling.velocity > 0.0,
+        "{falling:?}"
+    );
+}
+
+#[test]
+fn an_attachment_holds_a_box_and_breaks_past_its_force() {
+    let mut world = World::default();
+    floor(&mut world);
+    let hand = paddle(&mut world, BodyKind::KinematicPosition, v(0.0, 0.0, 1.0));
+    let mut spec = ObjectSpec::new("box", "box.n.01", vec![Part::new(cuboid(0.05, 0.05, 0.05))])
+        .at(v(0.0, 0.0, 0.85));
+    spec.density = 1000.0; // 1 kg
+    let held = world.add(spec).unwrap();
+    let grasp = world
+        .core_mut()
+        .attach(AttachmentSpec {
+            holder: hand.into(),
+            held: held.into(),
+            at: v(0.0, 0.0, 0.9),
+            kind: AttachmentKind::Fixed,
+            max_force: 50.0,
+        })
+        .unwrap();
+    steps(&mut world, 30);
+    let state = world.core().attachment(grasp).unwrap();
+    let z = world.pose(held).translation.z;
+    assert!((z - 0.85).abs() < 0.01, "the held box hangs at {z}");
+    assert!(!state.broken && state.violation < 0.01, "{state:?}");
+    assert!(
+        (state.force - 9.81).abs() < 2.0,
+        "it carries the box's weight: {} N",
+        state.force
+    );
+    // Pulling down with 200 N needs more than 50 N: it breaks and the box falls.
+    world
+        .core_mut()
+        .apply_force(held.into(), v(0.0, 0.0, -200.0))
+        .unwrap();
+    world.step();
+    assert!(world.core().attachment(grasp).unwrap().broken);
+    steps(&mut world, 30);
+    assert!(
+        world.pose(held).translation.z < 0.1,
+        "the released box fell"
+    );
+    assert!(world.core_mut().detach(grasp));
+    assert!(world.core().attachment(grasp).is_none());
+    // A point attachment lets the held box swing about the point.
+    let point = world.pose(held).translation + v(0.0, 0.0, 0.05);
+    let swing = world
+        .core_mut()
+        .attach(AttachmentSpec {
+            holder: hand.into(),
+            held: held.into(),
+            at: point,
+            kind: AttachmentKind::Point,
+            max_force: 1e4,
+        })
+        .unwrap();
+    world.step();
+    assert!(!world.core().attachment(swing).unwrap().broken);
+    let bad = world.core_mut().attach(AttachmentSpec {
+        holder: hand.into(),
+        held: hand.into(),
+        at: Vector::ZERO,
+        kind: AttachmentKind::Fixed,
+        max_force: 1.0,
+    });
+    assert!(bad.is_err(), "a body cannot hold itself");
+}
+
+#[test]
+fn contacts_name_the_other_body_with_points_normals_and_impulses() {
+    let mut world = World::default();
+    let floor = floor(&mut world);
+    let cube = cube(&mut world, "cube", 0.0, 0.0, 0.1);
+    steps(&mut world, 10);
+    world.core_mut().set_sleeping_allowed(false);
+    world.step();
+    let contacts = world.core().contacts(cube.into()).unwrap();
+    assert!(
+        contacts.len() >= 3,
+        "a box rests on its corners: {contacts:?}"
+    );
+    let mass = world.core().mass(cube);
+    let substep = 1.0 / 300.0;
+    let mut impulse = 0.0;
+    for c in &contacts {
+        assert_eq!(c.other, Some(BodyRef::from(floor)));
+        assert!(c.point.z.abs() < 0.01, "at the floor: {}", c.point);
+        assert!(
+            c.normal.z < -0.99,
+            "pointing from the box to the floor: {}",
+            c.normal
+        );
+        impulse += c.impulse;
+    }
+    assert!(
+        (impulse / substep - mass * 9.81).abs() < 0.1 * mass * 9.81,
+        "the floor carries the box's weight: {} N",
+        impulse / substep
+    );
+    let floor_side = world.core().object_contacts(floor);
+    assert!(
+        floor_side
+            .iter()
+            .all(|c| c.other == Some(BodyRef::from(cube)) && c.normal.z > 0.99)
+    );
+}
+
+#[test]
+fn ignored_pairs_pass_through_each_other_and_collision_groups_let_water_through() {
+    let mut world = World::default();
+    floor(&mut world);
+    let bottom = cube(&mut world, "bottom", 0.0, 0.0, 0.1);
+    let top = cube(&mut world, "top", 0.0, 0.0, 0.1);
+    world
+        .set_pose(top, Pose::from_translation(v(0.0, 0.0, 0.31)))
+        .unwrap();
+    steps(&mut world, 20);
+    assert!(world.core().ontop(top, bottom));
+    world
+        .core_mut()
+        .ignore_contacts(top.into(), bottom.into(), true)
+        .unwrap();
+    assert!(world.core().contacts_ignored(bottom.into(), top.into()));
+    steps(&mut world, 30);
+    assert!(
+        world.pose(top).translation.z < 0.15,
+        "the top cube fell through the bottom one"
+    );
+
+    // A sink's drops splash on a plate, and fall through one that ignores water (a robot's hand).
+    let drops_below = |filtered: bool| {
+        let mut world = World::default();
+        floor(&mut world);
+        let sink = ObjectSpec::new(
+            "sink",
+            "sink.n.01",
+            vec![Part::at(cuboid(0.05, 0.05, 0.05), v(0.0, 0.0, 1.5))],
+        )
+        .fixed()
+        .ability(Ability::WaterSource, &[])
+        .point(PointKind::WaterOutlet, v(0.0, 0.0, 1.44));
+        world.add(sink).unwrap();
+        let plate = world
+            .add(
+                ObjectSpec::new(
+                    "plate",
+                    "plate.n.04",
+                    vec![Part::new(cuboid(0.2, 0.2, 0.01))],
+                )
+                .at(v(0.0, 0.0, 0.8))
+                .fixed(),
+            )
+            .unwrap();
+        if filtered {
+            world.core_mut().set_collision_groups(
+                plate,
+                groups::ROBOT,
+                groups::ALL & !groups::WATER,
+            );
+        }
+        steps(&mut world, 25);
+        world.drops().iter().filter(|d| d.z < 0.75).count()
+    };
+    assert_eq!(drops_below(false), 0, "the plate stops the drops");
+    assert!(
+        drops_below(true) > 0,
+        "drops fall through a plate that ignores water"
+    );
+}
+
+#[test]
+fn a_ray_finds_the_first_object_and_batched_rays_see_teleports_without_a_step() {
+    let mut world = World::default();
+    floor(&mut world);
+    let near = cube(&mut world, "near", 1.0, 0.0, 0.1);
+    let far = cube(&mut world, "far", 2.0, 0.0, 0.1);
+    let (origin, along_x) = (v(0.0, 0.0, 0.1), v(1.0, 0.0, 0.0));
+    let hit = world
+        .core()
+        .cast_ray(origin, along_x, 10.0, &QueryFilter::default())
+        .unwrap()
+        .unwrap();
+    assert_eq!(hit.body, Some(BodyRef::from(near)));
+    assert!((hit.distance - 0.9).abs() < 1e-3, "{hit:?}");
+    assert!(
+        hit.normal.x < -0.99,
+        "the face seen is the one facing the ray"
+    );
+    let past_near = QueryFilter::excluding(&[near]);
+    let hit = world
+        .core()
+        .cast_ray(origin, along_x, 10.0, &past_near)
+        .unwrap()
+        .unwrap();
+    assert_eq!(hit.body, Some(BodyRef::from(far)));
+    let lidar = [
+        (origin, along_x),
+        (origin, v(-1.0, 0.0, 0.0)),
+        (v(0.0, 0.0, 1.0), v(0.0, 0.0, -1.0)),
+    ];
+    let hits = world
+        .core()
+        .cast_rays(&lidar, 3.0, &QueryFilter::default())
+        .unwrap();
+    assert_eq!(hits[0].and_then(|h| h.body), Some(near.into()));
+    assert!(hits[1].is_none(), "nothing behind");
+    assert!(
+        (hits[2].unwrap().distance - 1.0).abs() < 1e-3,
+        "the floor 1 m below"
+    );
+    // Moved without a step, the near cube is out of the way at once.
+    world
+        .set_pose(near, Pose::from_translation(v(1.0, 3.0, 0.1)))
+        .unwrap();
+    let hit = world
+        .core()
+        .cast_ray(origin, along_x, 10.0, &QueryFilter::default())
+        .unwrap()
+        .unwrap();
+    assert_eq!(hit.body, Some(BodyRef::from(far)));
+    let bad = world
+        .core()
+        .cast_ray(origin, v(0.0, 0.0, 0.0), 1.0, &QueryFilter::default());
+    assert!(bad.is_err(), "a zero direction is an error");
+}
+
+#[test]
+fn a_shape_query_reports_a_collision_and_a_distance_without_a_step() {
+    let mut world = World::default();
+    let floor = floor(&mut world);
+    let table = table(&mut world, 0.0, 0.0);
+    let probe = Primitive::Sphere { radius: 0.1 };
+    let none = QueryFilter::default();
+    let above_top = Pose::from_translation(v(0.0, 0.0, 0.8));
+    assert_eq!(
+        world.core().overlaps(&probe, above_top, &none).unwrap(),
+        vec![BodyRef::from(table)]
+    );
+    let clear = Pose::from_translation(v(3.0, 3.0, 1.0));
+    assert!(
+        world
+            .core()
+            .overlaps(&probe, clear, &none)
+            .unwrap()
+            .is_empty()
+    );
+    let nearest = world
+        .core()
+        .nearest(&probe, clear, 5.0, &none)
+        .unwrap()
+        .unwrap();
+    assert_eq!(nearest.body, BodyRef::from(floor));
+    assert!((nearest.distance - 0.9).abs() < 1e-3, "{nearest:?}");
+    // A cylinder (a robot's base) standing on the floor touches it; lifted 1 cm, it does not.
+    let base = Primitive::Cylinder {
+        radius: 0.3,
+        half_height: 0.2,
+    };
+    let standing = Pose::from_translation(v(2.0, 0.0, 0.199));
+    assert_eq!(
+        world.core().overlaps(&base, standing, &none).unwrap(),
+        vec![BodyRef::from(floor)]
+    );
+    let lifted = Pose::from_translation(v(2.0, 0.0, 0.21));
+    assert!(
+        world
+            .core()
+            .overlaps(&base, lifted, &QueryFilter::default())
+            .unwrap()
+            .is_empty()
+    );
+    assert!(
+        world
+            .core()
+            .nearest(&base, lifted, 0.005, &none)
+            .unwrap()
+            .is_none()
+    );
+    let bad = Primitive::Sphere { radius: -1.0 };
+    assert!(world.core().overlaps(&bad, lifted, &none).is_err());
+}
+
+#[test]
+fn every_part_is_described_with_colour_material_and_pose_and_links_follow_their_joints() {
+    let mut world = World::default();
+    let red = Visual {
+        color: [200, 20, 20],
+        material: Material::Plastic,
+    };
+    let door = LinkSpec {
+        name: "door".into(),
+        parts: vec![Part::at(cuboid(0.2, 0.01, 0.3), v(0.2, -0.21, 0.3))],
+        parent: None,
+        joint: JointSpec::opening(
+            JointKind::Revolute,
+            v(0.0, -0.21, 0.0),
+            v(0.0, 0.0, 1.0),
+            1.5,
+            1.0,
+        ),
+        density: 300.0,
+    };
+    let spec = ObjectSpec::new(
+        "cabinet",
+        "cabinet.n.01",
+        vec![
+            Part::at(cuboid(0.2, 0.2, 0.3), v(0.2, 0.0, 0.3)),
+            Part::at(cuboid(0.02, 0.02, 0.02), v(0.3, -0.22, 0.5)).with_visual(red),
+        ],
+    )
+    .fixed()
+    .looks([120, 90, 60], Material::Wood)
+    .link(door);
+    let cabinet = world.add(spec).unwrap();
+    let parts = world.core().visual_parts(cabinet);
+    assert_eq!(parts.len(), 3);
+    assert_eq!(parts[0].visual.color, [120, 90, 60]);
+    assert_eq!(parts[1].visual, red, "a part's own appearance wins");
+    assert_eq!(parts[2].link, Some(0));
+    assert!(matches!(
+        parts[0].shape,
+        VisualShape::Primitive(Primitive::Box { .. })
+    ));
+    let closed = parts[2].pose.translation;
+    let body = parts[0].pose.translation;
+    world.set_joint_position(cabinet, 0, 1.5).unwrap();
+    let open = world.core().visual_parts(cabinet)[2].pose.translation;
+    assert!(
+        (open - closed).length() > 0.2,
+        "the door part swung: {closed} → {open}"
+    );
+    assert!((body - v(0.2, 0.0, 0.3)).length() < 1e-6);
+}
+
+/// Counts hook calls and, as a controller would, drives a ball sideways every substep.
+struct Counter {
+    ball: ObjectId,
+    before: u32,
+    after: u32,
+}
+
+impl StepHooks for Counter {
+    fn before_substep(&mut self, world: &mut World, substep: u32) {
+        assert_eq!(substep, self.before % 10);
+        self.before += 1;
+        let push = Velocity {
+            linear: v(1.0, 0.0, 0.0),
+            angular: Vector::ZERO,
+        };
+        world
+            .core_mut()
+            .set_velocity(self.ball.into(), push)
+            .unwrap();
+    }
+
+    fn after_step(&mut self, world: &mut World) {
+        self.after += 1;
+        assert_eq!(world.steps(), u64::from(self.after));
+    }
+}
+
+#[test]
+fn hooks_run_before_every_substep_and_after_each_step() {
+    let mut world = World::default();
+    floor(&mut world);
+    let ball = world
+        .add(
+            ObjectSpec::new(
+                "ball",
+                "ball.n.01",
+                vec![Part::new(Primitive::Sphere { radius: 0.05 })],
+            )
+            .at(v(0.0, 0.0, 0.05)),
+        )
+        .unwrap();
+    let mut hooks = Counter {
+        ball,
+        before: 0,
+        after: 0,
+    };
+    for _ in 0..30 {
+        world.step_with(&mut hooks);
+    }
+    assert_eq!((hooks.before, hooks.after), (300, 30));
+    let x = world.pose(ball).translation.x;
+    assert!(
+        (x - 1.0).abs() < 0.05,
+        "driven at 1 m/s for 1 s, it went {x} m"
+    );
+}
+
+#[test]
+fn worlds_step_in_threads_and_a_reader_shares_one_while_another_steps() {
+    let mut template = World::default();
+    floor(&mut template);
+    let t = table(&mut template, 0.0, 0.0);
+    let apple = apple(&mut template, "apple", v(0.0, 0.0, 1.2));
+    let mut sequential = template.clone();
+    steps(&mut sequential, 60);
+    let expected = sequential.core().motion_bits();
+    let (mut a, mut b) = (template.clone(), template.clone());
+    let reader = &sequential;
+    std::thread::scope(|s| {
+        s.spawn(|| steps(&mut a, 60));
+        s.spawn(|| steps(&mut b, 60));
+        // A renderer reads a settled world while the others step.
+        s.spawn(move || assert!(reader.core().ontop(apple, t)));
+    });
+    assert_eq!(a.core().motion_bits(), expected);
+    assert_eq!(b.core().motion_bits(), expected);
+}
+
+#[test]
+fn snapshots_of_an_arm_holding_a_box_restore_bit_identically() {
+    let mut world = World::default();
+    floor(&mut world);
+    let arm = arm(&mut world);
+    let held = cube(&mut world, "held", 0.9, 0.0, 0.03);
+    world
+        .set_pose(
+            held,
+            Pose::from_parts(v(0.92, 0.0, 0.95), Rotation::IDENTITY),
+        )
+        .unwrap();
+    world
+        .core_mut()
+        .attach(AttachmentSpec {
+            holder: BodyRef::link(arm, 2),
+            held: held.into(),
+            at: v(0.9, 0.0, 0.98),
+            kind: AttachmentKind::Fixed,
+            max_force: 500.0,
+        })
+        .unwrap();
+    for (k, target) in [0.3f32, 0.2, -0.4].into_iter().enumerate() {
+        world
+            .core_mut()
+            .drive_joint(arm, k, Drive::position(target, 1000.0, 50.0, 300.0))
+            .unwrap();
+    }
+    steps(&mut world, 20);
+    let snapshot = world.snapshot();
+    steps(&mut world, 40);
+    let end = world.core().motion_bits();
+    world.restore(&snapshot);
+    steps(&mut world, 40);
+    assert_eq!(world.core().motion_bits(), end, "rewound and replayed");
+    let mut fresh = World::default();
+    fresh.restore(&snapshot);
+    steps(&mut fresh, 40);
+    assert_eq!(
+        fresh.core().motion_bits(),
+        end,
+        "restored into another world"
+    );
+}

@@ -59,3 +59,18 @@ pub fn missing(scene: &Scene, needs: &Requirements, taxonomy: &Taxonomy) -> Vec<
     }
     lacks
 }
+
+/// The homes among `homes` that cover `activity`, in the order given: the one place that
+/// decides which homes an activity is sampled in (`behavior sample` takes the first,
+/// `sample-all` every one, `scene coverage` lists them).
+pub fn covering<'h>(
+    homes: &'h [Scene],
+    activity: &Activity,
+    taxonomy: &Taxonomy,
+) -> Vec<&'h Scene> {
+    let needs = requirements(activity);
+    homes
+        .iter()
+        .filter(|h| missing(h, &needs, taxonomy).is_empty())
+        .collect()
+}

@@ -1,12 +1,11 @@
 //! `behavior bddl ...`: check definitions, evaluate goals on states, list options, statistics and
 //! the timing run used for the side-by-side comparison with the reference implementation.
 
+use crate::prelude::Prelude;
 use anyhow::{Context, Result, bail};
-use behavior_bddl::Knowledge;
 use behavior_bddl::domain::{is_domain_text, load_domain};
 use behavior_bddl::options::options;
-use behavior_bddl::{Activity, FactSet, GroundGoal, Optimizer, Source};
-use behavior_data::DataDir;
+use behavior_bddl::{FactSet, GroundGoal, Optimizer};
 use clap::Subcommand;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -60,44 +59,22 @@ pub enum BddlCommand {
 }
 
 pub fn run(command: BddlCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
-    let data = DataDir::locate(data_dir, |message| eprintln!("{message}"))?;
-    let knowledge = behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path())?;
+    let prelude = Prelude::load(data_dir)?;
     match command {
-        BddlCommand::Check { paths } => check(&data, &knowledge, &paths),
-        BddlCommand::Stats { json } => stats(&data, &knowledge, json),
-        BddlCommand::Eval { file, state, json } => eval(&data, &knowledge, &file, &state, json),
-        BddlCommand::Options { file, limit, count } => {
-            list_options(&data, &knowledge, &file, limit, count)
-        }
+        BddlCommand::Check { paths } => check(&prelude, &paths),
+        BddlCommand::Stats { json } => stats(&prelude, json),
+        BddlCommand::Eval { file, state, json } => eval(&prelude, &file, &state, json),
+        BddlCommand::Options { file, limit, count } => list_options(&prelude, &file, limit, count),
         BddlCommand::Bench {
             json,
             quick,
             activities,
-        } => bench(&data, &knowledge, json, quick, &activities),
+        } => bench(&prelude, json, quick, &activities),
     }
 }
 
-/// A path if one exists there, else an official activity name.
-pub fn source_of(data: &DataDir, file: &str) -> Result<Source> {
-    let path = Path::new(file);
-    if path.exists() {
-        return Ok(behavior_bddl::load::read_source(path)?);
-    }
-    let path = data
-        .problem_path(file)
-        .with_context(|| format!("`{file}` is neither a file nor an official activity"))?;
-    Ok(behavior_bddl::load::read_source(&path)?)
-}
-
-fn load(knowledge: &Knowledge, source: &Source) -> Result<Activity> {
-    let (activity, warnings) = knowledge.load(source)?;
-    if !warnings.0.is_empty() {
-        eprint!("{}", warnings.render(source));
-    }
-    Ok(activity)
-}
-
-fn check(data: &DataDir, knowledge: &Knowledge, paths: &[PathBuf]) -> Result<ExitCode> {
+fn check(prelude: &Prelude, paths: &[PathBuf]) -> Result<ExitCode> {
+    let (data, knowledge) = (&prelude.data, &prelude.knowledge);
     let paths: Vec<PathBuf> = if paths.is_empty() {
         let mut all: Vec<PathBuf> = data
             .activities()?
@@ -155,13 +132,9 @@ struct StatsRow {
     q_at_init: Option<f64>,
 }
 
-fn stats(data: &DataDir, knowledge: &Knowledge, json: bool) -> Result<ExitCode> {
+fn stats(prelude: &Prelude, json: bool) -> Result<ExitCode> {
     let mut rows = Vec::new();
-    for name in data.activities()? {
-        let activity = load(
-            knowledge,
-            &behavior_bddl::load::read_source(&data.problem_path(&name)?)?,
-        )?;
+    for (name, activity) in prelude.official_activities()? {
         let goal = GroundGoal::new(&activity);
         let optimizer = Optimizer::new(&goal);
         let state: FactSet = activity.initial_facts().into_iter().collect();
@@ -212,15 +185,9 @@ struct EvalReport {
     conjuncts: Vec<ConjunctReport>,
 }
 
-fn eval(
-    data: &DataDir,
-    knowledge: &Knowledge,
-    file: &str,
-    state_path: &Path,
-    json: bool,
-) -> Result<ExitCode> {
-    let source = source_of(data, file)?;
-    let activity = load(knowledge, &source)?;
+fn eval(prelude: &Prelude, file: &str, state_path: &Path, json: bool) -> Result<ExitCode> {
+    let source = prelude.source(file)?;
+    let activity = prelude.load_activity(&source)?;
     let text = std::fs::read_to_string(state_path)
         .with_context(|| format!("cannot read {}", state_path.display()))?;
     let state = FactSet::from_json(&activity, &text)
@@ -271,15 +238,8 @@ fn one_line(text: &str) -> String {
     joined.replace("( ", "(").replace(" )", ")")
 }
 
-fn list_options(
-    data: &DataDir,
-    knowledge: &Knowledge,
-    file: &str,
-    limit: usize,
-    count: bool,
-) -> Result<ExitCode> {
-    let source = source_of(data, file)?;
-    let activity = load(knowledge, &source)?;
+fn list_options(prelude: &Prelude, file: &str, limit: usize, count: bool) -> Result<ExitCode> {
+    let activity = prelude.activity(file)?;
     let goal = GroundGoal::new(&activity);
     if count {
         println!("{}", options(&goal).count());
@@ -322,24 +282,15 @@ struct BenchRow {
     q: Option<f64>,
 }
 
-fn bench(
-    data: &DataDir,
-    knowledge: &Knowledge,
-    json: bool,
-    quick: bool,
-    only: &[String],
-) -> Result<ExitCode> {
+fn bench(prelude: &Prelude, json: bool, quick: bool, only: &[String]) -> Result<ExitCode> {
     let names = if only.is_empty() {
-        data.activities()?
+        prelude.data.activities()?
     } else {
         only.to_vec()
     };
     let mut rows = Vec::new();
     for name in names {
-        let activity = load(
-            knowledge,
-            &behavior_bddl::load::read_source(&data.problem_path(&name)?)?,
-        )?;
+        let activity = prelude.load_activity(&prelude.official_source(&name)?)?;
         let goal = GroundGoal::new(&activity);
         let optimizer = Optimizer::new(&goal);
         let state: FactSet = activity.initial_facts().into_iter().collect();

@@ -1,10 +1,11 @@
 //! `behavior`: the command-line front of BEHAVIOR in Rust.
 //!
-//! Each subcommand group lives in its own module; this file only parses arguments and reports
-//! errors. Machine-readable output (`--json`) is documented per command in the README.
+//! Each subcommand group lives in its own module, all starting from the same [`prelude`] (data,
+//! knowledge, library, named homes); this file only parses arguments and reports errors. Machine-readable output (`--json`) is documented per command in the README.
 
 mod bddl;
 mod map;
+mod prelude;
 mod sample;
 mod scene;
 

@@ -1,11 +1,11 @@
 //! `behavior sample` and `behavior sample-all`: instantiate activities in homes.
 
+use crate::prelude::{Prelude, named_homes};
 use anyhow::{Context, Result, bail};
-use behavior_assets::coverage::{missing, requirements};
-use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
-use behavior_bddl::Knowledge;
-use behavior_data::DataDir;
-use behavior_sampling::instantiate;
+use behavior_assets::coverage::covering;
+use behavior_assets::{Library, Scene};
+use behavior_bddl::{Activity, Taxonomy};
+use behavior_sampling::{InitCheck, Instance, LiteralKind, instantiate};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -40,42 +40,126 @@ pub struct SampleAllArgs {
     json: bool,
 }
 
+/// What `behavior sample` reports (its `--json` form).
 #[derive(Serialize)]
-struct Attempt {
+struct SampleReport {
     activity: String,
     scene: String,
     seed: u64,
-    ok: bool,
     seconds: f64,
-    error: Option<String>,
+    attempt: u32,
+    init_check: InitReport,
+    bindings: Vec<Binding>,
 }
 
-fn named_homes(library: &Library) -> Result<Vec<Scene>> {
-    Ok(NAMED_HOMES
-        .iter()
-        .map(|(n, s)| generate(n, *s, library))
-        .collect::<Result<_, _>>()?)
+/// The init check run on the sampled instance: every `:init` literal re-evaluated.
+#[derive(Serialize)]
+struct InitReport {
+    literals: usize,
+    holding: usize,
+    relations: usize,
+    unary_states: usize,
+    inroom: usize,
+    failing: Vec<FailingLiteral>,
+}
+
+#[derive(Serialize)]
+struct FailingLiteral {
+    literal: String,
+    why: String,
+}
+
+#[derive(Serialize)]
+struct Binding {
+    instance: String,
+    object: String,
+}
+
+impl InitReport {
+    fn new(check: &InitCheck) -> InitReport {
+        InitReport {
+            literals: check.literals.len(),
+            holding: check.holding(),
+            relations: check.count(LiteralKind::Relation),
+            unary_states: check.count(LiteralKind::UnaryState),
+            inroom: check.count(LiteralKind::InRoom),
+            failing: check
+                .failing()
+                .map(|l| FailingLiteral {
+                    literal: l.literal.to_string(),
+                    why: l
+                        .unmet
+                        .as_ref()
+                        .map(ToString::to_string)
+                        .unwrap_or_default(),
+                })
+                .collect(),
+        }
+    }
+
+    /// One line, then one per failing literal.
+    fn print(&self) {
+        println!(
+            "init check: {} of {} init literals hold ({} relations, {} unary states, {} inroom)",
+            self.holding, self.literals, self.relations, self.unary_states, self.inroom
+        );
+        for f in &self.failing {
+            println!("  fails: {}: {}", f.literal, f.why);
+        }
+    }
 }
 
 pub fn sample(args: SampleArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
-    let data = DataDir::locate(data_dir, |message| eprintln!("{message}"))?;
-    let knowledge = behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path())?;
-    let library = Library::new(&knowledge.taxonomy);
-    let (activity, _) = knowledge.load(&crate::bddl::source_of(&data, &args.activity)?)?;
+    let prelude = Prelude::load(data_dir)?;
+    let library = prelude.library();
+    let activity = prelude.activity(&args.activity)?;
     let scene = match &args.scene {
         Some(name) => crate::scene::load_scene(name, &library)?,
-        None => {
-            let needs = requirements(&activity);
-            named_homes(&library)?
-                .into_iter()
-                .find(|h| missing(h, &needs, &knowledge.taxonomy).is_empty())
-                .with_context(|| format!("no named home covers {}", args.activity))?
-        }
+        None => first_covering(&activity, &library, &prelude.knowledge.taxonomy)?,
     };
     let start = Instant::now();
-    let instance = instantiate(&activity, &scene, args.seed, &library, &knowledge.taxonomy)
-        .with_context(|| format!("{} in {} (seed {})", args.activity, scene.name, args.seed))?;
+    let instance = instantiate(
+        &activity,
+        &scene,
+        args.seed,
+        &library,
+        &prelude.knowledge.taxonomy,
+    )
+    .with_context(|| format!("{} in {} (seed {})", args.activity, scene.name, args.seed))?;
     let seconds = start.elapsed().as_secs_f64();
+    write_files(&args, &activity, &instance)?;
+    let report = SampleReport {
+        activity: args.activity.clone(),
+        scene: scene.name.clone(),
+        seed: args.seed,
+        seconds,
+        attempt: instance.attempt,
+        init_check: InitReport::new(&instance.check_init(&activity)),
+        bindings: bindings(&activity, &instance),
+    };
+    if args.json {
+        println!("{}", serde_json::to_string_pretty(&report)?);
+    } else {
+        print_report(&report);
+    }
+    Ok(if report.init_check.failing.is_empty() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::FAILURE
+    })
+}
+
+/// The first named home that covers the activity.
+fn first_covering(activity: &Activity, library: &Library, taxonomy: &Taxonomy) -> Result<Scene> {
+    let homes = named_homes(library)?;
+    let first = covering(&homes, activity, taxonomy)
+        .first()
+        .map(|h| (*h).clone());
+    first.with_context(|| format!("no named home covers {}", activity.name))
+}
+
+/// `--out` and `--png`, when asked for.
+fn write_files(args: &SampleArgs, activity: &Activity, instance: &Instance) -> Result<()> {
     if let Some(out) = &args.out {
         std::fs::write(out, instance.save().to_json())
             .with_context(|| format!("cannot write {}", out.display()))?;
@@ -90,77 +174,105 @@ pub fn sample(args: SampleArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
                 (i.name.clone(), b.mins.to_array(), b.maxs.to_array())
             })
             .collect();
-        crate::map::render_marked(&scene, 60.0, &marked)
+        crate::map::render_marked(&instance.scene, 60.0, &marked)
             .save(png)
             .with_context(|| format!("cannot write {}", png.display()))?;
     }
-    let bindings: Vec<(String, String)> = instance
+    Ok(())
+}
+
+/// Which object each instance is, by name.
+fn bindings(activity: &Activity, instance: &Instance) -> Vec<Binding> {
+    instance
         .bindings
         .iter()
         .zip(&activity.instances)
-        .map(|(&id, i)| (i.name.clone(), instance.world.object(id).name.clone()))
-        .collect();
-    if args.json {
-        let report = serde_json::json!({
-            "activity": args.activity, "scene": scene.name, "seed": args.seed, "seconds": seconds,
-            "attempt": instance.attempt, "init_check": "every init literal holds",
-            "bindings": bindings.iter().map(|(i, o)| serde_json::json!({"instance": i, "object": o})).collect::<Vec<_>>(),
-        });
-        println!("{}", serde_json::to_string_pretty(&report)?);
-    } else {
-        println!(
-            "{} in {} (seed {}): sampled in {:.3} s, attempt {}",
-            args.activity,
-            scene.name,
-            args.seed,
-            seconds,
-            instance.attempt + 1
-        );
-        println!("init check: every init literal holds in the settled world");
-        for (i, o) in &bindings {
-            println!("  {i:<36} {o}");
-        }
+        .map(|(&id, i)| Binding {
+            instance: i.name.clone(),
+            object: instance.world.object(id).name.clone(),
+        })
+        .collect()
+}
+
+fn print_report(report: &SampleReport) {
+    println!(
+        "{} in {} (seed {}): sampled in {:.3} s, attempt {}",
+        report.activity,
+        report.scene,
+        report.seed,
+        report.seconds,
+        report.attempt + 1
+    );
+    report.init_check.print();
+    for b in &report.bindings {
+        println!("  {:<36} {}", b.instance, b.object);
     }
-    Ok(ExitCode::SUCCESS)
+}
+
+/// One (activity, home, seed) of `sample-all` and how it went (its `--json` form).
+#[derive(Serialize)]
+struct Attempt {
+    activity: String,
+    scene: String,
+    seed: u64,
+    ok: bool,
+    seconds: f64,
+    error: Option<String>,
+}
+
+/// One (activity, home, seed) to try.
+struct Job<'a> {
+    name: &'a str,
+    activity: &'a Activity,
+    home: &'a Scene,
+    seed: u64,
 }
 
 pub fn sample_all(args: SampleAllArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
-    let data = DataDir::locate(data_dir, |message| eprintln!("{message}"))?;
-    let knowledge = behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path())?;
-    let library = Library::new(&knowledge.taxonomy);
+    let prelude = Prelude::load(data_dir)?;
+    let library = prelude.library();
+    let taxonomy = &prelude.knowledge.taxonomy;
     let homes = named_homes(&library)?;
-    let mut jobs: Vec<(String, usize, u64)> = Vec::new();
-    let activities = load_all(&data, &knowledge)?;
+    let activities = prelude.official_activities()?;
+    let mut jobs = Vec::new();
     for (name, activity) in &activities {
-        let needs = requirements(activity);
-        for (h, home) in homes.iter().enumerate() {
-            if missing(home, &needs, &knowledge.taxonomy).is_empty() {
-                jobs.extend((0..args.seeds).map(|seed| (name.clone(), h, seed)));
-            }
+        for home in covering(&homes, activity, taxonomy) {
+            jobs.extend((0..args.seeds).map(|seed| Job {
+                name,
+                activity,
+                home,
+                seed,
+            }));
         }
     }
     if jobs.is_empty() {
         bail!("nothing to sample");
     }
+    let results = run_jobs(&jobs, &library, taxonomy);
+    if args.json {
+        println!("{}", serde_json::to_string_pretty(&results)?);
+    } else {
+        print_summary(&activities, &results);
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Samples every job in turn, behind a progress bar.
+fn run_jobs(jobs: &[Job], library: &Library, taxonomy: &Taxonomy) -> Vec<Attempt> {
     let bar = ProgressBar::new(jobs.len() as u64);
     bar.set_style(
         ProgressStyle::with_template("{bar:40} {pos}/{len} {msg} [{elapsed} / ~{eta}]")
             .unwrap_or_else(|_| ProgressStyle::default_bar()),
     );
     let mut results = Vec::with_capacity(jobs.len());
-    for (name, h, seed) in jobs {
-        bar.set_message(name.clone());
-        let activity = &activities
-            .iter()
-            .find(|(n, _)| *n == name)
-            .expect("loaded")
-            .1;
+    for job in jobs {
+        bar.set_message(job.name.to_string());
         let start = Instant::now();
-        let outcome = instantiate(activity, &homes[h], seed, &library, &knowledge.taxonomy);
+        let outcome = instantiate(job.activity, job.home, job.seed, library, taxonomy);
         results.push(Attempt {
-            activity: name,
-            scene: homes[h].name.clone(),
-            seed,
+            activity: job.name.to_string(),
+            scene: job.home.name.clone(),
+            seed: job.seed,
             ok: outcome.is_ok(),
             seconds: start.elapsed().as_secs_f64(),
             error: outcome.err().map(|e| e.to_string()),
@@ -168,16 +280,17 @@ pub fn sample_all(args: SampleAllArgs, data_dir: Option<&Path>) -> Result<ExitCo
         bar.inc(1);
     }
     bar.finish_and_clear();
-    if args.json {
-        println!("{}", serde_json::to_string_pretty(&results)?);
-        return Ok(ExitCode::SUCCESS);
-    }
+    results
+}
+
+/// One row per activity (homes that worked, tries, median time), then the totals.
+fn print_summary(activities: &[(String, Activity)], results: &[Attempt]) {
     println!(
         "{:<42} {:>8} {:>8} {:>10}",
         "activity", "homes ok", "tries", "median s"
     );
     let mut per_activity_ok = 0;
-    for (name, _) in &activities {
+    for (name, _) in activities {
         let mine: Vec<&Attempt> = results.iter().filter(|r| r.activity == *name).collect();
         let mut homes_ok: Vec<&str> = mine
             .iter()
@@ -185,12 +298,10 @@ pub fn sample_all(args: SampleAllArgs, data_dir: Option<&Path>) -> Result<ExitCo
             .map(|r| r.scene.as_str())
             .collect();
         homes_ok.dedup();
-        let mut times: Vec<f64> = mine.iter().map(|r| r.seconds).collect();
-        times.sort_by(f64::total_cmp);
-        let median = times.get(times.len() / 2).copied().unwrap_or(f64::NAN);
         if homes_ok.len() >= 3 {
             per_activity_ok += 1;
         }
+        let median = median(mine.iter().map(|r| r.seconds).collect());
         println!(
             "{name:<42} {:>8} {:>8} {:>10.3}",
             homes_ok.len(),
@@ -199,29 +310,17 @@ pub fn sample_all(args: SampleAllArgs, data_dir: Option<&Path>) -> Result<ExitCo
         );
     }
     let ok = results.iter().filter(|r| r.ok).count();
-    let mut times: Vec<f64> = results.iter().map(|r| r.seconds).collect();
-    times.sort_by(f64::total_cmp);
     println!(
         "{ok} of {} attempts succeeded ({:.1} %); {per_activity_ok} of {} activities in at least 3 homes; median {:.3} s per instance",
         results.len(),
         100.0 * ok as f64 / results.len() as f64,
         activities.len(),
-        times[times.len() / 2]
+        median(results.iter().map(|r| r.seconds).collect())
     );
-    Ok(ExitCode::SUCCESS)
 }
 
-fn load_all(
-    data: &DataDir,
-    knowledge: &Knowledge,
-) -> Result<Vec<(String, behavior_bddl::Activity)>> {
-    data.activities()?
-        .into_iter()
-        .map(|name| {
-            let (activity, _) = knowledge.load(&behavior_bddl::load::read_source(
-                &data.problem_path(&name)?,
-            )?)?;
-            Ok((name, activity))
-        })
-        .collect()
+/// The median (upper, for an even count); NaN when there is nothing.
+fn median(mut times: Vec<f64>) -> f64 {
+    times.sort_by(f64::total_cmp);
+    times.get(times.len() / 2).copied().unwrap_or(f64::NAN)
 }

@@ -1,10 +1,10 @@
 //! `behavior scene ...`: the named homes, generating homes from seeds, maps, and which homes can
 //! host which activities.
 
+use crate::prelude::{Prelude, named_homes};
 use anyhow::{Context, Result};
-use behavior_assets::coverage::{missing, requirements};
+use behavior_assets::coverage::covering;
 use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
-use behavior_data::DataDir;
 use clap::Subcommand;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -40,9 +40,8 @@ pub enum SceneCommand {
 }
 
 pub fn run(command: SceneCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
-    let data = DataDir::locate(data_dir, |message| eprintln!("{message}"))?;
-    let knowledge = behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path())?;
-    let library = Library::new(&knowledge.taxonomy);
+    let prelude = Prelude::load(data_dir)?;
+    let library = prelude.library();
     match command {
         SceneCommand::List => {
             println!("{:<10} {:>5} {:>8}  rooms", "home", "seed", "objects");
@@ -77,47 +76,43 @@ pub fn run(command: SceneCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
                 .with_context(|| format!("cannot write {}", png.display()))?;
             eprintln!("{}: map of {}", png.display(), scene.name);
         }
-        SceneCommand::Coverage { json } => {
-            #[derive(Serialize)]
-            struct Row {
-                activity: String,
-                scenes: Vec<String>,
-            }
-            let homes: Vec<Scene> = NAMED_HOMES
-                .iter()
-                .map(|(n, s)| generate(n, *s, &library))
-                .collect::<Result<_, _>>()?;
-            let mut rows = Vec::new();
-            for name in data.activities()? {
-                let (activity, _) = knowledge.load(&behavior_bddl::load::read_source(
-                    &data.problem_path(&name)?,
-                )?)?;
-                let needs = requirements(&activity);
-                let scenes = homes
-                    .iter()
-                    .filter(|h| missing(h, &needs, &knowledge.taxonomy).is_empty())
-                    .map(|h| h.name.clone())
-                    .collect();
-                rows.push(Row {
-                    activity: name,
-                    scenes,
-                });
-            }
-            if json {
-                println!("{}", serde_json::to_string_pretty(&rows)?);
-            } else {
-                for r in &rows {
-                    println!(
-                        "{:<42} {:>2}  {}",
-                        r.activity,
-                        r.scenes.len(),
-                        r.scenes.join(" ")
-                    );
-                }
-            }
-        }
+        SceneCommand::Coverage { json } => coverage(&prelude, &library, json)?,
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// For each official activity, the named homes that cover it.
+fn coverage(prelude: &Prelude, library: &Library, json: bool) -> Result<()> {
+    #[derive(Serialize)]
+    struct Row {
+        activity: String,
+        scenes: Vec<String>,
+    }
+    let homes = named_homes(library)?;
+    let mut rows = Vec::new();
+    for (name, activity) in prelude.official_activities()? {
+        let scenes = covering(&homes, &activity, &prelude.knowledge.taxonomy)
+            .iter()
+            .map(|h| h.name.clone())
+            .collect();
+        rows.push(Row {
+            activity: name,
+            scenes,
+        });
+    }
+    if json {
+        println!("{}", serde_json::to_string_pretty(&rows)?);
+    } else {
+        for r in &rows {
+            println!(
+                "{:<42} {:>2}  {}",
+                r.activity,
+                r.scenes.len(),
+                r.scenes.join(" ")
+            );
+        }
+    }
+    Ok(())
 }
 
 /// A named home, or a scene file.

@@ -3,6 +3,7 @@
 #[path = "../../bddl/tests/common/mod.rs"]
 mod common;
 
+use behavior_bddl::activity::InitLiteral;
 use behavior_bddl::{Activity, Atom};
 use behavior_data::DataDir;
 use serde_json::Value;
@@ -399,6 +400,24 @@ fn scene_coverage_json_lists_at_least_three_homes_per_activity() {
     }
 }
 
+/// How many `:init` literals an official activity has: all, relations (binary atoms), unary
+/// states, `inroom` — counted from the parsed definition, independently of the sampler.
+fn init_counts(name: &str) -> [usize; 4] {
+    let data = DataDir::locate(None, |_| ()).unwrap();
+    let knowledge =
+        behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();
+    let (activity, _) = knowledge
+        .load(&behavior_bddl::load::read_source(&data.problem_path(name).unwrap()).unwrap())
+        .unwrap();
+    let count = |f: &dyn Fn(&InitLiteral) -> bool| activity.init.iter().filter(|l| f(l)).count();
+    [
+        activity.init.len(),
+        count(&|l| matches!(l, InitLiteral::Atom(a) if a.atom.object.is_some())),
+        count(&|l| matches!(l, InitLiteral::Atom(a) if a.atom.object.is_none())),
+        count(&|l| matches!(l, InitLiteral::InRoom { .. })),
+    ]
+}
+
 #[test]
 fn sample_prints_bindings_and_saves_an_instance() {
     let out = scratch("lunches_instance.json");
@@ -413,13 +432,36 @@ fn sample_prints_bindings_and_saves_an_instance() {
     ]);
     let report: Value = serde_json::from_slice(&output.stdout).unwrap();
     assert_eq!(report["activity"], "packing_lunches");
-    assert_eq!(report["init_check"], "every init literal holds");
+    // The init check ran on every literal of the definition, and every one holds.
+    let [literals, relations, unary, inroom] = init_counts("packing_lunches");
+    let check = &report["init_check"];
+    assert_eq!(check["literals"], literals);
+    assert_eq!(check["holding"], literals);
+    assert_eq!(check["relations"], relations);
+    assert_eq!(check["unary_states"], unary);
+    assert_eq!(check["inroom"], inroom);
+    assert_eq!(check["failing"], serde_json::json!([]));
     assert_eq!(report["bindings"].as_array().unwrap().len(), 19);
     let saved =
         behavior_sampling::SavedInstance::from_json(&std::fs::read_to_string(&out).unwrap())
             .unwrap();
     assert_eq!(saved.activity, "packing_lunches_0");
     assert_eq!(saved.bindings.len(), 19);
+}
+
+#[test]
+fn sample_prints_the_init_check_it_ran() {
+    // Dusty and stained surfaces: unary states as well as relations and rooms.
+    let output = behavior_ok(&["sample", "cleaning_stove"]);
+    let out = stdout(&output);
+    let [literals, relations, unary, inroom] = init_counts("cleaning_stove");
+    assert!(unary > 0);
+    let line = format!(
+        "init check: {literals} of {literals} init literals hold ({relations} relations, \
+         {unary} unary states, {inroom} inroom)\n"
+    );
+    assert!(out.contains(&line), "{out}");
+    assert!(!out.contains("fails:"), "{out}");
 }
 
 #[test]

@@ -6,15 +6,37 @@
 //! creates every other object from the object library; places them in dependency order, each by
 //! all its placement literals at once (`ontop`, `inside`, `under`, `nextto`, `touching`,
 //! `onfloor`); sets every unary literal; lets the world settle and checks every init literal in the
-//! settled world. Before an instance is handed out, [`goal_feasible`] places some goal option's
-//! objects for real in a copy of the world. A failed attempt is retried with fresh randomness;
-//! after [`ATTEMPTS`] the error names the literal that could not be satisfied and why. The same
-//! (activity, home, seed) always gives the same instance.
+//! settled world ([`check_init`]). Before an instance is handed out, [`goal_feasible`] places some
+//! goal option's objects for real in a copy of the world, in the same dependency order. A failed
+//! attempt is retried with fresh randomness; after [`ATTEMPTS`] the error names the literal that
+//! could not be satisfied and why ([`SampleError`]). The same (activity, home, seed) always gives
+//! the same instance. [`SavedInstance`] is an instance as a file; loading one re-checks it
+//! ([`LoadError`]).
 //!
 //! This crate joins BDDL, the world and the assets; it knows nothing of robots or rendering.
+//!
+//! Inside, each stage of an attempt has its own module, all working on one shared context (the
+//! attempt's activity, home, library, random numbers, world and bindings): `bind` (furniture and
+//! floors), `create` (the other objects), `order` (the one dependency order, for the initial
+//! state and goal options alike), `place`, `states`, `verify` (the init check), `goal`.
 
-pub mod instance;
-pub mod sample;
+#![warn(missing_docs)]
 
-pub use instance::{Instance, SavedInstance};
-pub use sample::{ATTEMPTS, SampleError, goal_feasible, instantiate};
+mod bind;
+mod create;
+mod error;
+mod goal;
+mod instance;
+mod instantiate;
+mod order;
+mod place;
+mod states;
+mod verify;
+
+pub use error::{
+    Literals, LoadError, NamedLiteral, RuledOut, SampleError, Unmet, Unreachable, Unsatisfied,
+};
+pub use goal::{FEASIBILITY_OPTIONS, PHYSICAL_OPTIONS, goal_feasible};
+pub use instance::{Created, Instance, SavedInstance, SavedObject};
+pub use instantiate::{ATTEMPTS, SETTLE_STEPS, instantiate};
+pub use verify::{InitCheck, LiteralCheck, LiteralKind, check_init};

@@ -6,7 +6,10 @@ use behavior_bddl::Knowledge;
 use behavior_bddl::activity::InitLiteral;
 use behavior_bddl::{Activity, PredicateOracle};
 use behavior_data::DataDir;
-use behavior_sampling::{SampleError, SavedInstance, instantiate};
+use behavior_sampling::{
+    LiteralKind, LoadError, SampleError, SavedInstance, Unmet, Unreachable, Unsatisfied,
+    instantiate,
+};
 
 fn setup() -> (DataDir, Knowledge) {
     let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
@@ -205,8 +208,15 @@ fn an_unreachable_goal_is_reported_as_infeasible() {
         .unwrap();
     let home = generate(NAMED_HOMES[0].0, NAMED_HOMES[0].1, &library).unwrap();
     match instantiate(&activity, &home, 0, &library, &knowledge.taxonomy) {
-        Err(e @ SampleError::Infeasible { .. }) => {
-            assert!(e.to_string().starts_with("no goal option can be reached in this home: (inside table.n.02_1 bin.n.01_1): its box"), "{e}")
+        Err(
+            ref e @ SampleError::Infeasible {
+                ref literals,
+                why: Unreachable::DoesNotFit { object, container },
+            },
+        ) => {
+            assert!(e.to_string().starts_with("no goal option can be reached in this home: (inside table.n.02_1 bin.n.01_1): its box"), "{e}");
+            assert_eq!(literals.to_string(), "(inside table.n.02_1 bin.n.01_1)");
+            assert!(object[2] > container[2]);
         }
         Err(e) => panic!("unexpected error: {e}"),
         Ok(_) => panic!("an impossible goal was accepted"),
@@ -310,14 +320,29 @@ fn furniture_that_cannot_host_its_init_literals_is_not_bound() {
     let across = table_across_the_opening(&home);
     home.objects.retain(|o| o.name != across);
     match instantiate(&activity, &home, 0, &library, &knowledge.taxonomy) {
-        Err(e @ SampleError::Literal { .. }) => {
+        Err(
+            ref e @ SampleError::Literal {
+                ref literals,
+                why: Unsatisfied::NotHosted(ref ruled_out),
+            },
+        ) => {
             assert!(
-            e.to_string().starts_with(
-                "(under gym_shoe.n.01_1 table.n.02_1) and (onfloor gym_shoe.n.01_1 floor.n.01_2) \
-                 could not be satisfied: 0 of the 1 table.n.02 in"
-            ) && e.to_string().contains("the relations' areas do not overlap"),
-            "{e}"
-        )
+                e.to_string().starts_with(
+                    "(under gym_shoe.n.01_1 table.n.02_1) and (onfloor gym_shoe.n.01_1 floor.n.01_2) \
+                     could not be satisfied: 0 of the 1 table.n.02 in"
+                ) && e.to_string().contains("the relations' areas do not overlap"),
+                "{e}"
+            );
+            // The same, as values: the literals as the definition holds them, the world's error.
+            let under = activity.instance_named("gym_shoe.n.01_1").unwrap();
+            assert_eq!(literals.0.len(), 2);
+            assert!(matches!(
+                literals.0[0].literal,
+                InitLiteral::Atom(l) if l.atom.subject == under
+                    && l.atom.predicate == behavior_bddl::Predicate::Under
+            ));
+            assert_eq!((ruled_out.kept, ruled_out.candidates), (0, 1));
+            assert_eq!(ruled_out.cause.object, "gym_shoe.n.01_1");
         }
         Err(e) => panic!("unexpected error: {e}"),
         Ok(_) => panic!("sampled without a table that can host the shoe"),
@@ -371,13 +396,21 @@ fn a_goal_that_fits_by_size_but_cannot_be_placed_is_infeasible() {
         .unwrap();
     let home = generate(NAMED_HOMES[0].0, NAMED_HOMES[0].1, &library).unwrap();
     match instantiate(&activity, &home, 0, &library, &knowledge.taxonomy) {
-        Err(e @ SampleError::Infeasible { .. }) => assert!(
-            e.to_string().starts_with(
-                "no goal option can be reached in this home: (inside apple.n.01_1 bowl.n.01_1) \
-                 and (nextto apple.n.01_1 table.n.02_1): could not place apple.n.01_1"
-            ),
-            "{e}"
-        ),
+        Err(
+            ref e @ SampleError::Infeasible {
+                why: Unreachable::Placement(ref placement),
+                ..
+            },
+        ) => {
+            assert!(
+                e.to_string().starts_with(
+                    "no goal option can be reached in this home: (inside apple.n.01_1 bowl.n.01_1) \
+                     and (nextto apple.n.01_1 table.n.02_1): could not place apple.n.01_1"
+                ),
+                "{e}"
+            );
+            assert_eq!(placement.object, "apple.n.01_1");
+        }
         Err(e) => panic!("unexpected error: {e}"),
         Ok(_) => panic!("an unreachable goal was accepted"),
     }
@@ -396,5 +429,109 @@ fn goals_relating_objects_of_one_kind_are_feasible() {
         let instance = instantiate(&activity, &home, 0, &library, &knowledge.taxonomy)
             .unwrap_or_else(|e| panic!("{name}: {e}"));
         assert!(all_init_literals_hold(&activity, &instance), "{name}");
+    }
+}
+
+#[test]
+fn the_init_check_reports_each_literal_and_which_fail() {
+    let (data, knowledge) = setup();
+    let library = Library::new(&knowledge.taxonomy);
+    let activity = activity(&data, &knowledge, "packing_lunches");
+    let home = covering_home(&activity, &library, &knowledge);
+    let mut instance = instantiate(&activity, &home, 0, &library, &knowledge.taxonomy)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let check = instance.check_init(&activity);
+    assert_eq!(check.literals.len(), activity.init.len());
+    assert!(check.all_hold());
+    let rooms = activity
+        .init
+        .iter()
+        .filter(|l| matches!(l, InitLiteral::InRoom { .. }))
+        .count();
+    assert_eq!(check.count(LiteralKind::InRoom), rooms);
+    assert_eq!(
+        check.count(LiteralKind::Relation) + check.count(LiteralKind::UnaryState) + rooms,
+        activity.init.len()
+    );
+    // Take the apple off the counter: its one literal fails, and the independent check agrees.
+    let apple = activity.instance_named("apple.n.01_1").unwrap();
+    let id = instance.bindings[apple.0 as usize];
+    let far =
+        rapier3d::math::Pose::from_translation(rapier3d::math::Vector::new(500.0, 500.0, 3.0));
+    instance.world.set_pose(id, far).unwrap();
+    let check = instance.check_init(&activity);
+    let failing: Vec<String> = check.failing().map(|l| l.literal.to_string()).collect();
+    assert_eq!(failing, ["(ontop apple.n.01_1 countertop.n.01_1)"]);
+    assert_eq!(check.holding(), activity.init.len() - 1);
+    assert_eq!(check.failing().next().unwrap().unmet, Some(Unmet::False));
+    assert!(!all_init_literals_hold(&activity, &instance));
+}
+
+#[test]
+fn loading_a_wrong_or_broken_file_says_what_is_wrong() {
+    let (data, knowledge) = setup();
+    let library = Library::new(&knowledge.taxonomy);
+    let other = activity(&data, &knowledge, "putting_away_toys");
+    let activity = activity(&data, &knowledge, "packing_lunches");
+    let home = covering_home(&activity, &library, &knowledge);
+    let saved = instantiate(&activity, &home, 0, &library, &knowledge.taxonomy)
+        .unwrap()
+        .save();
+    let load = |s: &SavedInstance, a: &Activity| s.load(a, &library).err().map(|e| e.to_string());
+
+    assert!(matches!(
+        SavedInstance::from_json("{\"activity\": 3}"),
+        Err(LoadError::Json(_))
+    ));
+    assert_eq!(
+        load(&saved, &other).unwrap(),
+        format!(
+            "the file is an instance of packing_lunches_0, not of {}",
+            other.name
+        )
+    );
+    let mut renamed = saved.clone();
+    renamed.objects[0].name = "no_such_object".into();
+    assert!(matches!(
+        renamed.load(&activity, &library),
+        Err(LoadError::UnknownObject { ref name }) if name == "no_such_object"
+    ));
+    let mut rebound = saved.clone();
+    rebound.bindings[0] = "no_such_object".into();
+    assert_eq!(
+        load(&rebound, &activity).unwrap(),
+        format!(
+            "{} is bound to `no_such_object`, which is not in the rebuilt world",
+            activity.instances[0].name
+        )
+    );
+    let mut short = saved.clone();
+    short.bindings.pop();
+    assert!(matches!(
+        short.load(&activity, &library),
+        Err(LoadError::BindingCount {
+            bindings: 18,
+            instances: 19,
+            ..
+        })
+    ));
+    // An apple saved away from the counter breaks the initial condition.
+    let mut moved = saved.clone();
+    let apple = moved
+        .objects
+        .iter_mut()
+        .find(|o| o.name == "apple.n.01_1")
+        .unwrap();
+    apple.position = [500.0, 500.0, 3.0];
+    match moved.load(&activity, &library) {
+        Err(LoadError::InitBroken { literal, why }) => {
+            assert_eq!(
+                literal.to_string(),
+                "(ontop apple.n.01_1 countertop.n.01_1)"
+            );
+            assert_eq!(why, Unmet::False);
+        }
+        Err(e) => panic!("unexpected error: {e}"),
+        Ok(_) => panic!("a broken instance loaded"),
     }
 }

@@ -129,6 +129,11 @@ impl World {
         self.core.pose(id)
     }
 
+    /// The axis-aligned box around all of an object's colliders.
+    pub fn aabb(&self, id: ObjectId) -> rapier3d::prelude::Aabb {
+        self.core.aabb(id)
+    }
+
     /// Moves an object (teleport) with its links, at rest, waking it.
     pub fn set_pose(&mut self, id: ObjectId, pose: Pose) -> Result<(), WorldError> {
         self.core.set_pose(id, pose)

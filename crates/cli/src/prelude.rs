@@ -1,0 +1,86 @@
+//! What the subcommands start from, written once: locate the official data, load the knowledge
+//! (taxonomy and domain) and, for those that build worlds, the object library and the named
+//! homes.
+
+use anyhow::{Context, Result};
+use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
+use behavior_bddl::load::read_source;
+use behavior_bddl::{Activity, Knowledge, Source};
+use behavior_data::DataDir;
+use std::path::Path;
+
+/// The official data and the knowledge loaded from it.
+pub struct Prelude {
+    /// Where the official definitions are.
+    pub data: DataDir,
+    /// The taxonomy and the domain, to load definitions with.
+    pub knowledge: Knowledge,
+}
+
+impl Prelude {
+    /// Locates the data (`--data-dir`, `$BEHAVIOR_DATA_DIR`, else the cache, filled on first
+    /// use with a progress message) and loads the knowledge.
+    pub fn load(data_dir: Option<&Path>) -> Result<Prelude> {
+        let data = DataDir::locate(data_dir, |message| eprintln!("{message}"))?;
+        let knowledge = Knowledge::read(&data.taxonomy_path(), &data.domain_path())?;
+        Ok(Prelude { data, knowledge })
+    }
+
+    /// The object library over the knowledge's taxonomy. It borrows the taxonomy, so it is made
+    /// here rather than kept in the prelude.
+    pub fn library(&self) -> Library<'_> {
+        Library::new(&self.knowledge.taxonomy)
+    }
+
+    /// A problem file if one exists at `file`, else the official activity of that name.
+    pub fn source(&self, file: &str) -> Result<Source> {
+        let path = Path::new(file);
+        if path.exists() {
+            return Ok(read_source(path)?);
+        }
+        let path = self
+            .data
+            .problem_path(file)
+            .with_context(|| format!("`{file}` is neither a file nor an official activity"))?;
+        Ok(read_source(&path)?)
+    }
+
+    /// The definition of an official activity.
+    pub fn official_source(&self, name: &str) -> Result<Source> {
+        Ok(read_source(&self.data.problem_path(name)?)?)
+    }
+
+    /// Loads a definition, printing its warnings (with their locations) to stderr.
+    pub fn load_activity(&self, source: &Source) -> Result<Activity> {
+        let (activity, warnings) = self.knowledge.load(source)?;
+        if !warnings.0.is_empty() {
+            eprint!("{}", warnings.render(source));
+        }
+        Ok(activity)
+    }
+
+    /// The definition at `file` (see [`Prelude::source`]).
+    pub fn activity(&self, file: &str) -> Result<Activity> {
+        self.load_activity(&self.source(file)?)
+    }
+
+    /// Every official activity, by name, in the manifest's order.
+    pub fn official_activities(&self) -> Result<Vec<(String, Activity)>> {
+        self.data
+            .activities()?
+            .into_iter()
+            .map(|name| {
+                let activity = self.load_activity(&self.official_source(&name)?)?;
+                Ok((name, activity))
+            })
+            .collect()
+    }
+}
+
+/// The fifteen named homes, generated in their fixed order.
+pub fn named_homes(library: &Library) -> Result<Vec<Scene>> {
+    Ok(NAMED_HOMES
+        .iter()
+        .map(|(n, s)| generate(n, *s, library))
+        .collect::<Result<_, _>>()?)
+}

@@ -6,7 +6,8 @@
 use behavior_core::Predicate;
 mod common;
 
-use behavior_sim::{ObjectId, Substeps, World};
+use behavior_sim::{ObjectId, Primitive, QueryFilter, Substeps, World};
+use rapier3d::math::{Pose, Vector};
 use common::resting_home;
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
@@ -62,6 +63,50 @@ fn benches(c: &mut Criterion) {
     });
     c.bench_function("all_15_predicates_over_20_objects_warm", |b| {
         b.iter(|| black_box(all_predicates(&world, &objects)))
+    });
+
+    // What a planner pays to branch: a snapshot, and a restore into a world it has stepped.
+    let snapshot = world.snapshot();
+    c.bench_function("snapshot_201_objects", |b| {
+        b.iter(|| black_box(world.snapshot()))
+    });
+    let mut scratch = world.clone();
+    c.bench_function("restore_201_objects", |b| {
+        b.iter(|| scratch.restore(black_box(&snapshot)))
+    });
+
+    // Queries on the settled scene: one ray across the room, a 360-ray lidar sweep at 0.3 m
+    // height, and a 0.3 m sphere overlap test (a planner's collision check), the query index
+    // already built.
+    let none = QueryFilter::default();
+    let origin = Vector::new(-9.0, 0.0, 0.3);
+    let sweep: Vec<(Vector, Vector)> = (0..360)
+        .map(|k| {
+            let a = (k as f32).to_radians();
+            (origin, Vector::new(a.cos(), a.sin(), 0.0))
+        })
+        .collect();
+    c.bench_function("ray_first_hit", |b| {
+        b.iter(|| black_box(world.core().cast_ray(origin, Vector::X, 30.0, &none)))
+    });
+    c.bench_function("lidar_360_rays", |b| {
+        b.iter(|| black_box(world.core().cast_rays(&sweep, 30.0, &none)))
+    });
+    let probe = Primitive::Sphere { radius: 0.3 };
+    let at = Pose::from_translation(Vector::new(-8.0, -4.0, 1.0));
+    c.bench_function("sphere_overlap_query", |b| {
+        b.iter(|| black_box(world.core().overlaps(&probe, at, &none)))
+    });
+    // After a teleport the index is rebuilt on the next query: the cost a planner pays per
+    // configuration it moves an object to.
+    let mut moving = world.clone();
+    let thing = ObjectId(200);
+    let home = moving.pose(thing);
+    c.bench_function("teleport_then_ray", |b| {
+        b.iter(|| {
+            moving.set_pose(thing, home).unwrap();
+            black_box(moving.core().cast_ray(origin, Vector::X, 30.0, &none))
+        })
     });
 }
 

@@ -20,34 +20,56 @@ pub const MAX_GROUND_NODES: u64 = 5_000_000;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct CategoryId(pub u32);
 
+/// An object declared in `:objects` (`apple.n.01_1`), indexed by [`InstanceId`] in declaration
+/// order. A simulator binds each to one of its objects.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Instance {
+    /// The name as declared, lower-cased; in an activity that passed the checker it is
+    /// `<category>_<n>` with n ≥ 1, e.g. `apple.n.01_1`.
     pub name: String,
+    /// The category it was declared under, whose name prefixes its own.
     pub category: CategoryId,
 }
 
+/// A category of `:objects` (the `apple.n.01` after the `-`): the domain that quantifiers over it
+/// range over.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Category {
+    /// The synset name as written, lower-cased, e.g. `apple.n.01`.
     pub name: String,
     /// `None` when checked without a taxonomy.
     pub synset: Option<SynsetId>,
+    /// The instances declared under this category, in declaration order, from every line that
+    /// declares it. Quantifiers range over exactly these: instances of a more specific synset,
+    /// declared under their own category, are not included.
     pub instances: Vec<InstanceId>,
 }
 
 /// A ground atom or its negation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct Literal {
+    /// The atom asserted (or denied), over instance ids.
     pub atom: Atom,
+    /// `false` for `(not atom)`.
     pub positive: bool,
 }
 
 /// A literal of `:init`. `inroom` names a room type, not an instance, so it has its own case.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum InitLiteral {
+    /// `(ontop apple.n.01_1 table.n.02_1)` or `(not (open fridge.n.01_1))`: a fact about the
+    /// initial state. The positive ones make up [`Activity::initial_facts`].
     Atom(Literal),
+    /// `(inroom table.n.02_1 kitchen)`: the instance is one of the home's own objects in a room of
+    /// that type, which sampling binds it to rather than placing it. Room membership is fixed by the
+    /// scene, so this is never a state fact nor part of a goal.
     InRoom {
+        /// The instance to bind: a piece of furniture or a floor.
         instance: InstanceId,
+        /// The room type; one of the eleven that homes have, since any other name is a checker
+        /// error (no home has such a room, so no instance of the activity could be sampled).
         room: RoomType,
+        /// `false` for `(not (inroom …))`, which no official activity writes.
         positive: bool,
     },
 }
@@ -55,6 +77,8 @@ pub enum InitLiteral {
 /// An argument of a goal atom.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Term {
+    /// A declared instance named directly; goals usually write it with a `?`, as in
+    /// `?table.n.02_1`.
     Instance(InstanceId),
     /// A quantified variable: the index of its binder, counted from the outermost (0) inward.
     Var(u32),
@@ -63,26 +87,46 @@ pub enum Term {
 /// A resolved goal formula; quantifiers range over the instances of a declared category.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Goal {
+    /// `(ontop ?apple.n.01 ?table.n.02_1)`: a predicate applied to terms.
     Atom {
+        /// Any predicate of the vocabulary except `inroom`, which may appear only in `:init`.
         predicate: Predicate,
+        /// As many terms as the predicate's arity: the subject, then the object of a binary one.
         args: Vec<Term>,
     },
+    /// `(not g)`.
     Not(Box<Goal>),
+    /// `(and g…)`: every part holds; `(and)` is true.
     And(Vec<Goal>),
+    /// `(or g…)`: some part holds; `(or)` is false.
     Or(Vec<Goal>),
+    /// `(imply a b)`: `b` holds wherever `a` does, i.e. `(or (not a) b)`.
     Imply(Box<Goal>, Box<Goal>),
+    /// `(iff a b)`: both hold or neither. Accepted though no official activity uses it.
     Iff(Box<Goal>, Box<Goal>),
+    /// `(forall (?x - c) body)`: the body holds for every instance of `c`; true when `c` has none.
     Forall(CategoryId, Box<Goal>),
+    /// `(exists (?x - c) body)`: the body holds for some instance of `c`.
     Exists(CategoryId, Box<Goal>),
+    /// `(forn (N) (?x - c) body)`: at least N instances of `c` satisfy the body (the reference
+    /// implementation requires exactly N).
     ForN(u32, CategoryId, Box<Goal>),
+    /// `(forpairs (?x - a) (?y - b) body)`: a one-to-one pairing of the instances of `a` with those
+    /// of `b`, with the body true on each pair, covers every instance of the smaller category (a
+    /// maximum bipartite matching). The first category binds the outer variable; with `a = b`, the
+    /// pair `(x, x)` is allowed.
     ForPairs(CategoryId, CategoryId, Box<Goal>),
+    /// `(fornpairs (N) (?x - a) (?y - b) body)`: at least N *disjoint* pairs (no instance in two of
+    /// them) satisfy the body.
     ForNPairs(u32, CategoryId, CategoryId, Box<Goal>),
 }
 
 /// One top-level condition of the goal (a conjunct of its outermost `and`).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Conjunct {
+    /// The resolved condition.
     pub goal: Goal,
+    /// Where it is written in the problem source, so reports can quote it.
     pub span: Span,
 }
 
@@ -91,9 +135,14 @@ pub struct Conjunct {
 pub struct Activity {
     /// The problem name, e.g. `packing_lunches_0`.
     pub name: String,
+    /// The domain named by `:domain` (`igibson` for the official activities); compared with the
+    /// domain file's name only when checked against one.
     pub domain: String,
+    /// Every declared instance, indexed by [`InstanceId`], in `:objects` order.
     pub instances: Vec<Instance>,
+    /// Every declared category, indexed by [`CategoryId`], in order of first declaration.
     pub categories: Vec<Category>,
+    /// The `:init` literals in file order, `inroom` included.
     pub init: Vec<InitLiteral>,
     /// The goal is the conjunction of these.
     pub goal: Vec<Conjunct>,
@@ -103,7 +152,11 @@ pub struct Activity {
 /// domain, the problem's `:domain` is not compared.
 #[derive(Clone, Copy, Default)]
 pub struct CheckContext<'a> {
+    /// The synsets that categories must name, with the abilities that state predicates need (a
+    /// missing ability is a warning). Without it only the `lemma.n.NN` shape of category names is
+    /// checked.
     pub taxonomy: Option<&'a Taxonomy>,
+    /// The domain file whose name the problem's `:domain` must equal.
     pub domain: Option<&'a ast::DomainFile>,
 }
 
@@ -126,14 +179,18 @@ impl Activity {
         }
     }
 
+    /// The instance with that id. Panics on an id that is not of this activity.
     pub fn instance(&self, id: InstanceId) -> &Instance {
         &self.instances[id.0 as usize]
     }
 
+    /// The category with that id. Panics on an id that is not of this activity.
     pub fn category(&self, id: CategoryId) -> &Category {
         &self.categories[id.0 as usize]
     }
 
+    /// The instance declared as `name`, which must be lower-case and without `?`
+    /// (`apple.n.01_1`). A linear search: for reading states and command lines, not inner loops.
     pub fn instance_named(&self, name: &str) -> Option<InstanceId> {
         self.instances
             .iter()
@@ -151,6 +208,7 @@ impl Activity {
         ShowAtom(self, atom)
     }
 
+    /// Displays a literal with instance names, e.g. `(not (open fridge.n.01_1))`.
     pub fn show_literal(&self, literal: Literal) -> String {
         if literal.positive {
             self.show_atom(literal.atom).to_string()
@@ -790,6 +848,55 @@ mod tests {
             "{rendered}"
         );
         assert!(rendered.contains("^^^^"), "{rendered}");
+    }
+
+    #[test]
+    fn an_unknown_room_type_is_an_error_at_the_room_word() {
+        // No home has a ballroom, so no instance of the activity could be sampled: an error, not a
+        // warning.
+        let text = problem(OBJECTS, "(inroom table.n.02_1 ballroom)", "(and)");
+        let err = load(&text).unwrap_err();
+        let errors: Vec<&Diagnostic> = err.diagnostics.errors().collect();
+        assert_eq!(errors.len(), 1, "{err}");
+        let error = errors[0];
+        assert!(
+            error.message.contains("unknown room type `ballroom`"),
+            "{}",
+            error.message
+        );
+        let at = text.find("ballroom").unwrap();
+        assert_eq!(error.span, Span::new(at, at + "ballroom".len()));
+        for room in RoomType::ALL {
+            assert!(
+                error.notes.iter().any(|n| n.contains(room.name())),
+                "`{}` missing from {:?}",
+                room.name(),
+                error.notes
+            );
+        }
+        let rendered = err.to_string();
+        assert!(
+            rendered.starts_with("test.bddl:3:30: error: unknown room type `ballroom`"),
+            "{rendered}"
+        );
+
+        let text = problem(OBJECTS, "(inroom table.n.02_1 kitchen)", "(and)");
+        let (activity, warnings) = load(&text).unwrap();
+        assert!(warnings.0.is_empty(), "{warnings:?}");
+        let table = activity.instance_named("table.n.02_1").unwrap();
+        assert!(
+            matches!(
+                activity.init[..],
+                [InitLiteral::InRoom {
+                    instance,
+                    room: RoomType::Kitchen,
+                    positive: true,
+                }] if instance == table
+            ),
+            "{:?}",
+            activity.init
+        );
+        assert!(activity.initial_facts().is_empty());
     }
 
     #[test]

@@ -13,11 +13,15 @@ use std::ops::Range;
 /// A byte range in a [`Source`]'s text.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct Span {
+    /// Byte offset of the first byte.
     pub start: u32,
+    /// Byte offset one past the last byte; equal to `start` for an empty span (a point).
     pub end: u32,
 }
 
 impl Span {
+    /// A span from byte offsets. They are stored in 32 bits, which is why sources are limited to
+    /// under 4 GiB ([`crate::load::source_from_bytes`] refuses larger ones).
     pub fn new(start: usize, end: usize) -> Self {
         Span {
             start: start as u32,
@@ -33,6 +37,7 @@ impl Span {
         }
     }
 
+    /// The span as a range, for slicing the source text: `&source.text[span.range()]`.
     pub fn range(self) -> Range<usize> {
         self.start as usize..self.end as usize
     }
@@ -41,11 +46,14 @@ impl Span {
 /// A named text that diagnostics point into.
 #[derive(Clone, Debug)]
 pub struct Source {
+    /// What rendered diagnostics call it: a file path, or any label for text from elsewhere.
     pub name: String,
+    /// The whole text, as read (not lower-cased); spans index it in bytes.
     pub text: String,
 }
 
 impl Source {
+    /// A source called `name` in diagnostics, holding `text`.
     pub fn new(name: impl Into<String>, text: impl Into<String>) -> Self {
         Source {
             name: name.into(),
@@ -71,17 +79,24 @@ fn floor_char_boundary(text: &str, mut i: usize) -> usize {
     i
 }
 
+/// How bad a diagnostic is; ordered, `Warning < Error`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Severity {
+    /// Suspicious but loadable (e.g. a state on a synset without its ability); comes back with
+    /// the result.
     Warning,
+    /// The source cannot be used; loading fails with every diagnostic found.
     Error,
 }
 
 /// One problem found in a source.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Diagnostic {
+    /// Whether it stops the source from loading.
     pub severity: Severity,
+    /// One line, without location, e.g. ``unknown predicate `ontopp` ``.
     pub message: String,
+    /// The text it is about: underlined when rendered; its start gives the header's `line:col`.
     pub span: Span,
     /// Short text shown under the underline.
     pub label: String,
@@ -90,6 +105,7 @@ pub struct Diagnostic {
 }
 
 impl Diagnostic {
+    /// An error at `span`, without label or notes yet.
     pub fn error(span: Span, message: impl Into<String>) -> Self {
         Diagnostic {
             severity: Severity::Error,
@@ -100,6 +116,7 @@ impl Diagnostic {
         }
     }
 
+    /// A warning at `span`, without label or notes yet.
     pub fn warning(span: Span, message: impl Into<String>) -> Self {
         Diagnostic {
             severity: Severity::Warning,
@@ -107,16 +124,19 @@ impl Diagnostic {
         }
     }
 
+    /// Sets the short text shown under the underline.
     pub fn with_label(mut self, label: impl Into<String>) -> Self {
         self.label = label.into();
         self
     }
 
+    /// Adds a note, shown after the excerpt; notes keep the order they are added in.
     pub fn with_note(mut self, note: impl Into<String>) -> Self {
         self.notes.push(note.into());
         self
     }
 
+    /// Whether the severity is [`Severity::Error`].
     pub fn is_error(&self) -> bool {
         self.severity == Severity::Error
     }
@@ -168,15 +188,19 @@ impl Diagnostic {
 pub struct Diagnostics(pub Vec<Diagnostic>);
 
 impl Diagnostics {
+    /// Appends a diagnostic.
     pub fn push(&mut self, d: Diagnostic) {
         self.0.push(d);
     }
+    /// Whether any diagnostic is an error, i.e. whether the source must be rejected.
     pub fn has_errors(&self) -> bool {
         self.0.iter().any(Diagnostic::is_error)
     }
+    /// The errors, in the order found.
     pub fn errors(&self) -> impl Iterator<Item = &Diagnostic> {
         self.0.iter().filter(|d| d.is_error())
     }
+    /// The warnings, in the order found.
     pub fn warnings(&self) -> impl Iterator<Item = &Diagnostic> {
         self.0.iter().filter(|d| !d.is_error())
     }
@@ -199,13 +223,16 @@ impl Diagnostics {
         out
     }
 
+    /// How many diagnostics [`Diagnostics::render`] shows in full before counting the rest.
     pub const SHOWN: usize = 50;
 }
 
 /// A source together with the errors that stopped it from being read; what the loaders return.
 #[derive(Clone, Debug)]
 pub struct SourceErrors {
+    /// The source, kept so that the diagnostics can be rendered with excerpts.
     pub source: Source,
+    /// Everything found, warnings included, in the order found; normally at least one error.
     pub diagnostics: Diagnostics,
 }
 

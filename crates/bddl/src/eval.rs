@@ -34,16 +34,24 @@ impl FromIterator<Atom> for FactSet {
     }
 }
 
+/// Why a state file could not be read into a [`FactSet`] (see [`FactSet::from_json`]).
 #[derive(Debug, thiserror::Error, PartialEq, Eq)]
 pub enum StateError {
+    /// The text is not JSON of the form `{"facts": [[predicate, instance…], …]}`; the string is
+    /// serde's message, with its line and column.
     #[error(
         "the state is not JSON of the form {{\"facts\": [[\"ontop\", \"a.n.01_1\", \"b.n.01_1\"], ...]}}: {0}"
     )]
     Json(String),
+    /// One fact cannot be resolved against the activity.
     #[error("fact {index} ({fact}): {reason}")]
     Fact {
+        /// Its position in `facts`, counted from 0.
         index: usize,
+        /// The fact as given, debug-formatted (`["ontop", "a.n.01_1"]`).
         fact: String,
+        /// What is wrong: empty, an unknown predicate, `inroom`, the wrong number of arguments or
+        /// an object the activity does not declare.
         reason: String,
     },
 }
@@ -77,10 +85,12 @@ impl FactSet {
         }
     }
 
+    /// The number of true atoms.
     pub fn len(&self) -> usize {
         self.facts.len()
     }
 
+    /// Whether no atom is true.
     pub fn is_empty(&self) -> bool {
         self.facts.is_empty()
     }

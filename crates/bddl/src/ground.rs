@@ -23,12 +23,18 @@ pub struct AtomId(pub u32);
 /// A literal as the option computations see it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct Lit {
+    /// The atom, an index into [`GroundGoal::atoms`].
     pub atom: AtomId,
+    /// `false` for the atom's negation.
     pub positive: bool,
 }
 
+/// A node of a ground goal. The tree is in negation normal form: negation appears only in
+/// literals, so every node's options are built from its children's without complementing them.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Node {
+    /// True when its atom's truth equals its polarity. Repeated occurrences of one atom are
+    /// separate nodes sharing an [`AtomId`].
     Lit(Lit),
     /// True when all children are; `And([])` is true.
     And(Vec<NodeId>),
@@ -36,23 +42,36 @@ pub enum Node {
     Or(Vec<NodeId>),
     /// True when at least `n` children are.
     AtLeast {
+        /// How many children must hold; 0 makes the node true, more than there are children false.
         n: usize,
+        /// One per instance of the quantified category, in declaration order.
         children: Vec<NodeId>,
     },
     /// True when `n` disjoint (row, column) pairs have true cells. Cells are row-major.
     Pairs {
+        /// How many disjoint pairs must hold: the smaller of `rows` and `cols` for `forpairs`,
+        /// N for `fornpairs`.
         n: usize,
+        /// The number of instances of the first (outer) category.
         rows: usize,
+        /// The number of instances of the second category.
         cols: usize,
+        /// `rows × cols` nodes: cell `(r, c)`, at `r * cols + c`, is the body with the r-th row
+        /// instance and the c-th column instance bound.
         cells: Vec<NodeId>,
     },
     /// True when *no* `n` disjoint pairs have false cells: the cells hold the negated bodies of a
     /// `Pairs`, so this is its negation. Its options: each way to cover `n − 1` rows and columns,
     /// with every uncovered cell true.
     NoPairs {
+        /// The `n` of the negated `Pairs`: the node is true when fewer than `n` disjoint pairs
+        /// satisfy the body.
         n: usize,
+        /// The number of instances of the first (outer) category.
         rows: usize,
+        /// The number of instances of the second category.
         cols: usize,
+        /// `rows × cols` nodes, row-major as in `Pairs`, each the *negated* body.
         cells: Vec<NodeId>,
     },
 }
@@ -60,7 +79,11 @@ pub enum Node {
 /// A goal ground over one activity's instances. Children always precede their parents.
 #[derive(Clone, Debug)]
 pub struct GroundGoal {
+    /// Every node, indexed by [`NodeId`], each child before its parents, so one forward pass
+    /// can evaluate the whole tree bottom-up.
     pub nodes: Vec<Node>,
+    /// Every distinct atom the goal mentions, indexed by [`AtomId`], each once, in order of first
+    /// occurrence.
     pub atoms: Vec<Atom>,
     /// One root per top-level conjunct of the goal.
     pub conjuncts: Vec<NodeId>,
@@ -69,6 +92,10 @@ pub struct GroundGoal {
 }
 
 impl GroundGoal {
+    /// Grounds an activity's goal over its declared instances, one root per conjunct, pushing
+    /// negations to the atoms. Nested quantifiers multiply its size; the checker rejects goals that
+    /// would exceed [`crate::activity::MAX_GROUND_NODES`] nodes, but an activity built by hand is
+    /// not bounded.
     pub fn new(activity: &Activity) -> GroundGoal {
         let mut builder = Builder {
             activity,
@@ -91,14 +118,18 @@ impl GroundGoal {
         }
     }
 
+    /// The node with that id. Panics on an id from another goal that is out of range.
     pub fn node(&self, id: NodeId) -> &Node {
         &self.nodes[id.0 as usize]
     }
 
+    /// The atom, over instances, that an id stands for.
     pub fn atom(&self, id: AtomId) -> Atom {
         self.atoms[id.0 as usize]
     }
 
+    /// The literal over instances that a [`Lit`] stands for, e.g. for display with
+    /// [`Activity::show_literal`].
     pub fn literal(&self, lit: Lit) -> Literal {
         Literal {
             atom: self.atom(lit.atom),

@@ -28,6 +28,8 @@
 //! assert_eq!(optimizer.volume(), Some(2));
 //! ```
 
+#![warn(missing_docs)]
+
 pub mod activity;
 pub mod ast;
 pub mod diagnostics;

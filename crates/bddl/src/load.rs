@@ -61,7 +61,9 @@ pub fn read_domain(path: &Path) -> Result<DomainFile, LoadError> {
 /// The taxonomy and domain that problems are checked against.
 #[derive(Clone, Debug)]
 pub struct Knowledge {
+    /// The folded synset taxonomy (`hierarchy_owned.json`).
     pub taxonomy: Taxonomy,
+    /// The domain file (`domain_igibson.bddl`), already checked.
     pub domain: DomainFile,
 }
 
@@ -74,6 +76,8 @@ impl Knowledge {
         })
     }
 
+    /// A context with both the taxonomy and the domain, so that synsets, abilities and
+    /// `:domain` are all checked.
     pub fn context(&self) -> CheckContext<'_> {
         CheckContext {
             taxonomy: Some(&self.taxonomy),

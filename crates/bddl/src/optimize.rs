@@ -22,11 +22,16 @@ use std::fmt;
 /// An exact fraction `num / den` with `den > 0`, in lowest terms.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Ratio {
+    /// The numerator, sharing no factor with `den` when made by [`Ratio::new`] (so for Q it is
+    /// not necessarily a count of literals).
     pub num: u64,
+    /// The denominator, positive.
     pub den: u64,
 }
 
 impl Ratio {
+    /// `num / den` in lowest terms, so that the derived `==` agrees with the value order.
+    /// Panics if `den` is 0.
     pub fn new(num: u64, den: u64) -> Ratio {
         assert!(den > 0, "a ratio needs a positive denominator");
         let g = gcd(num, den);
@@ -36,6 +41,7 @@ impl Ratio {
         }
     }
 
+    /// The nearest `f64`, for display and JSON; compare ratios exactly with `Ord` instead.
     pub fn to_f64(self) -> f64 {
         self.num as f64 / self.den as f64
     }
@@ -111,6 +117,8 @@ struct Best {
 }
 
 impl<'g> Optimizer<'g> {
+    /// Prepares the optimisations for a goal: finds the atoms it uses with both polarities, the
+    /// only ones the branch and bound may have to split on. Cheap; no option is computed yet.
     pub fn new(goal: &'g GroundGoal) -> Optimizer<'g> {
         let mut polarity = vec![(false, false); goal.atoms.len()];
         for node in &goal.nodes {

@@ -9,27 +9,35 @@ use crate::diagnostics::{Diagnostic, Diagnostics, Span};
 /// Deeper nesting than this is rejected; real definitions nest fewer than 15 levels.
 pub const MAX_DEPTH: usize = 200;
 
+/// An item of the reader's tree.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum SExpr {
+    /// A word: a name, a keyword such as `:init`, a number or `-`.
     Atom(Atom),
+    /// A parenthesised list.
     List(List),
 }
 
 /// A lower-cased word, with the span of its original spelling.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Atom {
+    /// The word, lower-cased.
     pub text: String,
+    /// Where it is written, in its original spelling.
     pub span: Span,
 }
 
 /// A parenthesised list; `span` runs from `(` to `)` inclusive.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct List {
+    /// The items between the parentheses, in order; possibly none.
     pub items: Vec<SExpr>,
+    /// From `(` to `)` inclusive.
     pub span: Span,
 }
 
 impl SExpr {
+    /// Where the item is written; a list's span includes its parentheses.
     pub fn span(&self) -> Span {
         match self {
             SExpr::Atom(a) => a.span,
@@ -37,6 +45,7 @@ impl SExpr {
         }
     }
 
+    /// The word, if the item is one.
     pub fn as_atom(&self) -> Option<&Atom> {
         match self {
             SExpr::Atom(a) => Some(a),
@@ -44,6 +53,7 @@ impl SExpr {
         }
     }
 
+    /// The list, if the item is one.
     pub fn as_list(&self) -> Option<&List> {
         match self {
             SExpr::List(l) => Some(l),

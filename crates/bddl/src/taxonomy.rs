@@ -14,24 +14,46 @@ pub use behavior_core::{AGENT_SYNSET, Ability, AbilityParams, FLOOR_SYNSET, Para
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct SynsetId(pub u32);
 
+/// One synset of the taxonomy, e.g. `apple.n.01`, with its place in the DAG and its abilities.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Synset {
+    /// The WordNet name as the file spells it, e.g. `apple.n.01`.
     pub name: String,
+    /// The synsets it is filed under, in file order: several when the file lists it under
+    /// several, none for the root.
     pub parents: Vec<SynsetId>,
+    /// The synsets filed directly under it, in file order.
     pub children: Vec<SynsetId>,
+    /// Its abilities, which say which states apply (`cookable` for `cooked`), with their
+    /// parameters (`cookable: {"cook_temperature": 70}`). As listed for this synset: not inherited
+    /// from its parents.
     pub abilities: BTreeMap<Ability, AbilityParams>,
     /// Object categories of the original iGibson dataset filed under this synset (for reference).
     pub igibson_categories: Vec<String>,
 }
 
+/// Why a taxonomy file could not be folded into a [`Taxonomy`].
 #[derive(Debug, thiserror::Error)]
 pub enum TaxonomyError {
+    /// Not JSON, or not a tree of `{"name", "children", "abilities", "igibson_categories"}`
+    /// nodes (or nested deeper than serde_json's limit of 128).
     #[error("the taxonomy is not valid JSON of the expected shape: {0}")]
     Json(#[from] serde_json::Error),
+    /// A synset lists an ability that [`Ability`] does not name.
     #[error("synset {synset}: unknown ability `{ability}`")]
-    UnknownAbility { synset: String, ability: String },
+    UnknownAbility {
+        /// The synset's name.
+        synset: String,
+        /// The ability as written in the file.
+        ability: String,
+    },
+    /// A synset listed under several parents has different abilities in two places, so folding
+    /// the tree into one node per synset would lose one of them. Only the abilities are compared.
     #[error("synset {synset}: appears twice with different contents")]
-    Inconsistent { synset: String },
+    Inconsistent {
+        /// The synset's name.
+        synset: String,
+    },
 }
 
 /// The folded taxonomy: every synset once, with all its parents.
@@ -131,30 +153,40 @@ impl Taxonomy {
         }
     }
 
+    /// The root, the file's top node (`entity.n.01` in the official taxonomy).
     pub fn root(&self) -> SynsetId {
         self.root
     }
 
+    /// The number of distinct synsets, `agent.n.01` included.
     pub fn len(&self) -> usize {
         self.synsets.len()
     }
 
+    /// Whether there are no synsets; never true for a taxonomy from [`Taxonomy::from_json`],
+    /// which holds at least its root.
     pub fn is_empty(&self) -> bool {
         self.synsets.is_empty()
     }
 
+    /// The synset of that name (`apple.n.01`, spelled exactly as in the file), if the taxonomy
+    /// has it.
     pub fn get(&self, name: &str) -> Option<SynsetId> {
         self.by_name.get(name).copied()
     }
 
+    /// The synset with that id. Panics on an id out of range (one from another taxonomy).
     pub fn synset(&self, id: SynsetId) -> &Synset {
         &self.synsets[id.0 as usize]
     }
 
+    /// The name of the synset with that id.
     pub fn name(&self, id: SynsetId) -> &str {
         &self.synset(id).name
     }
 
+    /// Every synset's id, in the order first met in the file (depth-first, children in file
+    /// order), then `agent.n.01` if the file lacks it.
     pub fn ids(&self) -> impl Iterator<Item = SynsetId> {
         (0..self.synsets.len() as u32).map(SynsetId)
     }
@@ -164,6 +196,8 @@ impl Taxonomy {
         self.get(name).map(|id| &self.synset(id).abilities)
     }
 
+    /// Whether the synset itself lists the ability (abilities are not inherited); what the
+    /// checker's ability warnings ask.
     pub fn has_ability(&self, id: SynsetId, ability: Ability) -> bool {
         self.synset(id).abilities.contains_key(&ability)
     }
@@ -188,6 +222,7 @@ impl Taxonomy {
         descendant == ancestor || self.ancestors(descendant).contains(&ancestor)
     }
 
+    /// Whether no synset is filed under it.
     pub fn is_leaf(&self, id: SynsetId) -> bool {
         self.synset(id).children.is_empty()
     }

@@ -16,6 +16,7 @@ pub mod coverage;
 pub mod home;
 pub mod library;
 pub mod scene;
+mod tessellate;
 pub mod urdf;
 
 pub use archetype::{Archetype, Shape};

@@ -5,6 +5,11 @@
 //! variant into an [`ObjectSpec`] whose bottom rests at z = 0, centred on the origin, with the
 //! doors, drawers and lids its shape has. Abilities and the named points they need are added by
 //! the [`crate::library::Library`], from the taxonomy of the synset asked for.
+//!
+//! Each family of shapes is built by a short function in a private submodule named for what it
+//! holds — `solids`, `containers`, `furniture`, `appliances`, `plumbing`, `openings` — from the
+//! boxes and point clouds of `geometry` and the doors and drawers of `moving_parts`;
+//! [`Archetype::build`] picks the function and finishes the spec.
 
 mod appliances;
 mod containers;
@@ -24,9 +29,11 @@ use rapier3d::math::{Rotation, Vector};
 /// physical; furniture that opens has doors or drawers on joints.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Shape {
+    /// A sphere (variant 0) or an ellipsoid filling its box (variant 1): fruit, eggs, balls.
     Ball,
     /// A box (variant 0) or a worn one with chamfered edges (variant 1): books, soap, boxes.
     Block,
+    /// Upright and round (variant 0) or an octagonal prism (variant 1): bottles, jars, cans.
     Cylinder,
     /// Thin and lying flat: plates, trays, towels, papers.
     Slab,
@@ -37,6 +44,7 @@ pub enum Shape {
     /// An open container with a lid hinged at its back edge (variant 0) or at its right-hand side
     /// (variant 1).
     LiddedContainer,
+    /// A top on four legs (variant 0) or on two end panels (variant 1), so things go on and under it.
     Table,
     /// Open shelving: sides, back and boards.
     Shelf,
@@ -44,19 +52,33 @@ pub enum Shape {
     Cabinet,
     /// A solid block at counter height.
     Countertop,
+    /// A carcass with a shelf behind a side-hinged door: things go inside and cool.
     Fridge,
+    /// A carcass with a rack behind a door hinged at the bottom, and a control panel on top.
     Oven,
+    /// A small carcass behind a side-hinged door, standing on a countertop.
     Microwave,
+    /// A solid block with four burners (heating elements) on top.
     Stove,
+    /// A basin on a stand with a spout, where water comes out.
     Sink,
+    /// Built like an oven: a rack behind a drop-down door.
     Dishwasher,
+    /// A carcass behind a side-hinged door, like a dryer.
     Washer,
+    /// A carcass behind a side-hinged door, like a washer.
     Dryer,
+    /// A base with a mattress and a headboard at the back.
     Bed,
+    /// A seat with a back and two arms.
     Sofa,
+    /// A seat on four legs with a back (variant 0), with arms too (variant 1).
     Chair,
+    /// A pedestal, a bowl and a cistern with its flush button.
     Toilet,
+    /// A tub with thick walls and a tap at one end.
     Bathtub,
+    /// A tray with walls on three sides and a shower head on the back one.
     Shower,
     /// A frame with a door leaf on a hinge.
     Door,
@@ -64,6 +86,7 @@ pub enum Shape {
     /// floor-length one, from 5 cm up and 0.85 m taller (variant 1), that a lamp or a stool on
     /// the floor can stand next to.
     Window,
+    /// A solid slab: what a room's floor is made of when built as an object.
     Floor,
     /// A stand-in body for the robot until embodiments exist: an upright capsule.
     Agent,
@@ -122,23 +145,30 @@ impl Shape {
     }
 }
 
-/// An object family for one synset.
+/// An object family for one synset: enough to build an instance of any size in its range, with
+/// a plausible mass, friction and look.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Archetype {
+    /// The synset it is for, e.g. `apple.n.01`; the catalog's key.
     pub synset: &'static str,
+    /// The family of geometry it is built as.
     pub shape: Shape,
-    /// Bounding box (width x, depth y, height z; metres) of the smallest and largest instances.
+    /// Bounding box (width x, depth y, height z; metres) of the smallest instances…
     pub min: [f32; 3],
+    /// …and of the largest; sizes are drawn uniformly between them.
     pub max: [f32; 3],
-    /// Of the material, kg/m³.
+    /// Of the material, kg/m³; masses follow from the parts' volumes.
     pub density: f32,
+    /// What it is made of: its friction and, for a renderer, its surface.
     pub material: Material,
+    /// sRGB, 0–255.
     pub color: [u8; 3],
 }
 
 /// Where the parts of a built object are, for adding named points afterwards.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Layout {
+    /// The size the object was built at (its archetype's fit of the size asked for).
     pub size: Vector,
     /// A point on the front face (−y) at a sensible button height.
     pub front_button: Vector,

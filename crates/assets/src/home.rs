@@ -51,8 +51,11 @@ pub const NAMED_HOMES: [(&str, u64); 15] = [
     ("willow", 115),
 ];
 
+/// Of every wall (m); walls stand centred on room edges, half in each room.
 pub const WALL_THICKNESS: f32 = 0.1;
+/// Of the corridor the rooms open onto (m): room for the agent to pass open doors.
 pub const CORRIDOR_WIDTH: f32 = 1.6;
+/// Width of a doorway (m); doors are drawn a little narrower so they swing free.
 pub const DOORWAY: f32 = 1.0;
 /// Kept free in front of a doorway, on both sides (m).
 pub const DOOR_CLEARANCE: f32 = 1.1;

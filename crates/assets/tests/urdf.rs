@@ -198,6 +198,11 @@ fn bad_urdf_files_are_clear_errors() {
         assert!(err.contains(expected), "{err}");
     };
     check("xml.urdf", "<robot><link", "not valid XML");
+    let missing = import_urdf(&d.join("absent.urdf"), "x", "cabinet.n.01").unwrap_err();
+    assert!(
+        std::error::Error::source(&missing).is_none(),
+        "the cause is in the message only: {missing}"
+    );
     check(
         "two_roots.urdf",
         r#"<robot name="r"><link name="a"><collision><geometry><sphere radius="1"/></geometry></collision></link><link name="b"/></robot>"#,

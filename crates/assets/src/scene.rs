@@ -176,96 +176,121 @@ impl Scene {
     /// Builds the world: floors, walls, then every object at its pose with its joints set.
     pub fn build(&self, library: &Library) -> Result<BuiltScene, SceneError> {
         let mut world = World::default();
-        let mut floors = Vec::with_capacity(self.rooms.len());
-        for room in &self.rooms {
-            let (w, d) = (room.max[0] - room.min[0], room.max[1] - room.min[1]);
-            if !(w.is_finite() && d.is_finite() && w > 0.0 && d > 0.0) {
-                return Err(SceneError::BadGeometry { what: room.label() });
-            }
-            let slab = Primitive::Box {
-                half_extents: Vector::new(w / 2.0, d / 2.0, FLOOR_THICKNESS / 2.0),
-            };
-            let center = Vector::new(
-                (room.min[0] + room.max[0]) / 2.0,
-                (room.min[1] + room.max[1]) / 2.0,
-                -FLOOR_THICKNESS / 2.0,
-            );
-            let mut spec = ObjectSpec::new(
-                &format!("floor_{}", room.label()),
-                "floor.n.01",
-                vec![Part::new(slab)],
-            )
-            .at(center)
-            .fixed();
-            // Floors get dusty and stained like any surface.
-            if let Some(abilities) = library.taxonomy().abilities(&spec.category) {
-                spec.abilities = abilities.clone();
-            }
-            let floor = world.add(spec)?;
-            world.add_room(Room {
-                kind: room.kind,
-                instance: room.instance,
-                min: room.min,
-                max: room.max,
-                floor: Some(floor),
-            });
-            floors.push(floor);
-        }
+        let floors = self
+            .rooms
+            .iter()
+            .map(|room| add_floor(&mut world, room, library))
+            .collect::<Result<Vec<_>, _>>()?;
         for (i, wall) in self.walls.iter().enumerate() {
-            let (lo, hi) = (Vector::from_array(wall.min), Vector::from_array(wall.max));
-            let half = (hi - lo) * 0.5;
-            if !(half.is_finite() && half.min_element() > 0.0) {
-                return Err(SceneError::BadGeometry {
-                    what: format!("wall {i}"),
-                });
-            }
-            let spec = ObjectSpec::new(
-                &format!("wall_{i}"),
-                "wall.n.01",
-                vec![Part::new(Primitive::Box { half_extents: half })],
-            )
-            .at(lo + half)
-            .fixed();
-            world.add(spec)?;
+            add_wall(&mut world, i, wall)?;
         }
-        let mut objects = Vec::with_capacity(self.objects.len());
-        for plan in &self.objects {
-            if plan.room >= self.rooms.len() {
-                return Err(SceneError::BadRoom {
-                    object: plan.name.clone(),
-                    room: plan.room,
-                    rooms: self.rooms.len(),
-                });
-            }
-            let size = Vector::from_array(plan.size);
-            if !(size.is_finite() && size.min_element() > 0.0) {
-                return Err(SceneError::BadGeometry {
-                    what: plan.name.clone(),
-                });
-            }
-            let mut spec = library
-                .instance(&plan.synset, &plan.name, size, plan.variant)
-                .map_err(|cause| SceneError::Asset {
-                    object: plan.name.clone(),
-                    cause,
-                })?;
-            let turn = Rotation::from_rotation_z(
-                f32::from(plan.yaw_quarter_turns % 4) * std::f32::consts::FRAC_PI_2,
-            );
-            spec.pose = Pose::from_parts(Vector::from_array(plan.position), turn);
-            let id = world.add(spec)?;
-            let links = world.object(id).links.len();
-            for (link, &q) in plan.joints.iter().enumerate().take(links) {
-                world
-                    .set_joint_position(id, link, q)
-                    .map_err(SceneError::World)?;
-            }
-            objects.push(id);
-        }
+        let objects = self
+            .objects
+            .iter()
+            .map(|plan| self.add_object(&mut world, plan, library))
+            .collect::<Result<Vec<_>, _>>()?;
         Ok(BuiltScene {
             world,
             floors,
             objects,
         })
     }
+
+    /// Adds an object at its pose with its joints set (those beyond its links are ignored).
+    fn add_object(
+        &self,
+        world: &mut World,
+        plan: &ObjectPlan,
+        library: &Library,
+    ) -> Result<ObjectId, SceneError> {
+        if plan.room >= self.rooms.len() {
+            return Err(SceneError::BadRoom {
+                object: plan.name.clone(),
+                room: plan.room,
+                rooms: self.rooms.len(),
+            });
+        }
+        let size = Vector::from_array(plan.size);
+        if !(size.is_finite() && size.min_element() > 0.0) {
+            return Err(SceneError::BadGeometry {
+                what: plan.name.clone(),
+            });
+        }
+        let mut spec = library
+            .instance(&plan.synset, &plan.name, size, plan.variant)
+            .map_err(|cause| SceneError::Asset {
+                object: plan.name.clone(),
+                cause,
+            })?;
+        let turn = Rotation::from_rotation_z(
+            f32::from(plan.yaw_quarter_turns % 4) * std::f32::consts::FRAC_PI_2,
+        );
+        spec.pose = Pose::from_parts(Vector::from_array(plan.position), turn);
+        let id = world.add(spec)?;
+        let links = world.object(id).links.len();
+        for (link, &q) in plan.joints.iter().enumerate().take(links) {
+            world.set_joint_position(id, link, q)?;
+        }
+        Ok(id)
+    }
+}
+
+/// Adds a room's floor, a slab whose top is at z = 0, and registers the room with it.
+fn add_floor(
+    world: &mut World,
+    room: &RoomPlan,
+    library: &Library,
+) -> Result<ObjectId, SceneError> {
+    let (w, d) = (room.max[0] - room.min[0], room.max[1] - room.min[1]);
+    if !(w.is_finite() && d.is_finite() && w > 0.0 && d > 0.0) {
+        return Err(SceneError::BadGeometry { what: room.label() });
+    }
+    let slab = Primitive::Box {
+        half_extents: Vector::new(w / 2.0, d / 2.0, FLOOR_THICKNESS / 2.0),
+    };
+    let center = Vector::new(
+        (room.min[0] + room.max[0]) / 2.0,
+        (room.min[1] + room.max[1]) / 2.0,
+        -FLOOR_THICKNESS / 2.0,
+    );
+    let mut spec = ObjectSpec::new(
+        &format!("floor_{}", room.label()),
+        "floor.n.01",
+        vec![Part::new(slab)],
+    )
+    .at(center)
+    .fixed();
+    // Floors get dusty and stained like any surface.
+    if let Some(abilities) = library.taxonomy().abilities(&spec.category) {
+        spec.abilities = abilities.clone();
+    }
+    let floor = world.add(spec)?;
+    world.add_room(Room {
+        kind: room.kind,
+        instance: room.instance,
+        min: room.min,
+        max: room.max,
+        floor: Some(floor),
+    });
+    Ok(floor)
+}
+
+/// Adds wall piece `i`, fixed.
+fn add_wall(world: &mut World, i: usize, wall: &WallPlan) -> Result<(), SceneError> {
+    let (lo, hi) = (Vector::from_array(wall.min), Vector::from_array(wall.max));
+    let half = (hi - lo) * 0.5;
+    if !(half.is_finite() && half.min_element() > 0.0) {
+        return Err(SceneError::BadGeometry {
+            what: format!("wall {i}"),
+        });
+    }
+    let spec = ObjectSpec::new(
+        &format!("wall_{i}"),
+        "wall.n.01",
+        vec![Part::new(Primitive::Box { half_extents: half })],
+    )
+    .at(lo + half)
+    .fixed();
+    world.add(spec)?;
+    Ok(())
 }

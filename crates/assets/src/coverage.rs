@@ -13,6 +13,8 @@ use std::collections::BTreeMap;
 /// (room type, synset) → how many instances the activity places in rooms of that type.
 pub type Requirements = BTreeMap<(RoomType, String), usize>;
 
+/// What an activity asks of a home: its positive `inroom` literals counted per room type and
+/// synset (other literals place objects the sampler creates, so a home need not have them).
 pub fn requirements(activity: &Activity) -> Requirements {
     let mut needs = Requirements::new();
     for literal in &activity.init {

@@ -5,10 +5,12 @@
 //! taxonomy), samples an instance's size and variant from the episode's random number
 //! generator, and equips it with the abilities of its synset and the named points they need.
 //! [`home`] generates floor plans with furniture from a seed, and [`scene`] saves, loads and
-//! builds them; [`urdf`] imports a user's own models.
+//! builds them; [`urdf`] imports a user's own models, their collision geometry and their look.
 //!
 //! This crate builds [`behavior_sim::ObjectSpec`]s; it knows nothing of BDDL text or of how the
 //! world simulates them.
+
+#![warn(missing_docs)]
 
 pub mod archetype;
 pub mod catalog;
@@ -16,6 +18,7 @@ pub mod coverage;
 pub mod home;
 pub mod library;
 pub mod scene;
+mod tessellate;
 pub mod urdf;
 
 pub use archetype::{Archetype, Shape};

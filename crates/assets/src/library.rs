@@ -10,10 +10,14 @@ use rand_chacha::rand_core::Rng;
 use rapier3d::math::Vector;
 use std::collections::HashMap;
 
+/// Why no object could be made for a synset.
 #[derive(Debug, thiserror::Error, PartialEq, Eq)]
 pub enum AssetError {
+    /// The synset is not in the taxonomy (a typo, or a synset of another BDDL version).
     #[error("unknown synset `{0}`: it is not in the taxonomy")]
     UnknownSynset(String),
+    /// The synset is known, but neither it nor any synset below it has an archetype in the
+    /// catalog: the catalog needs an entry.
     #[error("no object archetype for `{0}` or any synset below it")]
     NoArchetype(String),
 }
@@ -25,6 +29,8 @@ pub struct Library<'t> {
 }
 
 impl<'t> Library<'t> {
+    /// The catalog over `taxonomy`, which resolves synsets without archetypes of their own and
+    /// gives instances their abilities.
     pub fn new(taxonomy: &'t Taxonomy) -> Library<'t> {
         Library {
             taxonomy,
@@ -32,6 +38,8 @@ impl<'t> Library<'t> {
         }
     }
 
+    /// The taxonomy it resolves and equips with, so that callers building other objects (floors,
+    /// say) equip them alike.
     pub fn taxonomy(&self) -> &'t Taxonomy {
         self.taxonomy
     }

@@ -22,76 +22,130 @@ use behavior_sim::{ObjectId, ObjectSpec, Part, Primitive, Room, World, WorldErro
 use rapier3d::math::{Pose, Rotation, Vector};
 use serde::{Deserialize, Serialize};
 
+/// Of every wall (m): above a standing agent's reach and a lidar's plane.
 pub const WALL_HEIGHT: f32 = 2.5;
+/// Of a room's floor slab (m), whose top is at z = 0: thick enough that nothing tunnels through.
 pub const FLOOR_THICKNESS: f32 = 0.1;
 
+/// A home as plain data: what a scene file holds, and what [`crate::generate`] makes. Kept apart
+/// from the world it builds so that a home can be saved, edited, diffed and rebuilt exactly.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Scene {
+    /// A named home's name, or any label.
     pub name: String,
+    /// The seed it was generated from, kept so that it can be generated again.
     pub seed: u64,
+    /// Its rooms, each of which gets a floor.
     pub rooms: Vec<RoomPlan>,
+    /// Its wall pieces, doorways already cut out.
     pub walls: Vec<WallPlan>,
+    /// Its furniture, doors and windows.
     pub objects: Vec<ObjectPlan>,
 }
 
+/// A room: its type and its axis-aligned extent on the floor.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RoomPlan {
+    /// What kind of room, as `inroom` literals name it.
     pub kind: RoomType,
+    /// Counts rooms of the same type from 0, so `bedroom_1` is the second bedroom.
     pub instance: u32,
+    /// Its south-west corner (x, y), m.
     pub min: [f32; 2],
+    /// Its north-east corner (x, y), m.
     pub max: [f32; 2],
 }
 
 impl RoomPlan {
+    /// Its name in the world and in messages: `kitchen_0`, `bedroom_1`.
     pub fn label(&self) -> String {
         format!("{}_{}", self.kind, self.instance)
     }
 }
 
+/// A wall piece: an axis-aligned box standing on the floor.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct WallPlan {
+    /// Its lowest corner, m.
     pub min: [f32; 3],
+    /// Its highest corner, m.
     pub max: [f32; 3],
 }
 
+/// An object of the home: which archetype, built how, standing where. Size and variant are
+/// stored rather than redrawn, so that a scene file rebuilds the same objects whatever the
+/// generator does.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ObjectPlan {
+    /// Its name in the world, e.g. `cabinet_0`.
     pub name: String,
+    /// Its synset, which the library resolves to an archetype.
     pub synset: String,
     /// Index into `rooms` of the room it stands in.
     pub room: usize,
+    /// Where its bottom centre stands, m.
     pub position: [f32; 3],
+    /// Turns about z: 0, its front faces −y; 1, +x; 2, +y; 3, −x.
     pub yaw_quarter_turns: u8,
+    /// Its bounding box as built (width, depth, height), m.
     pub size: [f32; 3],
+    /// Which of its shape's variants.
     pub variant: u32,
+    /// Positions of its doors and drawers, in link order; missing ones stay closed.
     #[serde(default)]
     pub joints: Vec<f32>,
 }
 
+/// Why a scene could not be loaded or built. Each message is a complete sentence with its cause;
+/// no variant also returns the cause as [`std::error::Error::source`], so a report that walks
+/// sources (`anyhow`'s `{:#}`) does not print it twice.
 #[derive(Debug, thiserror::Error)]
 pub enum SceneError {
+    /// The text is not a scene file: bad JSON, a missing or unknown field.
     #[error("the scene file is not valid: {0}")]
-    Json(#[from] serde_json::Error),
-    #[error("object `{object}`: {source}")]
-    Asset { object: String, source: AssetError },
-    #[error("{0}")]
+    Json(serde_json::Error),
+    /// An object's synset has no archetype.
+    #[error("object `{object}`: {cause}")]
+    Asset {
+        /// The object's name.
+        object: String,
+        /// The library's reason.
+        cause: AssetError,
+    },
+    /// The world refused an object or a joint position (its message names the object).
+    #[error(transparent)]
     World(#[from] WorldError),
+    /// An object refers to a room the scene does not have.
     #[error("object `{object}` names room {room}, but the scene has {rooms} rooms")]
     BadRoom {
+        /// The object's name.
         object: String,
+        /// The room index it gives.
         room: usize,
+        /// How many rooms the scene has.
         rooms: usize,
     },
+    /// A room, wall or object has a size that cannot be built.
     #[error("{what} has a non-finite or negative size")]
-    BadGeometry { what: String },
+    BadGeometry {
+        /// The room's label, `wall <i>`, or the object's name.
+        what: String,
+    },
+}
+
+impl From<serde_json::Error> for SceneError {
+    fn from(error: serde_json::Error) -> SceneError {
+        SceneError::Json(error)
+    }
 }
 
 /// A scene built into a world: which object is which.
 pub struct BuiltScene {
+    /// The world with floors, walls and objects, joints set, not yet stepped.
     pub world: World,
     /// The floor object of each room, in `rooms` order.
     pub floors: Vec<ObjectId>,
@@ -100,11 +154,14 @@ pub struct BuiltScene {
 }
 
 impl Scene {
+    /// The scene file's text: pretty-printed JSON, which [`Scene::from_json`] reads back
+    /// exactly (floats print in their shortest round-tripping form).
     pub fn to_json(&self) -> String {
         // Plain data of strings and finite numbers always serializes.
         serde_json::to_string_pretty(self).unwrap_or_default()
     }
 
+    /// Reads a scene file; unknown fields are errors, so a typo does not pass silently.
     pub fn from_json(text: &str) -> Result<Scene, SceneError> {
         Ok(serde_json::from_str(text)?)
     }
@@ -119,96 +176,121 @@ impl Scene {
     /// Builds the world: floors, walls, then every object at its pose with its joints set.
     pub fn build(&self, library: &Library) -> Result<BuiltScene, SceneError> {
         let mut world = World::default();
-        let mut floors = Vec::with_capacity(self.rooms.len());
-        for room in &self.rooms {
-            let (w, d) = (room.max[0] - room.min[0], room.max[1] - room.min[1]);
-            if !(w.is_finite() && d.is_finite() && w > 0.0 && d > 0.0) {
-                return Err(SceneError::BadGeometry { what: room.label() });
-            }
-            let slab = Primitive::Box {
-                half_extents: Vector::new(w / 2.0, d / 2.0, FLOOR_THICKNESS / 2.0),
-            };
-            let center = Vector::new(
-                (room.min[0] + room.max[0]) / 2.0,
-                (room.min[1] + room.max[1]) / 2.0,
-                -FLOOR_THICKNESS / 2.0,
-            );
-            let mut spec = ObjectSpec::new(
-                &format!("floor_{}", room.label()),
-                "floor.n.01",
-                vec![Part::new(slab)],
-            )
-            .at(center)
-            .fixed();
-            // Floors get dusty and stained like any surface.
-            if let Some(abilities) = library.taxonomy().abilities(&spec.category) {
-                spec.abilities = abilities.clone();
-            }
-            let floor = world.add(spec)?;
-            world.add_room(Room {
-                kind: room.kind,
-                instance: room.instance,
-                min: room.min,
-                max: room.max,
-                floor: Some(floor),
-            });
-            floors.push(floor);
-        }
+        let floors = self
+            .rooms
+            .iter()
+            .map(|room| add_floor(&mut world, room, library))
+            .collect::<Result<Vec<_>, _>>()?;
         for (i, wall) in self.walls.iter().enumerate() {
-            let (lo, hi) = (Vector::from_array(wall.min), Vector::from_array(wall.max));
-            let half = (hi - lo) * 0.5;
-            if !(half.is_finite() && half.min_element() > 0.0) {
-                return Err(SceneError::BadGeometry {
-                    what: format!("wall {i}"),
-                });
-            }
-            let spec = ObjectSpec::new(
-                &format!("wall_{i}"),
-                "wall.n.01",
-                vec![Part::new(Primitive::Box { half_extents: half })],
-            )
-            .at(lo + half)
-            .fixed();
-            world.add(spec)?;
+            add_wall(&mut world, i, wall)?;
         }
-        let mut objects = Vec::with_capacity(self.objects.len());
-        for plan in &self.objects {
-            if plan.room >= self.rooms.len() {
-                return Err(SceneError::BadRoom {
-                    object: plan.name.clone(),
-                    room: plan.room,
-                    rooms: self.rooms.len(),
-                });
-            }
-            let size = Vector::from_array(plan.size);
-            if !(size.is_finite() && size.min_element() > 0.0) {
-                return Err(SceneError::BadGeometry {
-                    what: plan.name.clone(),
-                });
-            }
-            let mut spec = library
-                .instance(&plan.synset, &plan.name, size, plan.variant)
-                .map_err(|source| SceneError::Asset {
-                    object: plan.name.clone(),
-                    source,
-                })?;
-            let turn = Rotation::from_rotation_z(
-                f32::from(plan.yaw_quarter_turns % 4) * std::f32::consts::FRAC_PI_2,
-            );
-            spec.pose = Pose::from_parts(Vector::from_array(plan.position), turn);
-            let id = world.add(spec)?;
-            let links = world.object(id).links.len();
-            for (link, &q) in plan.joints.iter().enumerate().take(links) {
-                world
-                    .set_joint_position(id, link, q)
-                    .map_err(SceneError::World)?;
-            }
-            objects.push(id);
-        }
+        let objects = self
+            .objects
+            .iter()
+            .map(|plan| self.add_object(&mut world, plan, library))
+            .collect::<Result<Vec<_>, _>>()?;
         Ok(BuiltScene {
             world,
             floors,
             objects,
         })
     }
+
+    /// Adds an object at its pose with its joints set (those beyond its links are ignored).
+    fn add_object(
+        &self,
+        world: &mut World,
+        plan: &ObjectPlan,
+        library: &Library,
+    ) -> Result<ObjectId, SceneError> {
+        if plan.room >= self.rooms.len() {
+            return Err(SceneError::BadRoom {
+                object: plan.name.clone(),
+                room: plan.room,
+                rooms: self.rooms.len(),
+            });
+        }
+        let size = Vector::from_array(plan.size);
+        if !(size.is_finite() && size.min_element() > 0.0) {
+            return Err(SceneError::BadGeometry {
+                what: plan.name.clone(),
+            });
+        }
+        let mut spec = library
+            .instance(&plan.synset, &plan.name, size, plan.variant)
+            .map_err(|cause| SceneError::Asset {
+                object: plan.name.clone(),
+                cause,
+            })?;
+        let turn = Rotation::from_rotation_z(
+            f32::from(plan.yaw_quarter_turns % 4) * std::f32::consts::FRAC_PI_2,
+        );
+        spec.pose = Pose::from_parts(Vector::from_array(plan.position), turn);
+        let id = world.add(spec)?;
+        let links = world.object(id).links.len();
+        for (link, &q) in plan.joints.iter().enumerate().take(links) {
+            world.set_joint_position(id, link, q)?;
+        }
+        Ok(id)
+    }
+}
+
+/// Adds a room's floor, a slab whose top is at z = 0, and registers the room with it.
+fn add_floor(
+    world: &mut World,
+    room: &RoomPlan,
+    library: &Library,
+) -> Result<ObjectId, SceneError> {
+    let (w, d) = (room.max[0] - room.min[0], room.max[1] - room.min[1]);
+    if !(w.is_finite() && d.is_finite() && w > 0.0 && d > 0.0) {
+        return Err(SceneError::BadGeometry { what: room.label() });
+    }
+    let slab = Primitive::Box {
+        half_extents: Vector::new(w / 2.0, d / 2.0, FLOOR_THICKNESS / 2.0),
+    };
+    let center = Vector::new(
+        (room.min[0] + room.max[0]) / 2.0,
+        (room.min[1] + room.max[1]) / 2.0,
+        -FLOOR_THICKNESS / 2.0,
+    );
+    let mut spec = ObjectSpec::new(
+        &format!("floor_{}", room.label()),
+        "floor.n.01",
+        vec![Part::new(slab)],
+    )
+    .at(center)
+    .fixed();
+    // Floors get dusty and stained like any surface.
+    if let Some(abilities) = library.taxonomy().abilities(&spec.category) {
+        spec.abilities = abilities.clone();
+    }
+    let floor = world.add(spec)?;
+    world.add_room(Room {
+        kind: room.kind,
+        instance: room.instance,
+        min: room.min,
+        max: room.max,
+        floor: Some(floor),
+    });
+    Ok(floor)
+}
+
+/// Adds wall piece `i`, fixed.
+fn add_wall(world: &mut World, i: usize, wall: &WallPlan) -> Result<(), SceneError> {
+    let (lo, hi) = (Vector::from_array(wall.min), Vector::from_array(wall.max));
+    let half = (hi - lo) * 0.5;
+    if !(half.is_finite() && half.min_element() > 0.0) {
+        return Err(SceneError::BadGeometry {
+            what: format!("wall {i}"),
+        });
+    }
+    let spec = ObjectSpec::new(
+        &format!("wall_{i}"),
+        "wall.n.01",
+        vec![Part::new(Primitive::Box { half_extents: half })],
+    )
+    .at(lo + half)
+    .fixed();
+    world.add(spec)?;
+    Ok(())
 }

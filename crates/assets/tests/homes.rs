@@ -177,3 +177,25 @@ fn a_dining_room_opens_onto_the_living_room_with_a_table_across() {
     }
     assert!(open >= 20, "only {open} homes have an open dining room");
 }
+
+#[test]
+fn scene_errors_say_their_cause_once() {
+    use std::error::Error;
+    let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
+    let taxonomy = behavior_bddl::load::read_taxonomy(&data.taxonomy_path()).unwrap();
+    let library = Library::new(&taxonomy);
+    let json = Scene::from_json("{").unwrap_err();
+    assert!(
+        json.to_string()
+            .starts_with("the scene file is not valid: ")
+    );
+    assert!(json.source().is_none(), "the cause is in the message only");
+    let mut scene = generate("alder", 101, &library).unwrap();
+    scene.objects[0].synset = "nonsense.n.01".into();
+    let Err(asset) = scene.build(&library) else {
+        panic!("an unknown synset builds");
+    };
+    let text = asset.to_string();
+    assert!(text.contains("unknown synset `nonsense.n.01`"), "{text}");
+    assert!(asset.source().is_none(), "{text}");
+}

@@ -1,0 +1,64 @@
+//! Links on joints that open an object: side-hinged doors, drop-down doors and drawers. Each is
+//! given in the object's frame, closed (at joint position 0), hanging from the object's body.
+
+use super::geometry::{span, tub, v};
+use behavior_sim::{JointKind, JointSpec, LinkSpec};
+use rapier3d::math::Vector;
+
+/// A door covering the front of `min..max`, hinged on its left edge (opens outward, to −y).
+pub(super) fn side_door(name: &str, min: Vector, max: Vector, t: f32, density: f32) -> LinkSpec {
+    LinkSpec {
+        name: name.into(),
+        parts: vec![span(v(min.x, min.y - t, min.z), v(max.x, min.y, max.z))],
+        parent: None,
+        joint: JointSpec::opening(
+            JointKind::Revolute,
+            v(min.x, min.y - t, 0.0),
+            v(0.0, 0.0, -1.0),
+            1.9,
+            2.0,
+        ),
+        density,
+    }
+}
+
+/// A door covering the front of `min..max`, hinged at its bottom edge (ovens, dishwashers).
+pub(super) fn drop_door(min: Vector, max: Vector, t: f32, density: f32) -> LinkSpec {
+    LinkSpec {
+        name: "door".into(),
+        parts: vec![span(v(min.x, min.y - t, min.z), v(max.x, min.y, max.z))],
+        parent: None,
+        joint: JointSpec::opening(
+            JointKind::Revolute,
+            v(0.0, min.y - t, min.z),
+            v(1.0, 0.0, 0.0),
+            1.5,
+            2.0,
+        ),
+        density,
+    }
+}
+
+/// A drawer filling `min..max` of a carcass, sliding out to −y.
+pub(super) fn drawer(name: &str, min: Vector, max: Vector, t: f32, density: f32) -> LinkSpec {
+    let mut parts = tub(
+        v(min.x + t, min.y, min.z + t),
+        v(max.x - t, max.y - t, max.z - t),
+        t,
+    );
+    // Its front panel closes the carcass.
+    parts.push(span(v(min.x, min.y - t, min.z), v(max.x, min.y, max.z)));
+    LinkSpec {
+        name: name.into(),
+        parts,
+        parent: None,
+        joint: JointSpec::opening(
+            JointKind::Prismatic,
+            Vector::ZERO,
+            v(0.0, -1.0, 0.0),
+            0.8 * (max.y - min.y),
+            2.0,
+        ),
+        density,
+    }
+}

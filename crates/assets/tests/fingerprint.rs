@@ -1,0 +1,140 @@
+//! Fingerprints of what this crate generates, so that a refactoring can show it changed nothing:
+//! a SHA-256 over the scene JSON of the named homes (and of homes of free seeds, which draw their
+//! extra rooms at random), and one over every catalog archetype built in every variant at a few
+//! sizes, with its layout, its halves and the named points the library adds.
+//!
+//! A change that is meant to alter homes or objects changes these; re-record them then (the
+//! failure message prints the new value) and say so in the commit. The object fingerprint formats
+//! the geometry field by field rather than `ObjectSpec`'s `Debug`, so a new field in
+//! `behavior-sim` does not disturb it.
+
+use behavior_assets::archetype::Layout;
+use behavior_assets::catalog::CATALOG;
+use behavior_assets::{Library, NAMED_HOMES, generate};
+use behavior_data::DataDir;
+use behavior_sim::{LinkSpec, ObjectSpec, Part};
+use rapier3d::math::Vector;
+use sha2::{Digest, Sha256};
+use std::fmt::Write;
+
+fn taxonomy() -> behavior_bddl::Taxonomy {
+    let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
+    behavior_bddl::load::read_taxonomy(&data.taxonomy_path()).unwrap()
+}
+
+fn hex(digest: &[u8]) -> String {
+    digest.iter().map(|b| format!("{b:02x}")).collect()
+}
+
+/// The SHA-256 of the named homes' JSON, in order, then of homes `free_1` … `free_20`.
+const HOMES: &str = "09416b4eb3a82e82ab5580a751580cbc790bc34bd795477a51f43bd0be77c6ed";
+
+/// The SHA-256 over every archetype × variant × size (see `objects_are_unchanged`).
+const OBJECTS: &str = "09562d43f4547c71c0c93bd1ad4308f0f606da37582124294e9221ec40235e96";
+
+#[test]
+fn homes_are_unchanged() {
+    let taxonomy = taxonomy();
+    let library = Library::new(&taxonomy);
+    let mut hash = Sha256::new();
+    let free = (1..=20).map(|seed| ("free", seed));
+    for (name, seed) in NAMED_HOMES.into_iter().chain(free) {
+        let scene = generate(name, seed, &library).unwrap();
+        hash.update(scene.to_json().as_bytes());
+        hash.update(b"\n");
+    }
+    let digest = hex(&hash.finalize());
+    assert_eq!(
+        digest, HOMES,
+        "the homes changed: their fingerprint is now {digest}"
+    );
+}
+
+fn write_parts(out: &mut String, parts: &[Part]) {
+    for p in parts {
+        writeln!(
+            out,
+            "  part {:?} at {:?} look {:?}",
+            p.primitive, p.offset, p.visual
+        )
+        .unwrap();
+    }
+}
+
+fn write_link(out: &mut String, l: &LinkSpec) {
+    let j = &l.joint;
+    writeln!(
+        out,
+        " link {} parent {:?} density {:?} joint {:?} {:?} {:?} {:?} {:?} {:?}",
+        l.name, l.parent, l.density, j.kind, j.model, j.anchor, j.axis, j.limits, j.damping
+    )
+    .unwrap();
+    write_parts(out, &l.parts);
+}
+
+fn write_spec(out: &mut String, spec: &ObjectSpec) {
+    writeln!(
+        out,
+        "{} {} {:?} {:?} {:?} {:?} {:?} {:?} {:?}",
+        spec.name,
+        spec.category,
+        spec.pose,
+        spec.body,
+        spec.density,
+        spec.friction,
+        spec.angular_damping,
+        spec.visual,
+        spec.points
+    )
+    .unwrap();
+    write_parts(out, &spec.parts);
+    for l in &spec.links {
+        write_link(out, l);
+    }
+    for (k, half) in spec.halves.iter().flatten().enumerate() {
+        writeln!(out, " half {k}").unwrap();
+        write_parts(out, half);
+    }
+    writeln!(
+        out,
+        " abilities {:?} meshes {}",
+        spec.abilities.keys().collect::<Vec<_>>(),
+        spec.meshes.len()
+    )
+    .unwrap();
+}
+
+#[test]
+fn objects_are_unchanged() {
+    let taxonomy = taxonomy();
+    let library = Library::new(&taxonomy);
+    let mut hash = Sha256::new();
+    for a in CATALOG {
+        let (lo, hi) = (Vector::from_array(a.min), Vector::from_array(a.max));
+        // The smallest, the largest, one between, one too large and one too small to build as is.
+        let sizes = [lo, hi, lo * 0.3 + hi * 0.7, hi * 1.5, Vector::splat(0.001)];
+        // One variant past the last, which wraps around.
+        for variant in 0..=a.shape.variants() {
+            for size in sizes {
+                let mut out = String::new();
+                let (spec, layout): (ObjectSpec, Layout) = a.build("x", size, variant);
+                write_spec(&mut out, &spec);
+                writeln!(out, " layout {layout:?}").unwrap();
+                for (k, half) in a.halves(size, variant).iter().enumerate() {
+                    writeln!(out, " own half {k}").unwrap();
+                    write_parts(&mut out, half);
+                }
+                write_spec(
+                    &mut out,
+                    &library.instance_of(a, a.synset, "y", size, variant),
+                );
+                hash.update(out.as_bytes());
+            }
+        }
+    }
+    let digest = hex(&hash.finalize());
+    assert_eq!(
+        digest, OBJECTS,
+        "the objects changed: their fingerprint is now {digest}"
+    );
+}

@@ -32,7 +32,7 @@ pub enum LoadError {
         source: TaxonomyError,
     },
     /// A definition has errors (located diagnostics).
-    #[error("{0}")]
+    #[error(transparent)]
     Source(#[from] SourceErrors),
 }
 

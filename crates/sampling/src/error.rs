@@ -280,7 +280,7 @@ impl SampleError {
 pub enum LoadError {
     /// The text is not JSON of a saved instance.
     #[error("the instance file is not valid: {0}")]
-    Json(#[from] serde_json::Error),
+    Json(serde_json::Error),
     /// The file is an instance of another activity.
     #[error("the file is an instance of {saved}, not of {activity}")]
     WrongActivity {
@@ -351,4 +351,12 @@ pub enum LoadError {
     /// The home could not be built.
     #[error(transparent)]
     Scene(#[from] SceneError),
+}
+
+// By hand rather than `#[from]`, which would also make the JSON error the source and print it
+// twice under `{:#}`.
+impl From<serde_json::Error> for LoadError {
+    fn from(error: serde_json::Error) -> LoadError {
+        LoadError::Json(error)
+    }
 }

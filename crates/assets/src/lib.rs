@@ -1,27 +1,35 @@
 //! Objects and homes for BEHAVIOR, generated procedurally: no asset download.
 //!
-//! The [`catalog`] holds one [`archetype::Archetype`] per synset the official activities use;
-//! the [`library::Library`] resolves any synset to an archetype (its own or a descendant's in the
-//! taxonomy), samples an instance's size and variant from the episode's random number
-//! generator, and equips it with the abilities of its synset and the named points they need.
-//! [`home`] generates floor plans with furniture from a seed, and [`scene`] saves, loads and
-//! builds them; [`urdf`] imports a user's own models, their collision geometry and their look.
+//! The [`CATALOG`] holds one [`Archetype`] per synset the official activities use (`catalog.rs`;
+//! the shape families are built in `archetype/`); the [`Library`] resolves any synset to an
+//! archetype (its own or a descendant's in the taxonomy), samples an instance's size and variant
+//! from the episode's random number generator, and equips it with the abilities of its synset and
+//! the named points they need (`library.rs`). [`generate`] lays out homes with furniture from a
+//! seed (`home/`: plan, walls, furnish), [`Scene`] saves, loads and builds them (`scene.rs`),
+//! [`covering`] finds the homes an activity fits (`coverage.rs`), and [`import_urdf`] imports a
+//! user's own models, their collision geometry and their look (`urdf.rs`). The modules are
+//! private; this page is the crate's API.
 //!
 //! This crate builds [`behavior_sim::ObjectSpec`]s; it knows nothing of BDDL text or of how the
 //! world simulates them.
 
 #![warn(missing_docs)]
 
-pub mod archetype;
-pub mod catalog;
-pub mod coverage;
-pub mod home;
-pub mod library;
-pub mod scene;
+mod archetype;
+mod catalog;
+mod coverage;
+mod home;
+mod library;
+mod scene;
 mod tessellate;
-pub mod urdf;
+mod urdf;
 
-pub use archetype::{Archetype, Shape};
-pub use home::{NAMED_HOMES, generate};
+pub use archetype::{Archetype, Layout, Material, Shape};
+pub use catalog::CATALOG;
+pub use coverage::{Requirements, covering, missing, requirements};
+pub use home::{CORRIDOR_WIDTH, DOOR_CLEARANCE, DOORWAY, NAMED_HOMES, WALL_THICKNESS, generate};
 pub use library::{AssetError, Library};
-pub use scene::{BuiltScene, Scene, SceneError};
+pub use scene::{
+    BuiltScene, FLOOR_THICKNESS, ObjectPlan, RoomPlan, Scene, SceneError, WALL_HEIGHT, WallPlan,
+};
+pub use urdf::{ImportError, import_urdf};

@@ -1,7 +1,7 @@
 //! The named homes: they generate, build, round-trip through JSON exactly, and each official
 //! activity is covered by at least three of them.
 
-use behavior_assets::coverage::{missing, requirements};
+use behavior_assets::{missing, requirements};
 use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
 use behavior_core::RoomType;
 use behavior_data::DataDir;
@@ -135,7 +135,7 @@ fn a_dining_room_opens_onto_the_living_room_with_a_table_across() {
             .position(|r| r.kind == RoomType::LivingRoom)
             .unwrap();
         let l = &scene.rooms[living];
-        let beside = |d: &&behavior_assets::scene::RoomPlan| {
+        let beside = |d: &&behavior_assets::RoomPlan| {
             d.kind == RoomType::DiningRoom && (l.max[0] == d.min[0] || l.min[0] == d.max[0])
         };
         let Some(d) = scene.rooms.iter().find(beside) else {

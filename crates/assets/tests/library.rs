@@ -1,7 +1,7 @@
 //! The object library against the official activities: coverage, buildability, openings and
 //! containers that really contain.
 
-use behavior_assets::catalog::CATALOG;
+use behavior_assets::CATALOG;
 use behavior_assets::{Library, Shape};
 use behavior_core::Ability;
 use behavior_core::Predicate;

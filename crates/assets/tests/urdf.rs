@@ -1,7 +1,7 @@
 //! Importing URDFs written by the tests themselves: an OBJ door and an STL drawer on joints,
 //! visual meshes and primitives kept as the object's appearance beside its collision geometry.
 
-use behavior_assets::urdf::import_urdf;
+use behavior_assets::import_urdf;
 use behavior_core::Ability;
 use behavior_core::Predicate;
 use behavior_sim::{ObjectSpec, Part, Primitive, VisualShape, World};

@@ -2,7 +2,7 @@
 
 use crate::prelude::{Prelude, named_homes};
 use anyhow::{Context, Result, bail};
-use behavior_assets::coverage::covering;
+use behavior_assets::covering;
 use behavior_assets::{Library, Scene};
 use behavior_bddl::{Activity, Taxonomy};
 use behavior_sampling::{InitCheck, Instance, LiteralKind, instantiate};

@@ -3,7 +3,7 @@
 
 use crate::prelude::{Prelude, named_homes};
 use anyhow::{Context, Result};
-use behavior_assets::coverage::covering;
+use behavior_assets::covering;
 use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
 use clap::Subcommand;
 use serde::Serialize;

@@ -202,7 +202,7 @@ pub enum Unreachable {
 #[derive(Debug, thiserror::Error)]
 pub enum SampleError {
     /// The home has too few rooms of a type, or objects of a kind in them, for the `inroom`
-    /// literals (see `behavior_assets::coverage` for which homes do).
+    /// literals (see `behavior_assets::covering` for which homes do).
     #[error("{scene} has no {room} with a {synset} free for {instance}")]
     NoFurniture {
         /// The home's name.

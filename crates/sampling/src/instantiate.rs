@@ -30,7 +30,7 @@ pub const SETTLE_STEPS: usize = 150;
 /// (activity, home, seed) always gives a bit-identical instance.
 ///
 /// ```
-/// use behavior_assets::coverage::covering;
+/// use behavior_assets::covering;
 /// use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
 /// use behavior_data::DataDir;
 /// use behavior_sampling::instantiate;

@@ -1,6 +1,6 @@
 //! Sampling official activities in the named homes.
 
-use behavior_assets::coverage::{missing, requirements};
+use behavior_assets::{missing, requirements};
 use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
 use behavior_bddl::Knowledge;
 use behavior_bddl::activity::InitLiteral;
@@ -245,7 +245,7 @@ fn a_dusty_floor_survives_saving_and_loading() {
     assert!(all_init_literals_hold(&activity, &loaded));
 }
 
-/// The table a living room shares with its open dining room (see `behavior_assets::home`).
+/// The table a living room shares with its open dining room (see `behavior_assets::generate`).
 fn table_across_the_opening(home: &Scene) -> String {
     let dining = home
         .rooms

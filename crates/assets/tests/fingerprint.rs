@@ -8,8 +8,8 @@
 //! the geometry field by field rather than `ObjectSpec`'s `Debug`, so a new field in
 //! `behavior-sim` does not disturb it.
 
-use behavior_assets::Layout;
 use behavior_assets::CATALOG;
+use behavior_assets::Layout;
 use behavior_assets::{Library, NAMED_HOMES, generate};
 use behavior_data::DataDir;
 use behavior_sim::{LinkSpec, ObjectSpec, Part};

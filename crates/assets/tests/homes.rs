@@ -1,8 +1,8 @@
 //! The named homes: they generate, build, round-trip through JSON exactly, and each official
 //! activity is covered by at least three of them.
 
-use behavior_assets::{missing, requirements};
 use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
+use behavior_assets::{missing, requirements};
 use behavior_core::RoomType;
 use behavior_data::DataDir;
 

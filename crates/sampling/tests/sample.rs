@@ -1,7 +1,7 @@
 //! Sampling official activities in the named homes.
 
-use behavior_assets::{missing, requirements};
 use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
+use behavior_assets::{missing, requirements};
 use behavior_bddl::Knowledge;
 use behavior_bddl::activity::InitLiteral;
 use behavior_bddl::{Activity, PredicateOracle};

@@ -7,9 +7,9 @@ use behavior_core::Predicate;
 mod common;
 
 use behavior_sim::{ObjectId, Primitive, QueryFilter, Substeps, World};
-use rapier3d::math::{Pose, Vector};
 use common::resting_home;
 use criterion::{Criterion, criterion_group, criterion_main};
+use rapier3d::math::{Pose, Vector};
 use std::hint::black_box;
 use std::time::Duration;
 

@@ -18,6 +18,7 @@ const FRAME_MASS: f32 = 1e-3;
 
 impl Core {
     /// Adds an object; its bodies and colliders carry tags so queries can map hits back to it.
+    /// Every part is checked before anything is inserted, so a bad spec leaves no trace.
     pub(crate) fn add(&mut self, spec: ObjectSpec) -> Result<ObjectId, WorldError> {
         let id = ObjectId(self.objects.len() as u32);
         let bad = |reason: String| WorldError::BadObject {
@@ -27,58 +28,15 @@ impl Core {
         check_spec(&spec).map_err(bad)?;
         let builders = colliders_of(&spec.parts, spec.density, spec.friction, tag(id.into()))
             .ok_or_else(|| bad("a part has a non-positive or non-finite size or offset".into()))?;
-        let mut link_builders = Vec::with_capacity(spec.links.len());
-        for (i, link) in spec.links.iter().enumerate() {
-            check_link(link, i, &spec.links)
-                .map_err(|r| bad(format!("link `{}`: {r}", link.name)))?;
-            let colliders = colliders_of(
-                &link.parts,
-                link.density,
-                spec.friction,
-                tag(BodyRef::link(id, i)),
-            )
-            .ok_or_else(|| bad(format!("link `{}` has a malformed part", link.name)))?;
-            link_builders.push(colliders);
-        }
+        let link_builders = link_colliders(&spec, id).map_err(bad)?;
         let body = self.insert_body(&spec, spec.body, tag(id.into()), 0.0);
         let mut colliders: Vec<ColliderHandle> = builders
             .into_iter()
             .map(|c| self.physics.insert_collider(c, Some(body)))
             .collect();
-        let mut links: Vec<Link> = Vec::with_capacity(spec.links.len());
-        for (i, (link, builders)) in spec.links.iter().zip(link_builders).enumerate() {
-            let extra = if link.parts.is_empty() {
-                FRAME_MASS
-            } else {
-                0.0
-            };
-            let link_body =
-                self.insert_body(&spec, BodyKind::Dynamic, tag(BodyRef::link(id, i)), extra);
-            colliders.extend(
-                builders
-                    .into_iter()
-                    .map(|c| self.physics.insert_collider(c, Some(link_body))),
-            );
-            let parent = link.parent.map_or(body, |p| links[p].body);
-            let handle = self
-                .insert_joint(parent, link_body, &link.joint)
-                .ok_or_else(|| {
-                    bad(format!(
-                        "link `{}` would close a loop of multibody joints",
-                        link.name
-                    ))
-                })?;
-            let mut joint = link.joint.clone();
-            joint.axis = joint.axis.normalize();
-            links.push(Link {
-                name: link.name.clone(),
-                parent: link.parent,
-                joint,
-                parts: link.parts.clone(),
-                body: link_body,
-                handle,
-            });
-        }
+        let links = self
+            .insert_links(&spec, (id, body), link_builders, &mut colliders)
+            .map_err(bad)?;
         let pushed = self.push_object(Object {
             name: spec.name,
             category: spec.category,
@@ -98,6 +56,51 @@ impl Core {
         debug_assert_eq!(pushed, id);
         self.refresh();
         Ok(id)
+    }
+
+    /// Each link's body, colliders (added to `colliders`) and joint to its parent.
+    fn insert_links(
+        &mut self,
+        spec: &ObjectSpec,
+        (id, body): (ObjectId, RigidBodyHandle),
+        builders: Vec<Vec<Collider>>,
+        colliders: &mut Vec<ColliderHandle>,
+    ) -> Result<Vec<Link>, String> {
+        let mut links: Vec<Link> = Vec::with_capacity(spec.links.len());
+        for (i, (link, builders)) in spec.links.iter().zip(builders).enumerate() {
+            let extra = if link.parts.is_empty() {
+                FRAME_MASS
+            } else {
+                0.0
+            };
+            let tag = tag(BodyRef::link(id, i));
+            let link_body = self.insert_body(spec, BodyKind::Dynamic, tag, extra);
+            colliders.extend(
+                builders
+                    .into_iter()
+                    .map(|c| self.physics.insert_collider(c, Some(link_body))),
+            );
+            let parent = link.parent.map_or(body, |p| links[p].body);
+            let handle = self
+                .insert_joint(parent, link_body, &link.joint)
+                .ok_or_else(|| {
+                    format!(
+                        "link `{}` would close a loop of multibody joints",
+                        link.name
+                    )
+                })?;
+            let mut joint = link.joint.clone();
+            joint.axis = joint.axis.normalize();
+            links.push(Link {
+                name: link.name.clone(),
+                parent: link.parent,
+                joint,
+                parts: link.parts.clone(),
+                body: link_body,
+                handle,
+            });
+        }
+        Ok(links)
     }
 
     fn insert_body(
@@ -174,6 +177,24 @@ fn generic_joint(spec: &JointSpec) -> GenericJoint {
         crate::joints::passive(&mut joint, axis, spec.damping);
     }
     joint
+}
+
+/// Every link checked, with its colliders built (not yet inserted).
+fn link_colliders(spec: &ObjectSpec, id: ObjectId) -> Result<Vec<Vec<Collider>>, String> {
+    spec.links
+        .iter()
+        .enumerate()
+        .map(|(i, link)| {
+            check_link(link, i, &spec.links).map_err(|r| format!("link `{}`: {r}", link.name))?;
+            colliders_of(
+                &link.parts,
+                link.density,
+                spec.friction,
+                tag(BodyRef::link(id, i)),
+            )
+            .ok_or_else(|| format!("link `{}` has a malformed part", link.name))
+        })
+        .collect()
 }
 
 /// Every number of the spec except its parts and links, which are checked as they are built.

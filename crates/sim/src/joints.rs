@@ -20,7 +20,7 @@
 //! the solver settings for robots belongs with the robots and their benchmark.
 
 use crate::core::{Core, WorldError};
-use crate::object::{JointHandle, JointKind, ObjectId};
+use crate::object::{JointHandle, JointKind, JointSpec, ObjectId};
 use crate::states::StateError;
 use rapier3d::dynamics::{GenericJoint, JointAxis, MotorModel};
 use rapier3d::math::{Pose, Rotation, Vector};
@@ -196,27 +196,18 @@ impl Core {
                 value: position,
             });
         }
-        let joint = self.object(id).links[link].joint.clone();
+        let joint = &self.object(id).links[link].joint;
         let q = joint
             .limits
             .map_or(position, |[lo, hi]| position.clamp(lo, hi));
-        let local = match joint.kind {
-            JointKind::Revolute => {
-                let turn = Pose::from_rotation(Rotation::from_axis_angle(joint.axis, q));
-                Pose::from_translation(joint.anchor) * turn * Pose::from_translation(-joint.anchor)
-            }
-            JointKind::Prismatic => Pose::from_translation(joint.axis * q),
-            JointKind::Fixed => Pose::IDENTITY,
-        };
         let old = self.link_pose(id, link);
-        let new = self.parent_pose(id, link) * local;
+        let new = self.parent_pose(id, link) * displacement(joint, q);
         // The link's descendants keep their pose relative to it.
         let mut moves = vec![(link, new)];
-        for (i, l) in self.object(id).links.iter().enumerate().skip(link + 1) {
-            if self.descends_from(id, i, link) {
-                let _ = l;
-                moves.push((i, new * old.inv_mul(&self.link_pose(id, i))));
-            }
+        for i in
+            (link + 1..self.object(id).links.len()).filter(|&i| self.descends_from(id, i, link))
+        {
+            moves.push((i, new * old.inv_mul(&self.link_pose(id, i))));
         }
         for (i, pose) in moves {
             let handle = self.object(id).links[i].body;
@@ -376,6 +367,19 @@ impl Core {
             let _ = self.set_joint_position(id, i, target);
         }
         Ok(())
+    }
+}
+
+/// Where a joint at position `q` puts its link relative to the link's place at zero, in the
+/// parent's frame.
+fn displacement(joint: &JointSpec, q: f32) -> Pose {
+    match joint.kind {
+        JointKind::Revolute => {
+            let turn = Pose::from_rotation(Rotation::from_axis_angle(joint.axis, q));
+            Pose::from_translation(joint.anchor) * turn * Pose::from_translation(-joint.anchor)
+        }
+        JointKind::Prismatic => Pose::from_translation(joint.axis * q),
+        JointKind::Fixed => Pose::IDENTITY,
     }
 }
 

@@ -219,58 +219,73 @@ impl Core {
         relations: &[(Relation, ObjectId)],
         rng: &mut SimRng,
     ) -> Result<Pose, PlacementFailure> {
-        let (relation, target) = relations[0];
         if relations.iter().any(|&(_, t)| t == object) {
             return Err(PlacementFailure::ToItself);
         }
-        let pose = self.pose(object);
-        let own = self.aabb(object);
-        let half = (own.maxs - own.mins) * 0.5;
-        // Where the object's box sits relative to its pose's origin.
-        let center_offset = own.center() - pose.translation;
-        // Where the object's centre may go for a relation: over the target (in its room, for a
-        // floor), or around it for `nextto` and `touching`.
-        let area_of = |relation: Relation, target: ObjectId| match relation {
+        let request = Request::new(self, object, relations);
+        let (x, y) = self.sample_xy(&request, rng)?;
+        let start_z = self.start_height(&request, (x, y), rng)?;
+        let support = self
+            .support_height(&request, (x, y), start_z)
+            .ok_or(PlacementFailure::NoSurface)?;
+        let bottom_center = Vector::new(x, y, support + DROP_GAP + request.half.z);
+        let candidate = Pose::from_parts(bottom_center - request.center_offset, request.rotation);
+        if let Some(other) = self.overlap_at(object, candidate) {
+            return Err(PlacementFailure::Overlaps {
+                other: self.object(other).name.clone(),
+            });
+        }
+        // The candidate is built from finite values, so the teleport cannot fail.
+        let _ = self.set_pose(object, candidate);
+        match relations.iter().find(|&&(r, t)| !self.holds(object, r, t)) {
+            Some(&(relation, _)) => Err(PlacementFailure::DoesNotHold { relation }),
+            None => Ok(candidate),
+        }
+    }
+
+    fn holds(&self, object: ObjectId, relation: Relation, target: ObjectId) -> bool {
+        match relation {
+            Relation::OnTop => self.ontop(object, target),
+            Relation::Inside => self.inside(object, target),
+            Relation::Under => self.under(object, target),
+            Relation::OnFloor => self.onfloor(object, target),
+            Relation::NextTo => self.nextto(object, target),
+            Relation::Touching => self.touching(object, target),
+        }
+    }
+
+    /// Where the object's centre may go for a relation: over the target (in its room, for a
+    /// floor), or around it for `nextto` and `touching`.
+    fn area_of(&self, request: &Request, relation: Relation, target: ObjectId) -> Aabb {
+        match relation {
             Relation::OnFloor => self.floor_area(target),
-            Relation::NextTo | Relation::Touching => {
-                self.aabb(target).loosened(half.max_element() + NEXTTO_GAP)
-            }
+            Relation::NextTo | Relation::Touching => self
+                .aabb(target)
+                .loosened(request.half.max_element() + NEXTTO_GAP),
             _ => self.aabb(target),
-        };
+        }
+    }
+
+    /// A point (x, y) for the object's centre: beside the target for the symmetric relations,
+    /// over it otherwise, within the bounds the other relations set.
+    fn sample_xy(
+        &self,
+        request: &Request,
+        rng: &mut SimRng,
+    ) -> Result<(f32, f32), PlacementFailure> {
+        let (relation, target) = request.relations[0];
+        let half = request.half;
         // The other relations only bound the centre: the object may reach beyond their area.
         let (mut x0, mut x1, mut y0, mut y1) = (f32::MIN, f32::MAX, f32::MIN, f32::MAX);
-        for &(r, t) in &relations[1..] {
-            let other = area_of(r, t);
+        for &(r, t) in &request.relations[1..] {
+            let other = self.area_of(request, r, t);
             (x0, x1) = (x0.max(other.mins.x), x1.min(other.maxs.x));
             (y0, y1) = (y0.max(other.mins.y), y1.min(other.maxs.y));
         }
-        let area = self.aabb(target);
         let (x, y) = if relation.is_symmetric() {
-            // Beside one of the target's four sides, a small gap away, facing some part of it.
-            let gap = match relation {
-                Relation::NextTo => uniform(rng, 0.005, NEXTTO_GAP),
-                _ => uniform(rng, 0.0005, 0.8 * crate::kinematics::TOUCH_DISTANCE),
-            };
-            match rng.next_u32() % 4 {
-                0 => (
-                    area.maxs.x + gap + half.x,
-                    uniform(rng, area.mins.y, area.maxs.y),
-                ),
-                1 => (
-                    area.mins.x - gap - half.x,
-                    uniform(rng, area.mins.y, area.maxs.y),
-                ),
-                2 => (
-                    uniform(rng, area.mins.x, area.maxs.x),
-                    area.maxs.y + gap + half.y,
-                ),
-                _ => (
-                    uniform(rng, area.mins.x, area.maxs.x),
-                    area.mins.y - gap - half.y,
-                ),
-            }
+            beside(&self.aabb(target), half, relation, rng)
         } else {
-            let area = area_of(relation, target);
+            let area = self.area_of(request, relation, target);
             let span = |lo: f32, hi: f32, h: f32| {
                 if hi - lo > 2.0 * h {
                     (lo + h, hi - h)
@@ -289,62 +304,56 @@ impl Core {
         if !(x0..=x1).contains(&x) || !(y0..=y1).contains(&y) {
             return Err(PlacementFailure::AreasDisjoint);
         }
-        let start_z = match relation {
+        Ok((x, y))
+    }
+
+    /// The height from which to look down for a surface to rest on.
+    fn start_height(
+        &self,
+        request: &Request,
+        (x, y): (f32, f32),
+        rng: &mut SimRng,
+    ) -> Result<f32, PlacementFailure> {
+        let (relation, target) = request.relations[0];
+        let area = self.aabb(target);
+        Ok(match relation {
             Relation::OnTop => {
                 let levels = self.support_levels(target);
                 levels[rng.next_u32() as usize % levels.len()] + 0.01
             }
-            Relation::OnFloor => area_of(relation, target).maxs.z + 0.01,
+            Relation::OnFloor => self.area_of(request, relation, target).maxs.z + 0.01,
             Relation::NextTo | Relation::Touching => area.maxs.z + 0.01,
-            Relation::Inside => uniform(
-                rng,
-                area.mins.z + half.z,
-                area.maxs.z.max(area.mins.z + half.z),
-            ),
+            Relation::Inside => {
+                let lowest = area.mins.z + request.half.z;
+                uniform(rng, lowest, area.maxs.z.max(lowest))
+            }
             // Just below the target's underside at (x, y).
             Relation::Under => {
                 self.underside(target, x, y, area.mins.z - 1.0)
                     .ok_or(PlacementFailure::NoUnderside)?
                     - 0.001
             }
-        };
-        let support = match relation {
+        })
+    }
+
+    /// The height of the surface the object will rest on below (x, y, start_z): the target's for
+    /// `ontop` and `onfloor`; else whatever is there — the floor, what the target stands on, or
+    /// (inside) the container's floor or what already lies in it.
+    fn support_height(&self, request: &Request, (x, y): (f32, f32), start_z: f32) -> Option<f32> {
+        let (relation, target) = request.relations[0];
+        match relation {
             Relation::OnTop | Relation::OnFloor => self.surface_below(&[target], x, y, start_z),
-            // On whatever is there: the floor, the surface the target stands on, or (inside) the
-            // container's floor or what already lies on it.
             Relation::Under | Relation::NextTo | Relation::Touching | Relation::Inside => {
                 let others: Vec<ObjectId> = self
                     .objects()
                     .map(|(id, _)| id)
-                    .filter(|&id| id != object && (id != target || relation == Relation::Inside))
+                    .filter(|&id| {
+                        id != request.object && (id != target || relation == Relation::Inside)
+                    })
                     .collect();
                 self.surface_below(&others, x, y, start_z)
             }
         }
-        .ok_or(PlacementFailure::NoSurface)?;
-        let bottom_center = Vector::new(x, y, support + DROP_GAP + half.z);
-        let candidate = Pose::from_parts(bottom_center - center_offset, pose.rotation);
-        if let Some(other) = self.overlap_at(object, candidate) {
-            return Err(PlacementFailure::Overlaps {
-                other: self.object(other).name.clone(),
-            });
-        }
-        // The candidate is built from finite values, so the teleport cannot fail.
-        let _ = self.set_pose(object, candidate);
-        for &(relation, target) in relations {
-            let holds = match relation {
-                Relation::OnTop => self.ontop(object, target),
-                Relation::Inside => self.inside(object, target),
-                Relation::Under => self.under(object, target),
-                Relation::OnFloor => self.onfloor(object, target),
-                Relation::NextTo => self.nextto(object, target),
-                Relation::Touching => self.touching(object, target),
-            };
-            if !holds {
-                return Err(PlacementFailure::DoesNotHold { relation });
-            }
-        }
-        Ok(candidate)
     }
 
     /// Heights from which `ontop` looks down for a surface of `target`: its top, and for anything
@@ -460,5 +469,57 @@ impl Core {
             }
         }
         None
+    }
+}
+
+/// What one placement attempt asks, with the object's box as it stands.
+struct Request<'r> {
+    object: ObjectId,
+    relations: &'r [(Relation, ObjectId)],
+    /// Half the object's box.
+    half: Vector,
+    /// Where the object's box centre sits relative to its pose's origin.
+    center_offset: Vector,
+    /// Its orientation, kept.
+    rotation: rapier3d::math::Rotation,
+}
+
+impl<'r> Request<'r> {
+    fn new(core: &Core, object: ObjectId, relations: &'r [(Relation, ObjectId)]) -> Request<'r> {
+        let pose = core.pose(object);
+        let own = core.aabb(object);
+        Request {
+            object,
+            relations,
+            half: (own.maxs - own.mins) * 0.5,
+            center_offset: own.center() - pose.translation,
+            rotation: pose.rotation,
+        }
+    }
+}
+
+/// A centre beside one of the target box's four sides, a small gap away, facing some part of it.
+fn beside(area: &Aabb, half: Vector, relation: Relation, rng: &mut SimRng) -> (f32, f32) {
+    let gap = match relation {
+        Relation::NextTo => uniform(rng, 0.005, NEXTTO_GAP),
+        _ => uniform(rng, 0.0005, 0.8 * crate::kinematics::TOUCH_DISTANCE),
+    };
+    match rng.next_u32() % 4 {
+        0 => (
+            area.maxs.x + gap + half.x,
+            uniform(rng, area.mins.y, area.maxs.y),
+        ),
+        1 => (
+            area.mins.x - gap - half.x,
+            uniform(rng, area.mins.y, area.maxs.y),
+        ),
+        2 => (
+            uniform(rng, area.mins.x, area.maxs.x),
+            area.maxs.y + gap + half.y,
+        ),
+        _ => (
+            uniform(rng, area.mins.x, area.maxs.x),
+            area.mins.y - gap - half.y,
+        ),
     }
 }

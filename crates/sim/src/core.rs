@@ -96,6 +96,9 @@ pub struct Core {
     pub(crate) steps: u64,
     pub(crate) substeps: Substeps,
     pub(crate) drives: BTreeMap<(ObjectId, usize), crate::joints::Drive>,
+    /// Velocities of velocity-driven bodies at the root of a multibody chain, which the chain
+    /// would otherwise overwrite (see [`Core::lead_kinematic_chains`]).
+    pub(crate) carried: BTreeMap<ObjectId, crate::dynamics::Velocity>,
 }
 
 impl Clone for Core {
@@ -130,6 +133,7 @@ impl Clone for Core {
             steps: self.steps,
             substeps: self.substeps,
             drives: self.drives.clone(),
+            carried: self.carried.clone(),
         }
     }
 }
@@ -168,6 +172,7 @@ impl Core {
             steps: 0,
             substeps,
             drives: BTreeMap::new(),
+            carried: BTreeMap::new(),
         }
     }
 

@@ -5,9 +5,10 @@
 //! are then cleared, so a controller states each step what it pushes with. Impulses act at once.
 
 use crate::core::{Core, WorldError, pose_is_finite};
-use crate::object::{BodyKind, BodyRef};
+use crate::object::{BodyKind, BodyRef, JointHandle, Object, ObjectId};
+use rapier3d::dynamics::MultibodyJointHandle;
 use rapier3d::dynamics::RigidBodyHandle;
-use rapier3d::math::{Pose, Vector};
+use rapier3d::math::{Pose, Rotation, Vector};
 
 /// A body's velocity.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -32,7 +33,11 @@ fn finite(what: &'static str, v: Vector) -> Result<(), WorldError> {
 impl Core {
     /// A body's velocity.
     pub fn velocity(&self, body: BodyRef) -> Result<Velocity, WorldError> {
-        let b = &self.physics.bodies[self.handle(body)?];
+        let handle = self.handle(body)?;
+        if let (None, Some(&carried)) = (body.link, self.carried.get(&body.object)) {
+            return Ok(carried);
+        }
+        let b = &self.physics.bodies[handle];
         Ok(Velocity {
             linear: b.linvel(),
             angular: b.angvel(),
@@ -47,6 +52,10 @@ impl Core {
         let b = &mut self.physics.bodies[handle];
         b.set_linvel(velocity.linear, true);
         b.set_angvel(velocity.angular, true);
+        if body.link.is_none() && self.leads_chain(body.object) == Some(BodyKind::KinematicVelocity)
+        {
+            self.carried.insert(body.object, velocity);
+        }
         self.touched(handle);
         Ok(())
     }
@@ -126,6 +135,46 @@ impl Core {
         self.wake(handle);
     }
 
+    /// Before a substep: a kinematic body at the root of a multibody chain (a robot's base
+    /// carrying its arm) would be held in place by the chain, which writes its root's pose and
+    /// velocity back from its own record; so the body and the record are both moved first to
+    /// where the body goes this substep (by its pose target, or by the velocity kept in
+    /// `carried`).
+    pub(crate) fn lead_kinematic_chains(&mut self) {
+        let dt = self.physics.integration_parameters.dt;
+        for (i, object) in self.objects.iter().enumerate() {
+            let id = ObjectId(i as u32);
+            let (Some(kind), Some(chain)) = (self.leads_chain(id), first_chain(object)) else {
+                continue;
+            };
+            let body = &self.physics.bodies[object.body];
+            let target = match kind {
+                BodyKind::KinematicVelocity => {
+                    let v = self.carried.get(&id).copied().unwrap_or_default();
+                    let p = body.position();
+                    let turn = Rotation::from_scaled_axis(v.angular * dt);
+                    let rotation = (turn * p.rotation).normalize();
+                    Pose::from_parts(p.translation + v.linear * dt, rotation)
+                }
+                _ => *body.next_position(),
+            };
+            self.physics.bodies[object.body].set_position(target, true);
+            if let Some((multibody, _)) = self.physics.multibody_joints.get_mut(chain) {
+                multibody.root_mut().joint.data.local_frame1 = target;
+            }
+        }
+    }
+
+    /// The kind of a kinematic body that roots a multibody chain.
+    fn leads_chain(&self, id: ObjectId) -> Option<BodyKind> {
+        let object = self.object(id);
+        let kinematic = matches!(
+            object.body_kind,
+            BodyKind::KinematicPosition | BodyKind::KinematicVelocity
+        );
+        (kinematic && first_chain(object).is_some()).then_some(object.body_kind)
+    }
+
     /// Clears the forces and torques of the step just taken.
     pub(crate) fn clear_forces(&mut self) {
         for handle in std::mem::take(&mut self.pushed) {
@@ -135,4 +184,12 @@ impl Core {
             }
         }
     }
+}
+
+/// The handle of an object's first multibody link, if it has a chain.
+fn first_chain(object: &Object) -> Option<MultibodyJointHandle> {
+    object.links.iter().find_map(|l| match l.handle {
+        JointHandle::Multibody(h) => Some(h),
+        JointHandle::Impulse(_) => None,
+    })
 }

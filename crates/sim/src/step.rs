@@ -87,6 +87,7 @@ impl World {
                 return pressed;
             }
             let core = &mut self.core;
+            core.lead_kinematic_chains();
             let filter = ContactFilter {
                 ignored: &core.ignored,
             };

@@ -783,3 +783,57 @@ fn snapshots_of_an_arm_holding_a_box_restore_bit_identically() {
         "restored into another world"
     );
 }
+
+#[test]
+fn a_velocity_driven_base_carries_its_multibody_arm_and_the_arm_keeps_its_targets() {
+    let mut world = World::default();
+    floor(&mut world);
+    let mut base = ObjectSpec::new(
+        "robot",
+        "robot.n.01",
+        vec![Part::at(cuboid(0.25, 0.25, 0.15), v(0.0, 0.0, 0.15))],
+    )
+    .at(v(0.0, 0.0, 0.001))
+    .body(BodyKind::KinematicVelocity);
+    for k in 0..2 {
+        let z0 = 0.3 + 0.3 * k as f32;
+        base = base.link(LinkSpec {
+            name: format!("segment_{k}"),
+            parts: vec![Part::at(cuboid(0.02, 0.02, 0.15), v(0.0, 0.0, z0 + 0.15))],
+            parent: if k == 0 { None } else { Some(k - 1) },
+            joint: JointSpec {
+                kind: JointKind::Revolute,
+                model: JointModel::Multibody,
+                anchor: v(0.0, 0.0, z0),
+                axis: v(0.0, 1.0, 0.0),
+                limits: Some([-1.5, 1.5]),
+                damping: 0.0,
+            },
+            density: 500.0,
+        });
+    }
+    let robot = world.add(base).unwrap();
+    for (k, target) in [0.3f32, -0.4].into_iter().enumerate() {
+        world
+            .core_mut()
+            .drive_joint(robot, k, Drive::position(target, 500.0, 20.0, 100.0))
+            .unwrap();
+    }
+    let drive = Velocity {
+        linear: v(0.5, 0.0, 0.0),
+        angular: Vector::ZERO,
+    };
+    world.core_mut().set_velocity(robot.into(), drive).unwrap();
+    steps(&mut world, 60);
+    let x = world.pose(robot).translation.x;
+    assert!((x - 1.0).abs() < 0.01, "the base drove to x = {x}");
+    let elbow = world.core().link_pose(robot, 1).translation.x;
+    assert!(
+        elbow > 0.9,
+        "the arm came along: its last segment is at x = {elbow}"
+    );
+    for (k, target) in [0.3f32, -0.4].into_iter().enumerate() {
+        let q = world.core().joint_state(robot, k).unwrap().position;
+        assert!((q - target).abs() < 0.02, "joint {k} at {q} for {target}");
+    }
+}

@@ -456,8 +456,9 @@ fn ignored_pairs_pass_through_each_other_and_collision_groups_let_water_through(
         "the top cube fell through the bottom one"
     );
 
-    // A sink's drops splash on a plate, and fall through one that ignores water (a robot's hand).
-    let drops_below = |filtered: bool| {
+    // A sink's drops splash on a plate and soak it; they fall through a plate that ignores water
+    // (a robot's hand) and leave it dry.
+    let splash = |filtered: bool| {
         let mut world = World::default();
         floor(&mut world);
         let sink = ObjectSpec::new(
@@ -469,17 +470,15 @@ fn ignored_pairs_pass_through_each_other_and_collision_groups_let_water_through(
         .ability(Ability::WaterSource, &[])
         .point(PointKind::WaterOutlet, v(0.0, 0.0, 1.44));
         world.add(sink).unwrap();
-        let plate = world
-            .add(
-                ObjectSpec::new(
-                    "plate",
-                    "plate.n.04",
-                    vec![Part::new(cuboid(0.2, 0.2, 0.01))],
-                )
-                .at(v(0.0, 0.0, 0.8))
-                .fixed(),
-            )
-            .unwrap();
+        let plate = ObjectSpec::new(
+            "plate",
+            "plate.n.04",
+            vec![Part::new(cuboid(0.2, 0.2, 0.01))],
+        )
+        .at(v(0.0, 0.0, 0.8))
+        .fixed()
+        .ability(Ability::Soakable, &[]);
+        let plate = world.add(plate).unwrap();
         if filtered {
             world.core_mut().set_collision_groups(
                 plate,
@@ -488,12 +487,18 @@ fn ignored_pairs_pass_through_each_other_and_collision_groups_let_water_through(
             );
         }
         steps(&mut world, 25);
-        world.drops().iter().filter(|d| d.z < 0.75).count()
+        let below = world.drops().iter().filter(|d| d.z < 0.75).count();
+        (below, world.state(plate, behavior_core::Predicate::Soaked))
     };
-    assert_eq!(drops_below(false), 0, "the plate stops the drops");
+    assert_eq!(
+        splash(false),
+        (0, true),
+        "the plate stops the drops and is soaked"
+    );
+    let (below, soaked) = splash(true);
     assert!(
-        drops_below(true) > 0,
-        "drops fall through a plate that ignores water"
+        below > 0 && !soaked,
+        "{below} drops fell through a plate that ignores water; soaked: {soaked}"
     );
 }
 

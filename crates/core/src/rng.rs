@@ -27,8 +27,3 @@ pub fn uniform(rng: &mut SimRng, lo: f32, hi: f32) -> f32 {
     let unit = (rng.next_u32() >> 8) as f32 / (1u32 << 24) as f32;
     lo + (hi - lo) * unit
 }
-
-/// A uniform index in `0..n` (`n` > 0), for choosing among candidates.
-pub fn index(rng: &mut SimRng, n: usize) -> usize {
-    (rng.next_u64() % n.max(1) as u64) as usize
-}

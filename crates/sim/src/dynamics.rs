@@ -6,8 +6,7 @@
 
 use crate::core::{Core, WorldError, pose_is_finite};
 use crate::object::{BodyKind, BodyRef, JointHandle, Object, ObjectId};
-use rapier3d::dynamics::MultibodyJointHandle;
-use rapier3d::dynamics::RigidBodyHandle;
+use rapier3d::dynamics::{MultibodyJointHandle, RigidBody};
 use rapier3d::math::{Pose, Rotation, Vector};
 
 /// A body's velocity.
@@ -56,7 +55,7 @@ impl Core {
         {
             self.carried.insert(body.object, velocity);
         }
-        self.touched(handle);
+        self.wake(handle);
         Ok(())
     }
 
@@ -81,18 +80,14 @@ impl Core {
         }
         let handle = self.handle(body)?;
         self.physics.bodies[handle].set_next_kinematic_position(pose);
-        self.touched(handle);
+        self.wake(handle);
         Ok(())
     }
 
     /// Pushes a body's centre of mass with a force (N) for the rest of this action step.
     pub fn apply_force(&mut self, body: BodyRef, force: Vector) -> Result<(), WorldError> {
         finite("a force", force)?;
-        let handle = self.handle(body)?;
-        self.physics.bodies[handle].add_force(force, true);
-        self.pushed.push(handle);
-        self.touched(handle);
-        Ok(())
+        self.push_for_the_step(body, |b| b.add_force(force, true))
     }
 
     /// Pushes a body at a world point with a force (N) for the rest of this action step.
@@ -104,20 +99,25 @@ impl Core {
     ) -> Result<(), WorldError> {
         finite("a force", force)?;
         finite("a point", point)?;
-        let handle = self.handle(body)?;
-        self.physics.bodies[handle].add_force_at_point(force, point, true);
-        self.pushed.push(handle);
-        self.touched(handle);
-        Ok(())
+        self.push_for_the_step(body, |b| b.add_force_at_point(force, point, true))
     }
 
     /// Twists a body with a torque (N·m, world frame) for the rest of this action step.
     pub fn apply_torque(&mut self, body: BodyRef, torque: Vector) -> Result<(), WorldError> {
         finite("a torque", torque)?;
+        self.push_for_the_step(body, |b| b.add_torque(torque, true))
+    }
+
+    /// Applies a force or torque that lasts until the end of the action step.
+    fn push_for_the_step(
+        &mut self,
+        body: BodyRef,
+        apply: impl FnOnce(&mut RigidBody),
+    ) -> Result<(), WorldError> {
         let handle = self.handle(body)?;
-        self.physics.bodies[handle].add_torque(torque, true);
+        apply(&mut self.physics.bodies[handle]);
         self.pushed.push(handle);
-        self.touched(handle);
+        self.wake(handle);
         Ok(())
     }
 
@@ -126,13 +126,8 @@ impl Core {
         finite("an impulse", impulse)?;
         let handle = self.handle(body)?;
         self.physics.bodies[handle].apply_impulse(impulse, true);
-        self.touched(handle);
-        Ok(())
-    }
-
-    /// A body was set in motion by hand: the scene is no longer at rest and queries are stale.
-    fn touched(&mut self, handle: RigidBodyHandle) {
         self.wake(handle);
+        Ok(())
     }
 
     /// Before a substep: a kinematic body at the root of a multibody chain (a robot's base
@@ -143,10 +138,16 @@ impl Core {
     pub(crate) fn lead_kinematic_chains(&mut self) {
         let dt = self.physics.integration_parameters.dt;
         for (i, object) in self.objects.iter().enumerate() {
-            let id = ObjectId(i as u32);
-            let (Some(kind), Some(chain)) = (self.leads_chain(id), first_chain(object)) else {
+            // Most objects are not kinematic: the cheap test first.
+            let kind = object.body_kind;
+            let kinematic = matches!(
+                kind,
+                BodyKind::KinematicPosition | BodyKind::KinematicVelocity
+            );
+            let Some(chain) = first_chain(object).filter(|_| kinematic) else {
                 continue;
             };
+            let id = ObjectId(i as u32);
             let body = &self.physics.bodies[object.body];
             let target = match kind {
                 BodyKind::KinematicVelocity => {

@@ -20,7 +20,7 @@
 //! the solver settings for robots belongs with the robots and their benchmark.
 
 use crate::core::{Core, WorldError};
-use crate::object::{JointHandle, JointKind, JointSpec, ObjectId};
+use crate::object::{BodyRef, JointHandle, JointKind, JointSpec, ObjectId};
 use crate::states::StateError;
 use rapier3d::dynamics::{GenericJoint, JointAxis, MotorModel};
 use rapier3d::math::{Pose, Rotation, Vector};
@@ -108,16 +108,7 @@ pub(crate) fn free_axis(kind: JointKind) -> Option<JointAxis> {
 
 impl Core {
     fn check_link(&self, id: ObjectId, link: usize) -> Result<(), WorldError> {
-        let object = self.object(id);
-        if link < object.links.len() {
-            Ok(())
-        } else {
-            Err(WorldError::NoLink {
-                name: object.name.clone(),
-                link,
-                count: object.links.len(),
-            })
-        }
+        self.handle(BodyRef::link(id, link)).map(|_| ())
     }
 
     /// The pose of a link's parent body.

@@ -44,7 +44,7 @@ pub const CATALOG: &[Archetype] = &[
     Archetype { synset: "car.n.01", shape: Shape::LiddedContainer, min: [3.6, 1.6, 1.4], max: [4.2, 1.8, 1.5], density: 1000.0, material: Material::Metal, color: [180, 30, 40] }, // things go inside and it opens: a car-sized lidded box
     Archetype { synset: "carrot.n.03", shape: Shape::Rod, min: [0.14, 0.025, 0.025], max: [0.2, 0.035, 0.035], density: 1000.0, material: Material::Food, color: [240, 120, 30] },
     Archetype { synset: "carton.n.02", shape: Shape::LiddedContainer, min: [0.25, 0.2, 0.15], max: [0.5, 0.4, 0.35], density: 700.0, material: Material::Paper, color: [200, 160, 110] }, // cardboard box with flaps on top
-    Archetype { synset: "carving_knife.n.01", shape: Shape::Rod, min: [0.3, 0.03, 0.02], max: [0.38, 0.04, 0.025], density: 5000.0, material: Material::Metal, color: [190, 190, 200] },
+    Archetype { synset: "carving_knife.n.01", shape: Shape::Rod, min: [0.3, 0.03, 0.02], max: [0.38, 0.04, 0.025], density: 700.0, material: Material::Metal, color: [190, 190, 200] },
     Archetype { synset: "casserole.n.02", shape: Shape::Block, min: [0.25, 0.18, 0.06], max: [0.35, 0.25, 0.09], density: 1200.0, material: Material::Ceramic, color: [200, 120, 70] }, // a casserole (food in its baking dish)
     Archetype { synset: "catsup.n.01", shape: Shape::Cylinder, min: [0.06, 0.06, 0.18], max: [0.075, 0.075, 0.23], density: 1000.0, material: Material::Plastic, color: [190, 20, 20] }, // ketchup bottle
     Archetype { synset: "cereal.n.03", shape: Shape::Block, min: [0.18, 0.06, 0.25], max: [0.22, 0.08, 0.32], density: 250.0, material: Material::Paper, color: [230, 180, 40] }, // cereal box
@@ -98,7 +98,7 @@ pub const CATALOG: &[Archetype] = &[
     Archetype { synset: "jewelry.n.01", shape: Shape::Block, min: [0.02, 0.02, 0.005], max: [0.06, 0.05, 0.02], density: 5000.0, material: Material::Metal, color: [230, 200, 70] },
     Archetype { synset: "juice.n.01", shape: Shape::Block, min: [0.07, 0.07, 0.18], max: [0.1, 0.1, 0.27], density: 1000.0, material: Material::Paper, color: [250, 160, 30] }, // juice carton
     Archetype { synset: "kettle.n.01", shape: Shape::Cylinder, min: [0.16, 0.16, 0.18], max: [0.22, 0.22, 0.25], density: 1500.0, material: Material::Metal, color: [190, 190, 200] },
-    Archetype { synset: "knife.n.01", shape: Shape::Rod, min: [0.18, 0.02, 0.015], max: [0.3, 0.03, 0.02], density: 5000.0, material: Material::Metal, color: [190, 190, 200] },
+    Archetype { synset: "knife.n.01", shape: Shape::Rod, min: [0.2, 0.02, 0.016], max: [0.3, 0.03, 0.02], density: 1500.0, material: Material::Metal, color: [190, 190, 200] },
     Archetype { synset: "lamp.n.02", shape: Shape::Cylinder, min: [0.25, 0.25, 0.45], max: [0.45, 0.45, 1.6], density: 300.0, material: Material::Metal, color: [250, 230, 150] }, // table or floor lamp
     Archetype { synset: "lemon.n.01", shape: Shape::Ball, min: [0.055, 0.055, 0.065], max: [0.07, 0.07, 0.08], density: 900.0, material: Material::Food, color: [250, 240, 70] },
     Archetype { synset: "lettuce.n.03", shape: Shape::Ball, min: [0.12, 0.12, 0.1], max: [0.18, 0.18, 0.15], density: 400.0, material: Material::Food, color: [120, 200, 80] },

@@ -367,3 +367,36 @@ fn a_general_synset_comes_as_any_of_its_kinds() {
         (0..10).all(|_| library.choose("apple.n.01", &mut rng).unwrap().synset == "apple.n.01")
     );
 }
+
+#[test]
+fn slicers_weigh_what_a_kitchen_knife_weighs() {
+    // A knife must cut by being pushed, not by its own weight (slicing needs 10 N): a real one
+    // weighs 0.05–0.3 kg, at every size and variant its archetype can come in.
+    let taxonomy = taxonomy();
+    let library = Library::new(&taxonomy);
+    let slicers: Vec<_> = CATALOG
+        .iter()
+        .filter(|a| {
+            taxonomy
+                .abilities(a.synset)
+                .is_some_and(|abilities| abilities.contains_key(&Ability::Slicer))
+        })
+        .collect();
+    assert!(slicers.len() >= 2, "{} slicer archetypes", slicers.len());
+    for a in slicers {
+        for size in [a.min, a.max] {
+            for variant in 0..a.shape.variants() {
+                let mut world = World::default();
+                let spec =
+                    library.instance_of(a, a.synset, "knife", Vector::from_array(size), variant);
+                let id = world.add(spec).unwrap();
+                let mass = world.core().mass(id);
+                assert!(
+                    (0.05..=0.3).contains(&mass),
+                    "{} of size {size:?}, variant {variant}: {mass} kg",
+                    a.synset
+                );
+            }
+        }
+    }
+}

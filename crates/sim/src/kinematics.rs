@@ -4,10 +4,12 @@
 //!
 //! Definitions (after iGibson 2.0's, see `../shared/reference/igibson-2.0-reference.md` §1.2–1.3):
 //! - `touching(a, b)`: some collider of `a` is within [`TOUCH_DISTANCE`] of some collider of `b`.
-//! - `ontop(a, b)`: `b` supports `a`: they touch at a point where `b`'s surface faces up (its
-//!   outward normal within 45° of +z). iGibson instead asks for contact and for `b` to be hit by
-//!   a ray cast down from `a`'s centre of mass; the normal test also holds for an object resting
-//!   near an edge, and never for two objects side by side.
+//! - `ontop(a, b)`: `b` supports `a` and is not above it: they touch at a point where `b`'s
+//!   surface faces up (its outward normal within 45° of +z), and a ray cast up from the centre of
+//!   `a`'s box does not hit `b` (so an apple on the shelf of a fridge is inside it, not on top).
+//!   iGibson asks for contact, for `b` to be hit by a ray cast down from `a`'s centre of mass and
+//!   not by one cast up; the normal test replaces the downward ray, since it also holds for an
+//!   object resting near an edge, and never for two objects side by side.
 //! - `under(a, b)`: a ray cast up from the top centre of `a`'s box hits `b` within 5 m, and a ray
 //!   cast down from its bottom centre does not.
 //! - `inside(a, b)`: the centre of `a`'s box lies in `b`'s box, at least half of `a`'s box lies
@@ -17,9 +19,11 @@
 //! - `nextto(a, b)`: the gap between their boxes is at most a sixth of the mean of their summed
 //!   extents, and a horizontal ray from the centre of one (16 directions, 1 m) hits the other.
 //! - `onfloor(a, floor)`: the room at the centre of `a`'s box is the floor's room, and `a` touches
-//!   the floor, or its bottom is within 10 cm of it with the floor the first fixed object below
-//!   (iGibson requires contact, which makes "the soap on the towel on the floor" — both literals
-//!   in `washing_floor` — impossible; a bottom drawer or shelf board still does not count).
+//!   the floor, or its bottom is within 10 cm of it and what lies right below it is the floor or
+//!   a flat thing lying on the floor (at most [`FLAT_HEIGHT`] tall and touching it: a mat, a
+//!   towel). iGibson requires contact, which makes "the soap on the towel on the floor" — both
+//!   literals in `washing_floor` — impossible; we keep that one exception so the activity can be
+//!   done, while an apple in a basket, a bottom drawer or a shelf's lowest board does not count.
 //! - `inroom(a, type)`: the room at the centre of `a`'s box has that type.
 //!
 //! A ray "hits" an object when it meets any of its colliders, whatever lies between (iGibson
@@ -53,6 +57,8 @@ pub const VERTICAL_RANGE: f32 = 5.0;
 pub const HORIZONTAL_RANGE: f32 = 1.0;
 /// An object whose bottom is this close above a floor is on it, even lying on a mat or a towel.
 pub const ONFLOOR_HEIGHT: f32 = 0.1;
+/// The tallest thing lying on the floor that an object on it still counts as `onfloor` on (m).
+pub const FLAT_HEIGHT: f32 = 0.03;
 /// How many horizontal directions `nextto` looks in.
 pub const HORIZONTAL_DIRECTIONS: usize = 16;
 
@@ -179,20 +185,26 @@ impl Core {
             })
     }
 
-    /// Whether `b` supports `a` (see the module docs).
+    /// Whether `b` supports `a` and is not above it (see the module docs).
     fn compute_ontop(&self, a: ObjectId, b: ObjectId) -> bool {
         a != b
-            && self.near_pairs(a, b, TOUCH_DISTANCE).any(|(x, y)| {
-                // normal2 is `y`'s outward normal at the contact: up when `y` carries `x`.
-                let contact = query::contact(
-                    x.position(),
-                    x.shape(),
-                    y.position(),
-                    y.shape(),
-                    TOUCH_DISTANCE,
-                );
-                matches!(contact, Ok(Some(c)) if c.normal2.z >= SUPPORT_COS)
-            })
+            && self.supports(a, b)
+            && !self.ray_hits(b, self.aabb(a).center(), Vector::Z, VERTICAL_RANGE)
+    }
+
+    /// Whether `a` and `b` touch where `b`'s surface faces up.
+    fn supports(&self, a: ObjectId, b: ObjectId) -> bool {
+        self.near_pairs(a, b, TOUCH_DISTANCE).any(|(x, y)| {
+            // normal2 is `y`'s outward normal at the contact: up when `y` carries `x`.
+            let contact = query::contact(
+                x.position(),
+                x.shape(),
+                y.position(),
+                y.shape(),
+                TOUCH_DISTANCE,
+            );
+            matches!(contact, Ok(Some(c)) if c.normal2.z >= SUPPORT_COS)
+        })
     }
 
     fn compute_under(&self, a: ObjectId, b: ObjectId) -> bool {
@@ -267,18 +279,26 @@ impl Core {
         if self.touching(a, floor) {
             return true;
         }
-        // Lying on something thin on the floor (a mat, a towel), not in a bottom drawer or on a
-        // shelf's lowest board: low enough, with the floor the first fixed thing below.
+        // Lying on something flat on the floor (a mat, a towel), not in a basket, a bottom drawer
+        // or on a shelf's lowest board: low enough, and resting on the floor or on a flat thing
+        // that lies on it.
         let low = own.mins.z - self.aabb(floor).maxs.z <= ONFLOOR_HEIGHT;
-        low && self.first_fixed_below(a, Vector::new(c.x, c.y, own.mins.z + 0.001)) == Some(floor)
+        low && match self.first_below(a, Vector::new(c.x, c.y, own.mins.z + 0.001)) {
+            Some(below) if below == floor => true,
+            Some(below) => {
+                let b = self.aabb(below);
+                b.maxs.z - b.mins.z <= FLAT_HEIGHT && self.touching(below, floor)
+            }
+            None => false,
+        }
     }
 
-    /// The nearest fixed object (furniture, floor) straight below a point, other than `except`.
-    fn first_fixed_below(&self, except: ObjectId, from: Vector) -> Option<ObjectId> {
+    /// The nearest object straight below a point, other than `except`.
+    fn first_below(&self, except: ObjectId, from: Vector) -> Option<ObjectId> {
         let ray = Ray::new(from, -Vector::Z);
         let mut best: Option<(f32, ObjectId)> = None;
         for (id, object) in self.objects() {
-            if id == except || !object.is_fixed() || !self.present(id) {
+            if id == except || !self.present(id) {
                 continue;
             }
             for &c in &object.colliders {

@@ -6,7 +6,7 @@
 //!    - [`StepHooks::before_substep`]: controllers set drives, velocities, forces and kinematic
 //!      targets (MuJoCo's `mj_step1`, where controls are computed from the current state);
 //!    - the physics substep (rapier), skipping contacts between ignored pairs;
-//!    - the world watches the substep: slicers' contact forces, attachments' forces (breaking
+//!    - the world watches the substep: slicers' contact impulses (summed over the step), attachments' forces (breaking
 //!      those past their maximum);
 //! 2. objects that moved are marked, which invalidates their memoized relations;
 //! 3. the state rules, in the order [`crate::states`] documents (water, toggling, temperature,
@@ -24,6 +24,7 @@ use crate::World;
 use crate::contacts::ContactFilter;
 use crate::core::STEP_SECONDS;
 use crate::object::ObjectId;
+use crate::states::slicing::SlicerPush;
 use std::sync::OnceLock;
 
 /// Code run inside [`World::step_with`]; see the module docs for when. Both methods do nothing by
@@ -80,11 +81,11 @@ impl World {
 
     /// The physics substeps; returns the objects slicers pressed hard enough, in id order.
     fn substeps(&mut self, hooks: &mut dyn StepHooks) -> Vec<ObjectId> {
-        let mut pressed: Vec<ObjectId> = Vec::new();
+        let mut push = SlicerPush::default();
         for substep in 0..self.core.substeps.count() {
             hooks.before_substep(self, substep);
             if substep == 0 && self.core.quiet {
-                return pressed;
+                return Vec::new();
             }
             let core = &mut self.core;
             core.lead_kinematic_chains();
@@ -94,12 +95,10 @@ impl World {
             core.physics.step_with_events(&filter, &());
             core.index = OnceLock::new();
             core.watch_attachments();
-            pressed.extend(core.pressed_by_slicers());
+            push.add(core.slicer_impulses());
         }
         self.core.quiet = self.core.physics.islands.num_active_bodies() == 0;
-        pressed.sort();
-        pressed.dedup();
-        pressed
+        push.pressed(STEP_SECONDS)
     }
 
     /// Steps until every body sleeps or `max_steps` have passed; whether the world came to rest.

@@ -3,7 +3,7 @@
 
 mod common;
 
-use behavior_sim::{ObjectId, World};
+use behavior_sim::{ObjectId, ObjectSpec, Part, World};
 use common::*;
 
 /// A table with a plate dropped on it and an apple dropped on the plate, settled.
@@ -195,4 +195,85 @@ fn onfloor_includes_lying_on_a_mat_but_not_sitting_in_a_low_bin() {
         !world.core().onfloor(in_bin, kitchen),
         "in a bin on the floor is not on the floor"
     );
+}
+
+#[test]
+fn onfloor_not_for_an_apple_in_a_basket_standing_on_the_floor() {
+    let mut world = World::default();
+    let (kitchen, _) = two_room_floor(&mut world);
+    // A light wicker basket, free to move: 30 cm wide, 15 cm tall, 1 cm walls.
+    let (w, h, t) = (0.15, 0.075, 0.005);
+    let parts = vec![
+        Part::at(cuboid(w, w, t), v(0.0, 0.0, t)),
+        Part::at(cuboid(t, w, h), v(-w + t, 0.0, h)),
+        Part::at(cuboid(t, w, h), v(w - t, 0.0, h)),
+        Part::at(cuboid(w, t, h), v(0.0, -w + t, h)),
+        Part::at(cuboid(w, t, h), v(0.0, w - t, h)),
+    ];
+    let mut spec = ObjectSpec::new("basket_1", "basket.n.01", parts).at(v(-2.0, 1.0, 0.0));
+    spec.density = 300.0;
+    let basket = world.add(spec).unwrap();
+    let in_basket = apple(&mut world, "apple_1", v(-2.0, 1.0, 0.1));
+    // A towel lying on the floor, a bar of soap on it (washing_floor asks for both onfloor).
+    let towel = world
+        .add(
+            ObjectSpec::new(
+                "towel_1",
+                "towel.n.01",
+                vec![Part::new(cuboid(0.3, 0.2, 0.004))],
+            )
+            .at(v(-2.0, -1.0, 0.01)),
+        )
+        .unwrap();
+    let soap = world
+        .add(
+            ObjectSpec::new(
+                "soap_1",
+                "soap.n.01",
+                vec![Part::new(cuboid(0.04, 0.03, 0.015))],
+            )
+            .at(v(-2.0, -1.0, 0.05)),
+        )
+        .unwrap();
+    settle(&mut world, 2.0);
+    assert!(
+        world.core().onfloor(basket, kitchen),
+        "the basket stands on the floor"
+    );
+    assert!(world.core().inside(in_basket, basket));
+    let bottom = world.aabb(in_basket).mins.z;
+    assert!(
+        bottom < 0.1,
+        "the apple is low ({bottom} m) but in the basket"
+    );
+    assert!(
+        !world.core().onfloor(in_basket, kitchen),
+        "in a basket is not on the floor"
+    );
+    assert!(world.core().ontop(soap, towel) && !world.core().touching(soap, kitchen));
+    assert!(
+        world.core().onfloor(soap, kitchen),
+        "on a towel lying on the floor"
+    );
+}
+
+#[test]
+fn ontop_not_for_an_apple_on_the_shelf_of_a_closed_fridge() {
+    let mut world = World::default();
+    two_room_floor(&mut world);
+    let fridge = fridge(&mut world, -2.0, 0.0);
+    let shelved = apple(&mut world, "apple_1", v(-2.0, 0.0, 0.2));
+    let on_top = apple(&mut world, "apple_2", v(-2.0, 0.0, 1.4));
+    settle(&mut world, 2.0);
+    assert!(!world.state(fridge, behavior_core::Predicate::Open));
+    assert!(world.core().inside(shelved, fridge));
+    assert!(
+        world.core().touching(shelved, fridge),
+        "it rests on the fridge's floor"
+    );
+    assert!(
+        !world.core().ontop(shelved, fridge),
+        "inside the fridge, not on top of it: the fridge is above it"
+    );
+    assert!(world.core().ontop(on_top, fridge) && !world.core().inside(on_top, fridge));
 }

@@ -18,7 +18,8 @@
 //! Each unary predicate is read from one system: `cooked`/`burnt` from the running maximum
 //! temperature against the synset's thresholds, `frozen` from the current temperature, `open`
 //! from the joints, `soaked` from water, `toggled_on` from toggling, `dusty`/`stained` from dirt,
-//! `sliced` from whether the object was replaced by halves. `broken`, `perished`, `screwed` and
+//! `sliced` from whether the object was replaced by halves. Once sliced, an object's other states
+//! are read from and written to its two halves (true when true of both). `broken`, `perished`, `screwed` and
 //! `timeset`, which no activity uses, are plain stored flags.
 //!
 //! Every setter leaves the world consistent with the value it sets (setting `cooked` raises the
@@ -147,9 +148,14 @@ impl World {
         self.systems.temperatures.now(id)
     }
 
-    /// The truth of a unary predicate for an object; `false` for binary predicates.
+    /// The truth of a unary predicate for an object; `false` for binary predicates. A sliced
+    /// object's states (but `sliced`) are its halves': true when true of both, as iGibson's
+    /// grouper of the two halves answers, so cooking the halves cooks the strawberry.
     pub fn state(&self, id: ObjectId, predicate: Predicate) -> bool {
         let object = self.core.object(id);
+        if let (Some(halves), false) = (object.replaced_by, predicate == Predicate::Sliced) {
+            return halves.iter().all(|&h| self.state(h, predicate));
+        }
         let s = &self.systems;
         match predicate {
             Predicate::Cooked => {
@@ -220,6 +226,13 @@ impl World {
             return Err(StateError::NotUnary { predicate });
         };
         let object = self.core.object(id);
+        if let (Some(halves), false) = (object.replaced_by, predicate == Predicate::Sliced) {
+            // The whole is gone; its halves carry its states.
+            for half in halves {
+                self.set_state(half, predicate, value)?;
+            }
+            return Ok(());
+        }
         if !object.has(ability) {
             return Err(StateError::Lacks {
                 object: object.name.clone(),

@@ -1,8 +1,11 @@
 //! `sliced`: a slicer pressing a sliceable object with more than 10 N replaces it by two halves.
 //!
-//! The force is read from the contact impulses of each physics substep (iGibson 2.0 §1.7 reads the
-//! normal force of the slicer link's contacts); when the slicer names a slicing edge, only
-//! contacts near it count, so pressing with the handle does not cut. The whole object is then disabled (it leaves the
+//! The force is the mean over the action step (1/30 s) of the slicers' contact forces, from the
+//! contact impulses of its physics substeps. iGibson 2.0 §1.7 reads the normal force of the
+//! slicer link's contacts after the step; a mean over the step keeps a knife laid on a tomato,
+//! whose landing spikes one substep's force, from cutting it, while a steady push above 10 N
+//! does. When the slicer names a slicing edge, only contacts near it count, so pressing with the
+//! handle does not cut. The whole object is then disabled (it leaves the
 //! simulation and the ray casts, but keeps its id, its last pose and its states), and two halves
 //! appear in its place as new objects that inherit its states: the halves its archetype defines
 //! ([`crate::ObjectSpec::halves`]), or else the two halves of its bounding box, split across its
@@ -21,10 +24,10 @@ pub const SLICE_FORCE: f32 = 10.0;
 pub const EDGE_REACH: f32 = 0.05;
 
 impl Core {
-    /// Sliceable objects pressed by a slicer with more than [`SLICE_FORCE`] in the last substep.
-    pub(crate) fn pressed_by_slicers(&self) -> Vec<ObjectId> {
-        let dt = self.physics.integration_parameters.dt;
-        let mut pressed = Vec::new();
+    /// The impulse (N·s) slicers applied in the last substep to each sliceable object they
+    /// touched (at their edge, if they name one), in id order.
+    pub(crate) fn slicer_impulses(&self) -> Vec<(ObjectId, f32)> {
+        let mut impulses: Vec<(ObjectId, f32)> = Vec::new();
         for (slicer, object) in self.objects() {
             if !object.has(Ability::Slicer) {
                 continue;
@@ -34,45 +37,81 @@ impl Core {
                 .map(|p| self.pose(slicer).transform_point(p));
             for &c in &object.colliders {
                 for pair in self.physics.narrow_phase.contact_pairs_with(c) {
-                    let other = if pair.collider1 == c {
-                        pair.collider2
-                    } else {
-                        pair.collider1
-                    };
-                    let Some(other) = self.physics.colliders.get(other) else {
+                    let Some(target) = self.sliceable_other(pair, c, slicer) else {
                         continue;
                     };
-                    let id = ObjectId(other.user_data as u32);
-                    if other.user_data == DROP_TAG
-                        || id == slicer
-                        || id.0 as usize >= self.objects.len()
-                    {
+                    if edge.is_some_and(|edge| !self.touches_near(pair, edge)) {
                         continue;
                     }
-                    let sliceable =
-                        self.object(id).has(Ability::Sliceable) && self.object(id).is_present();
-                    let at_edge = match edge {
-                        None => true,
-                        Some(edge) => {
-                            let c1 = &self.physics.colliders[pair.collider1];
-                            pair.manifolds().iter().flat_map(|m| &m.points).any(|p| {
-                                (c1.position().transform_point(p.local_p1) - edge).length()
-                                    <= EDGE_REACH
-                            })
-                        }
-                    };
-                    if sliceable
-                        && at_edge
-                        && pair.total_impulse_magnitude() / dt > SLICE_FORCE
-                        && !pressed.contains(&id)
-                    {
-                        pressed.push(id);
-                    }
+                    add_impulse(&mut impulses, target, pair.total_impulse_magnitude());
                 }
             }
         }
-        pressed.sort();
-        pressed
+        impulses.sort_by_key(|&(id, _)| id);
+        impulses
+    }
+
+    /// The other side of a slicer's contact pair, if it is a sliceable object still whole.
+    fn sliceable_other(
+        &self,
+        pair: &rapier3d::geometry::ContactPair,
+        own: rapier3d::geometry::ColliderHandle,
+        slicer: ObjectId,
+    ) -> Option<ObjectId> {
+        let other = if pair.collider1 == own {
+            pair.collider2
+        } else {
+            pair.collider1
+        };
+        let other = self.physics.colliders.get(other)?;
+        let id = ObjectId(other.user_data as u32);
+        let valid = other.user_data != DROP_TAG
+            && id != slicer
+            && (id.0 as usize) < self.objects.len()
+            && self.object(id).has(Ability::Sliceable)
+            && self.object(id).is_present();
+        valid.then_some(id)
+    }
+
+    /// Whether a contact pair touches within [`EDGE_REACH`] of a slicing edge.
+    fn touches_near(&self, pair: &rapier3d::geometry::ContactPair, edge: Vector) -> bool {
+        let c1 = &self.physics.colliders[pair.collider1];
+        pair.manifolds()
+            .iter()
+            .flat_map(|m| &m.points)
+            .any(|p| (c1.position().transform_point(p.local_p1) - edge).length() <= EDGE_REACH)
+    }
+}
+
+/// Adds an impulse to an object's running total.
+fn add_impulse(impulses: &mut Vec<(ObjectId, f32)>, id: ObjectId, impulse: f32) {
+    match impulses.iter_mut().find(|(o, _)| *o == id) {
+        Some((_, total)) => *total += impulse,
+        None => impulses.push((id, impulse)),
+    }
+}
+
+/// The slicer impulses of a step's substeps, summed per object.
+#[derive(Default)]
+pub(crate) struct SlicerPush(Vec<(ObjectId, f32)>);
+
+impl SlicerPush {
+    /// Adds one substep's impulses ([`Core::slicer_impulses`]).
+    pub(crate) fn add(&mut self, substep: Vec<(ObjectId, f32)>) {
+        for (id, impulse) in substep {
+            add_impulse(&mut self.0, id, impulse);
+        }
+    }
+
+    /// The objects pushed, on average over the step of `seconds`, harder than [`SLICE_FORCE`], in
+    /// id order.
+    pub(crate) fn pressed(mut self, seconds: f32) -> Vec<ObjectId> {
+        self.0.sort_by_key(|&(id, _)| id);
+        self.0
+            .into_iter()
+            .filter(|&(_, impulse)| impulse / seconds > SLICE_FORCE)
+            .map(|(id, _)| id)
+            .collect()
     }
 }
 

@@ -1,7 +1,8 @@
 //! Water sources and `soaked`.
 //!
 //! A water source (the sink) runs while it is toggled on (always, if it cannot be toggled) and
-//! emits one drop every 3 steps (0.1 s) from 5 cm below its outlet, from a pool of 10 drops:
+//! emits one drop every 4th step from 5 cm below its outlet (iGibson's counter emits once the steps
+//! since the last drop reach 0.1 s / (1/30 s) = 3.3, i.e. on the 4th), from a pool of 10 drops:
 //! small dynamic spheres of 0.05 g (iGibson 2.0, §1.5). A soakable object that a drop touches
 //! becomes soaked, and stays so. A drop returns to the pool when it touches its source or after
 //! 2 s (iGibson recycles only on touching the source, so its pool can run dry).
@@ -23,7 +24,7 @@ pub const DROP_RADII: [f32; 3] = [0.01, 0.009, 0.008];
 /// kg.
 pub const DROP_MASS: f32 = 5e-5;
 /// A running source emits one drop every this many steps.
-pub const STEPS_BETWEEN_DROPS: u32 = 3;
+pub const STEPS_BETWEEN_DROPS: u32 = 4;
 /// A drop returns to the pool after this many steps.
 pub const DROP_LIFETIME_STEPS: u32 = 60;
 /// Drops leave the outlet this far below it (m).

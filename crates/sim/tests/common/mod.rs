@@ -269,7 +269,10 @@ pub fn dirty_plate(world: &mut World, at: Vector) -> ObjectId {
     world.add(spec).unwrap()
 }
 
-/// A kitchen knife lying flat, blade down: a slicer.
+/// Of a kitchen knife (kg): a real one weighs 0.05–0.3 kg.
+pub const KNIFE_MASS: f32 = 0.192;
+
+/// A kitchen knife lying flat, blade down: a slicer of [`KNIFE_MASS`] (a 24 × 2 × 4 cm box).
 pub fn knife(world: &mut World, at: Vector) -> ObjectId {
     let mut spec = ObjectSpec::new(
         "knife_1",
@@ -278,7 +281,7 @@ pub fn knife(world: &mut World, at: Vector) -> ObjectId {
     )
     .at(at)
     .ability(Ability::Slicer, &[]);
-    spec.density = 7800.0;
+    spec.density = KNIFE_MASS / (0.24 * 0.02 * 0.04);
     world.add(spec).unwrap()
 }
 

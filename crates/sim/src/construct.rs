@@ -48,6 +48,8 @@ impl Core {
             links,
             halves: spec.halves,
             density: spec.density,
+            friction: spec.friction,
+            angular_damping: spec.angular_damping,
             parts: spec.parts,
             visual: spec.visual,
             meshes: spec.meshes,

@@ -22,6 +22,8 @@
 use crate::core::{Core, WorldError};
 use crate::object::{BodyRef, JointHandle, JointKind, JointSpec, ObjectId};
 use crate::states::StateError;
+use behavior_core::rng::{SimRng, uniform};
+use rand_chacha::rand_core::Rng;
 use rapier3d::dynamics::{GenericJoint, JointAxis, MotorModel};
 use rapier3d::math::{Pose, Rotation, Vector};
 
@@ -335,29 +337,52 @@ impl Core {
         })
     }
 
-    /// Opens every joint with limits fully, or closes them all.
-    pub(crate) fn set_open(&mut self, id: ObjectId, open: bool) -> Result<(), StateError> {
-        let targets: Vec<(usize, f32)> = self
+    /// Opens a random non-empty set of the joints with limits, each to a random position between
+    /// the open threshold and its open end (as iGibson's setter), or closes them all fully.
+    pub(crate) fn set_open(
+        &mut self,
+        id: ObjectId,
+        open: bool,
+        rng: &mut SimRng,
+    ) -> Result<(), StateError> {
+        let limited: Vec<(usize, [f32; 2])> = self
             .object(id)
             .links
             .iter()
             .enumerate()
-            .filter_map(|(i, l)| {
-                l.joint
-                    .limits
-                    .map(|[lo, hi]| (i, if open { hi } else { lo }))
-            })
+            .filter_map(|(i, l)| l.joint.limits.map(|limits| (i, limits)))
             .collect();
-        if targets.is_empty() {
+        if limited.is_empty() {
             return Err(StateError::NoJoints {
                 object: self.object(id).name.clone(),
             });
         }
-        for (i, target) in targets {
+        let chosen = if open {
+            random_subset(limited.len(), rng)
+        } else {
+            vec![true; limited.len()]
+        };
+        for (&(i, [lo, hi]), opened) in limited.iter().zip(chosen) {
+            let target = match (open, opened) {
+                (false, _) => lo,
+                (true, false) => continue,
+                // Just beyond the threshold at least, so the draw always reads as open.
+                (true, true) => lo + (hi - lo) * uniform(rng, OPEN_FRACTION + 0.01, 1.0),
+            };
             // The link exists and the target is finite: this cannot fail.
             let _ = self.set_joint_position(id, i, target);
         }
         Ok(())
+    }
+}
+
+/// A random non-empty subset of `n` items, as flags.
+fn random_subset(n: usize, rng: &mut SimRng) -> Vec<bool> {
+    loop {
+        let flags: Vec<bool> = (0..n).map(|_| rng.next_u32() & 1 == 1).collect();
+        if flags.iter().any(|&f| f) {
+            return flags;
+        }
     }
 }
 

@@ -55,8 +55,8 @@ pub use core::{Core, STEP_SECONDS, Substeps, WorldError};
 pub use dynamics::Velocity;
 pub use joints::{Drive, JointState, OPEN_FRACTION};
 pub use kinematics::{
-    HORIZONTAL_DIRECTIONS, HORIZONTAL_RANGE, ONFLOOR_HEIGHT, SUPPORT_COS, TOUCH_DISTANCE,
-    VERTICAL_RANGE,
+    FLAT_HEIGHT, HORIZONTAL_DIRECTIONS, HORIZONTAL_RANGE, ONFLOOR_HEIGHT, SUPPORT_COS,
+    TOUCH_DISTANCE, VERTICAL_RANGE,
 };
 pub use object::{
     BodyKind, BodyRef, JointKind, JointModel, JointSpec, Link, LinkSpec, Object, ObjectId,
@@ -74,6 +74,7 @@ pub use states::dirt::{
     CLEAN_THRESHOLD, CLEANING_REACH, FLOOR_CLEAN_THRESHOLD, MIN_PARTICLES, PARTICLES_PER_SET,
     WIPE_MARGIN,
 };
+pub use states::record::{ObjectState, ParticleRecord};
 pub use states::slicing::{EDGE_REACH, SLICE_FORCE};
 pub use states::temperature::{
     DECAY_RATE, DEFAULT_BURN_TEMPERATURE, DEFAULT_COOK_TEMPERATURE, DEFAULT_DISTANCE_THRESHOLD,

@@ -352,6 +352,10 @@ pub struct Object {
     pub halves: Option<[Vec<Part>; 2]>,
     /// The density it was made with (for its halves).
     pub density: f32,
+    /// The friction of its parts (its halves keep it).
+    pub friction: f32,
+    /// The angular damping of its body (its halves keep it).
+    pub angular_damping: f32,
     /// The body's parts as given (for drawing).
     pub parts: Vec<Part>,
     /// Its appearance.

@@ -1,20 +1,24 @@
 //! Dust and stains as particles on surfaces, and cleaning.
 //!
 //! Making an object dusty (or stained) places 20 particles on its upward-facing surfaces, found by
-//! casting rays down onto it on a jittered grid over its footprint; they are fixed in the object's
-//! frame and move with it. The object is dusty while more than 50 % of the particles ever placed
+//! casting rays down onto it at points drawn over its footprint (one per cell of a 5 × 4 grid, at
+//! a random spot in the cell) from the world's seeded generator ([`crate::World::reseed`]), so
+//! layouts differ between instances and repeat for a seed. Each particle is fixed to the body it
+//! landed on, the object's or a link's, and moves with it: a dusty cabinet door keeps its dust
+//! when it swings open. The object is dusty while more than 50 % of the particles ever placed
 //! remain (75 % for floors), as in iGibson 2.0 (§1.6; iGibson also uses side faces).
 //!
 //! Each step, a cleaning tool that touches a dirty object removes the particles inside its box,
 //! grown by 1 cm (and, if the tool names a cleaning area, within 10 cm of it); stains only come
 //! off when the tool is soaked.
 
-use crate::core::Core;
+use crate::core::{Core, untag};
 use crate::object::{ObjectId, PointKind};
 use crate::states::StateError;
 use crate::states::water::Water;
+use behavior_core::rng::{SimRng, uniform};
 use behavior_core::{Ability, FLOOR_SYNSET, Predicate};
-use rapier3d::math::Vector;
+use rapier3d::math::{Pose, Vector};
 use rapier3d::parry::bounding_volume::BoundingVolume;
 
 /// Particles placed on a newly dirty object.
@@ -30,12 +34,21 @@ pub const WIPE_MARGIN: f32 = 0.01;
 /// With a [`PointKind::CleaningArea`], only particles this close to it are wiped (m).
 pub const CLEANING_REACH: f32 = 0.1;
 
-/// Particles of one kind on one object, in the object's frame.
+/// A particle: where it sits in the frame of the body it lies on.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Particle {
+    /// The link it lies on, or `None` for the object's body.
+    pub(crate) link: Option<usize>,
+    /// Its position in that body's frame.
+    pub(crate) local: Vector,
+}
+
+/// Particles of one kind on one object.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub(crate) struct ParticleSet {
-    points: Vec<Vector>,
+    pub(crate) points: Vec<Particle>,
     /// How many were placed when the set was last made.
-    placed: usize,
+    pub(crate) placed: usize,
 }
 
 /// The dirt system: each object's dust and stain particles.
@@ -79,12 +92,22 @@ impl Dirt {
 
     /// Particles of an object in world coordinates.
     pub(crate) fn positions(&self, core: &Core, id: ObjectId, kind: Predicate) -> Vec<Vector> {
-        let pose = core.pose(id);
+        let frames = Frames::of(core, id);
         self.set(id, kind)
             .points
             .iter()
-            .map(|&p| pose.transform_point(p))
+            .map(|p| frames.place(p))
             .collect()
+    }
+
+    /// An object's particles of one kind, as kept (for saving).
+    pub(crate) fn particles(&self, id: ObjectId, kind: Predicate) -> &ParticleSet {
+        self.set(id, kind)
+    }
+
+    /// Replaces an object's particles of one kind (for loading a saved state).
+    pub(crate) fn put(&mut self, id: ObjectId, kind: Predicate, set: ParticleSet) {
+        *self.set_mut(id, kind) = set;
     }
 
     pub(crate) fn is_dirty(&self, core: &Core, id: ObjectId, kind: Predicate) -> bool {
@@ -101,14 +124,14 @@ impl Dirt {
         &mut self,
         core: &Core,
         id: ObjectId,
-        kind: Predicate,
-        dirty: bool,
+        (kind, dirty): (Predicate, bool),
+        rng: &mut SimRng,
     ) -> Result<(), StateError> {
         if !dirty {
             *self.set_mut(id, kind) = ParticleSet::default();
             return Ok(());
         }
-        let points = sample_top_surface(core, id, kind as u64);
+        let points = sample_top_surface(core, id, rng);
         if points.len() < MIN_PARTICLES {
             return Err(StateError::Unsupported {
                 object: core.object(id).name.clone(),
@@ -153,59 +176,72 @@ impl Dirt {
                 if dirty == tool || clean || !core.touching(tool, dirty) {
                     continue;
                 }
-                let pose = core.pose(dirty);
+                let frames = Frames::of(core, dirty);
                 for &kind in kinds {
                     self.set_mut(dirty, kind)
                         .points
-                        .retain(|&p| !wipes(pose.transform_point(p)));
+                        .retain(|p| !wipes(frames.place(p)));
                 }
             }
         }
     }
 }
 
-/// Up to [`PARTICLES_PER_SET`] points on the object's surfaces that face up, in its frame.
-fn sample_top_surface(core: &Core, id: ObjectId, salt: u64) -> Vec<Vector> {
+/// The current poses of an object's body and links, to place particles in the world.
+struct Frames {
+    body: Pose,
+    links: Vec<Pose>,
+}
+
+impl Frames {
+    fn of(core: &Core, id: ObjectId) -> Frames {
+        let links = (0..core.object(id).links.len())
+            .map(|l| core.link_pose(id, l))
+            .collect();
+        Frames {
+            body: core.pose(id),
+            links,
+        }
+    }
+
+    fn place(&self, p: &Particle) -> Vector {
+        let frame = p.link.and_then(|l| self.links.get(l)).unwrap_or(&self.body);
+        frame.transform_point(p.local)
+    }
+}
+
+/// Up to [`PARTICLES_PER_SET`] particles on the object's surfaces that face up, each fixed to
+/// the body (object or link) it landed on.
+fn sample_top_surface(core: &Core, id: ObjectId, rng: &mut SimRng) -> Vec<Particle> {
     let aabb = core.aabb(id);
-    let pose = core.pose(id);
     let (cols, rows) = (5, 4);
     let mut points = Vec::new();
     for k in 0..cols * rows {
-        // A fixed jitter per cell (a hash of object, kind and cell) keeps placement repeatable.
-        let h = splitmix(u64::from(id.0) << 32 ^ salt << 16 ^ k as u64);
-        let (jx, jy) = (
-            (h & 0xffff) as f32 / 65535.0,
-            (h >> 16 & 0xffff) as f32 / 65535.0,
-        );
-        let fx = ((k % cols) as f32 + 0.1 + 0.8 * jx) / cols as f32;
-        let fy = ((k / cols) as f32 + 0.1 + 0.8 * jy) / rows as f32;
+        // A random spot in each cell of the grid, so the particles cover the whole footprint.
+        let fx = ((k % cols) as f32 + uniform(rng, 0.1, 0.9)) / cols as f32;
+        let fy = ((k / cols) as f32 + uniform(rng, 0.1, 0.9)) / rows as f32;
         let x = aabb.mins.x + fx * (aabb.maxs.x - aabb.mins.x);
         let y = aabb.mins.y + fy * (aabb.maxs.y - aabb.mins.y);
         let top = Vector::new(x, y, aabb.maxs.z + 0.01);
-        let colliders = &core.object(id).colliders;
-        let hit = colliders
+        let ray = rapier3d::prelude::Ray::new(top, -Vector::Z);
+        let range = aabb.maxs.z - aabb.mins.z + 0.02;
+        let hit = core
+            .object(id)
+            .colliders
             .iter()
-            .filter_map(|&c| {
-                let c = &core.physics.colliders[c];
-                let ray = rapier3d::prelude::Ray::new(top, -Vector::Z);
-                let range = aabb.maxs.z - aabb.mins.z + 0.02;
+            .map(|&c| &core.physics.colliders[c])
+            .filter_map(|c| {
                 c.shape()
                     .cast_ray_and_get_normal(c.position(), &ray, range, true)
                     .filter(|hit| hit.normal.z > 0.5)
-                    .map(|hit| hit.time_of_impact)
+                    .map(|hit| (hit.time_of_impact, untag(c.user_data).and_then(|b| b.link)))
             })
-            .min_by(f32::total_cmp);
-        if let Some(t) = hit {
-            let world = top - Vector::Z * t;
-            points.push(pose.inverse_transform_point(world));
+            .min_by(|a, b| a.0.total_cmp(&b.0));
+        if let Some((t, link)) = hit {
+            let frame = link.map_or_else(|| core.pose(id), |l| core.link_pose(id, l));
+            let local = frame.inverse_transform_point(top - Vector::Z * t);
+            points.push(Particle { link, local });
         }
     }
     points
-}
-
-fn splitmix(mut x: u64) -> u64 {
-    x = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
-    x = (x ^ (x >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    x = (x ^ (x >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    x ^ (x >> 31)
 }

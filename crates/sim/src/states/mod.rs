@@ -24,8 +24,12 @@
 //!
 //! Every setter leaves the world consistent with the value it sets (setting `cooked` raises the
 //! temperature history, setting `open` moves the joints), so that the rules agree afterwards.
+//! Setters that iGibson randomizes (particle layouts; `open`, which opens a random non-empty set
+//! of joints each to a random point between the open threshold and the limit) draw from the
+//! world's seeded generator ([`World::reseed`]).
 
 pub(crate) mod dirt;
+pub(crate) mod record;
 pub(crate) mod slicing;
 pub(crate) mod temperature;
 pub(crate) mod toggling;
@@ -34,6 +38,7 @@ pub(crate) mod water;
 use crate::World;
 use crate::core::Core;
 use crate::object::ObjectId;
+use behavior_core::rng::{SimRng, seeded};
 use behavior_core::{Ability, Predicate};
 use dirt::Dirt;
 use temperature::{
@@ -70,6 +75,14 @@ pub enum StateError {
         /// The object's name.
         object: String,
     },
+    /// A saved state that cannot be put back as it is.
+    #[error("{object}: the saved state is not valid: {reason}")]
+    BadRecord {
+        /// The object's name.
+        object: String,
+        /// What is wrong with it.
+        reason: String,
+    },
     /// The world cannot make the state hold (or stop holding) for this object.
     #[error("{object}: `{predicate}` cannot be set to {value}: {reason}")]
     Unsupported {
@@ -89,11 +102,19 @@ pub enum StateError {
 pub(crate) struct Flags(Vec<u32>);
 
 impl Flags {
-    fn get(&self, id: ObjectId, p: Predicate) -> bool {
+    /// The predicates kept as plain flags: no rule computes them.
+    pub(crate) const STORED: [Predicate; 4] = [
+        Predicate::Broken,
+        Predicate::Perished,
+        Predicate::Screwed,
+        Predicate::TimeSet,
+    ];
+
+    pub(crate) fn get(&self, id: ObjectId, p: Predicate) -> bool {
         self.0[id.0 as usize] & (1 << p as u32) != 0
     }
 
-    fn set(&mut self, id: ObjectId, p: Predicate, value: bool) {
+    pub(crate) fn set(&mut self, id: ObjectId, p: Predicate, value: bool) {
         let bits = &mut self.0[id.0 as usize];
         if value {
             *bits |= 1 << p as u32;
@@ -103,14 +124,30 @@ impl Flags {
     }
 }
 
-/// Every state system, each owning its data (one entry per object, by id).
-#[derive(Clone, Debug, Default)]
+/// Every state system, each owning its data (one entry per object, by id), and the generator
+/// the setters draw from.
+#[derive(Clone, Debug)]
 pub(crate) struct Systems {
     pub(crate) water: Water,
     pub(crate) toggles: Toggles,
     pub(crate) temperatures: Temperatures,
     pub(crate) dirt: Dirt,
     pub(crate) flags: Flags,
+    /// Draws of the setters: particle layouts, how far `open` opens.
+    pub(crate) rng: SimRng,
+}
+
+impl Default for Systems {
+    fn default() -> Self {
+        Systems {
+            water: Water::default(),
+            toggles: Toggles::default(),
+            temperatures: Temperatures::default(),
+            dirt: Dirt::default(),
+            flags: Flags::default(),
+            rng: seeded(0),
+        }
+    }
 }
 
 impl Systems {
@@ -143,6 +180,13 @@ impl Systems {
 }
 
 impl World {
+    /// Seeds the draws of the state setters — where dust and stain particles fall, which joints
+    /// `open` opens and how far — so that instances sampled from different seeds differ and the
+    /// same seed repeats. A new world starts from seed 0; snapshots carry the generator.
+    pub fn reseed(&mut self, seed: u64) {
+        self.systems.rng = seeded(seed);
+    }
+
     /// An object's current temperature (°C).
     pub fn temperature(&self, id: ObjectId) -> f32 {
         self.systems.temperatures.now(id)
@@ -264,12 +308,15 @@ impl World {
                 let max = systems.temperatures.max(id).max(now);
                 systems.temperatures.set(id, now, max);
             }
-            Predicate::Open => self.core.set_open(id, value)?,
+            Predicate::Open => self.core.set_open(id, value, &mut systems.rng)?,
             Predicate::Soaked => systems.water.set_soaked(id, value),
             Predicate::ToggledOn => systems.toggles.set(id, value),
             Predicate::Sliced => self.set_sliced(id, value)?,
             Predicate::Dusty | Predicate::Stained => {
-                systems.dirt.set_dirty(&self.core, id, predicate, value)?
+                let rng = &mut systems.rng;
+                systems
+                    .dirt
+                    .set_dirty(&self.core, id, (predicate, value), rng)?
             }
             p => systems.flags.set(id, p, value),
         }

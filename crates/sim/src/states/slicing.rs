@@ -170,10 +170,13 @@ impl World {
                 specs.push(spec);
             }
         }
+        // The halves are of the whole's stuff: its look, friction and damping.
         for spec in &mut specs {
             spec.abilities = object.abilities.clone();
             spec.abilities.remove(&Ability::Sliceable);
             spec.visual = object.visual;
+            spec.friction = object.friction;
+            spec.angular_damping = object.angular_damping;
         }
         let mut halves = [id; 2];
         for (k, spec) in specs.into_iter().enumerate() {

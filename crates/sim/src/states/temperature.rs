@@ -72,6 +72,12 @@ impl Temperatures {
         self.max[id.0 as usize] = max.max(now);
     }
 
+    /// Puts back saved temperatures as they were (`max` may be `-inf`: never stepped).
+    pub(crate) fn restore(&mut self, id: ObjectId, now: f32, max: f32) {
+        self.now[id.0 as usize] = now;
+        self.max[id.0 as usize] = max;
+    }
+
     /// A half made by slicing starts at the whole's temperatures.
     pub(crate) fn inherit(&mut self, from: ObjectId, to: ObjectId) {
         let (f, t) = (from.0 as usize, to.0 as usize);

@@ -37,6 +37,17 @@ impl Toggles {
         self.held_steps[id.0 as usize] = 0;
     }
 
+    /// Steps a hand has been held at the object's button.
+    pub(crate) fn held_steps(&self, id: ObjectId) -> u32 {
+        self.held_steps[id.0 as usize]
+    }
+
+    /// Puts back a saved switch and counter.
+    pub(crate) fn restore(&mut self, id: ObjectId, on: bool, held_steps: u32) {
+        self.on[id.0 as usize] = on;
+        self.held_steps[id.0 as usize] = held_steps;
+    }
+
     /// A half made by slicing starts with the whole's switch.
     pub(crate) fn inherit(&mut self, from: ObjectId, to: ObjectId) {
         self.on[to.0 as usize] = self.on[from.0 as usize];

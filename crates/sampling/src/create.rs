@@ -3,7 +3,9 @@
 //!
 //! Supports and containers are made before what they hold, so a held object can be sized to
 //! fit; a container that must hold several is made as large as its kind comes. Every object is
-//! parked far away until it is placed.
+//! parked far away until it is placed, in a random orientation: a random yaw about the vertical
+//! and one of its archetype's stable resting orientations (a book flat or on its side, a bottle
+//! standing or lying), which placement keeps.
 
 use crate::error::SampleError;
 use crate::instance::Created;
@@ -13,7 +15,9 @@ use behavior_assets::Archetype;
 use behavior_bddl::activity::{Activity, InstanceId, Literal};
 use behavior_bddl::ground::Node;
 use behavior_bddl::{GroundGoal, Predicate};
-use rapier3d::math::{Pose, Vector};
+use behavior_core::rng::uniform;
+use rand_chacha::rand_core::Rng;
+use rapier3d::math::{Mat3, Pose, Rotation, Vector};
 
 /// Where objects are to go, as sizing sees it: the init's placement literals and every positive
 /// `inside`/`ontop` atom of the ground goal, so that the goal stays reachable too.
@@ -90,11 +94,15 @@ impl Attempt<'_> {
         let instance = self.activity.instance(i);
         let synset = self.activity.category(instance.category).name.clone();
         let (archetype, drawn, variant) = self.library.sample_any(&synset, &mut self.rng)?;
-        let size = self.fitted_size(i, archetype, drawn, demands);
+        let resting = archetype.shape.resting_orientations();
+        let lying = resting[self.rng.next_u32() as usize % resting.len()];
+        let size = self.fitted_size(i, archetype, drawn, demands, lying);
         let mut spec = self
             .library
             .instance_of(archetype, &synset, &instance.name, size, variant);
-        spec.pose = Pose::from_translation(Vector::new(1000.0 + 5.0 * i.0 as f32, 1000.0, 0.0));
+        let parked = Vector::new(1000.0 + 5.0 * i.0 as f32, 1000.0, 0.0);
+        let yaw = Rotation::from_rotation_z(uniform(&mut self.rng, 0.0, std::f32::consts::TAU));
+        spec.pose = Pose::from_parts(parked, yaw * lying);
         spec.body = behavior_sim::BodyKind::Dynamic;
         let id = self.world.add(spec).map_err(|cause| SampleError::Add {
             instance: instance.name.clone(),
@@ -113,33 +121,46 @@ impl Attempt<'_> {
 
     /// The drawn size of `i`, made as large as its kind comes if it must hold three or more,
     /// and shrunk, if need be, so that it fits side by side with everything else on or in what
-    /// it goes on or in.
+    /// it goes on or in, standing as `lying` turns it. What goes inside something must fit
+    /// across it at any yaw (placement turns it at random), so its diagonal is what counts.
     fn fitted_size(
         &self,
         i: InstanceId,
         archetype: &Archetype,
         drawn: Vector,
         demands: &Demands,
+        lying: Rotation,
     ) -> Vector {
         let mut size = drawn;
         if demands.holds(i) >= 3 {
             size = Vector::from_array(archetype.max);
         }
+        // The box as it will stand: a resting orientation only swaps its axes.
+        let turn = Mat3::from_quat(lying).abs();
+        let mut standing = turn * size;
         for l in demands.of(i) {
             let o = target(l);
             let Some(host) = self.bindings[o.0 as usize] else {
                 continue;
             };
-            let b = self.world.core().aabb(host);
+            let b = self.world.core().local_aabb(host);
             let room = b.maxs - b.mins;
             let share = 1.0 / (demands.holds(o) as f32).sqrt().ceil().max(1.0);
-            let cap = match l.atom.predicate {
-                Predicate::Inside => room * Vector::new(0.7 * share, 0.7 * share, 0.4),
-                Predicate::OnTop => room * Vector::new(0.9 * share, 0.9 * share, 10.0),
-                _ => continue,
-            };
-            size = size.min(cap);
+            match l.atom.predicate {
+                Predicate::Inside => {
+                    let across = 0.8 * share * room.x.min(room.y);
+                    let diagonal = standing.x.hypot(standing.y);
+                    let shrink = (across / diagonal).min(1.0);
+                    standing.x *= shrink;
+                    standing.y *= shrink;
+                    standing.z = standing.z.min(0.4 * room.z);
+                }
+                Predicate::OnTop => {
+                    standing = standing.min(room * Vector::new(0.9 * share, 0.9 * share, 10.0));
+                }
+                _ => {}
+            }
         }
-        size
+        turn.transpose() * standing
     }
 }

@@ -11,7 +11,7 @@ use behavior_bddl::Taxonomy;
 use behavior_bddl::activity::{Activity, InitLiteral, Literal};
 use behavior_sim::{ObjectId, World};
 use rand_chacha::ChaCha8Rng;
-use rand_chacha::rand_core::SeedableRng;
+use rand_chacha::rand_core::{Rng, SeedableRng};
 
 /// Attempts per instance, each with fresh randomness, before giving up: iGibson's sampler also
 /// retries, and most failures are a crowded support or an unlucky size.
@@ -96,6 +96,9 @@ impl Task<'_> {
         draft.create_objects()?;
         let bindings = draft.bound();
         draft.place_objects(&bindings)?;
+        // The state setters (dust layouts, how far things open) draw from the attempt's stream.
+        let states_seed = draft.rng.next_u64();
+        draft.world.reseed(states_seed);
         draft.set_states(&bindings)?;
         draft.settle_and_check(&bindings)?;
         let mut rng = draft.rng;

@@ -535,3 +535,91 @@ fn loading_a_wrong_or_broken_file_says_what_is_wrong() {
         Ok(_) => panic!("a broken instance loaded"),
     }
 }
+
+#[test]
+fn orientations_and_openings_differ_over_seeds() {
+    // The paper's diversity experiment assumes instances differ in orientation, not just in
+    // position; an `open` init opens a random amount.
+    let (_, knowledge) = setup();
+    let library = Library::new(&knowledge.taxonomy);
+    let text = "(define (problem turned_0) (:domain igibson)
+      (:objects book.n.02_1 book.n.02_2 - book.n.02 bottle.n.01_1 - bottle.n.01
+                cabinet.n.01_1 - cabinet.n.01 countertop.n.01_1 - countertop.n.01
+                floor.n.01_1 - floor.n.01 agent.n.01_1 - agent.n.01)
+      (:init (ontop book.n.02_1 countertop.n.01_1) (ontop book.n.02_2 countertop.n.01_1)
+             (ontop bottle.n.01_1 countertop.n.01_1) (open cabinet.n.01_1)
+             (inroom cabinet.n.01_1 kitchen) (inroom countertop.n.01_1 kitchen)
+             (inroom floor.n.01_1 kitchen) (onfloor agent.n.01_1 floor.n.01_1))
+      (:goal (not (open ?cabinet.n.01_1))))";
+    let (activity, _) = knowledge
+        .load(&behavior_bddl::Source::new("turned.bddl", text))
+        .unwrap();
+    let home = covering_home(&activity, &library, &knowledge);
+    let samples: Vec<_> = (0..4)
+        .map(|seed| instantiate(&activity, &home, seed, &library, &knowledge.taxonomy).unwrap())
+        .collect();
+    let rotation = |s: &behavior_sampling::Instance, k: usize| s.world.pose(s.bindings[k]).rotation;
+    for k in 0..3 {
+        let name = &activity.instances[k].name;
+        let angles: Vec<f32> = samples
+            .iter()
+            .map(|s| rotation(s, k).angle_between(rotation(&samples[0], k)))
+            .collect();
+        assert!(
+            angles[1..].iter().all(|&a| a > 0.01),
+            "{name} turns the same way for two seeds: {angles:?}"
+        );
+    }
+    let cabinet = 3;
+    let openings: Vec<Vec<f32>> = samples
+        .iter()
+        .map(|s| {
+            let id = s.bindings[cabinet];
+            (0..s.world.object(id).links.len())
+                .map(|l| s.world.core().joint_position(id, l))
+                .collect()
+        })
+        .collect();
+    for (s, joints) in samples.iter().zip(&openings) {
+        assert!(
+            s.world
+                .state(s.bindings[cabinet], behavior_bddl::Predicate::Open)
+        );
+        assert!(!joints.is_empty());
+    }
+    let mut distinct = openings.clone();
+    distinct.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    distinct.dedup();
+    assert!(distinct.len() >= 3, "openings over 4 seeds: {openings:?}");
+}
+
+#[test]
+fn a_sliced_tomato_can_be_asked_for_in_a_bowl() {
+    // Starting sliced, the tomato's halves are placed as one piece, by the sampler and by the goal
+    // check alike.
+    let (_, knowledge) = setup();
+    let library = Library::new(&knowledge.taxonomy);
+    let text = "(define (problem sliced_0) (:domain igibson)
+      (:objects tomato.n.01_1 - tomato.n.01 bowl.n.01_1 - bowl.n.01
+                countertop.n.01_1 - countertop.n.01 floor.n.01_1 - floor.n.01 agent.n.01_1 - agent.n.01)
+      (:init (ontop tomato.n.01_1 countertop.n.01_1) (sliced tomato.n.01_1)
+             (ontop bowl.n.01_1 countertop.n.01_1)
+             (inroom countertop.n.01_1 kitchen) (inroom floor.n.01_1 kitchen)
+             (onfloor agent.n.01_1 floor.n.01_1))
+      (:goal (inside ?tomato.n.01_1 ?bowl.n.01_1)))";
+    let (activity, _) = knowledge
+        .load(&behavior_bddl::Source::new("sliced.bddl", text))
+        .unwrap();
+    let home = covering_home(&activity, &library, &knowledge);
+    for seed in 0..3 {
+        let instance = instantiate(&activity, &home, seed, &library, &knowledge.taxonomy)
+            .unwrap_or_else(|e| panic!("seed {seed}: {e}"));
+        let tomato = instance.bindings[0];
+        assert!(
+            instance
+                .world
+                .state(tomato, behavior_bddl::Predicate::Sliced)
+        );
+        assert!(all_init_literals_hold(&activity, &instance));
+    }
+}

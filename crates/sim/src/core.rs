@@ -271,13 +271,36 @@ impl Core {
         aabb
     }
 
+    /// The box around an object's body colliders (its links' excluded) in its own frame: its
+    /// size as built, whatever way it is turned.
+    pub fn local_aabb(&self, id: ObjectId) -> Aabb {
+        let object = self.object(id);
+        let mut boxes = object
+            .colliders
+            .iter()
+            .map(|&c| &self.physics.colliders[c])
+            .filter(|c| c.parent() == Some(object.body))
+            .map(|c| {
+                let at = c.position_wrt_parent().copied().unwrap_or(Pose::IDENTITY);
+                c.shape().compute_aabb(&at)
+            });
+        let first = boxes
+            .next()
+            .unwrap_or_else(|| Aabb::new(Vector::ZERO, Vector::ZERO));
+        boxes.fold(first, |mut all, b| {
+            all.merge(&b);
+            all
+        })
+    }
+
     /// How many times an object has moved: a step in which its body or a link was awake, or a
     /// teleport. Memoized relations are valid while the counts of their objects are unchanged.
     pub fn motion(&self, id: ObjectId) -> u64 {
         self.motion[id.0 as usize]
     }
 
-    /// Moves an object (teleport) with its links, at rest, waking it.
+    /// Moves an object (teleport) with its links, at rest, waking it. A sliced object's halves
+    /// move with it, as one rigid piece, so that it can be placed like a whole.
     pub fn set_pose(&mut self, id: ObjectId, pose: Pose) -> Result<(), WorldError> {
         if !pose_is_finite(&pose) {
             return Err(WorldError::BadObject {
@@ -288,6 +311,13 @@ impl Core {
         // Links move with the body, keeping their joint positions.
         let object = &self.objects[id.0 as usize];
         let old = *self.physics.bodies[object.body].position();
+        if let Some(halves) = object.replaced_by {
+            for half in halves {
+                let relative = old.inv_mul(&self.pose(half));
+                self.set_pose(half, pose * relative)?;
+            }
+        }
+        let object = &self.objects[id.0 as usize];
         let moves: Vec<(RigidBodyHandle, Pose)> = std::iter::once((object.body, pose))
             .chain(object.links.iter().map(|l| {
                 let relative = old.inv_mul(self.physics.bodies[l.body].position());

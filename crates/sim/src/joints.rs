@@ -338,19 +338,21 @@ impl Core {
     }
 
     /// Opens a random non-empty set of the joints with limits, each to a random position between
-    /// the open threshold and its open end (as iGibson's setter), or closes them all fully.
+    /// the open threshold and its open end (as iGibson's setter) — all the way for a joint
+    /// gravity would close, a lid or an oven door, which rests open only against its limit — or
+    /// closes them all fully.
     pub(crate) fn set_open(
         &mut self,
         id: ObjectId,
         open: bool,
         rng: &mut SimRng,
     ) -> Result<(), StateError> {
-        let limited: Vec<(usize, [f32; 2])> = self
+        let limited: Vec<(usize, [f32; 2], bool)> = self
             .object(id)
             .links
             .iter()
             .enumerate()
-            .filter_map(|(i, l)| l.joint.limits.map(|limits| (i, limits)))
+            .filter_map(|(i, l)| l.joint.limits.map(|limits| (i, limits, lifts(&l.joint))))
             .collect();
         if limited.is_empty() {
             return Err(StateError::NoJoints {
@@ -362,10 +364,12 @@ impl Core {
         } else {
             vec![true; limited.len()]
         };
-        for (&(i, [lo, hi]), opened) in limited.iter().zip(chosen) {
+        for (&(i, [lo, hi], lifted), opened) in limited.iter().zip(chosen) {
             let target = match (open, opened) {
                 (false, _) => lo,
                 (true, false) => continue,
+                // A lid gravity would shut rests open only against its limit.
+                (true, true) if lifted => hi,
                 // Just beyond the threshold at least, so the draw always reads as open.
                 (true, true) => lo + (hi - lo) * uniform(rng, OPEN_FRACTION + 0.01, 1.0),
             };
@@ -373,6 +377,16 @@ impl Core {
             let _ = self.set_joint_position(id, i, target);
         }
         Ok(())
+    }
+}
+
+/// Whether gravity works on a joint: a hinge about a horizontal axis (a lid, an oven door) or a
+/// slide with a vertical component (in the object's frame, which stands upright).
+fn lifts(joint: &JointSpec) -> bool {
+    match joint.kind {
+        JointKind::Revolute => joint.axis.z.abs() < 0.9,
+        JointKind::Prismatic => joint.axis.z.abs() > 0.1,
+        JointKind::Fixed => false,
     }
 }
 

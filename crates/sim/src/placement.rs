@@ -7,12 +7,16 @@
 //! the target for `ontop` — looking down from its top or, for a shelf, from above one of its
 //! boards — of the container or what already lies in it for `inside`, of anything
 //! else for `under`, `nextto` and `touching`, of the floor for `onfloor`), sets the object on
-//! it, 2 mm up, keeping its orientation, and accepts the pose if the object then overlaps nothing
-//! and the predicate holds. iGibson samples the same way (`sample_kinematics`, with 10 attempts);
-//! we allow [`PLACEMENT_ATTEMPTS`]. An object asked to stand in several relations at once is
+//! it, 2 mm up, and accepts the pose if the object then overlaps nothing and the predicate holds.
+//! Each attempt turns the object about the vertical by a random yaw, keeping its tilt (the
+//! resting orientation it was given), and for `touching` slides it sideways until it touches
+//! the target (rotated boxes rarely touch where their bounding boxes do). iGibson samples the
+//! same way (`sample_kinematics`: a random yaw per trial, 10 attempts); we allow
+//! [`PLACEMENT_ATTEMPTS`]. An object asked to stand in several relations at once is
 //! placed by the first, its centre drawn where the others' areas overlap it, and accepted only if
 //! all hold ([`World::place_jointly`]); iGibson instead places by each literal in turn, the last
-//! one winning. Settling is left to the caller, who usually places several objects first
+//! one winning. A sliced object is placed like a whole: its two halves move together, keeping
+//! how they lie relative to each other. Settling is left to the caller, who usually places several objects first
 //! ([`World::settle`]).
 
 use crate::World;
@@ -20,7 +24,7 @@ use crate::core::Core;
 use crate::object::ObjectId;
 use behavior_core::rng::{SimRng, uniform};
 use rand_chacha::rand_core::Rng;
-use rapier3d::math::{Pose, Vector};
+use rapier3d::math::{Pose, Rotation, Vector};
 use rapier3d::parry::bounding_volume::{Aabb, BoundingVolume};
 use rapier3d::parry::query;
 use rapier3d::prelude::Ray;
@@ -37,6 +41,9 @@ pub const NEXTTO_GAP: f32 = 0.03;
 pub const LEVEL_SPACING: f32 = 0.1;
 /// A support surface's normal must be this close to vertical.
 pub const SUPPORT_NORMAL_Z: f32 = 0.7;
+/// The gap a `touching` placement leaves between the two objects (m), within
+/// [`crate::TOUCH_DISTANCE`].
+pub const TOUCH_GAP: f32 = 0.002;
 
 /// A kinematic relation a placement makes true.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -194,6 +201,10 @@ impl Core {
         let mut reason = PlacementFailure::NothingAsked;
         if !relations.is_empty() {
             for _ in 0..PLACEMENT_ATTEMPTS {
+                let yaw = Rotation::from_rotation_z(uniform(rng, 0.0, std::f32::consts::TAU));
+                let turned = Pose::from_parts(original.translation, yaw * original.rotation);
+                // A finite pose turned by a finite angle: the teleport cannot fail.
+                let _ = self.set_pose(object, turned);
                 match self.try_place(object, relations, rng) {
                     Ok(pose) => return Ok(pose),
                     Err(why) => reason = why,
@@ -219,18 +230,29 @@ impl Core {
         relations: &[(Relation, ObjectId)],
         rng: &mut SimRng,
     ) -> Result<Pose, PlacementFailure> {
-        if relations.iter().any(|&(_, t)| t == object) {
+        let request = Request::new(self, object, relations);
+        if relations
+            .iter()
+            .any(|&(_, t)| t == object || request.members.contains(&t))
+        {
             return Err(PlacementFailure::ToItself);
         }
-        let request = Request::new(self, object, relations);
         let (x, y) = self.sample_xy(&request, rng)?;
         let start_z = self.start_height(&request, (x, y), rng)?;
         let support = self
             .support_height(&request, (x, y), start_z)
             .ok_or(PlacementFailure::NoSurface)?;
         let bottom_center = Vector::new(x, y, support + DROP_GAP + request.half.z);
-        let candidate = Pose::from_parts(bottom_center - request.center_offset, request.rotation);
-        if let Some(other) = self.overlap_at(object, candidate) {
+        let mut candidate =
+            Pose::from_parts(bottom_center - request.center_offset, request.rotation);
+        let touching = request
+            .relations
+            .iter()
+            .find(|(r, _)| *r == Relation::Touching);
+        if let Some(&(_, target)) = touching {
+            candidate = self.slide_into_touch(&request, candidate, target);
+        }
+        if let Some(other) = self.overlap_at(&request, candidate) {
             return Err(PlacementFailure::Overlaps {
                 other: self.object(other).name.clone(),
             });
@@ -348,7 +370,7 @@ impl Core {
                     .objects()
                     .map(|(id, _)| id)
                     .filter(|&id| {
-                        id != request.object && (id != target || relation == Relation::Inside)
+                        !request.is_moved(id) && (id != target || relation == Relation::Inside)
                     })
                     .collect();
                 self.surface_below(&others, x, y, start_z)
@@ -433,21 +455,70 @@ impl Core {
             .map(|t| z + t)
     }
 
-    /// Some other object that `object` would intersect at `pose`.
-    fn overlap_at(&self, object: ObjectId, pose: Pose) -> Option<ObjectId> {
-        let current = self.pose(object);
-        let moved: Vec<(Pose, &rapier3d::geometry::Collider)> = self
-            .object(object)
-            .colliders
+    /// The candidate slid sideways toward `target` until the two are within
+    /// [`TOUCH_GAP`] of each other, where they are not already (a few steps of closing the
+    /// horizontal part of the gap between their closest points).
+    fn slide_into_touch(&self, request: &Request, candidate: Pose, target: ObjectId) -> Pose {
+        let mut pose = candidate;
+        for _ in 0..4 {
+            let Some((distance, from, to)) = self.closest_at(request, pose, target) else {
+                break;
+            };
+            let mut across = to - from;
+            across.z = 0.0;
+            if distance <= TOUCH_GAP || across.length() < 1e-6 {
+                break;
+            }
+            pose.translation += across * (1.0 - TOUCH_GAP / distance);
+        }
+        pose
+    }
+
+    /// The distance and the closest points (on the object, on `target`) if the object stood at
+    /// `pose`, within 0.5 m.
+    fn closest_at(
+        &self,
+        request: &Request,
+        pose: Pose,
+        target: ObjectId,
+    ) -> Option<(f32, Vector, Vector)> {
+        let shift = pose * self.pose(request.object).inverse();
+        let mut best: Option<(f32, Vector, Vector)> = None;
+        let colliders = &self.physics.colliders;
+        for &m in &request.members {
+            for &c in &self.object(m).colliders {
+                let (c, at) = (&colliders[c], shift * colliders[c].position());
+                for &t in &self.object(target).colliders {
+                    let t = &colliders[t];
+                    let found = query::closest_points(&at, c.shape(), t.position(), t.shape(), 0.5);
+                    if let Ok(query::ClosestPoints::WithinMargin(p, q)) = found {
+                        let d = (q - p).length();
+                        if best.is_none_or(|(b, ..)| d < b) {
+                            best = Some((d, p, q));
+                        }
+                    }
+                }
+            }
+        }
+        best
+    }
+
+    /// Some other object that the request's object (its halves, if sliced) would intersect if
+    /// it stood at `pose`.
+    fn overlap_at(&self, request: &Request, pose: Pose) -> Option<ObjectId> {
+        // The rigid move from where the object stands to `pose`, applied to every collider.
+        let shift = pose * self.pose(request.object).inverse();
+        let moved: Vec<(Pose, &rapier3d::geometry::Collider)> = request
+            .members
             .iter()
+            .flat_map(|&m| &self.object(m).colliders)
             .map(|&c| {
                 let c = &self.physics.colliders[c];
-                // The collider's pose relative to the body is unchanged by the move.
-                (pose * current.inv_mul(c.position()), c)
+                (shift * c.position(), c)
             })
             .collect();
         for (id, other) in self.objects() {
-            if id == object || !self.present(id) {
+            if request.is_moved(id) || !self.present(id) {
                 continue;
             }
             for &oc in &other.colliders {
@@ -475,6 +546,8 @@ impl Core {
 /// What one placement attempt asks, with the object's box as it stands.
 struct Request<'r> {
     object: ObjectId,
+    /// What moves: the object, or its two halves if it was sliced.
+    members: Vec<ObjectId>,
     relations: &'r [(Relation, ObjectId)],
     /// Half the object's box.
     half: Vector,
@@ -487,14 +560,29 @@ struct Request<'r> {
 impl<'r> Request<'r> {
     fn new(core: &Core, object: ObjectId, relations: &'r [(Relation, ObjectId)]) -> Request<'r> {
         let pose = core.pose(object);
-        let own = core.aabb(object);
+        let members = match core.object(object).replaced_by {
+            Some(halves) => halves.to_vec(),
+            None => vec![object],
+        };
+        let mut own = core.aabb(members[0]);
+        for &m in &members[1..] {
+            own.merge(&core.aabb(m));
+        }
         Request {
             object,
+            members,
             relations,
             half: (own.maxs - own.mins) * 0.5,
             center_offset: own.center() - pose.translation,
             rotation: pose.rotation,
         }
+    }
+}
+
+impl Request<'_> {
+    /// Whether the placement moves `id` (the object or one of its halves).
+    fn is_moved(&self, id: ObjectId) -> bool {
+        id == self.object || self.members.contains(&id)
     }
 }
 

@@ -3,6 +3,8 @@
 
 mod common;
 
+use behavior_core::Predicate;
+use behavior_core::rng::seeded;
 use behavior_sim::{Relation, World};
 use common::*;
 use rand_chacha::ChaCha8Rng;
@@ -145,4 +147,32 @@ fn nextto_places_beside_the_target_on_the_same_surface() {
     assert!(world.core().nextto(c, table) && !world.core().ontop(c, table));
     assert!(world.settle(300));
     assert!(world.core().nextto(b, a) && world.core().nextto(c, table));
+}
+
+#[test]
+fn a_sliced_apple_is_placed_inside_a_bin_as_one_piece() {
+    let mut world = World::default();
+    two_room_floor(&mut world);
+    let table = table(&mut world, -1.0, 0.0);
+    let bin = open_box(&mut world, 1.0, 1.0);
+    let apple = sliceable_apple(&mut world, "apple_1", v(-1.0, 0.0, 0.8));
+    settle(&mut world, 1.0);
+    world.set_state(apple, Predicate::Sliced, true).unwrap();
+    settle(&mut world, 1.0);
+    let [a, b] = world.halves(apple).unwrap();
+    let apart = world.pose(a).translation - world.pose(b).translation;
+    world
+        .place(apple, Relation::Inside, bin, &mut seeded(3))
+        .unwrap();
+    assert!(
+        world.core().inside(a, bin) && world.core().inside(b, bin),
+        "both halves moved"
+    );
+    assert!(world.core().inside(apple, bin));
+    let moved = world.pose(a).translation - world.pose(b).translation;
+    assert!(
+        (moved.length() - apart.length()).abs() < 1e-4,
+        "the halves keep their distance"
+    );
+    assert!(!world.core().ontop(a, table) && !world.core().ontop(b, table));
 }

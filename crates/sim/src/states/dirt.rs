@@ -1,8 +1,8 @@
 //! Dust and stains as particles on surfaces, and cleaning.
 //!
 //! Making an object dusty (or stained) places 20 particles on its upward-facing surfaces, found by
-//! casting rays down onto it at points drawn over its footprint (one per cell of a 5 × 4 grid, at
-//! a random spot in the cell) from the world's seeded generator ([`crate::World::reseed`]), so
+//! casting rays down onto it at points drawn over its footprint (first a random spot in the
+//! particle's cell of a 5 × 4 grid, then anywhere, up to 20 tries) from the world's seeded generator ([`crate::World::reseed`]), so
 //! layouts differ between instances and repeat for a seed. Each particle is fixed to the body it
 //! landed on, the object's or a link's, and moves with it: a dusty cabinet door keeps its dust
 //! when it swings open. The object is dusty while more than 50 % of the particles ever placed
@@ -23,6 +23,8 @@ use rapier3d::parry::bounding_volume::BoundingVolume;
 
 /// Particles placed on a newly dirty object.
 pub const PARTICLES_PER_SET: usize = 20;
+/// Tries to land each particle on a surface facing up (iGibson's 20).
+pub const ATTEMPTS_PER_PARTICLE: usize = 20;
 /// Fewer successful placements than this and the setter fails (iGibson's minimum).
 pub const MIN_PARTICLES: usize = 5;
 /// An object is dirty while more than this fraction of its particles remain.
@@ -211,37 +213,51 @@ impl Frames {
 }
 
 /// Up to [`PARTICLES_PER_SET`] particles on the object's surfaces that face up, each fixed to
-/// the body (object or link) it landed on.
+/// the body (object or link) it landed on. Particle `k` is looked for in cell `k` of a 5 × 4 grid
+/// over the footprint first, so that the particles cover it, then anywhere over it, up to
+/// [`ATTEMPTS_PER_PARTICLE`] tries in all (iGibson's 20): a thin rod or a spoon lying askew
+/// offers little to land on.
 fn sample_top_surface(core: &Core, id: ObjectId, rng: &mut SimRng) -> Vec<Particle> {
-    let aabb = core.aabb(id);
     let (cols, rows) = (5, 4);
-    let mut points = Vec::new();
-    for k in 0..cols * rows {
-        // A random spot in each cell of the grid, so the particles cover the whole footprint.
-        let fx = ((k % cols) as f32 + uniform(rng, 0.1, 0.9)) / cols as f32;
-        let fy = ((k / cols) as f32 + uniform(rng, 0.1, 0.9)) / rows as f32;
-        let x = aabb.mins.x + fx * (aabb.maxs.x - aabb.mins.x);
-        let y = aabb.mins.y + fy * (aabb.maxs.y - aabb.mins.y);
-        let top = Vector::new(x, y, aabb.maxs.z + 0.01);
-        let ray = rapier3d::prelude::Ray::new(top, -Vector::Z);
-        let range = aabb.maxs.z - aabb.mins.z + 0.02;
-        let hit = core
-            .object(id)
-            .colliders
-            .iter()
-            .map(|&c| &core.physics.colliders[c])
-            .filter_map(|c| {
-                c.shape()
-                    .cast_ray_and_get_normal(c.position(), &ray, range, true)
-                    .filter(|hit| hit.normal.z > 0.5)
-                    .map(|hit| (hit.time_of_impact, untag(c.user_data).and_then(|b| b.link)))
+    (0..PARTICLES_PER_SET)
+        .filter_map(|k| {
+            (0..ATTEMPTS_PER_PARTICLE).find_map(|attempt| {
+                let (fx, fy) = if attempt == 0 {
+                    (
+                        ((k % cols) as f32 + uniform(rng, 0.1, 0.9)) / cols as f32,
+                        ((k / cols) as f32 + uniform(rng, 0.1, 0.9)) / rows as f32,
+                    )
+                } else {
+                    (uniform(rng, 0.0, 1.0), uniform(rng, 0.0, 1.0))
+                };
+                land(core, id, fx, fy)
             })
-            .min_by(|a, b| a.0.total_cmp(&b.0));
-        if let Some((t, link)) = hit {
-            let frame = link.map_or_else(|| core.pose(id), |l| core.link_pose(id, l));
-            let local = frame.inverse_transform_point(top - Vector::Z * t);
-            points.push(Particle { link, local });
-        }
-    }
-    points
+        })
+        .collect()
+}
+
+/// Where a particle dropped at the fraction (fx, fy) of the object's footprint lands on one of
+/// its upward-facing surfaces, if it does.
+fn land(core: &Core, id: ObjectId, fx: f32, fy: f32) -> Option<Particle> {
+    let aabb = core.aabb(id);
+    let x = aabb.mins.x + fx * (aabb.maxs.x - aabb.mins.x);
+    let y = aabb.mins.y + fy * (aabb.maxs.y - aabb.mins.y);
+    let top = Vector::new(x, y, aabb.maxs.z + 0.01);
+    let ray = rapier3d::prelude::Ray::new(top, -Vector::Z);
+    let range = aabb.maxs.z - aabb.mins.z + 0.02;
+    let (t, link) = core
+        .object(id)
+        .colliders
+        .iter()
+        .map(|&c| &core.physics.colliders[c])
+        .filter_map(|c| {
+            c.shape()
+                .cast_ray_and_get_normal(c.position(), &ray, range, true)
+                .filter(|hit| hit.normal.z > 0.5)
+                .map(|hit| (hit.time_of_impact, untag(c.user_data).and_then(|b| b.link)))
+        })
+        .min_by(|a, b| a.0.total_cmp(&b.0))?;
+    let frame = link.map_or_else(|| core.pose(id), |l| core.link_pose(id, l));
+    let local = frame.inverse_transform_point(top - Vector::Z * t);
+    Some(Particle { link, local })
 }

@@ -101,7 +101,9 @@ impl FactSet {
     }
 
     /// Reads `{"facts": [["ontop", "apple.n.01_1", "table.n.02_1"], ["cooked", "apple.n.01_1"]]}`,
-    /// resolving names against the activity. Each bad fact is named by its position.
+    /// resolving names against the activity. Each bad fact is named by its position. `inroom`
+    /// facts (`["inroom", "table.n.02_1", "kitchen"]`, as `behavior facts` prints them) are checked
+    /// and accepted, but kept out of the set: the home fixes them and goals never ask.
     pub fn from_json(activity: &Activity, text: &str) -> Result<FactSet, StateError> {
         let file: StateFile =
             serde_json::from_str(text).map_err(|e| StateError::Json(e.to_string()))?;
@@ -118,9 +120,9 @@ impl FactSet {
             let predicate = Predicate::from_name(&name.to_lowercase())
                 .ok_or_else(|| fail(format!("unknown predicate `{name}`")))?;
             if predicate == Predicate::InRoom {
-                return Err(fail(
-                    "`inroom` is fixed by the scene, not a state fact".into(),
-                ));
+                // Fixed by the home and never part of a goal: checked, then left out of the set.
+                check_inroom(activity, args).map_err(fail)?;
+                continue;
             }
             if args.len() != predicate.arity() {
                 return Err(fail(format!(
@@ -145,4 +147,18 @@ impl FactSet {
         }
         Ok(facts.into_iter().collect())
     }
+}
+
+/// Checks an `inroom` fact's arguments: an object of the activity and a room type.
+fn check_inroom(activity: &Activity, args: &[String]) -> Result<(), String> {
+    let [object, room] = args else {
+        return Err(format!("`inroom` takes 2 arguments, {} given", args.len()));
+    };
+    if activity.instance_named(&object.to_lowercase()).is_none() {
+        return Err(format!("`{object}` is not an object of {}", activity.name));
+    }
+    room.to_lowercase()
+        .parse::<behavior_core::RoomType>()
+        .map(|_| ())
+        .map_err(|e| e.to_string())
 }

@@ -277,3 +277,40 @@ fn ontop_not_for_an_apple_on_the_shelf_of_a_closed_fridge() {
     );
     assert!(world.core().ontop(on_top, fridge) && !world.core().inside(on_top, fridge));
 }
+
+#[test]
+fn touching_a_pad_half_a_millimetre_above_a_slightly_turned_slab() {
+    // Two flat boxes, one turned 0.05 rad about z, faces 0.5 mm apart: touching, however the
+    // distance query would have it (parry's cuboid distance reported 7 mm here).
+    use rapier3d::math::{Pose, Rotation};
+    let mut world = World::default();
+    let slab = ObjectSpec::new(
+        "slab_1",
+        "board.n.01",
+        vec![Part::new(cuboid(0.15, 0.1, 0.02))],
+    )
+    .fixed();
+    let mut slab = slab;
+    slab.pose = Pose::from_parts(v(0.0, 0.0, 0.0), Rotation::from_rotation_z(0.05));
+    let slab = world.add(slab).unwrap();
+    let pad = world
+        .add(
+            ObjectSpec::new(
+                "pad_1",
+                "rag.n.01",
+                vec![Part::new(cuboid(0.2, 0.12, 0.005))],
+            )
+            .at(v(-0.2, 0.0, 0.02 + 0.0005 + 0.005))
+            .fixed(),
+        )
+        .unwrap();
+    assert!(world.core().touching(pad, slab) && world.core().touching(slab, pad));
+    // 6 mm apart is not touching.
+    world
+        .set_pose(
+            pad,
+            Pose::from_translation(v(-0.2, 0.0, 0.02 + 0.006 + 0.005)),
+        )
+        .unwrap();
+    assert!(!world.core().touching(pad, slab));
+}

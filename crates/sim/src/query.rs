@@ -193,11 +193,19 @@ impl Core {
             let Some(body) = untag(c.user_data) else {
                 continue;
             };
-            let Ok(d) = query::distance(probe.position(), probe.shape(), c.position(), c.shape())
-            else {
+            // A contact query with the search radius as its margin: parry's cuboid distance
+            // overestimates the gap between slightly turned boxes.
+            let found = query::contact(
+                probe.position(),
+                probe.shape(),
+                c.position(),
+                c.shape(),
+                max_distance,
+            );
+            let Ok(Some(contact)) = found else {
                 continue;
             };
-            let d = d.distance.max(0.0);
+            let d = contact.dist.max(0.0);
             let better = best.is_none_or(|b| d < b.distance || (d == b.distance && body < b.body));
             if d <= max_distance && better {
                 best = Some(Proximity { body, distance: d });

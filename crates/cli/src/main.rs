@@ -4,6 +4,7 @@
 //! knowledge, library, named homes); this file only parses arguments and reports errors. Machine-readable output (`--json`) is documented per command in the README.
 
 mod bddl;
+mod facts;
 mod map;
 mod prelude;
 mod sample;
@@ -41,6 +42,8 @@ enum Command {
     Sample(sample::SampleArgs),
     /// Try every official activity in every named home that covers it.
     SampleAll(sample::SampleAllArgs),
+    /// The logical state of a saved instance: every predicate that holds among its objects.
+    Facts(facts::FactsArgs),
 }
 
 fn main() -> ExitCode {
@@ -56,6 +59,7 @@ fn main() -> ExitCode {
         Command::Scene(command) => scene::run(command, cli.data_dir.as_deref()),
         Command::Sample(args) => sample::sample(args, cli.data_dir.as_deref()),
         Command::SampleAll(args) => sample::sample_all(args, cli.data_dir.as_deref()),
+        Command::Facts(args) => facts::facts(args, cli.data_dir.as_deref()),
     };
     match result {
         Ok(code) => code,

@@ -5,9 +5,10 @@ use anyhow::{Context, Result, bail};
 use behavior_assets::covering;
 use behavior_assets::{Library, Scene};
 use behavior_bddl::{Activity, Taxonomy};
-use behavior_sampling::{InitCheck, Instance, LiteralKind, instantiate};
+use behavior_sampling::{Fact, InitCheck, Instance, LiteralKind, instantiate};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
@@ -50,6 +51,17 @@ struct SampleReport {
     attempt: u32,
     init_check: InitReport,
     bindings: Vec<Binding>,
+    /// Every predicate that holds among the activity's objects in the sampled world.
+    facts: Vec<Fact>,
+    /// Each instance's pose, by instance name.
+    poses: BTreeMap<String, PoseReport>,
+}
+
+/// Where an object stands: position (m) and orientation (quaternion x, y, z, w).
+#[derive(Serialize)]
+struct PoseReport {
+    position: [f32; 3],
+    orientation: [f32; 4],
 }
 
 /// The init check run on the sampled instance: every `:init` literal re-evaluated.
@@ -136,6 +148,8 @@ pub fn sample(args: SampleArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         attempt: instance.attempt,
         init_check: InitReport::new(&instance.check_init(&activity)),
         bindings: bindings(&activity, &instance),
+        facts: instance.facts(&activity),
+        poses: poses(&activity, &instance),
     };
     if args.json {
         println!("{}", serde_json::to_string_pretty(&report)?);
@@ -190,6 +204,23 @@ fn bindings(activity: &Activity, instance: &Instance) -> Vec<Binding> {
         .map(|(&id, i)| Binding {
             instance: i.name.clone(),
             object: instance.world.object(id).name.clone(),
+        })
+        .collect()
+}
+
+/// Each instance's pose, by name.
+fn poses(activity: &Activity, instance: &Instance) -> BTreeMap<String, PoseReport> {
+    instance
+        .bindings
+        .iter()
+        .zip(&activity.instances)
+        .map(|(&id, i)| {
+            let pose = instance.world.pose(id);
+            let report = PoseReport {
+                position: pose.translation.to_array(),
+                orientation: pose.rotation.to_array(),
+            };
+            (i.name.clone(), report)
         })
         .collect()
 }

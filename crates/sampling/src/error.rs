@@ -10,8 +10,8 @@
 //! that walks the chain of sources (as `anyhow`'s `{:#}` does) does not print the cause twice.
 
 use behavior_assets::{AssetError, SceneError};
-use behavior_bddl::RoomType;
 use behavior_bddl::activity::{Activity, InitLiteral, Literal};
+use behavior_bddl::{Predicate, RoomType};
 use behavior_sim::{PlacementError, StateError, WorldError};
 use std::fmt;
 
@@ -336,6 +336,19 @@ pub enum LoadError {
         name: String,
         /// The world's reason.
         cause: StateError,
+    },
+    /// A saved object lists a unary predicate that its restored state does not make hold, or
+    /// leaves out one that it does: the file contradicts itself.
+    #[error(
+        "object `{name}`: the file says `{predicate}` is {listed}, but its saved state says otherwise"
+    )]
+    StateMismatch {
+        /// The object's name.
+        name: String,
+        /// The predicate.
+        predicate: Predicate,
+        /// Whether the file lists it as true.
+        listed: bool,
     },
     /// The rebuilt world breaks an init literal: the file does not describe a valid instance.
     #[error("{literal} does not hold in the loaded instance: {why}")]

@@ -1,12 +1,13 @@
 //! A sampled instance, and its saved form: the home, the bindings and the full world state
-//! (poses, joint positions and unary states of every object), as JSON.
+//! (every object's pose, joint positions, temperatures, water, switch, dust and stain particles
+//! and flags), as JSON; and the logical state of an instance, as facts.
 
 use crate::error::LoadError;
 use crate::verify::{InitCheck, check_init};
 use behavior_assets::{Library, Scene};
 use behavior_bddl::Predicate;
 use behavior_bddl::activity::Activity;
-use behavior_sim::{BoundWorld, ObjectId, World};
+use behavior_sim::{BoundWorld, ObjectId, ObjectState, ParticleRecord, StateError, World};
 use rapier3d::math::{Pose, Rotation, Vector};
 use serde::{Deserialize, Serialize};
 
@@ -55,13 +56,49 @@ pub struct SavedObject {
     pub rotation: [f32; 4],
     /// The position of each joint, in link order.
     pub joints: Vec<f32>,
-    /// The unary predicates true of it.
+    /// The unary predicates true of it, for reading; loading checks that the restored state
+    /// agrees.
     pub states: Vec<String>,
+    /// Everything else about it the rules read.
+    pub state: SavedState,
+}
+
+/// An object's non-geometric state in a file (see [`behavior_sim::ObjectState`]).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SavedState {
+    /// °C now.
+    pub temperature: f32,
+    /// The highest temperature reached (°C); `null` before the object was first stepped.
+    pub max_temperature: Option<f32>,
+    /// Whether water soaked it.
+    pub soaked: bool,
+    /// Its switch.
+    pub toggled_on: bool,
+    /// Steps a hand has been held at its button.
+    pub toggle_steps: u32,
+    /// Dust particles.
+    pub dust: SavedParticles,
+    /// Stain particles.
+    pub stain: SavedParticles,
+    /// The stored flags (`broken`, `perished`, `screwed`, `timeset`) that are true.
+    pub flags: Vec<String>,
+}
+
+/// Dust or stain particles in a file.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SavedParticles {
+    /// How many were placed when the object was made dirty.
+    pub placed: usize,
+    /// Each remaining particle: the link it lies on (`null`: the object's body) and its
+    /// position in that body's frame.
+    pub particles: Vec<(Option<usize>, [f32; 3])>,
 }
 
 /// An instance as a file: the home, the created objects, bindings, and every object's pose, joint
-/// positions and unary states — enough to rebuild a world where the same predicates hold
-/// (temperatures, particle layouts and velocities are not stored: states are re-set).
+/// positions and whole state — enough to rebuild the world as it was sampled (velocities, drops in
+/// flight and the state setters' generator are not stored: the instance was settled).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SavedInstance {
@@ -120,6 +157,7 @@ impl Instance {
                         .filter(|&&p| w.state(id, p))
                         .map(|p| p.name().to_string())
                         .collect(),
+                    state: SavedState::from(w.object_state(id)),
                 }
             })
             .collect();
@@ -175,6 +213,7 @@ impl SavedInstance {
         for saved in &self.objects {
             restore(&mut world, saved)?;
         }
+        check_states(&world, &self.objects)?;
         let bindings = self.bindings(activity, &world)?;
         let instance = Instance {
             activity: self.activity.clone(),
@@ -225,41 +264,114 @@ fn rebuild(world: &mut World, library: &Library, c: &Created) -> Result<(), Load
     Ok(())
 }
 
-/// Puts a saved object back: its pose, joints and unary states.
+/// Puts a saved object back: its pose, joints, whether it was sliced (which makes its halves,
+/// restored in turn as the objects after it), and its whole state; then checks that the unary
+/// predicates the file lists are exactly those that hold.
 fn restore(world: &mut World, saved: &SavedObject) -> Result<(), LoadError> {
     let id = world
         .object_named(&saved.name)
         .ok_or_else(|| LoadError::UnknownObject {
             name: saved.name.clone(),
         })?;
-    let pose = Pose::from_parts(
-        Vector::from_array(saved.position),
-        Rotation::from_array(saved.rotation).normalize(),
-    );
-    world.set_pose(id, pose).map_err(|cause| LoadError::Pose {
+    let pose_error = |cause| LoadError::Pose {
         name: saved.name.clone(),
         cause,
-    })?;
+    };
+    let state_error = |cause| LoadError::State {
+        name: saved.name.clone(),
+        cause,
+    };
+    // A unit quaternion is kept bit for bit; a hand-edited one is normalized.
+    let rotation = Rotation::from_array(saved.rotation);
+    let rotation = if rotation.is_normalized() {
+        rotation
+    } else {
+        rotation.normalize()
+    };
+    let pose = Pose::from_parts(Vector::from_array(saved.position), rotation);
+    world.set_pose(id, pose).map_err(pose_error)?;
     let links = world.object(id).links.len();
     for (k, &q) in saved.joints.iter().enumerate().take(links) {
         // A non-finite joint position in the file is as bad as a non-finite pose.
-        world
-            .set_joint_position(id, k, q)
-            .map_err(|cause| LoadError::Pose {
-                name: saved.name.clone(),
-                cause,
-            })?;
+        world.set_joint_position(id, k, q).map_err(pose_error)?;
     }
-    for p in Predicate::UNARY_STATES {
-        let on = saved.states.iter().any(|s| s == p.name());
-        if world.state(id, p) != on {
-            world
-                .set_state(id, p, on)
-                .map_err(|cause| LoadError::State {
+    let sliced = saved.states.iter().any(|s| s == Predicate::Sliced.name());
+    if sliced && !world.state(id, Predicate::Sliced) {
+        world
+            .set_state(id, Predicate::Sliced, true)
+            .map_err(state_error)?;
+    }
+    let state = saved.state.to_world(&saved.name).map_err(state_error)?;
+    world.set_object_state(id, &state).map_err(state_error)?;
+    Ok(())
+}
+
+/// Checks that the unary predicates each saved object lists are those that hold once every
+/// object is back (a sliced object's states are its halves', restored after it).
+fn check_states(world: &World, objects: &[SavedObject]) -> Result<(), LoadError> {
+    for saved in objects {
+        let Some(id) = world.object_named(&saved.name) else {
+            continue;
+        };
+        for p in Predicate::UNARY_STATES {
+            let listed = saved.states.iter().any(|s| s == p.name());
+            if world.state(id, p) != listed {
+                return Err(LoadError::StateMismatch {
                     name: saved.name.clone(),
-                    cause,
-                })?;
+                    predicate: p,
+                    listed,
+                });
+            }
         }
     }
     Ok(())
+}
+
+impl From<ObjectState> for SavedState {
+    fn from(s: ObjectState) -> SavedState {
+        let particles = |r: ParticleRecord| SavedParticles {
+            placed: r.placed,
+            particles: r.particles,
+        };
+        SavedState {
+            temperature: s.temperature,
+            max_temperature: s.max_temperature,
+            soaked: s.soaked,
+            toggled_on: s.toggled_on,
+            toggle_steps: s.toggle_steps,
+            dust: particles(s.dust),
+            stain: particles(s.stain),
+            flags: s.flags.iter().map(|p| p.name().to_string()).collect(),
+        }
+    }
+}
+
+impl SavedState {
+    /// The state as the world takes it; an unknown flag is an error naming `object`.
+    fn to_world(&self, object: &str) -> Result<ObjectState, StateError> {
+        let flags = self
+            .flags
+            .iter()
+            .map(|name| {
+                Predicate::from_name(name).ok_or_else(|| StateError::BadRecord {
+                    object: object.to_string(),
+                    reason: format!("unknown flag `{name}`"),
+                })
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let particles = |p: &SavedParticles| ParticleRecord {
+            particles: p.particles.clone(),
+            placed: p.placed,
+        };
+        Ok(ObjectState {
+            temperature: self.temperature,
+            max_temperature: self.max_temperature,
+            soaked: self.soaked,
+            toggled_on: self.toggled_on,
+            toggle_steps: self.toggle_steps,
+            dust: particles(&self.dust),
+            stain: particles(&self.stain),
+            flags,
+        })
+    }
 }

@@ -10,8 +10,9 @@
 //! goal option's objects for real in a copy of the world, in the same dependency order. A failed
 //! attempt is retried with fresh randomness; after [`ATTEMPTS`] the error names the literal that
 //! could not be satisfied and why ([`SampleError`]). The same (activity, home, seed) always gives
-//! the same instance. [`SavedInstance`] is an instance as a file; loading one re-checks it
-//! ([`LoadError`]).
+//! the same instance. [`SavedInstance`] is an instance as a file, with the whole world state;
+//! loading one re-checks it ([`LoadError`]). [`Instance::facts`] lists the logical state: every
+//! predicate that holds among the activity's objects.
 //!
 //! This crate joins BDDL, the world and the assets; it knows nothing of robots or rendering.
 //!
@@ -25,6 +26,7 @@
 mod bind;
 mod create;
 mod error;
+mod facts;
 mod goal;
 mod instance;
 mod instantiate;
@@ -36,7 +38,8 @@ mod verify;
 pub use error::{
     Literals, LoadError, NamedLiteral, RuledOut, SampleError, Unmet, Unreachable, Unsatisfied,
 };
+pub use facts::Fact;
 pub use goal::{FEASIBILITY_OPTIONS, PHYSICAL_OPTIONS, goal_feasible};
-pub use instance::{Created, Instance, SavedInstance, SavedObject};
+pub use instance::{Created, Instance, SavedInstance, SavedObject, SavedParticles, SavedState};
 pub use instantiate::{ATTEMPTS, SETTLE_STEPS, instantiate};
 pub use verify::{InitCheck, LiteralCheck, LiteralKind, check_init};

@@ -34,6 +34,38 @@ fn covering_home(activity: &Activity, library: &Library, knowledge: &Knowledge) 
         .expect("a covering home")
 }
 
+/// The first init literal that the facts contradict (a positive one missing, a negative one
+/// present), read off the facts alone.
+fn init_unmet_in_facts(activity: &Activity, facts: &[behavior_sampling::Fact]) -> Option<String> {
+    let listed: std::collections::BTreeSet<Vec<String>> = facts
+        .iter()
+        .map(|f| {
+            let mut v = vec![f.predicate.name().to_string()];
+            v.extend(f.args.iter().cloned());
+            v
+        })
+        .collect();
+    let name = |i: behavior_bddl::activity::InstanceId| activity.instance(i).name.clone();
+    activity.init.iter().find_map(|l| {
+        let (fact, positive) = match l {
+            InitLiteral::Atom(l) => {
+                let mut fact = vec![l.atom.predicate.name().to_string(), name(l.atom.subject)];
+                fact.extend(l.atom.object.map(name));
+                (fact, l.positive)
+            }
+            InitLiteral::InRoom {
+                instance,
+                room,
+                positive,
+            } => (
+                vec!["inroom".into(), name(*instance), room.name().to_string()],
+                *positive,
+            ),
+        };
+        (listed.contains(&fact) != positive).then(|| format!("{fact:?} (positive: {positive})"))
+    })
+}
+
 /// Re-checks every positive and negative init literal through the BDDL oracle, independently of
 /// the sampler's own check.
 fn all_init_literals_hold(activity: &Activity, instance: &behavior_sampling::Instance) -> bool {
@@ -181,6 +213,17 @@ fn every_activity_samples_in_its_first_covering_home_and_reloads_with_its_init_t
                     all_init_literals_hold(&activity, &loaded),
                     "{name} reloaded"
                 );
+                // The logical state is the same before saving and after loading, and every
+                // init literal can be read off it.
+                let facts = instance.facts(&activity);
+                assert_eq!(
+                    facts,
+                    loaded.facts(&activity),
+                    "{name}: facts after loading"
+                );
+                if let Some(literal) = init_unmet_in_facts(&activity, &facts) {
+                    panic!("{name}: {literal} does not follow from the facts");
+                }
             }
             Err(e) => failures.push(format!("{name} in {}: {e}", home.name)),
         }
@@ -243,6 +286,103 @@ fn a_dusty_floor_survives_saving_and_loading() {
         .load(&activity, &library)
         .unwrap_or_else(|e| panic!("{e}"));
     assert!(all_init_literals_hold(&activity, &loaded));
+}
+
+#[test]
+fn a_saved_instance_holds_the_whole_state_of_every_object() {
+    // Temperatures, soaked, switches, particles and joints come back as they were sampled, not
+    // re-set from the unary predicates.
+    let (data, knowledge) = setup();
+    let library = Library::new(&knowledge.taxonomy);
+    for name in ["cleaning_stove", "thawing_frozen_food"] {
+        let activity = activity(&data, &knowledge, name);
+        let home = covering_home(&activity, &library, &knowledge);
+        let mut instance = instantiate(&activity, &home, 1, &library, &knowledge.taxonomy)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        // A second on, frozen food has warmed: a temperature no setter would give.
+        for _ in 0..30 {
+            instance.world.step();
+        }
+        let loaded = SavedInstance::from_json(&instance.save().to_json())
+            .unwrap()
+            .load(&activity, &library)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let (a, b) = (&instance.world, &loaded.world);
+        assert_eq!(a.objects().len(), b.objects().len());
+        let mut particles = 0;
+        for (id, object) in a.objects() {
+            let other = b.object_named(&object.name).unwrap();
+            assert_eq!(
+                a.object_state(id),
+                b.object_state(other),
+                "{name}: {}",
+                object.name
+            );
+            let bits = |w: &behavior_sim::World, id| {
+                let p = w.pose(id);
+                (
+                    p.translation.to_array().map(f32::to_bits),
+                    p.rotation.to_array().map(f32::to_bits),
+                )
+            };
+            if object.is_present() {
+                assert_eq!(bits(a, id), bits(b, other), "{name}: {} pose", object.name);
+            }
+            for k in 0..object.links.len() {
+                let (qa, qb) = (
+                    a.core().joint_position(id, k),
+                    b.core().joint_position(other, k),
+                );
+                assert!(
+                    (qa - qb).abs() < 1e-4,
+                    "{name}: {} joint {k}: {qa} vs {qb}",
+                    object.name
+                );
+            }
+            particles +=
+                a.object_state(id).dust.particles.len() + a.object_state(id).stain.particles.len();
+        }
+        let warmed = a
+            .objects()
+            .filter(|(id, _)| {
+                let t = a.object_state(*id).temperature;
+                t != 23.0 && t != behavior_sim::DEFAULT_FREEZE_TEMPERATURE - 30.0
+            })
+            .count();
+        assert!(
+            particles + warmed > 0,
+            "{name}: a state beyond the pose was saved"
+        );
+    }
+}
+
+#[test]
+fn a_saved_instance_that_contradicts_itself_is_refused() {
+    let (data, knowledge) = setup();
+    let library = Library::new(&knowledge.taxonomy);
+    let activity = activity(&data, &knowledge, "cleaning_stove");
+    let home = covering_home(&activity, &library, &knowledge);
+    let instance = instantiate(&activity, &home, 1, &library, &knowledge.taxonomy).unwrap();
+    let mut saved = instance.save();
+    let stove = saved
+        .objects
+        .iter_mut()
+        .find(|o| o.states.iter().any(|s| s == "dusty" || s == "stained"))
+        .unwrap();
+    // Listed dirty, but with every particle gone.
+    stove.state.dust.particles.clear();
+    stove.state.stain.particles.clear();
+    let name = stove.name.clone();
+    let err = SavedInstance::from_json(&saved.to_json())
+        .unwrap()
+        .load(&activity, &library)
+        .err()
+        .expect("a contradiction is refused");
+    let message = err.to_string();
+    assert!(
+        message.contains(&name) && message.contains("saved state"),
+        "{message}"
+    );
 }
 
 /// The table a living room shares with its open dining room (see `behavior_assets::generate`).

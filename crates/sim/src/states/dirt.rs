@@ -152,11 +152,10 @@ impl Dirt {
 
     /// One step of cleaning: every cleaning tool wipes what it touches.
     pub(crate) fn update(&mut self, core: &Core, water: &Water) {
-        let tools: Vec<ObjectId> = core
+        let tools = core
             .objects()
             .filter(|(_, o)| o.has(Ability::CleaningTool))
-            .map(|(id, _)| id)
-            .collect();
+            .map(|(id, _)| id);
         for tool in tools {
             let area = core.aabb(tool).loosened(WIPE_MARGIN);
             let face = core

@@ -33,13 +33,14 @@ pub const DEFAULT_HEATING_RATE: f32 = 0.04;
 pub const DEFAULT_DISTANCE_THRESHOLD: f32 = 0.2;
 
 /// What a source does to objects this step.
+#[derive(Clone, Debug)]
 struct Source {
     id: ObjectId,
     temperature: f32,
     rate: f32,
-    /// The elements' world positions (a stove has several burners) and their reach, or `None`
-    /// when the object must be inside.
-    elements: Option<(Vec<Vector>, f32)>,
+    /// How far its heating elements reach (a stove has several burners), or `None` when the
+    /// object must be inside.
+    reach: Option<f32>,
 }
 
 /// The temperature system: each object's temperature and the highest it ever reached.
@@ -48,6 +49,9 @@ pub(crate) struct Temperatures {
     now: Vec<f32>,
     /// `-inf` before the first step.
     max: Vec<f32>,
+    /// The active sources of the current step, kept between steps so that a step allocates
+    /// nothing.
+    sources: Vec<Source>,
 }
 
 impl Temperatures {
@@ -85,8 +89,9 @@ impl Temperatures {
         self.max[t] = self.max[f];
     }
 
-    fn active_sources(core: &Core, toggles: &Toggles) -> Vec<Source> {
-        let mut sources = Vec::new();
+    /// Fills `sources` with the sources active this step.
+    fn find_active_sources(sources: &mut Vec<Source>, core: &Core, toggles: &Toggles) {
+        sources.clear();
         for (id, object) in core.objects() {
             let Some(ability) = [Ability::HeatSource, Ability::ColdSource]
                 .into_iter()
@@ -100,36 +105,39 @@ impl Temperatures {
             if (needs_on && !toggles.is_on(id)) || (needs_closed && core.is_open(id)) {
                 continue;
             }
-            let elements = if needs_inside {
-                None
-            } else {
-                let pose = core.pose(id);
-                let points: Vec<_> = object
-                    .points
-                    .iter()
-                    .filter(|(kind, _)| *kind == PointKind::HeatingElement)
-                    .map(|(_, p)| pose.transform_point(*p))
-                    .collect();
-                // Without an element there is nothing to heat from (as in iGibson).
-                if points.is_empty() {
-                    continue;
-                }
-                let reach = object.param(ability, "distance_threshold", DEFAULT_DISTANCE_THRESHOLD);
-                Some((points, reach))
-            };
+            let has_element = object
+                .points
+                .iter()
+                .any(|(kind, _)| *kind == PointKind::HeatingElement);
+            // Without an element there is nothing to heat from (as in iGibson).
+            if !needs_inside && !has_element {
+                continue;
+            }
+            let reach = (!needs_inside)
+                .then(|| object.param(ability, "distance_threshold", DEFAULT_DISTANCE_THRESHOLD));
             sources.push(Source {
                 id,
                 temperature: object.param(ability, "temperature", DEFAULT_SOURCE_TEMPERATURE),
                 rate: object.param(ability, "heating_rate", DEFAULT_HEATING_RATE),
-                elements,
+                reach,
             });
         }
-        sources
+    }
+
+    /// Whether a point lies within `reach` of one of the source's heating elements.
+    fn near_element(core: &Core, source: ObjectId, at: Vector, reach: f32) -> bool {
+        let pose = core.pose(source);
+        core.object(source)
+            .points
+            .iter()
+            .filter(|(kind, _)| *kind == PointKind::HeatingElement)
+            .any(|(_, p)| (at - pose.transform_point(*p)).length() <= reach)
     }
 
     /// One step of the temperature rule.
     pub(crate) fn update(&mut self, core: &Core, toggles: &Toggles, dt: f32) {
-        let sources = Self::active_sources(core, toggles);
+        let mut sources = std::mem::take(&mut self.sources);
+        Self::find_active_sources(&mut sources, core, toggles);
         for (id, object) in core.objects() {
             if ![Ability::Cookable, Ability::Burnable, Ability::Freezable]
                 .into_iter()
@@ -143,10 +151,8 @@ impl Temperatures {
             let mut new = old;
             let mut reached = false;
             for source in sources.iter().filter(|s| s.id != id) {
-                let reaches = match &source.elements {
-                    Some((points, reach)) => {
-                        points.iter().any(|at| (center - *at).length() <= *reach)
-                    }
+                let reaches = match source.reach {
+                    Some(reach) => Self::near_element(core, source.id, center, reach),
                     None => core.inside(id, source.id),
                 };
                 if reaches {
@@ -160,5 +166,6 @@ impl Temperatures {
             self.now[i] = new;
             self.max[i] = self.max[i].max(new);
         }
+        self.sources = sources;
     }
 }

@@ -29,8 +29,10 @@ fn hex(digest: &[u8]) -> String {
 /// The SHA-256 of the named homes' JSON, in order, then of homes `free_1` … `free_20`.
 const HOMES: &str = "09416b4eb3a82e82ab5580a751580cbc790bc34bd795477a51f43bd0be77c6ed";
 
-/// The SHA-256 over every archetype × variant × size (see `objects_are_unchanged`).
-const OBJECTS: &str = "09562d43f4547c71c0c93bd1ad4308f0f606da37582124294e9221ec40235e96";
+/// The SHA-256 over every archetype × variant × size (see `objects_are_unchanged`). Changed on
+/// purpose in issue 10: knives got real masses (densities 700 and 1500 kg/m³, `knife.n.01` at
+/// least 20 cm long), so that they cut by being pushed.
+const OBJECTS: &str = "b832f4b89f82dc1d14d7692f1ea41f635279c55f1e24f141b22aa3eed67a9b35";
 
 #[test]
 fn homes_are_unchanged() {

@@ -10,8 +10,6 @@ use behavior_sampling::{Instance, instantiate};
 use behavior_sim::{BoundWorld, ObjectId, World};
 use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
 use rapier3d::math::{Pose, Vector};
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Duration;
 
 /// The runtime activities of the paper's speed table, and one heavy on object states.
@@ -22,32 +20,8 @@ const ACTIVITIES: [&str; 4] = [
     "cleaning_up_after_a_meal",
 ];
 
-/// Counts heap allocations, to show that a step at rest makes none.
-struct Counting;
-
-static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
-        // SAFETY: forwarded unchanged to the system allocator.
-        unsafe { System.alloc(layout) }
-    }
-
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        // SAFETY: forwarded unchanged to the system allocator.
-        unsafe { System.dealloc(ptr, layout) }
-    }
-
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
-        // SAFETY: forwarded unchanged to the system allocator.
-        unsafe { System.realloc(ptr, layout, new_size) }
-    }
-}
-
-#[global_allocator]
-static COUNTING: Counting = Counting;
+#[path = "../../sim/tests/common/counting.rs"]
+mod counting;
 
 /// A sampled instance in the activity's first covering named home, with its ground goal.
 struct Home {
@@ -124,11 +98,11 @@ fn bench_homes(c: &mut Criterion) {
         for _ in 0..60 {
             step_and_check(&mut world, home, &bindings, &mut truth);
         }
-        let before = ALLOCATIONS.load(Ordering::Relaxed);
+        let before = counting::allocations();
         for _ in 0..100 {
             step_and_check(&mut world, home, &bindings, &mut truth);
         }
-        let allocations = ALLOCATIONS.load(Ordering::Relaxed) - before;
+        let allocations = counting::allocations() - before;
         eprintln!(
             "{name}: {} objects ({} created), {} goal atoms; {allocations} heap allocations in 100 steps at rest",
             world.objects().len(),

@@ -177,22 +177,22 @@ impl Core {
         })
     }
 
-    /// Whether some pair of colliders is within [`TOUCH_DISTANCE`]. Asked as a contact query with
-    /// that margin rather than as a distance: parry's cuboid–cuboid distance overestimates the
+    /// The contacts between two objects' colliders within [`TOUCH_DISTANCE`]. A contact query
+    /// with that margin rather than a distance: parry's cuboid–cuboid distance overestimates the
     /// gap between two slightly turned boxes (by centimetres, for faces 0.5 mm apart), while its
     /// contact query is exact there.
+    fn near_contacts(&self, a: ObjectId, b: ObjectId) -> impl Iterator<Item = query::Contact> {
+        self.near_pairs(a, b, TOUCH_DISTANCE).filter_map(|(x, y)| {
+            let (px, py) = (x.position(), y.position());
+            query::contact(px, x.shape(), py, y.shape(), TOUCH_DISTANCE)
+                .ok()
+                .flatten()
+                .filter(|c| c.dist <= TOUCH_DISTANCE)
+        })
+    }
+
     fn compute_touching(&self, a: ObjectId, b: ObjectId) -> bool {
-        a != b
-            && self.near_pairs(a, b, TOUCH_DISTANCE).any(|(x, y)| {
-                let contact = query::contact(
-                    x.position(),
-                    x.shape(),
-                    y.position(),
-                    y.shape(),
-                    TOUCH_DISTANCE,
-                );
-                matches!(contact, Ok(Some(c)) if c.dist <= TOUCH_DISTANCE)
-            })
+        a != b && self.near_contacts(a, b).next().is_some()
     }
 
     /// Whether `b` supports `a` and is not above it (see the module docs).
@@ -202,19 +202,10 @@ impl Core {
             && !self.ray_hits(b, self.aabb(a).center(), Vector::Z, VERTICAL_RANGE)
     }
 
-    /// Whether `a` and `b` touch where `b`'s surface faces up.
+    /// Whether `a` and `b` touch where `b`'s surface faces up: `normal2` is `b`'s outward normal
+    /// at the contact, up when `b` carries `a`.
     fn supports(&self, a: ObjectId, b: ObjectId) -> bool {
-        self.near_pairs(a, b, TOUCH_DISTANCE).any(|(x, y)| {
-            // normal2 is `y`'s outward normal at the contact: up when `y` carries `x`.
-            let contact = query::contact(
-                x.position(),
-                x.shape(),
-                y.position(),
-                y.shape(),
-                TOUCH_DISTANCE,
-            );
-            matches!(contact, Ok(Some(c)) if c.normal2.z >= SUPPORT_COS)
-        })
+        self.near_contacts(a, b).any(|c| c.normal2.z >= SUPPORT_COS)
     }
 
     fn compute_under(&self, a: ObjectId, b: ObjectId) -> bool {

@@ -16,8 +16,8 @@
 //! placed by the first, its centre drawn where the others' areas overlap it, and accepted only if
 //! all hold ([`World::place_jointly`]); iGibson instead places by each literal in turn, the last
 //! one winning. A sliced object is placed like a whole: its two halves move together, keeping
-//! how they lie relative to each other. Settling is left to the caller, who usually places several objects first
-//! ([`World::settle`]).
+//! how they lie relative to each other. Settling is left to the caller, who usually places
+//! several objects first ([`World::settle`]).
 
 use crate::World;
 use crate::core::Core;

@@ -19,8 +19,8 @@
 //! temperature against the synset's thresholds, `frozen` from the current temperature, `open`
 //! from the joints, `soaked` from water, `toggled_on` from toggling, `dusty`/`stained` from dirt,
 //! `sliced` from whether the object was replaced by halves. Once sliced, an object's other states
-//! are read from and written to its two halves (true when true of both). `broken`, `perished`, `screwed` and
-//! `timeset`, which no activity uses, are plain stored flags.
+//! are read from and written to its two halves (true when true of both). `broken`, `perished`,
+//! `screwed` and `timeset`, which no activity uses, are plain stored flags.
 //!
 //! Every setter leaves the world consistent with the value it sets (setting `cooked` raises the
 //! temperature history, setting `open` moves the joints), so that the rules agree afterwards.

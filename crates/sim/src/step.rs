@@ -6,8 +6,8 @@
 //!    - [`StepHooks::before_substep`]: controllers set drives, velocities, forces and kinematic
 //!      targets (MuJoCo's `mj_step1`, where controls are computed from the current state);
 //!    - the physics substep (rapier), skipping contacts between ignored pairs;
-//!    - the world watches the substep: slicers' contact impulses (summed over the step), attachments' forces (breaking
-//!      those past their maximum);
+//!    - the world watches the substep: slicers' contact impulses (summed over the step),
+//!      attachments' forces (breaking those past their maximum);
 //! 2. objects that moved are marked, which invalidates their memoized relations;
 //! 3. the state rules, in the order [`crate::states`] documents (water, toggling, temperature,
 //!    cleaning, slicing);

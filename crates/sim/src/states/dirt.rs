@@ -2,8 +2,9 @@
 //!
 //! Making an object dusty (or stained) places 20 particles on its upward-facing surfaces, found by
 //! casting rays down onto it at points drawn over its footprint (first a random spot in the
-//! particle's cell of a 5 × 4 grid, then anywhere, up to 20 tries) from the world's seeded generator ([`crate::World::reseed`]), so
-//! layouts differ between instances and repeat for a seed. Each particle is fixed to the body it
+//! particle's cell of a 5 × 4 grid, then anywhere, up to 20 tries) from the world's seeded
+//! generator ([`crate::World::reseed`]), so layouts differ between instances and repeat for a
+//! seed. Each particle is fixed to the body it
 //! landed on, the object's or a link's, and moves with it: a dusty cabinet door keeps its dust
 //! when it swings open. The object is dusty while more than 50 % of the particles ever placed
 //! remain (75 % for floors), as in iGibson 2.0 (§1.6; iGibson also uses side faces).

@@ -92,6 +92,7 @@ impl World {
                 ignored: &core.ignored,
             };
             core.physics.step_with_events(&filter, &());
+            core.restore_sleep_times();
             core.index = OnceLock::new();
             core.watch_attachments();
             pressed.extend(core.pressed_by_slicers());

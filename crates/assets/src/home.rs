@@ -73,5 +73,6 @@ pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, Asset
         rooms: plan.rooms,
         walls,
         objects,
+        clutter: Vec::new(),
     })
 }

@@ -5,10 +5,17 @@
 //! archetype (its own or a descendant's in the taxonomy), samples an instance's size and variant
 //! from the episode's random number generator, and equips it with the abilities of its synset and
 //! the named points they need (`library.rs`). [`generate`] lays out homes with furniture from a
-//! seed (`home/`: plan, walls, furnish), [`Scene`] saves, loads and builds them (`scene.rs`),
-//! [`covering`] finds the homes an activity fits (`coverage.rs`), and [`import_urdf`] imports a
-//! user's own models, their collision geometry and their look (`urdf.rs`). The modules are
-//! private; this page is the crate's API.
+//! seed (`home/`: plan, walls, furnish), [`clutter`] fills a home with the everyday things no
+//! activity asks for — books on shelves, dishes in cabinets, food in the fridge — placed and
+//! settled with the world's physics (`clutter/`: rules, scatter, settle), [`Scene`] saves, loads
+//! and builds them, everything starting asleep (`scene.rs`), [`covering`] finds the homes an
+//! activity fits (`coverage.rs`), and [`import_urdf`] imports a user's own models, their
+//! collision geometry and their look (`urdf.rs`). The modules are private; this page is the
+//! crate's API.
+//!
+//! Clutter is a step of its own that callers opt into, as the original's `load_clutter` switch
+//! is: [`generate`] gives the furniture-only home, fast enough to generate every named home for
+//! a coverage check, and [`clutter`] (a fraction of a second) the lived-in one.
 //!
 //! This crate builds [`behavior_sim::ObjectSpec`]s; it knows nothing of BDDL text or of how the
 //! world simulates them.
@@ -17,6 +24,7 @@
 
 mod archetype;
 mod catalog;
+mod clutter;
 mod coverage;
 mod home;
 mod library;
@@ -26,10 +34,12 @@ mod urdf;
 
 pub use archetype::{Archetype, Layout, Material, Shape};
 pub use catalog::CATALOG;
+pub use clutter::{ClutterError, clutter};
 pub use coverage::{Requirements, covering, missing, requirements};
 pub use home::{CORRIDOR_WIDTH, DOOR_CLEARANCE, DOORWAY, NAMED_HOMES, WALL_THICKNESS, generate};
 pub use library::{AssetError, Library};
 pub use scene::{
-    BuiltScene, FLOOR_THICKNESS, ObjectPlan, RoomPlan, Scene, SceneError, WALL_HEIGHT, WallPlan,
+    BuiltScene, ClutterPlan, FLOOR_THICKNESS, ObjectPlan, RoomPlan, Scene, SceneError, WALL_HEIGHT,
+    WallPlan,
 };
 pub use urdf::{ImportError, import_urdf};

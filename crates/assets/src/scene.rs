@@ -1,5 +1,6 @@
 //! Scene files: a home as plain data (rooms, walls, objects with archetype, pose, size, variant
-//! and joint positions), saved as JSON and loaded back exactly, and built into a [`World`].
+//! and joint positions, and its clutter at settled poses), saved as JSON and loaded back exactly,
+//! and built into a [`World`].
 //!
 //! Schema (all lengths in metres, z up; a room's floor top is at z = 0):
 //! ```json
@@ -9,12 +10,22 @@
 //!   "walls":   [{"min": [0.0, 1.55, 0.0], "max": [4.5, 1.65, 2.5]}],
 //!   "objects": [{"name": "cabinet_0", "synset": "cabinet.n.01", "room": 0,
 //!                "position": [0.5, 5.6, 0.0], "yaw_quarter_turns": 2,
-//!                "size": [0.8, 0.5, 0.9], "variant": 0, "joints": [0.0]}]
+//!                "size": [0.8, 0.5, 0.9], "variant": 0, "joints": [0.0]}],
+//!   "clutter": [{"name": "clutter_mug_0", "synset": "mug.n.04", "archetype": "mug.n.04",
+//!                "position": [0.52, 5.61, 0.4717], "rotation": [0.0, 0.0, 0.7071, 0.7071],
+//!                "size": [0.09, 0.09, 0.11], "variant": 1}]
 //! }
 //! ```
 //! `position` is where the object's bottom centre stands; `yaw_quarter_turns` turns it about z
 //! (0: its front faces −y; 1: +x; 2: +y; 3: −x); `joints` are its doors' and drawers' positions.
-//! Every room gets a floor object named `floor_<kind>_<instance>`.
+//! A thing of the clutter has a full pose instead (its frame's origin, its bottom centre as
+//! built, and a unit quaternion x, y, z, w), where it came to rest; `clutter` may be left out
+//! (a furniture-only home, which is then written without it). Every room gets a floor object
+//! named `floor_<kind>_<instance>`.
+//!
+//! A scene file describes a home at rest, so the world it builds starts asleep: the doors,
+//! drawers and lids of its furniture and all its clutter (see [`behavior_sim::ObjectSpec::asleep`]).
+//! Nothing moves, or costs anything per step, until something touches it.
 
 use crate::library::{AssetError, Library};
 use behavior_core::RoomType;
@@ -42,6 +53,11 @@ pub struct Scene {
     pub walls: Vec<WallPlan>,
     /// Its furniture, doors and windows.
     pub objects: Vec<ObjectPlan>,
+    /// Everyday things lying about that no activity asks for (books on shelves, food in the
+    /// fridge), settled: see [`crate::clutter`]. Empty in a furniture-only home, and then left
+    /// out of the file, so such a file reads as it did before clutter existed.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub clutter: Vec<ClutterPlan>,
 }
 
 /// A room: its type and its axis-aligned extent on the floor.
@@ -100,6 +116,29 @@ pub struct ObjectPlan {
     pub joints: Vec<f32>,
 }
 
+/// A thing of the home's clutter, at the pose where it came to rest when the clutter was made,
+/// so that a rebuilt home holds it exactly there, asleep. Size and variant are stored, like an
+/// [`ObjectPlan`]'s, so the file rebuilds the same object whatever the library draws.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ClutterPlan {
+    /// Its name in the world, e.g. `clutter_book_3`: never an activity instance's name.
+    pub name: String,
+    /// Its synset.
+    pub synset: String,
+    /// The catalog synset whose archetype it is built from: its synset's own, or a descendant's.
+    pub archetype: String,
+    /// Where the origin of its frame (its bottom centre as built) is, m.
+    pub position: [f32; 3],
+    /// Its orientation as a unit quaternion (x, y, z, w): any settled orientation, not only
+    /// turns about z.
+    pub rotation: [f32; 4],
+    /// Its bounding box as built, in its own frame (width, depth, height), m.
+    pub size: [f32; 3],
+    /// Which of its shape's variants.
+    pub variant: u32,
+}
+
 /// Why a scene could not be loaded or built. Each message is a complete sentence with its cause;
 /// no variant also returns the cause as [`std::error::Error::source`], so a report that walks
 /// sources (`anyhow`'s `{:#}`) does not print it twice.
@@ -151,6 +190,16 @@ pub struct BuiltScene {
     pub floors: Vec<ObjectId>,
     /// The object built for each entry of `objects`.
     pub objects: Vec<ObjectId>,
+    /// The object built for each entry of `clutter`, asleep: no activity may bind these.
+    pub clutter: Vec<ObjectId>,
+}
+
+impl BuiltScene {
+    /// Whether an object is part of the home's clutter.
+    pub fn is_clutter(&self, id: ObjectId) -> bool {
+        // Clutter is added last, in one run, so its ids are contiguous and sorted.
+        self.clutter.binary_search(&id).is_ok()
+    }
 }
 
 impl Scene {
@@ -173,7 +222,9 @@ impl Scene {
             .position(|r| (r.min[0]..=r.max[0]).contains(&x) && (r.min[1]..=r.max[1]).contains(&y))
     }
 
-    /// Builds the world: floors, walls, then every object at its pose with its joints set.
+    /// Builds the world: floors, walls, every object at its pose with its joints set, then the
+    /// clutter — furniture links and clutter asleep (see the module docs). Clutter comes last, so
+    /// the ids of floors and furniture are the same with or without it.
     pub fn build(&self, library: &Library) -> Result<BuiltScene, SceneError> {
         let mut world = World::default();
         let floors = self
@@ -189,11 +240,25 @@ impl Scene {
             .iter()
             .map(|plan| self.add_object(&mut world, plan, library))
             .collect::<Result<Vec<_>, _>>()?;
+        let clutter = self
+            .clutter
+            .iter()
+            .map(|plan| add_clutter(&mut world, plan, library, true))
+            .collect::<Result<Vec<_>, _>>()?;
         Ok(BuiltScene {
             world,
             floors,
             objects,
+            clutter,
         })
+    }
+
+    /// The same home without its clutter: furniture only.
+    pub fn without_clutter(&self) -> Scene {
+        Scene {
+            clutter: Vec::new(),
+            ..self.clone()
+        }
     }
 
     /// Adds an object at its pose with its joints set (those beyond its links are ignored).
@@ -226,13 +291,52 @@ impl Scene {
             f32::from(plan.yaw_quarter_turns % 4) * std::f32::consts::FRAC_PI_2,
         );
         spec.pose = Pose::from_parts(Vector::from_array(plan.position), turn);
+        // A home is built at rest: doors, drawers and lids start asleep, so that clutter resting
+        // against them or in them is not woken by them, and an untouched home costs nothing.
+        spec.asleep = true;
         let id = world.add(spec)?;
         let links = world.object(id).links.len();
         for (link, &q) in plan.joints.iter().enumerate().take(links) {
-            world.set_joint_position(id, link, q)?;
+            // Links are built closed (at 0); moving one there anyway would only wake it.
+            if q != 0.0 {
+                world.set_joint_position(id, link, q)?;
+            }
         }
         Ok(id)
     }
+}
+
+/// Adds a thing of the clutter at its pose, asleep when it is known to rest there (as a scene
+/// file's clutter is), awake while it is being settled. A non-unit rotation is refused by the
+/// world with the object's name, as it is: normalizing it here would move a valid one by a bit.
+pub(crate) fn add_clutter(
+    world: &mut World,
+    plan: &ClutterPlan,
+    library: &Library,
+    asleep: bool,
+) -> Result<ObjectId, SceneError> {
+    let size = Vector::from_array(plan.size);
+    if !(size.is_finite() && size.min_element() > 0.0) {
+        return Err(SceneError::BadGeometry {
+            what: plan.name.clone(),
+        });
+    }
+    let asset = |cause| SceneError::Asset {
+        object: plan.name.clone(),
+        cause,
+    };
+    let archetype = library.resolve(&plan.archetype).map_err(asset)?;
+    if library.taxonomy().get(&plan.synset).is_none() {
+        return Err(asset(AssetError::UnknownSynset(plan.synset.clone())));
+    }
+    let mut spec = library.instance_of(archetype, &plan.synset, &plan.name, size, plan.variant);
+    spec.body = behavior_sim::BodyKind::Dynamic;
+    spec.asleep = asleep;
+    spec.pose = Pose::from_parts(
+        Vector::from_array(plan.position),
+        Rotation::from_array(plan.rotation),
+    );
+    Ok(world.add(spec)?)
 }
 
 /// Adds a room's floor, a slab whose top is at z = 0, and registers the room with it.

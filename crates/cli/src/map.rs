@@ -1,5 +1,5 @@
-//! A top-down map of a home as a PNG: rooms coloured and labelled by type, walls, doors, and
-//! furniture outlines with their names.
+//! A top-down map of a home as a PNG: rooms coloured and labelled by type, walls, doors,
+//! furniture outlines with their names, and a dot for each thing of its clutter.
 
 use behavior_assets::Scene;
 use font8x8::legacy::BASIC_LEGACY;
@@ -108,6 +108,17 @@ pub fn render(scene: &Scene, scale: f32) -> RgbImage {
         if !matches!(o.synset.as_str(), "door.n.01" | "window.n.01") {
             text(&mut img, &o.name, cx, cy, 1, Rgb([30, 30, 30]));
         }
+    }
+    // Clutter is small and plentiful: a dot each, under the labels.
+    let dot = 0.03;
+    for c in &scene.clutter {
+        let [x, y, _] = c.position;
+        fill(
+            &mut img,
+            [x - dot, y - dot],
+            [x + dot, y + dot],
+            Rgb([230, 120, 30]),
+        );
     }
     for r in &scene.rooms {
         let (cx, _) = px((r.min[0] + r.max[0]) / 2.0, r.max[1]);

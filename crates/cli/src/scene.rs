@@ -4,7 +4,7 @@
 use crate::prelude::{Prelude, named_homes};
 use anyhow::{Context, Result};
 use behavior_assets::covering;
-use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
+use behavior_assets::{Library, NAMED_HOMES, Scene, clutter, generate};
 use clap::Subcommand;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -14,12 +14,15 @@ use std::process::ExitCode;
 pub enum SceneCommand {
     /// The named homes with their rooms.
     List,
-    /// Generate a home from a seed and save it as a scene file.
+    /// Generate a home from a seed and save it as a scene file, with clutter unless told not to.
     Generate {
         #[arg(long)]
         seed: u64,
         #[arg(long, value_name = "FILE.json")]
         out: PathBuf,
+        /// Furniture only: no books, dishes, food and the like lying about.
+        #[arg(long)]
+        no_clutter: bool,
     },
     /// Draw a top-down map of a named home or a scene file.
     Show {
@@ -55,15 +58,21 @@ pub fn run(command: SceneCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
                 );
             }
         }
-        SceneCommand::Generate { seed, out } => {
+        SceneCommand::Generate {
+            seed,
+            out,
+            no_clutter,
+        } => {
             let scene = generate(&format!("seed_{seed}"), seed, &library)?;
+            let scene = with_clutter(scene, &library, !no_clutter)?;
             std::fs::write(&out, scene.to_json())
                 .with_context(|| format!("cannot write {}", out.display()))?;
             eprintln!(
-                "{}: {} rooms, {} objects",
+                "{}: {} rooms, {} objects, {} things of clutter",
                 out.display(),
                 scene.rooms.len(),
-                scene.objects.len()
+                scene.objects.len(),
+                scene.clutter.len()
             );
         }
         SceneCommand::Show { scene, png, scale } => {
@@ -113,6 +122,18 @@ fn coverage(prelude: &Prelude, library: &Library, json: bool) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// The home as it is used: with clutter when `on` (a home without any gets the clutter its own
+/// seed gives; a scene file's own clutter is kept), furniture only when not.
+pub(crate) fn with_clutter(scene: Scene, library: &Library, on: bool) -> Result<Scene> {
+    if !on {
+        return Ok(scene.without_clutter());
+    }
+    if !scene.clutter.is_empty() {
+        return Ok(scene);
+    }
+    clutter(&scene, library, scene.seed).with_context(|| format!("cluttering {}", scene.name))
 }
 
 /// A named home, or a scene file.

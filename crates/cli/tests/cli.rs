@@ -390,6 +390,61 @@ fn scene_generate_writes_a_scene_file_that_round_trips() {
 }
 
 #[test]
+fn scene_generate_no_clutter_writes_the_furniture_only_home() {
+    let (bare, full) = (scratch("seed_7_bare.json"), scratch("seed_7.json"));
+    for (path, flags) in [(&bare, &["--no-clutter"][..]), (&full, &[][..])] {
+        let mut args = vec!["scene", "generate", "--seed", "7", "--out"];
+        args.push(path.to_str().unwrap());
+        args.extend(flags);
+        behavior_ok(&args);
+    }
+    let read =
+        |p: &PathBuf| behavior_assets::Scene::from_json(&std::fs::read_to_string(p).unwrap());
+    let (bare_text, bare) = (
+        std::fs::read_to_string(&bare).unwrap(),
+        read(&bare).unwrap(),
+    );
+    let full = read(&full).unwrap();
+    assert!(
+        !bare_text.contains("clutter"),
+        "no clutter in the file at all"
+    );
+    assert!(
+        full.clutter.len() > 100,
+        "{} things of clutter",
+        full.clutter.len()
+    );
+    assert_eq!(
+        full.without_clutter(),
+        bare,
+        "the same home under the clutter"
+    );
+}
+
+#[test]
+fn sample_uses_a_cluttered_home_unless_told_not_to() {
+    let run = |flags: &[&str]| -> Value {
+        let mut args = vec!["sample", "bringing_in_wood", "--json"];
+        args.extend(flags);
+        serde_json::from_slice(&behavior_ok(&args).stdout).unwrap()
+    };
+    let (full, bare) = (run(&[]), run(&["--no-clutter"]));
+    let count = |r: &Value, key: &str| r["objects"][key].as_u64().unwrap();
+    assert!(count(&full, "clutter") > 100, "{full}");
+    // The original's home for this activity holds 134 objects.
+    assert!(count(&full, "total") >= 134, "{full}");
+    assert_eq!(count(&bare, "clutter"), 0, "{bare}");
+    assert_eq!(
+        count(&full, "total") - count(&full, "clutter"),
+        count(&bare, "total"),
+        "the same furniture, floors and activity objects"
+    );
+    for r in [&full, &bare] {
+        assert_eq!(r["init_check"]["failing"], serde_json::json!([]));
+    }
+}
+
+#[test]
 fn scene_coverage_json_lists_at_least_three_homes_per_activity() {
     let output = behavior_ok(&["scene", "coverage", "--json"]);
     let rows: Vec<Value> = serde_json::from_slice(&output.stdout).unwrap();

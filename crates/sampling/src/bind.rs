@@ -2,7 +2,10 @@
 //! home's own objects.
 //!
 //! Candidates are the home's objects of the instance's synset or a descendant standing in rooms
-//! of the right type (for floors, those rooms' floors). As iGibson filters them before matching,
+//! of the right type (for floors, those rooms' floors). They are drawn from the scene's
+//! `objects` (furniture, doors, windows) only, never from its clutter: the books and dishes
+//! lying about are no activity's objects, as in the original, where clutter is loaded after
+//! sampling and left out of the activity's scope. As iGibson filters them before matching,
 //! a candidate is kept only if it can host the instance's own init literals: for every object to
 //! be placed on, in, under or next to the instance, a probe of that object at its smallest size
 //! is placed there in a scratch copy of the home, together with its placements relative to other
@@ -126,9 +129,9 @@ impl Attempt<'_> {
     }
 
     /// Each wanted instance's candidates: the room type's floors, or the objects of its kind
-    /// standing in rooms of that type.
+    /// standing in rooms of that type — furniture only, never clutter (see the module docs).
     fn candidates(&self, wanted: &[Wanted]) -> Vec<Vec<ObjectId>> {
-        let scene = self.scene;
+        let scene = &self.scene;
         let mut candidates = vec![Vec::new(); self.activity.instances.len()];
         for w in wanted {
             let list: &mut Vec<ObjectId> = &mut candidates[index(w.instance)];
@@ -235,8 +238,11 @@ impl Attempt<'_> {
             }
             let probing = match &mut probing {
                 Some(p) => p,
+                // Without clutter: whichever candidate is bound has the clutter around it put
+                // away (see `tidy`), so it is judged as it will be. Clutter is built last, so
+                // the furniture's ids are the same.
                 None => probing.insert(Probing {
-                    world: self.scene.build(self.library)?.world,
+                    world: self.scene.without_clutter().build(self.library)?.world,
                     probes: vec![None; candidates.len()],
                     candidates,
                 }),

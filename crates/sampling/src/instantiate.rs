@@ -93,6 +93,7 @@ impl Task<'_> {
         rng.set_stream(u64::from(attempt));
         let mut draft = Attempt::start(self, rng)?;
         draft.bind_furniture()?;
+        draft.tidy()?;
         draft.create_objects()?;
         let bindings = draft.bound();
         draft.place_objects(&bindings)?;
@@ -104,7 +105,7 @@ impl Task<'_> {
         let mut rng = draft.rng;
         let instance = Instance {
             activity: self.activity.name.clone(),
-            scene: self.scene.clone(),
+            scene: draft.scene,
             seed: self.seed,
             attempt,
             world: draft.world,
@@ -120,7 +121,9 @@ impl Task<'_> {
 /// the world being built, which object each instance is, and the objects created so far.
 pub(crate) struct Attempt<'a> {
     pub(crate) activity: &'a Activity,
-    pub(crate) scene: &'a Scene,
+    /// The home as it stands in this attempt: once tidied, without the clutter around the
+    /// activity's furniture and floors.
+    pub(crate) scene: Scene,
     pub(crate) library: &'a Library<'a>,
     pub(crate) taxonomy: &'a Taxonomy,
     /// This attempt's own stream: a retry draws other numbers.
@@ -131,6 +134,8 @@ pub(crate) struct Attempt<'a> {
     pub(crate) floors: Vec<ObjectId>,
     /// The object built for each of `scene.objects`.
     pub(crate) furniture: Vec<ObjectId>,
+    /// The object built for each of `scene.clutter`: never bound to an instance.
+    pub(crate) clutter: Vec<ObjectId>,
     /// The object of each activity instance once bound or created, in `:objects` order.
     pub(crate) bindings: Vec<Option<ObjectId>>,
     /// Which instances are bound to the home's own objects (furniture and floors): they stand
@@ -158,13 +163,14 @@ impl<'a> Attempt<'a> {
             .collect();
         Ok(Attempt {
             activity: task.activity,
-            scene: task.scene,
+            scene: task.scene.clone(),
             library: task.library,
             taxonomy: task.taxonomy,
             rng,
             world: built.world,
             floors: built.floors,
             furniture: built.objects,
+            clutter: built.clutter,
             bindings: vec![None; task.activity.instances.len()],
             home_bound: vec![false; task.activity.instances.len()],
             created: Vec::new(),

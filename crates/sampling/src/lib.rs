@@ -2,8 +2,9 @@
 //! `:init` literals.
 //!
 //! [`instantiate`] binds the activity's furniture and floors (the instances with `inroom`) to the
-//! home's objects that can host their own init literals, by bipartite matching per room type;
-//! creates every other object from the object library; places them in dependency order, each by
+//! home's objects that can host their own init literals, by bipartite matching per room type
+//! (never to the home's clutter); puts away the clutter around the bound furniture and floors the
+//! activity places things relative to, so that its objects find room; creates every other object from the object library; places them in dependency order, each by
 //! all its placement literals at once (`ontop`, `inside`, `under`, `nextto`, `touching`,
 //! `onfloor`); sets every unary literal; lets the world settle and checks every init literal in the
 //! settled world ([`check_init`]). Before an instance is handed out, [`goal_feasible`] places some
@@ -18,7 +19,7 @@
 //!
 //! Inside, each stage of an attempt has its own module, all working on one shared context (the
 //! attempt's activity, home, library, random numbers, world and bindings): `bind` (furniture and
-//! floors), `create` (the other objects), `order` (the one dependency order, for the initial
+//! floors), `tidy` (clutter around them put away), `create` (the other objects), `order` (the one dependency order, for the initial
 //! state and goal options alike), `place`, `states`, `verify` (the init check), `goal`.
 
 #![warn(missing_docs)]
@@ -33,6 +34,7 @@ mod instantiate;
 mod order;
 mod place;
 mod states;
+mod tidy;
 mod verify;
 
 pub use error::{

@@ -118,13 +118,20 @@ impl Core {
             BodyKind::KinematicPosition => RigidBodyBuilder::kinematic_position_based(),
             BodyKind::KinematicVelocity => RigidBodyBuilder::kinematic_velocity_based(),
         };
+        // Only dynamic bodies sleep; a kinematic or fixed one ignores the flag.
+        let asleep = spec.asleep && kind == BodyKind::Dynamic;
         let body = builder
+            .sleeping(asleep)
             .pose(spec.pose)
             .angular_damping(spec.angular_damping)
             .additional_mass(extra_mass)
             .user_data(tag)
             .build();
-        self.physics.insert_body(body)
+        let handle = self.physics.insert_body(body);
+        if asleep {
+            self.fall_asleep_at_once(handle);
+        }
+        handle
     }
 
     /// The joint between a link and its parent. Both bodies start at the object's pose, so the

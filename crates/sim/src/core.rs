@@ -93,6 +93,9 @@ pub struct Core {
     /// The last physics step left every body asleep and nothing has changed since, so further
     /// substeps would change nothing: they are skipped until something wakes.
     pub(crate) quiet: bool,
+    /// Bodies added asleep that have not yet been through a physics substep, with the time at
+    /// rest they need to fall asleep (see [`Core::fall_asleep_at_once`]).
+    pub(crate) waking_to_sleep: Vec<(RigidBodyHandle, f32)>,
     pub(crate) steps: u64,
     pub(crate) substeps: Substeps,
     pub(crate) drives: BTreeMap<(ObjectId, usize), crate::joints::Drive>,
@@ -130,6 +133,7 @@ impl Clone for Core {
             ignored: self.ignored.clone(),
             pushed: self.pushed.clone(),
             quiet: self.quiet,
+            waking_to_sleep: self.waking_to_sleep.clone(),
             steps: self.steps,
             substeps: self.substeps,
             drives: self.drives.clone(),
@@ -169,6 +173,7 @@ impl Core {
             ignored: Default::default(),
             pushed: Vec::new(),
             quiet: false,
+            waking_to_sleep: Vec::new(),
             steps: 0,
             substeps,
             drives: BTreeMap::new(),
@@ -367,6 +372,28 @@ impl Core {
             }
         }
         self.quiet = false;
+    }
+
+    /// Lets a body added asleep go back to sleep within its first substep. Rapier wakes every
+    /// body whose contact begins, and the first substep after a body is added finds all its
+    /// resting contacts, so a body added asleep on a shelf wakes at once and would then need its
+    /// full time at rest (half a second) to sleep again, simulated all the while. With that time
+    /// at zero for its first substep it is asleep again at the end of it, unmoved (every bit of
+    /// its pose: `tests/asleep.rs`); from then on it needs the usual time, like any body.
+    pub(crate) fn fall_asleep_at_once(&mut self, handle: RigidBodyHandle) {
+        let activation = self.physics.bodies[handle].activation_mut();
+        self.waking_to_sleep
+            .push((handle, activation.time_until_sleep));
+        activation.time_until_sleep = 0.0;
+    }
+
+    /// After a physics substep: bodies added asleep need their usual time at rest again.
+    pub(crate) fn restore_sleep_times(&mut self) {
+        for (handle, time) in self.waking_to_sleep.drain(..) {
+            if let Some(body) = self.physics.bodies.get_mut(handle) {
+                body.activation_mut().time_until_sleep = time;
+            }
+        }
     }
 
     /// Positions, orientations and velocities of every object's body and links as raw bits:

@@ -145,6 +145,11 @@ pub struct ObjectSpec {
     pub pose: Pose,
     /// Fixed, dynamic or kinematic.
     pub body: BodyKind,
+    /// Whether its dynamic body and links start asleep: for an object put where it already came
+    /// to rest (a home's clutter, settled when the home was made; a cabinet's closed door), so
+    /// that it costs nothing per step until something touches it, when it wakes like any
+    /// sleeping body. Put it where it rests: asleep, it does not fall.
+    pub asleep: bool,
     /// kg/m³; the mass follows from the parts' volumes.
     pub density: f32,
     /// Coulomb friction coefficient of every part.
@@ -274,6 +279,7 @@ impl ObjectSpec {
             parts,
             pose: Pose::IDENTITY,
             body: BodyKind::Dynamic,
+            asleep: false,
             density: 500.0,
             friction: 0.7,
             angular_damping: 1.0,
@@ -301,6 +307,12 @@ impl ObjectSpec {
     /// The same object with another kind of body.
     pub fn body(mut self, body: BodyKind) -> ObjectSpec {
         self.body = body;
+        self
+    }
+
+    /// The same object, starting asleep (see [`ObjectSpec::asleep`]).
+    pub fn asleep(mut self) -> ObjectSpec {
+        self.asleep = true;
         self
     }
 

@@ -93,6 +93,7 @@ impl World {
                 ignored: &core.ignored,
             };
             core.physics.step_with_events(&filter, &());
+            core.restore_sleep_times();
             core.index = OnceLock::new();
             core.watch_attachments();
             push.add(core.slicer_impulses());

@@ -32,7 +32,8 @@ impl Attempt<'_> {
     }
 }
 
-/// Places a step's object by all its literals at once (see [`World::place_jointly`]).
+/// Places a step's object by all its literals at once, at a random heading (see
+/// [`World::place_turning`]).
 pub(crate) fn place_by(
     world: &mut World,
     bindings: &[ObjectId],
@@ -51,7 +52,7 @@ pub(crate) fn place_by(
         .collect();
     order_relations(world, &mut relations);
     let object = bindings[step.subject.0 as usize];
-    world.place_jointly(object, &relations, rng).map(|_| ())
+    world.place_turning(object, &relations, rng).map(|_| ())
 }
 
 /// The placement a literal asks for: a positive `ontop`, `inside`, `under`, `nextto`, `touching`

@@ -64,8 +64,8 @@ pub use object::{
 };
 pub use oracle::BoundWorld;
 pub use placement::{
-    DROP_GAP, LEVEL_SPACING, NEXTTO_GAP, PLACEMENT_ATTEMPTS, PlacementError, PlacementFailure,
-    Relation, SUPPORT_NORMAL_Z,
+    DROP_GAP, Heading, LEVEL_SPACING, NEXTTO_GAP, PLACEMENT_ATTEMPTS, PlacementError,
+    PlacementFailure, Relation, SUPPORT_NORMAL_Z, TOUCH_GAP,
 };
 pub use query::{Proximity, QueryFilter, RayHit};
 pub use room::Room;

@@ -8,11 +8,11 @@
 //! boards — of the container or what already lies in it for `inside`, of anything
 //! else for `under`, `nextto` and `touching`, of the floor for `onfloor`), sets the object on
 //! it, 2 mm up, and accepts the pose if the object then overlaps nothing and the predicate holds.
-//! Each attempt turns the object about the vertical by a random yaw, keeping its tilt (the
-//! resting orientation it was given), and for `touching` slides it sideways until it touches
-//! the target (rotated boxes rarely touch where their bounding boxes do). iGibson samples the
-//! same way (`sample_kinematics`: a random yaw per trial, 10 attempts); we allow
-//! [`PLACEMENT_ATTEMPTS`]. An object asked to stand in several relations at once is
+//! The object keeps its orientation ([`World::place_jointly`]), or each attempt turns it about the
+//! vertical by a random yaw, keeping its tilt (the resting orientation it was given) — as
+//! iGibson's `sample_kinematics` does, with 10 attempts ([`World::place_turning`]); we allow
+//! [`PLACEMENT_ATTEMPTS`]. For `touching` the object slides sideways until it touches the target
+//! (turned boxes rarely touch where their bounding boxes do). An object asked to stand in several relations at once is
 //! placed by the first, its centre drawn where the others' areas overlap it, and accepted only if
 //! all hold ([`World::place_jointly`]); iGibson instead places by each literal in turn, the last
 //! one winning. A sliced object is placed like a whole: its two halves move together, keeping
@@ -171,40 +171,66 @@ impl World {
         target: ObjectId,
         rng: &mut SimRng,
     ) -> Result<Pose, PlacementError> {
-        self.core.place_jointly(object, &[(relation, target)], rng)
+        self.core
+            .place_with(object, &[(relation, target)], Heading::Keep, rng)
     }
 
-    /// Places `object` so that every one of `relations` holds at once (see
-    /// [`Core::place_jointly`]).
+    /// Places `object`, as it is turned, so that every one of `relations` holds at once (see
+    /// [`Core::place_with`]).
     pub fn place_jointly(
         &mut self,
         object: ObjectId,
         relations: &[(Relation, ObjectId)],
         rng: &mut SimRng,
     ) -> Result<Pose, PlacementError> {
-        self.core.place_jointly(object, relations, rng)
+        self.core.place_with(object, relations, Heading::Keep, rng)
     }
+
+    /// Places `object` so that every one of `relations` holds at once, each attempt at a random
+    /// heading (see [`Core::place_with`]): how the activity sampler places, as iGibson's does.
+    pub fn place_turning(
+        &mut self,
+        object: ObjectId,
+        relations: &[(Relation, ObjectId)],
+        rng: &mut SimRng,
+    ) -> Result<Pose, PlacementError> {
+        self.core
+            .place_with(object, relations, Heading::Random, rng)
+    }
+}
+
+/// Which way a placed object faces.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Heading {
+    /// As it is turned now.
+    Keep,
+    /// Each attempt turns it about the vertical by a random yaw, keeping its tilt.
+    Random,
 }
 
 impl Core {
     /// Places `object` so that every one of `relations` holds at once: the first picks the
     /// surface it rests on, the others narrow where its centre may go (to their target's
     /// footprint, or the floor's room) and must hold too — a shoe under a table and on the floor of
-    /// the room that part of the table stands in. On failure the object is back where it was.
-    pub fn place_jointly(
+    /// the room that part of the table stands in. `heading` says whether it keeps its orientation.
+    /// On failure the object is back where it was.
+    pub fn place_with(
         &mut self,
         object: ObjectId,
         relations: &[(Relation, ObjectId)],
+        heading: Heading,
         rng: &mut SimRng,
     ) -> Result<Pose, PlacementError> {
         let original = self.pose(object);
         let mut reason = PlacementFailure::NothingAsked;
         if !relations.is_empty() {
             for _ in 0..PLACEMENT_ATTEMPTS {
-                let yaw = Rotation::from_rotation_z(uniform(rng, 0.0, std::f32::consts::TAU));
-                let turned = Pose::from_parts(original.translation, yaw * original.rotation);
-                // A finite pose turned by a finite angle: the teleport cannot fail.
-                let _ = self.set_pose(object, turned);
+                if heading == Heading::Random {
+                    let yaw = Rotation::from_rotation_z(uniform(rng, 0.0, std::f32::consts::TAU));
+                    let turned = Pose::from_parts(original.translation, yaw * original.rotation);
+                    // A finite pose turned by a finite angle: the teleport cannot fail.
+                    let _ = self.set_pose(object, turned);
+                }
                 match self.try_place(object, relations, rng) {
                     Ok(pose) => return Ok(pose),
                     Err(why) => reason = why,

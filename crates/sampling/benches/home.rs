@@ -1,9 +1,10 @@
 //! A home's step: the world step (physics, then the state rules), then every goal atom evaluated,
-//! on sampled instances of the seed's runtime activities and of a state-heavy one, with every
-//! object at rest and with the activity's objects moving. Also counts the heap allocations of a
+//! on sampled instances of the seed's runtime activities and of a state-heavy one, in their
+//! first covering named home with its clutter (as `behavior sample` uses), with every object at
+//! rest and with the activity's objects moving. Also counts the heap allocations of a
 //! step at rest. `cargo bench -p behavior-sampling --bench home`.
 
-use behavior_assets::{Library, NAMED_HOMES, covering, generate};
+use behavior_assets::{Library, NAMED_HOMES, clutter, covering, generate};
 use behavior_bddl::{Activity, GroundGoal, Knowledge, PredicateOracle};
 use behavior_data::DataDir;
 use behavior_sampling::{Instance, instantiate};
@@ -44,7 +45,8 @@ fn homes() -> Vec<Home> {
             let source =
                 behavior_bddl::load::read_source(&data.problem_path(name).unwrap()).unwrap();
             let (activity, _) = knowledge.load(&source).unwrap();
-            let home = covering(&named, &activity, &knowledge.taxonomy)[0].clone();
+            let furnished = covering(&named, &activity, &knowledge.taxonomy)[0];
+            let home = clutter(furnished, &library, furnished.seed).unwrap();
             let instance = instantiate(&activity, &home, 0, &library, &knowledge.taxonomy).unwrap();
             let goal = GroundGoal::new(&activity);
             Home {

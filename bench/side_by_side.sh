@@ -6,8 +6,10 @@
 #   bench/side_by_side.sh [ARGS...]
 #
 # ARGS (e.g. --quick) are passed unchanged to both sides:
-#   target/release/behavior bddl bench --json ARGS...
+#   target/release/behavior bddl bench --json --reference-counting ARGS...
 #   bench/reference/bddl_reference_bench.py ARGS...
+# Ours counts options as the reference does (a literal repeated in an option counts each time),
+# so that the Q values compared are the same quantity; by default ours counts them as sets.
 #
 # Environment:
 #   PYTHON      interpreter used to create the venv (default: python3)
@@ -45,7 +47,7 @@ echo "== building behavior (release)" >&2
 cargo build --release -p behavior-cli
 
 echo "== ours" >&2
-target/release/behavior bddl bench --json "$@" > "$OURS_JSON"
+target/release/behavior bddl bench --json --reference-counting "$@" > "$OURS_JSON"
 
 echo "== reference (bddl 1.0.1)" >&2
 "$VENV/bin/python" bench/reference/bddl_reference_bench.py "$@" > "$REF_JSON"

@@ -7,6 +7,8 @@
 //! ([`domain`] checks domain files against the same vocabulary) →
 //! [`ground`] grounds the goal over the activity's instances → [`eval`], [`optimize`] and
 //! [`options`] evaluate success, Q, volume and list options against a [`eval::PredicateOracle`].
+//! Options count their literals as sets by default (the paper's Q), or as the reference
+//! implementation's lists with [`Counting::Reference`].
 //!
 //! This crate knows nothing of physics or rendering: a simulator answers predicates through the
 //! oracle trait, and everything here works the same over an in-memory [`eval::FactSet`].
@@ -32,6 +34,7 @@
 
 pub mod activity;
 pub mod ast;
+mod bottom_up;
 pub mod diagnostics;
 pub mod domain;
 pub mod eval;
@@ -43,6 +46,7 @@ pub mod options;
 pub mod parser;
 pub mod predicate;
 pub mod sexpr;
+mod sharing;
 pub mod taxonomy;
 
 pub use activity::{Activity, CheckContext, Literal};
@@ -51,6 +55,6 @@ pub use diagnostics::{Diagnostic, Diagnostics, Source, SourceErrors};
 pub use eval::{FactSet, PredicateOracle};
 pub use ground::GroundGoal;
 pub use load::{Knowledge, LoadError};
-pub use optimize::{Optimizer, Ratio};
+pub use optimize::{Counting, Optimizer, Ratio};
 pub use predicate::Predicate;
 pub use taxonomy::Taxonomy;

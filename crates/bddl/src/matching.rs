@@ -29,12 +29,16 @@ pub fn max_matching(rows: usize, cols: usize, edge: impl Fn(usize, usize) -> boo
 
 /// The best total weight of exactly `n` disjoint pairs, with the pairs, where `weight(row, col)`
 /// is `None` for a cell that cannot be used. `None` when no such `n` pairs exist.
+///
+/// Weights are `i128` because the optimizer packs a count of forced leaves above bit 64 of its
+/// values (see [`crate::optimize`]); the reductions below stay in range for weights below
+/// about 2^90 and up to thousands of rows.
 pub fn best_matching(
     rows: usize,
     cols: usize,
     n: usize,
-    weight: impl Fn(usize, usize) -> Option<i64>,
-) -> Option<(i64, Vec<(usize, usize)>)> {
+    weight: impl Fn(usize, usize) -> Option<i128>,
+) -> Option<(i128, Vec<(usize, usize)>)> {
     if n == 0 {
         return Some((0, Vec::new()));
     }
@@ -54,8 +58,8 @@ pub fn best_matching(
             weight(i, j)
         }
     };
-    let cells: Vec<Option<i64>> = (0..r * c).map(|k| cell(k / c, k % c)).collect();
-    let largest = cells.iter().flatten().map(|w| i128::from(*w).abs()).max()?;
+    let cells: Vec<Option<i128>> = (0..r * c).map(|k| cell(k / c, k % c)).collect();
+    let largest = cells.iter().flatten().map(|w| w.abs()).max()?;
     let r128 = r as i128;
     // Using a forbidden cell costs more than any set of real cells can gain.
     let forbidden = -(2 * r128 * (largest + 1) + 1);
@@ -66,11 +70,11 @@ pub fn best_matching(
         if j >= c {
             bonus
         } else {
-            cells[i * c + j].map_or(forbidden, i128::from)
+            cells[i * c + j].unwrap_or(forbidden)
         }
     });
     let (_, assignment) = kuhn_munkres(&matrix);
-    let mut total: i64 = 0;
+    let mut total: i128 = 0;
     let mut pairs = Vec::with_capacity(n);
     for (i, &j) in assignment.iter().enumerate() {
         if j >= c {
@@ -146,7 +150,7 @@ mod tests {
         );
         // Negative weights: exactly one pair must still be chosen.
         assert_eq!(
-            best_matching(2, 2, 1, |i, j| Some(-1 - (i + j) as i64)),
+            best_matching(2, 2, 1, |i, j| Some(-1 - (i + j) as i128)),
             Some((-1, vec![(0, 0)]))
         );
         let only_row_0 = [[Some(1), Some(1)], [None, None]];

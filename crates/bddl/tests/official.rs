@@ -5,8 +5,8 @@
 mod common;
 
 use behavior_bddl::load::{Knowledge, read_source};
-use behavior_bddl::options::options;
-use behavior_bddl::{Activity, FactSet, GroundGoal, Optimizer, Source};
+use behavior_bddl::options::options_with;
+use behavior_bddl::{Activity, Counting, FactSet, GroundGoal, Optimizer, Ratio, Source};
 use behavior_data::DataDir;
 use serde_json::Value;
 use std::path::PathBuf;
@@ -53,6 +53,8 @@ fn all_100_official_definitions_parse_and_check_without_errors_or_warnings() {
     }
 }
 
+/// Under the reference's counting (a repeated literal counts each time) our volume and Q equal
+/// the recorded ones; set counting differs on two activities (see the tests below).
 #[test]
 fn volume_q_and_success_at_init_match_the_reference_on_all_100() {
     let reference = conformance();
@@ -60,7 +62,7 @@ fn volume_q_and_success_at_init_match_the_reference_on_all_100() {
     for (name, _, activity) in &activities {
         let expected = &reference["activities"][name];
         let goal = GroundGoal::new(activity);
-        let optimizer = Optimizer::new(&goal);
+        let optimizer = Optimizer::with_counting(&goal, Counting::Reference);
         let state: FactSet = activity.initial_facts().into_iter().collect();
         assert_eq!(
             optimizer.volume(),
@@ -93,8 +95,47 @@ fn volume_q_and_success_at_init_match_the_reference_on_all_100() {
     }
 }
 
+/// Volume, and Q at init, of one official activity under a counting.
+fn at_init(name: &str, counting: Counting) -> (Option<u64>, Option<Ratio>) {
+    let (_, _, activities) = all_activities();
+    let (_, _, activity) = activities.iter().find(|(n, ..)| n == name).unwrap();
+    let goal = GroundGoal::new(activity);
+    let optimizer = Optimizer::with_counting(&goal, counting);
+    let state: FactSet = activity.initial_facts().into_iter().collect();
+    (optimizer.volume(), optimizer.q(&state))
+}
+
+/// `(not (inside cup.n.01_1 ?cabinet))` is written once per bowl inside `forall bowl`, and
+/// `(not (inside bowl.n.01_1 ?cabinet))` once per cup: as sets an option has 2 + 3 + 3 literals.
+/// Both options (bowls in one cabinet, cups in the other) have 3 true at init — e.g. bowls in
+/// cabinet 1, cups in cabinet 2: cup 1 is not in cabinet 1, cup 1 is in cabinet 2, bowl 1 is not
+/// in cabinet 2. The reference counts each repeated negation twice: 5 of 10.
 #[test]
-fn every_official_goal_agrees_with_enumeration_on_random_states() {
+fn cleaning_kitchen_cupboard_counts_a_literal_written_per_bowl_once() {
+    let (volume, q) = at_init("cleaning_kitchen_cupboard", Counting::Set);
+    assert_eq!(volume, Some(8));
+    assert_eq!(q, Some(Ratio::new(3, 8)));
+    assert_eq!(q.unwrap().to_f64(), 0.375);
+    let (volume, q) = at_init("cleaning_kitchen_cupboard", Counting::Reference);
+    assert_eq!(volume, Some(10));
+    assert_eq!(q, Some(Ratio::new(1, 2)));
+}
+
+/// `(not (stained ?floor.n.01_1))` is written twice among the top-level conjuncts.
+#[test]
+fn cleaning_up_after_a_meal_counts_a_conjunct_written_twice_once() {
+    let (volume, q) = at_init("cleaning_up_after_a_meal", Counting::Set);
+    assert_eq!(volume, Some(14));
+    assert_eq!(q, Some(Ratio::new(1, 14)));
+    let (volume, q) = at_init("cleaning_up_after_a_meal", Counting::Reference);
+    assert_eq!(volume, Some(15));
+    assert_eq!(q, Some(Ratio::new(2, 15)));
+}
+
+/// Volume and Q of the fast path against the naive enumeration, both countings, on the initial
+/// state and 20 random states, for every activity small enough to enumerate.
+#[test]
+fn every_official_goal_agrees_with_enumeration_at_init_and_on_random_states() {
     let (_, _, activities) = all_activities();
     let mut compared = 0;
     for (name, _, activity) in &activities {
@@ -104,19 +145,25 @@ fn every_official_goal_agrees_with_enumeration_on_random_states() {
         };
         compared += 1;
         let goal = GroundGoal::new(activity);
-        let optimizer = Optimizer::new(&goal);
-        for seed in 0..20 {
-            let truth = common::random_truth(seed);
-            let (volume, q) = common::volume_and_q(&all, &truth);
-            assert_eq!(optimizer.volume().map(|v| v as usize), volume, "{name}");
-            let ours = optimizer.q(&truth).map(|r| (r.num, r.den));
-            let expected = q.map(|(s, n)| {
-                let r = behavior_bddl::Ratio::new(s, n);
-                (r.num, r.den)
-            });
-            assert_eq!(ours, expected, "{name}, seed {seed}");
-            let direct = common::holds(activity, &formula, &mut Vec::new(), &truth);
-            assert_eq!(goal.holds(&truth), direct, "{name}, seed {seed}");
+        let init: FactSet = activity.initial_facts().into_iter().collect();
+        let at_init = move |atom| behavior_bddl::PredicateOracle::holds(&init, atom);
+        let mut states: Vec<Box<dyn Fn(behavior_bddl::Atom) -> bool>> = vec![Box::new(at_init)];
+        states.extend((0..20).map(|seed| Box::new(common::random_truth(seed)) as Box<_>));
+        for counting in [Counting::Set, Counting::Reference] {
+            let optimizer = Optimizer::with_counting(&goal, counting);
+            for (k, truth) in states.iter().enumerate() {
+                let (volume, q) = common::volume_and_q(&all, truth, counting);
+                let context = format!("{name}, {counting:?}, state {k}");
+                assert_eq!(optimizer.volume().map(|v| v as usize), volume, "{context}");
+                let ours = optimizer.q(truth).map(|r| (r.num, r.den));
+                let expected = q.map(|(s, n)| {
+                    let r = Ratio::new(s, n);
+                    (r.num, r.den)
+                });
+                assert_eq!(ours, expected, "{context}");
+                let direct = common::holds(activity, &formula, &mut Vec::new(), truth);
+                assert_eq!(goal.holds(truth), direct, "{context}");
+            }
         }
     }
     assert!(
@@ -130,10 +177,15 @@ fn options_are_listed_smallest_first_and_start_at_the_volume() {
     let (_, _, activities) = all_activities();
     for (name, _, activity) in &activities {
         let goal = GroundGoal::new(activity);
-        let volume = Optimizer::new(&goal).volume().unwrap() as usize;
-        let first: Vec<_> = options(&goal).take(50).collect();
-        assert_eq!(first[0].len(), volume, "{name}");
-        assert!(first.windows(2).all(|w| w[0].len() <= w[1].len()), "{name}");
+        for counting in [Counting::Set, Counting::Reference] {
+            let volume = Optimizer::with_counting(&goal, counting).volume().unwrap() as usize;
+            let first: Vec<_> = options_with(&goal, counting).take(50).collect();
+            assert_eq!(first[0].len(), volume, "{name}, {counting:?}");
+            assert!(
+                first.windows(2).all(|w| w[0].len() <= w[1].len()),
+                "{name}, {counting:?}"
+            );
+        }
     }
 }
 

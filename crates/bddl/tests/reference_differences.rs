@@ -1,11 +1,23 @@
 //! Where our semantics differ from the reference implementation's (Python `bddl` 1.0.1), each
 //! case named after the quirk in `../shared/reference/bddl-1.0-reference.md` §12 and shown on a
-//! small goal. The reference's answer is stated in each test; ours is asserted. None of these
-//! situations occurs in the 100 official activities (see `official.rs`).
+//! small goal. The reference's answer is stated in each test; ours is asserted. Each test counts
+//! options as the reference does (`Counting::Reference`) so that it shows one difference only,
+//! except the last, which is about counting itself. None of these situations but counting occurs
+//! in the 100 official activities (see `official.rs`).
 
 use behavior_bddl::activity::{Activity, CheckContext};
-use behavior_bddl::options::options;
-use behavior_bddl::{FactSet, GroundGoal, Optimizer, Predicate, Source};
+use behavior_bddl::options::options_with;
+use behavior_bddl::{Counting, FactSet, GroundGoal, Optimizer, Predicate, Ratio, Source};
+
+/// Options listed as the reference counts them.
+fn options(goal: &GroundGoal) -> impl Iterator<Item = Vec<behavior_bddl::Literal>> + '_ {
+    options_with(goal, Counting::Reference)
+}
+
+/// The optimizer counting as the reference does.
+fn optimizer(goal: &GroundGoal) -> Optimizer<'_> {
+    Optimizer::with_counting(goal, Counting::Reference)
+}
 
 fn activity(objects: &str, goal: &str) -> Activity {
     let text = format!(
@@ -66,10 +78,7 @@ fn quirk_6_forpairs_needs_a_real_one_to_one_pairing() {
     assert!(!goal.holds(&cross_state(&a))); // reference: true
     // Q: the best pairing has 2 of its 3 pairs true.
     assert_eq!(
-        Optimizer::new(&goal)
-            .q(&cross_state(&a))
-            .unwrap()
-            .to_string(),
+        optimizer(&goal).q(&cross_state(&a)).unwrap().to_string(),
         "2/3"
     );
 }
@@ -134,8 +143,36 @@ fn quirk_15_double_negation_is_simplified() {
 fn a_goal_that_can_never_hold_has_no_volume_or_q() {
     let a = activity(AB, "(and (cooked a.n.01_1) (not (cooked a.n.01_1)))");
     let goal = GroundGoal::new(&a);
-    let optimizer = Optimizer::new(&goal);
+    let optimizer = optimizer(&goal);
     assert_eq!(optimizer.volume(), None); // reference: AssertionError (no option)
     assert_eq!(optimizer.q(&FactSet::default()), None);
     assert_eq!(options(&goal).count(), 0);
+}
+
+/// The paper's Q divides by the set cardinality of an option; the reference counts a literal
+/// each time it is built into the option. Here `(cooked a1)` is reached once per instance of a
+/// `forall`, and `(open a1)` both inside an `exists` and at the top.
+#[test]
+fn an_option_is_a_set_a_literal_written_twice_counts_once() {
+    let a = activity(
+        AB,
+        "(and (forall (?a.n.01 - a.n.01) (and (ontop ?a.n.01 b.n.01_1) (cooked a.n.01_1)))
+              (exists (?b.n.01 - b.n.01) (and (open a.n.01_1) (nextto a.n.01_1 ?b.n.01)))
+              (open a.n.01_1))",
+    );
+    let goal = GroundGoal::new(&a);
+    let s = state(&a, &[("cooked", "a.n.01_1", None)]);
+    // As sets: 3 ontop + cooked + open + one nextto = 6 literals, one true.
+    let set = Optimizer::new(&goal);
+    assert_eq!(set.volume(), Some(6));
+    assert_eq!(set.q(&s), Some(Ratio::new(1, 6)));
+    // As lists: cooked three times, open twice: 9 literals, three true.
+    let reference = optimizer(&goal);
+    assert_eq!(reference.volume(), Some(9));
+    assert_eq!(reference.q(&s), Some(Ratio::new(3, 9)));
+    // Three ways to pick the `nextto`: three options either way, each a set of 6 by default.
+    let sets: Vec<_> = options_with(&goal, Counting::Set).collect();
+    assert_eq!(sets.len(), 3);
+    assert!(sets.iter().all(|o| o.len() == 6));
+    assert!(options(&goal).all(|o| o.len() == 9));
 }

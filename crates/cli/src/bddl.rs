@@ -4,9 +4,9 @@
 use crate::prelude::Prelude;
 use anyhow::{Context, Result, bail};
 use behavior_bddl::domain::{is_domain_text, load_domain};
-use behavior_bddl::options::options;
-use behavior_bddl::{FactSet, GroundGoal, Optimizer};
-use clap::Subcommand;
+use behavior_bddl::options::options_with;
+use behavior_bddl::{Counting, FactSet, GroundGoal, Optimizer};
+use clap::{Args, Subcommand};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -23,6 +23,8 @@ pub enum BddlCommand {
     Stats {
         #[arg(long)]
         json: bool,
+        #[command(flatten)]
+        counting: CountingFlag,
     },
     /// Evaluate a goal on a state: success, Q, volume and each top-level conjunct.
     Eval {
@@ -33,6 +35,8 @@ pub enum BddlCommand {
         state: PathBuf,
         #[arg(long)]
         json: bool,
+        #[command(flatten)]
+        counting: CountingFlag,
     },
     /// List a goal's options (its disjunctive normal form), smallest first.
     Options {
@@ -44,6 +48,8 @@ pub enum BddlCommand {
         /// Print only the number of consistent options (enumerates them all).
         #[arg(long)]
         count: bool,
+        #[command(flatten)]
+        counting: CountingFlag,
     },
     /// Time goal evaluation and Q on each official activity's initial state.
     Bench {
@@ -55,21 +61,53 @@ pub enum BddlCommand {
         /// Comma-separated activity names (default: all).
         #[arg(long, value_delimiter = ',')]
         activities: Vec<String>,
+        #[command(flatten)]
+        counting: CountingFlag,
     },
+}
+
+/// How options count their literals: as sets unless `--reference-counting` is given.
+#[derive(Args, Clone, Copy, Debug)]
+pub struct CountingFlag {
+    /// Count options as the reference implementation does: a literal written twice in an option
+    /// counts twice (default: an option is a set of literals, as the paper defines Q and volume).
+    #[arg(long)]
+    reference_counting: bool,
+}
+
+impl CountingFlag {
+    fn counting(self) -> Counting {
+        if self.reference_counting {
+            Counting::Reference
+        } else {
+            Counting::Set
+        }
+    }
 }
 
 pub fn run(command: BddlCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
     let prelude = Prelude::load(data_dir)?;
     match command {
         BddlCommand::Check { paths } => check(&prelude, &paths),
-        BddlCommand::Stats { json } => stats(&prelude, json),
-        BddlCommand::Eval { file, state, json } => eval(&prelude, &file, &state, json),
-        BddlCommand::Options { file, limit, count } => list_options(&prelude, &file, limit, count),
+        BddlCommand::Stats { json, counting } => stats(&prelude, json, counting.counting()),
+        BddlCommand::Eval {
+            file,
+            state,
+            json,
+            counting,
+        } => eval(&prelude, &file, &state, json, counting.counting()),
+        BddlCommand::Options {
+            file,
+            limit,
+            count,
+            counting,
+        } => list_options(&prelude, &file, limit, count, counting.counting()),
         BddlCommand::Bench {
             json,
             quick,
             activities,
-        } => bench(&prelude, json, quick, &activities),
+            counting,
+        } => bench(&prelude, json, quick, &activities, counting.counting()),
     }
 }
 
@@ -132,11 +170,11 @@ struct StatsRow {
     q_at_init: Option<f64>,
 }
 
-fn stats(prelude: &Prelude, json: bool) -> Result<ExitCode> {
+fn stats(prelude: &Prelude, json: bool, counting: Counting) -> Result<ExitCode> {
     let mut rows = Vec::new();
     for (name, activity) in prelude.official_activities()? {
         let goal = GroundGoal::new(&activity);
-        let optimizer = Optimizer::new(&goal);
+        let optimizer = Optimizer::with_counting(&goal, counting);
         let state: FactSet = activity.initial_facts().into_iter().collect();
         rows.push(StatsRow {
             activity: name,
@@ -185,7 +223,13 @@ struct EvalReport {
     conjuncts: Vec<ConjunctReport>,
 }
 
-fn eval(prelude: &Prelude, file: &str, state_path: &Path, json: bool) -> Result<ExitCode> {
+fn eval(
+    prelude: &Prelude,
+    file: &str,
+    state_path: &Path,
+    json: bool,
+    counting: Counting,
+) -> Result<ExitCode> {
     let source = prelude.source(file)?;
     let activity = prelude.load_activity(&source)?;
     let text = std::fs::read_to_string(state_path)
@@ -193,7 +237,7 @@ fn eval(prelude: &Prelude, file: &str, state_path: &Path, json: bool) -> Result<
     let state = FactSet::from_json(&activity, &text)
         .with_context(|| format!("{}", state_path.display()))?;
     let goal = GroundGoal::new(&activity);
-    let optimizer = Optimizer::new(&goal);
+    let optimizer = Optimizer::with_counting(&goal, counting);
     let q = optimizer.q(&state);
     let report = EvalReport {
         success: goal.holds(&state),
@@ -238,14 +282,20 @@ fn one_line(text: &str) -> String {
     joined.replace("( ", "(").replace(" )", ")")
 }
 
-fn list_options(prelude: &Prelude, file: &str, limit: usize, count: bool) -> Result<ExitCode> {
+fn list_options(
+    prelude: &Prelude,
+    file: &str,
+    limit: usize,
+    count: bool,
+    counting: Counting,
+) -> Result<ExitCode> {
     let activity = prelude.activity(file)?;
     let goal = GroundGoal::new(&activity);
     if count {
-        println!("{}", options(&goal).count());
+        println!("{}", options_with(&goal, counting).count());
         return Ok(ExitCode::SUCCESS);
     }
-    match Optimizer::new(&goal).volume() {
+    match Optimizer::with_counting(&goal, counting).volume() {
         Some(volume) => println!("{}: volume {volume}", activity.name),
         None => {
             println!(
@@ -255,7 +305,7 @@ fn list_options(prelude: &Prelude, file: &str, limit: usize, count: bool) -> Res
             return Ok(ExitCode::SUCCESS);
         }
     }
-    let mut listed = options(&goal);
+    let mut listed = options_with(&goal, counting);
     for (i, option) in listed.by_ref().take(limit).enumerate() {
         let literals: Vec<String> = option.iter().map(|&l| activity.show_literal(l)).collect();
         println!("option {} ({} literals)", i + 1, option.len());
@@ -282,7 +332,13 @@ struct BenchRow {
     q: Option<f64>,
 }
 
-fn bench(prelude: &Prelude, json: bool, quick: bool, only: &[String]) -> Result<ExitCode> {
+fn bench(
+    prelude: &Prelude,
+    json: bool,
+    quick: bool,
+    only: &[String],
+    counting: Counting,
+) -> Result<ExitCode> {
     let names = if only.is_empty() {
         prelude.data.activities()?
     } else {
@@ -292,7 +348,7 @@ fn bench(prelude: &Prelude, json: bool, quick: bool, only: &[String]) -> Result<
     for name in names {
         let activity = prelude.load_activity(&prelude.official_source(&name)?)?;
         let goal = GroundGoal::new(&activity);
-        let optimizer = Optimizer::new(&goal);
+        let optimizer = Optimizer::with_counting(&goal, counting);
         let state: FactSet = activity.initial_facts().into_iter().collect();
         let goal_eval_ns = median_ns(quick, || goal.conjuncts_hold(&state).filter(|&h| h).count());
         let success_ns = median_ns(quick, || goal.holds(&state));

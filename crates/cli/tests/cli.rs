@@ -4,7 +4,7 @@
 mod common;
 
 use behavior_bddl::activity::InitLiteral;
-use behavior_bddl::{Activity, Atom};
+use behavior_bddl::{Activity, Atom, Counting};
 use behavior_data::DataDir;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -45,9 +45,10 @@ fn conformance() -> Value {
     serde_json::from_str(&std::fs::read_to_string(path).expect("conformance file")).unwrap()
 }
 
+/// With the reference's counting, every volume equals the reference's recorded one.
 #[test]
 fn stats_json_lists_the_100_activities_with_exact_volumes() {
-    let output = behavior_ok(&["bddl", "stats", "--json"]);
+    let output = behavior_ok(&["bddl", "stats", "--json", "--reference-counting"]);
     let rows: Vec<Value> = serde_json::from_slice(&output.stdout).unwrap();
     assert_eq!(rows.len(), 100);
     let reference = conformance();
@@ -100,7 +101,7 @@ fn write_state(activity: &Activity, atoms: &[Atom], path: &Path) {
 }
 
 /// Random states over each activity's goal atoms; the binary's success, Q and volume must equal
-/// a naive enumeration of the options.
+/// a naive enumeration of the options, counted as sets (the default).
 #[test]
 fn eval_agrees_with_an_independent_exact_evaluation_on_random_states() {
     let data = DataDir::locate(None, |_| ()).unwrap();
@@ -142,7 +143,7 @@ fn eval_agrees_with_an_independent_exact_evaluation_on_random_states() {
                 "--json",
             ]);
             let report: Value = serde_json::from_slice(&output.stdout).unwrap();
-            let (volume, q) = common::volume_and_q(&options, &is_true);
+            let (volume, q) = common::volume_and_q(&options, &is_true, Counting::Set);
             let success = common::holds(&activity, &formula, &mut Vec::new(), &is_true);
             assert_eq!(report["success"], success, "{name} {seed}");
             assert_eq!(
@@ -164,6 +165,92 @@ fn eval_agrees_with_an_independent_exact_evaluation_on_random_states() {
         }
     }
     assert_eq!(checked, 48);
+}
+
+/// The official activity whose goal writes a literal once per bowl (and one once per cup):
+/// `stats`, `eval` and `options` count it once by default and twice with `--reference-counting`.
+#[test]
+fn reference_counting_flag_counts_repeated_literals_as_the_reference_does() {
+    let name = "cleaning_kitchen_cupboard";
+    let stats = |extra: &[&str]| -> Vec<Value> {
+        let output = behavior_ok(&[&["bddl", "stats", "--json"], extra].concat());
+        serde_json::from_slice(&output.stdout).unwrap()
+    };
+    let (sets, lists) = (stats(&[]), stats(&["--reference-counting"]));
+    let row = |rows: &[Value]| rows.iter().find(|r| r["activity"] == name).unwrap().clone();
+    assert_eq!(
+        (
+            row(&sets)["volume"].clone(),
+            row(&sets)["q_at_init"].clone()
+        ),
+        (8.into(), 0.375.into())
+    );
+    assert_eq!(
+        (
+            row(&lists)["volume"].clone(),
+            row(&lists)["q_at_init"].clone()
+        ),
+        (10.into(), 0.5.into())
+    );
+    // Only the two goals that repeat a literal count differently.
+    let differing: Vec<&Value> = sets
+        .iter()
+        .zip(&lists)
+        .filter(|(s, l)| s != l)
+        .map(|(s, _)| &s["activity"])
+        .collect();
+    assert_eq!(
+        differing,
+        ["cleaning_kitchen_cupboard", "cleaning_up_after_a_meal"]
+    );
+
+    let data = DataDir::locate(None, |_| ()).unwrap();
+    let knowledge =
+        behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();
+    let source = behavior_bddl::load::read_source(&data.problem_path(name).unwrap()).unwrap();
+    let (activity, _) = knowledge.load(&source).unwrap();
+    let state = scratch("cupboard-init.json");
+    write_state(&activity, &activity.initial_facts(), &state);
+    let eval = |extra: &[&str]| -> Value {
+        let args = [
+            &[
+                "bddl",
+                "eval",
+                name,
+                "--state",
+                state.to_str().unwrap(),
+                "--json",
+            ],
+            extra,
+        ];
+        serde_json::from_slice(&behavior_ok(&args.concat()).stdout).unwrap()
+    };
+    let (set, list) = (eval(&[]), eval(&["--reference-counting"]));
+    assert_eq!(
+        (&set["q_exact"], &set["volume"]),
+        (&"3/8".into(), &8.into())
+    );
+    assert_eq!(
+        (&list["q_exact"], &list["volume"]),
+        (&"1/2".into(), &10.into())
+    );
+
+    let first = |extra: &[&str]| {
+        let output = behavior_ok(&[&["bddl", "options", name, "--limit", "1"], extra].concat());
+        stdout(&output)
+            .lines()
+            .take(2)
+            .collect::<Vec<_>>()
+            .join("\n")
+    };
+    assert_eq!(
+        first(&[]),
+        "cleaning_kitchen_cupboard_0: volume 8\noption 1 (8 literals)"
+    );
+    assert_eq!(
+        first(&["--reference-counting"]),
+        "cleaning_kitchen_cupboard_0: volume 10\noption 1 (10 literals)"
+    );
 }
 
 #[test]

@@ -1,10 +1,12 @@
 //! An independent, deliberately naive reading of the goal semantics, used as the oracle that the
 //! fast implementations are tested against. It works on the lifted goal (no grounding tree), builds
 //! the disjunctive normal form by plain products and unions, and searches pairings by brute force.
-//! It shares nothing with `ground`, `optimize`, `options` or `matching` but the data types.
+//! It shares nothing with `ground`, `optimize`, `options` or `matching` but the data types (and
+//! the `Counting` switch, which says how to count an option's literals).
 
 #![allow(dead_code)]
 
+use behavior_bddl::Counting;
 use behavior_bddl::activity::{Activity, Atom, CategoryId, Goal, InstanceId, Literal, Term};
 
 /// Options beyond this many make a case too large to enumerate.
@@ -276,14 +278,48 @@ pub fn consistent(option: &[Literal]) -> bool {
     })
 }
 
-/// (smallest size, best ratio as (satisfied, size)) over the consistent options.
+/// An option's literals as that counting counts them: each once, sorted, for sets; as built,
+/// for the reference's lists.
+pub fn counted(option: &[Literal], counting: Counting) -> Vec<Literal> {
+    let mut literals = option.to_vec();
+    if counting == Counting::Set {
+        literals.sort();
+        literals.dedup();
+    }
+    literals
+}
+
+/// The consistent options as that counting lists them, in a canonical order: for sets, every
+/// option's literals sorted and deduplicated, each set once; for the reference's lists, every
+/// option as built (literals sorted), as often as it is built.
+pub fn consistent_options(options: &Dnf, counting: Counting) -> Dnf {
+    let mut listed: Dnf = options
+        .iter()
+        .filter(|o| consistent(o))
+        .map(|o| {
+            let mut o = counted(o, counting);
+            o.sort();
+            o
+        })
+        .collect();
+    listed.sort();
+    if counting == Counting::Set {
+        listed.dedup();
+    }
+    listed
+}
+
+/// (smallest size, best ratio as (satisfied, size)) over the consistent options, their literals
+/// counted as `counting` says.
 pub fn volume_and_q(
     options: &Dnf,
     truth: &dyn Fn(Atom) -> bool,
+    counting: Counting,
 ) -> (Option<usize>, Option<(u64, u64)>) {
     let mut volume: Option<usize> = None;
     let mut best: Option<(u64, u64)> = None;
     for o in options.iter().filter(|o| consistent(o)) {
+        let o = counted(o, counting);
         volume = Some(volume.map_or(o.len(), |v| v.min(o.len())));
         let sat = o.iter().filter(|l| truth(l.atom) == l.positive).count() as u64;
         let ratio = if o.is_empty() {

@@ -7,7 +7,7 @@ use behavior_robots::{
     Action, ActionError, BehaviorRobot, FINGER_CLOSED, HAND_REACH, Proprioception, RobotError,
     Side, THUMB_CLOSED,
 };
-use behavior_sim::World;
+use behavior_sim::{ObjectId, Substeps, World};
 use common::*;
 use rapier3d::math::{Pose, Vector};
 
@@ -146,9 +146,9 @@ fn triggers_close_the_fingers() {
     assert!((q - 0.5 * FINGER_CLOSED).abs() < 0.03, "{q}");
 }
 
-#[test]
-fn a_hand_grasps_an_apple_on_a_table_lifts_it_and_lets_it_fall() {
-    let mut world = World::default();
+/// A table with an apple on it, and a robot whose right hand has just closed on the apple.
+fn holding_an_apple(substeps: Substeps) -> (World, BehaviorRobot, ObjectId, ObjectId) {
+    let mut world = World::new(substeps);
     floor(&mut world);
     let table = table(&mut world, 1.0, 0.0);
     let apple = apple(&mut world, v(0.7, -0.12, 0.791));
@@ -162,6 +162,18 @@ fn a_hand_grasps_an_apple_on_a_table_lifts_it_and_lets_it_fall() {
     hand_to(&mut world, &mut robot, Side::Right, v(0.66, -0.12, 0.1455));
     assert!(!robot.is_holding(apple));
     press(&mut world, &mut robot, Side::Right, 1.0, 14);
+    (world, robot, apple, table)
+}
+
+#[test]
+fn a_hand_grasps_an_apple_on_a_table_lifts_it_and_lets_it_fall() {
+    for substeps in [Substeps::Hz300, Substeps::Hz120] {
+        grasp_lift_and_drop(substeps);
+    }
+}
+
+fn grasp_lift_and_drop(substeps: Substeps) {
+    let (mut world, mut robot, apple, table) = holding_an_apple(substeps);
     assert!(
         robot.is_holding(apple),
         "the hand closed on the apple and holds it"
@@ -190,6 +202,39 @@ fn a_hand_grasps_an_apple_on_a_table_lifts_it_and_lets_it_fall() {
         "the apple fell back onto the table: z = {z}"
     );
     assert!(world.core().ontop(apple, table));
+}
+
+#[test]
+fn a_grasp_ends_when_its_attachment_breaks_or_what_it_holds_is_taken_away() {
+    // Pulled down with 1,000 N for a step: more than the grasp's 500 N.
+    let (mut world, mut robot, apple, table) = holding_an_apple(Substeps::default());
+    assert!(robot.is_holding(apple));
+    world
+        .core_mut()
+        .apply_force(apple.into(), v(0.0, 0.0, -1000.0))
+        .unwrap();
+    step(&mut world, &mut robot, Action::ZERO);
+    assert!(
+        !robot.is_holding(apple),
+        "the grasp broke and the hand let go"
+    );
+    assert!(
+        robot.trigger(Side::Right) > 0.5,
+        "though the trigger is still pressed"
+    );
+    idle(&mut world, &mut robot, 30);
+    assert!(world.core().ontop(apple, table));
+    assert!(
+        !robot.is_holding(apple),
+        "nor does it grasp again while touching it"
+    );
+
+    // Taken away (teleported 0.5 m): its anchor drifted past 0.1 m.
+    let (mut world, mut robot, apple, _) = holding_an_apple(Substeps::default());
+    let away = Pose::from_translation(world.pose(apple).translation + v(0.0, 0.5, 0.0));
+    world.set_pose(apple, away).unwrap();
+    step(&mut world, &mut robot, Action::ZERO);
+    assert!(!robot.is_holding(apple));
 }
 
 #[test]

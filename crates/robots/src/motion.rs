@@ -8,12 +8,14 @@
 //!   the eye's into that of [`crate::EYE_REACH`] around the neck.
 //! - Triggers add their Δ and stay in [0, 1].
 //!
-//! Kinematic parts go wherever they are sent, through walls and tables too; the original's parts
-//! are pulled by force-limited constraints that walls and tables stop. So a part's new target is
-//! refused when its shape there would overlap a fixed body it does not already overlap (so a part
-//! that starts inside something can still move out): the body then stays, a hand keeps its
-//! previous target in the body frame, and if even that is blocked (the body carrying the hand
-//! into a table) the body stays too. One shape query per moving part and step; none at rest.
+//! The original's parts are pulled by force-limited constraints, which walls and tables stop.
+//! Our body is kinematic and would go through them, and our palms' servo would press into them
+//! with its full 300 N; so a part's new target is refused when its shape there would overlap a
+//! fixed body it does not already overlap (so a part that starts inside something can still move
+//! out): the body then stays, a hand keeps its previous target in the body frame, and if even
+//! that is blocked (the body carrying the hand into a table) the body stays too. A hand's shape
+//! here is its palm with the fingers straight. One shape query per moving part and step; none at
+//! rest. Movable things (and the doors and drawers of furniture) do not block: they are pushed.
 //!
 //! The original rounds new poses to 5 decimals (a VR convenience); we do not.
 

@@ -38,6 +38,26 @@ pub struct RobotParts {
 }
 
 impl RobotParts {
+    /// Adds the body and the hands at their starting places, in the robot's collision group.
+    fn add(world: &mut World, pose: Pose) -> Result<RobotParts, WorldError> {
+        let body = world.add(body_spec("robot_body", pose))?;
+        let mut hand =
+            |name: &str, side: Side| world.add(hand_spec(name, side, pose * hand_rest(side)));
+        let hands = [
+            hand("robot_left_hand", Side::Left)?,
+            hand("robot_right_hand", Side::Right)?,
+        ];
+        let parts = RobotParts { body, hands };
+        // Robot parts touch neither each other (the hands start inside the body) nor water.
+        let others = groups::ALL & !groups::ROBOT & !groups::WATER;
+        for id in parts.all() {
+            world
+                .core_mut()
+                .set_collision_groups(id, groups::ROBOT, others);
+        }
+        Ok(parts)
+    }
+
     /// A hand's object.
     pub fn hand(&self, side: Side) -> ObjectId {
         self.hands[side.index()]
@@ -78,8 +98,9 @@ impl RobotParts {
 /// world: to save an episode, clone the robot with the world's [`World::snapshot`]; the pair
 /// continues bit-identically. An action acts for one step: [`BehaviorRobot::set_action`] then
 /// [`World::step_with`], or [`BehaviorRobot::step`] for both; a step without one holds still.
-/// Buttons are pressed by the palms and fingertips ([`World::set_hand_points`]), so one robot per
-/// world.
+/// Step the world with the robot ([`World::step_with`]): a step without it moves nothing of the
+/// robot, and a hand that was moving (not parked) is then not held up. Buttons are pressed by the
+/// palms and fingertips ([`World::set_hand_points`]), so one robot per world.
 #[derive(Clone, Debug)]
 pub struct BehaviorRobot {
     parts: RobotParts,
@@ -126,27 +147,7 @@ impl BehaviorRobot {
             return Err(RobotError::BadPose);
         }
         let pose = Pose::from_parts(pose.translation, pose.rotation.normalize());
-        let body = world.add(body_spec("robot_body", pose))?;
-        let left = world.add(hand_spec(
-            "robot_left_hand",
-            Side::Left,
-            pose * hand_rest(Side::Left),
-        ))?;
-        let right = world.add(hand_spec(
-            "robot_right_hand",
-            Side::Right,
-            pose * hand_rest(Side::Right),
-        ))?;
-        let parts = RobotParts {
-            body,
-            hands: [left, right],
-        };
-        for id in parts.all() {
-            let others = groups::ALL & !groups::ROBOT & !groups::WATER;
-            world
-                .core_mut()
-                .set_collision_groups(id, groups::ROBOT, others);
-        }
+        let parts = RobotParts::add(world, pose)?;
         let targets = Targets {
             body: pose,
             eye: eye_rest(),
@@ -170,6 +171,7 @@ impl BehaviorRobot {
         for side in Side::BOTH {
             robot.park(world, side);
         }
+        robot.press_with_hands(world);
         Ok(robot)
     }
 
@@ -270,18 +272,26 @@ impl StepHooks for BehaviorRobot {
 
     fn after_step(&mut self, world: &mut World) {
         self.update_grasps(world);
-        let held: Vec<BodyRef> = self.grasps.iter().flatten().map(|g| g.body).collect();
-        let now = world.steps();
-        self.releases
-            .retain_mut(|r| held.contains(&r.body) || r.since == now || !r.settle(world));
+        if !self.releases.is_empty() {
+            // Contacts come back after the release step, once apart, and not while held again.
+            let (grasps, now) = (self.grasps, world.steps());
+            let held = |body: BodyRef| grasps.iter().flatten().any(|g| g.body == body);
+            self.releases
+                .retain_mut(|r| held(r.body) || r.since == now || !r.settle(world));
+        }
         if self.moved {
-            let [l, r] = Side::BOTH.map(|s| HandPoints::pressing(world, self.parts.hand(s), s));
-            world.set_hand_points(&[l, r].concat());
+            self.press_with_hands(world);
         }
     }
 }
 
 impl BehaviorRobot {
+    /// Tells the world where the palms and fingertips are, for buttons.
+    fn press_with_hands(&self, world: &mut World) {
+        let [l, r] = Side::BOTH.map(|s| HandPoints::pressing(world, self.parts.hand(s), s));
+        world.set_hand_points(&[l, r].concat());
+    }
+
     /// Takes the pending action: the step's targets, checked against fixed bodies.
     fn begin_step(&mut self, world: &mut World) {
         let action = std::mem::take(&mut self.pending);

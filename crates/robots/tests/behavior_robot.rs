@@ -304,13 +304,26 @@ fn bad_actions_are_refused_and_leave_the_world_untouched() {
     assert_eq!(world.steps(), steps, "no step was taken");
     assert_eq!(world.core().motion_bits(), bits, "nothing moved");
     assert_eq!(robot.proprioception(&world), felt);
-    // A bad starting pose is refused too.
+}
+
+#[test]
+fn a_bad_starting_pose_is_refused_and_adds_nothing() {
+    let mut world = World::default();
+    floor(&mut world);
     let bad = Pose::from_translation(v(f32::NAN, 0.0, 0.0));
     assert_eq!(
         BehaviorRobot::add(&mut world, bad).unwrap_err(),
         RobotError::BadPose
     );
-    assert_eq!(world.objects().len(), 4, "no part of it was added");
+    let skewed = Pose::from_parts(
+        v(0.0, 0.0, 0.7),
+        rapier3d::math::Rotation::from_xyzw(0.0, 0.0, 0.0, 2.0),
+    );
+    assert_eq!(
+        BehaviorRobot::add(&mut world, skewed).unwrap_err(),
+        RobotError::BadPose
+    );
+    assert_eq!(world.objects().len(), 1, "no part of it was added");
 }
 
 #[test]
@@ -333,11 +346,11 @@ fn proprioception_reports_where_the_parts_are_in_the_body_frame() {
         (start[12] - 0.05).abs() < 1e-6 && (start[14] - 0.4).abs() < 1e-6,
         "the eye's own pose: {start:?}"
     );
-    // Raise the right hand 0.2 m, turn the eye down 0.25 rad (pitch), press the left trigger.
+    // Raise the right hand 0.2 m, turn the eye down 0.2 rad (pitch), press the left trigger.
     for _ in 0..4 {
         let entries = [
             (Action::RIGHT_HAND.start + 2, 1.0),
-            (Action::EYE.start + 4, 1.25),
+            (Action::EYE.start + 4, 1.0),
             (Action::LEFT_TRIGGER, 1.0),
         ];
         step(&mut world, &mut robot, action(&entries));

@@ -1,0 +1,238 @@
+//! Assisted grasping, as the original's (reference §4.2, §2.3): the fingers only touch, a
+//! constraint holds.
+//!
+//! While a hand's trigger is above [`GraspRules::threshold`] and it holds nothing, after each step
+//! it looks for something to hold:
+//! 1. 16 rays from 4 points (the palm's centre and base, the thumb's middle and tip) to the 4
+//!    fingertips; every body they hit, the robot's own excepted, is a candidate;
+//! 2. the candidate hit closest to the palm's centre is chosen — only it;
+//! 3. it must touch the hand (palm or a finger) in the last substep;
+//! 4. it must not be held by the other hand;
+//! 5. it must be holdable ([`GraspRules::holdable`]): a movable body of at most
+//!    [`GraspRules::max_mass`] or of an allow-listed category, or a door, lid or drawer of fixed
+//!    furniture.
+//!
+//! It is then attached at the hit point: a fixed attachment of at most 500 N, or point-to-point of
+//! 350 N for a link of fixed furniture on a revolute or prismatic joint (a door turns about the
+//! hand). Contacts between it and the hand, and the robot's body, are off while held; the
+//! fingers freeze where they are.
+//!
+//! A hand lets go after a step in which its trigger is at or below the threshold, the attachment
+//! broke (it needed more than its maximum force) or its two anchor points drifted more than
+//! 0.1 m apart. Contacts come back once the released object's box no longer overlaps the hand's
+//! (or the body's) box — for a link, after one step, the original's release window for all —
+//! so that a released object still inside closed fingers drops out instead of being pushed out.
+//!
+//! Differences from the original: it requires contact with a fingertip, we with any part of the
+//! hand (our fingers are single capsules); it re-enables contacts after a fixed 1/30 s, we once
+//! apart; its allow-list comes from per-category data we do not have (empty by default).
+
+use crate::hand::{HandPoints, Side, bodies};
+use behavior_sim::{
+    AttachmentId, AttachmentKind, AttachmentSpec, BodyKind, BodyRef, JointKind, ObjectId,
+    QueryFilter, World,
+};
+use rapier3d::math::Vector;
+use rapier3d::parry::bounding_volume::BoundingVolume;
+use std::collections::BTreeSet;
+
+/// The rules of assisted grasping; [`Default`] gives the original's.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GraspRules {
+    /// A trigger fraction above this grasps; at or below it, lets go.
+    pub threshold: f32,
+    /// The heaviest body a hand may hold, kg.
+    pub max_mass: f32,
+    /// Categories (synsets) a hand may hold whatever their mass.
+    pub allowed: BTreeSet<String>,
+    /// The most force a fixed grasp applies before it breaks, N.
+    pub fixed_force: f32,
+    /// The most force a point-to-point grasp (a door) applies before it breaks, N.
+    pub point_force: f32,
+    /// A grasp whose anchors drift farther apart than this is let go, m.
+    pub max_violation: f32,
+}
+
+impl Default for GraspRules {
+    fn default() -> Self {
+        GraspRules {
+            threshold: 0.5,
+            max_mass: 10.0,
+            allowed: BTreeSet::new(),
+            fixed_force: 500.0,
+            point_force: 0.7 * 500.0,
+            max_violation: 0.1,
+        }
+    }
+}
+
+impl GraspRules {
+    /// How a hand may hold a body, or `None` if it may not: fixed for a movable body within the
+    /// mass limit or allow-listed (for a link of a movable object, the object's own body mass
+    /// counts: the world does not report a link's mass); point-to-point for a link of fixed
+    /// furniture on a revolute or prismatic joint, whatever its mass (its hinge carries it).
+    /// Fixed and kinematic bodies (furniture, walls, robots) cannot be held.
+    pub fn holdable(&self, world: &World, body: BodyRef) -> Option<AttachmentKind> {
+        let object = world.object(body.object);
+        if !object.is_present() {
+            return None;
+        }
+        if let Some(link) = body.link
+            && object.is_fixed()
+        {
+            let moves = object.links[link].joint.kind != JointKind::Fixed;
+            return moves.then_some(AttachmentKind::Point);
+        }
+        let light = world.core().mass(body.object) <= self.max_mass;
+        let movable = object.body_kind == BodyKind::Dynamic;
+        (movable && (light || self.allowed.contains(&object.category)))
+            .then_some(AttachmentKind::Fixed)
+    }
+
+    fn max_force(&self, kind: AttachmentKind) -> f32 {
+        match kind {
+            AttachmentKind::Fixed => self.fixed_force,
+            AttachmentKind::Point => self.point_force,
+        }
+    }
+}
+
+/// What a hand holds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Grasp {
+    pub(crate) body: BodyRef,
+    pub(crate) attachment: AttachmentId,
+    /// The finger joint angles when it closed, kept while it holds.
+    pub(crate) fingers: [f32; crate::hand::FINGERS],
+}
+
+/// A released body whose contacts with some robot parts are still off.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Release {
+    pub(crate) body: BodyRef,
+    /// Robot objects (a hand, the body) still ignoring it.
+    pub(crate) parts: Vec<ObjectId>,
+    /// The world's step count when it was let go: contacts stay off for that step at least.
+    pub(crate) since: u64,
+}
+
+/// The robot as the grasp sees it.
+pub(crate) struct Grasper<'a> {
+    pub(crate) rules: &'a GraspRules,
+    /// The hand's object and side.
+    pub(crate) hand: (ObjectId, Side),
+    /// The robot's body object.
+    pub(crate) torso: ObjectId,
+    /// Every robot object, ignored by the rays.
+    pub(crate) own: &'a [ObjectId],
+    /// What the other hand holds.
+    pub(crate) other_holds: Option<BodyRef>,
+}
+
+impl Grasper<'_> {
+    /// Tries to grasp (steps 1–5 of the module docs) and attaches on success.
+    pub(crate) fn try_grasp(&self, world: &mut World) -> Option<Grasp> {
+        let (body, at) = self.candidate(world)?;
+        let touching = bodies(self.hand.0).any(|part| touches(world, part, body));
+        if !touching || self.other_holds.is_some_and(|o| o == body) {
+            return None;
+        }
+        let kind = self.rules.holdable(world, body)?;
+        let spec = AttachmentSpec {
+            holder: BodyRef::from(self.hand.0),
+            held: body,
+            at,
+            kind,
+            max_force: self.rules.max_force(kind),
+        };
+        let attachment = world.core_mut().attach(spec).ok()?;
+        for part in bodies(self.hand.0).chain([BodyRef::from(self.torso)]) {
+            let _ = world.core_mut().ignore_contacts(part, body, true);
+        }
+        let fingers = std::array::from_fn(|l| {
+            let state = world.core().joint_state(self.hand.0, l);
+            state.map_or(0.0, |s| s.position)
+        });
+        Some(Grasp {
+            body,
+            attachment,
+            fingers,
+        })
+    }
+
+    /// The body hit closest to the palm's centre by the rays between palm and fingertips, and
+    /// where.
+    fn candidate(&self, world: &World) -> Option<(BodyRef, Vector)> {
+        let points = HandPoints::of(world, self.hand.0, self.hand.1);
+        let filter = QueryFilter::excluding(self.own);
+        let mut best: Option<(f32, BodyRef, Vector)> = None;
+        for origin in points.origins {
+            for tip in points.tips {
+                let Some((body, at)) = first_hit(world, origin, tip, &filter) else {
+                    continue;
+                };
+                let d = (at - points.palm_centre).length();
+                if best.is_none_or(|(bd, bb, _)| d < bd || (d == bd && body < bb)) {
+                    best = Some((d, body, at));
+                }
+            }
+        }
+        best.map(|(_, body, at)| (body, at))
+    }
+}
+
+/// The first body a segment from `origin` to `end` hits, and where.
+fn first_hit(
+    world: &World,
+    origin: Vector,
+    end: Vector,
+    filter: &QueryFilter,
+) -> Option<(BodyRef, Vector)> {
+    let direction = end - origin;
+    let length = direction.length();
+    if length < 1e-6 {
+        return None;
+    }
+    let hit = world
+        .core()
+        .cast_ray(origin, direction, length, filter)
+        .ok()??;
+    Some((hit.body?, hit.point))
+}
+
+/// Whether `part` touched `body` in the last substep.
+fn touches(world: &World, part: BodyRef, body: BodyRef) -> bool {
+    let contacts = world.core().contacts(part).unwrap_or_default();
+    contacts.iter().any(|c| c.other == Some(body))
+}
+
+/// Whether a grasp must end: its trigger let go, or its attachment broke or drifted.
+pub(crate) fn must_release(world: &World, grasp: &Grasp, trigger: f32, rules: &GraspRules) -> bool {
+    match world.core().attachment(grasp.attachment) {
+        None => true,
+        Some(state) => {
+            trigger <= rules.threshold || state.broken || state.violation > rules.max_violation
+        }
+    }
+}
+
+impl Release {
+    /// Turns contacts back on with each part it is now clear of; whether none is left.
+    pub(crate) fn settle(&mut self, world: &mut World) -> bool {
+        let body = self.body;
+        self.parts.retain(|&part| {
+            let clear =
+                body.link.is_some() || !world.aabb(body.object).intersects(&world.aabb(part));
+            if clear {
+                let links = world.object(part).links.len();
+                let parts = std::iter::once(BodyRef::from(part))
+                    .chain((0..links).map(|l| BodyRef::link(part, l)));
+                for p in parts.collect::<Vec<_>>() {
+                    let _ = world.core_mut().ignore_contacts(p, body, false);
+                }
+            }
+            !clear
+        });
+        self.parts.is_empty()
+    }
+}

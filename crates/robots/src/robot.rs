@@ -1,0 +1,428 @@
+//! The BehaviorRobot: adding it to a world, stepping it, and reading it.
+
+use crate::action::{Action, ActionError};
+use crate::body::{body_spec, eye_rest, hand_rest};
+use crate::follow::{Follower, HAND_LIMITS, servo, settled};
+use crate::grasp::{Grasp, GraspRules, Grasper, Release, must_release};
+use crate::hand::{
+    FINGER_DAMPING, FINGER_STIFFNESS, FINGER_TORQUE, FINGERS, HandPoints, Side, closed_angle,
+    hand_spec,
+};
+use crate::motion::{Blocker, Targets};
+use crate::proprioception::{LocalPose, Proprioception};
+use crate::relative;
+use behavior_sim::{
+    AttachmentId, AttachmentKind, AttachmentSpec, BodyRef, Drive, ObjectId, QueryFilter,
+    STEP_SECONDS, StepHooks, World, WorldError, groups,
+};
+use rapier3d::math::Pose;
+
+/// Why a robot could not be added.
+#[derive(Debug, PartialEq, thiserror::Error)]
+pub enum RobotError {
+    /// The pose is not finite or its rotation is not a unit quaternion.
+    #[error("a robot's pose must be finite, with a unit quaternion for its rotation")]
+    BadPose,
+    /// The world refused one of the robot's parts.
+    #[error("the world refused a robot part: {0}")]
+    World(#[from] WorldError),
+}
+
+/// The world objects a BehaviorRobot is made of.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RobotParts {
+    /// The floating body.
+    pub body: ObjectId,
+    /// The hands (left, right): each a palm with five finger links.
+    pub hands: [ObjectId; 2],
+}
+
+impl RobotParts {
+    /// Adds the body and the hands at their starting places, in the robot's collision group.
+    fn add(world: &mut World, pose: Pose) -> Result<RobotParts, WorldError> {
+        let body = world.add(body_spec("robot_body", pose))?;
+        let mut hand =
+            |name: &str, side: Side| world.add(hand_spec(name, side, pose * hand_rest(side)));
+        let hands = [
+            hand("robot_left_hand", Side::Left)?,
+            hand("robot_right_hand", Side::Right)?,
+        ];
+        let parts = RobotParts { body, hands };
+        // Robot parts touch neither each other (the hands start inside the body) nor water.
+        let others = groups::ALL & !groups::ROBOT & !groups::WATER;
+        for id in parts.all() {
+            world
+                .core_mut()
+                .set_collision_groups(id, groups::ROBOT, others);
+        }
+        Ok(parts)
+    }
+
+    /// A hand's object.
+    pub fn hand(&self, side: Side) -> ObjectId {
+        self.hands[side.index()]
+    }
+
+    /// The body, then the left and right hands.
+    pub fn all(&self) -> [ObjectId; 3] {
+        [self.body, self.hands[0], self.hands[1]]
+    }
+}
+
+/// The bimanual humanoid of BEHAVIOR's VR demonstrations (iGibson 2.0's `BehaviorRobot`): a
+/// floating body, an eye, and two hands with five fingers each, driven by a 26-d [`Action`] and
+/// holding things by assisted grasping ([`GraspRules`]).
+///
+/// **Body model.** The original moves every part by a force-limited constraint toward its target
+/// (body 7,500 N, hands 300 N). Ours:
+/// - The body is a kinematic body, moved at constant speed within each step to its target. It
+///   costs the solver nothing, goes exactly where it is told (it drives 1 m when told to), and
+///   sleeps when still. Walls and furniture stop it: it is never sent into a fixed body (see
+///   `motion.rs`). Movable objects in its way it pushes with unbounded force (the original: at
+///   most 7,500 N — in practice the same for household objects).
+/// - Each palm is a dynamic body servoed every substep onto a smooth reference path toward its
+///   target, with at most 300 N (see `follow.rs`): it carries what it holds, and presses on what
+///   it meets with bounded force and yields, as the original's. A kinematic palm would squeeze an
+///   apple against a table with unbounded force and shoot it away. Hands are not sent into
+///   fixed bodies either.
+/// - A hand that has come to rest at its target is *parked*: held to the body by a fixed
+///   attachment instead of the servo, so that it, its fingers and what it holds fall asleep (a
+///   servoed body holding itself up against gravity never would), and an idle robot costs an idle
+///   world nothing. It is unparked as soon as it must move.
+/// - The fingers are dynamic links on the palms (see `hand.rs`).
+///
+/// The eye is a frame on the body, not a body (the original's is massless and teleported).
+/// Robot parts are in [`groups::ROBOT`]: they collide with neither each other nor water.
+///
+/// **State.** What the robot was told (targets, triggers, grasps) lives here, the rest in the
+/// world: to save an episode, clone the robot with the world's [`World::snapshot`]; the pair
+/// continues bit-identically. An action acts for one step: [`BehaviorRobot::set_action`] then
+/// [`World::step_with`], or [`BehaviorRobot::step`] for both; a step without one holds still.
+/// Step the world with the robot ([`World::step_with`]): a step without it moves nothing of the
+/// robot, and a hand that was moving (not parked) is then not held up. Buttons are pressed by the
+/// palms and fingertips ([`World::set_hand_points`]), so one robot per world.
+#[derive(Clone, Debug)]
+pub struct BehaviorRobot {
+    parts: RobotParts,
+    /// Targets at the end of the last step begun.
+    targets: Targets,
+    /// The body's target at the start of the step being taken.
+    step_from: Pose,
+    hands: [Follower; 2],
+    /// Each hand's parking attachment to the body, while it rests.
+    parked: [Option<AttachmentId>; 2],
+    /// The finger drive targets in force, per hand.
+    fingers: [[f32; FINGERS]; 2],
+    grasps: [Option<Grasp>; 2],
+    releases: Vec<Release>,
+    pending: Action,
+    /// Whether a part moved in the step being taken.
+    moved: bool,
+    rules: GraspRules,
+}
+
+/// A parking attachment gives way past this force, N: far more than a hand and what it may hold
+/// weigh; a blow that breaks it just wakes the hand's servo.
+const PARKING_FORCE: f32 = 5000.0;
+
+fn pose_ok(pose: &Pose) -> bool {
+    pose.is_finite() && (pose.rotation.length() - 1.0).abs() < 1e-3
+}
+
+impl BehaviorRobot {
+    /// Adds a robot whose body stands at `pose` (its origin is the body capsule's centre: at
+    /// [`crate::BODY_HEIGHT`] above a floor it floats clear of it), hands and eye in their starting
+    /// places, triggers open, with the original's grasp rules.
+    pub fn add(world: &mut World, pose: Pose) -> Result<BehaviorRobot, RobotError> {
+        BehaviorRobot::add_with(world, pose, GraspRules::default())
+    }
+
+    /// [`BehaviorRobot::add`] with other grasp rules.
+    pub fn add_with(
+        world: &mut World,
+        pose: Pose,
+        rules: GraspRules,
+    ) -> Result<BehaviorRobot, RobotError> {
+        if !pose_ok(&pose) {
+            return Err(RobotError::BadPose);
+        }
+        let pose = Pose::from_parts(pose.translation, pose.rotation.normalize());
+        let parts = RobotParts::add(world, pose)?;
+        let targets = Targets {
+            body: pose,
+            eye: eye_rest(),
+            hands: [hand_rest(Side::Left), hand_rest(Side::Right)],
+            triggers: [0.0; 2],
+        };
+        let mut robot = BehaviorRobot {
+            parts,
+            targets,
+            step_from: pose,
+            hands: Side::BOTH.map(|s| Follower::at(targets.hand_in_world(s))),
+            parked: [None; 2],
+            fingers: [[f32::NAN; FINGERS]; 2],
+            grasps: [None; 2],
+            releases: Vec::new(),
+            pending: Action::ZERO,
+            moved: false,
+            rules,
+        };
+        robot.drive_fingers(world);
+        for side in Side::BOTH {
+            robot.park(world, side);
+        }
+        robot.press_with_hands(world);
+        Ok(robot)
+    }
+
+    /// The action for the next step (replacing one set before); after that step the robot holds
+    /// still until told otherwise.
+    pub fn set_action(&mut self, action: Action) {
+        self.pending = action;
+    }
+
+    /// Checks `values` as an [`Action`] and, if it is one, takes a step of the world with it. A
+    /// bad action is an error and leaves the world and the robot untouched.
+    pub fn step(&mut self, world: &mut World, values: &[f32]) -> Result<(), ActionError> {
+        self.set_action(Action::new(values)?);
+        world.step_with(self);
+        Ok(())
+    }
+
+    /// The world objects the robot is made of.
+    pub fn parts(&self) -> RobotParts {
+        self.parts
+    }
+
+    /// The grasp rules in force.
+    pub fn rules(&self) -> &GraspRules {
+        &self.rules
+    }
+
+    /// The body's pose in the world.
+    pub fn body_pose(&self, world: &World) -> Pose {
+        world.pose(self.parts.body)
+    }
+
+    /// The eye's pose in the world: it looks along its +x, with +z up.
+    pub fn eye_pose(&self, world: &World) -> Pose {
+        self.body_pose(world) * self.targets.eye
+    }
+
+    /// A palm's pose in the world (see the hand's frame in `hand.rs`: x along the fingers, the
+    /// palm facing −z).
+    pub fn hand_pose(&self, world: &World, side: Side) -> Pose {
+        world.pose(self.parts.hand(side))
+    }
+
+    /// A trigger's fraction, 0 (open) to 1 (fully pressed).
+    pub fn trigger(&self, side: Side) -> f32 {
+        self.targets.triggers[side.index()]
+    }
+
+    /// The body a hand holds.
+    pub fn holding(&self, side: Side) -> Option<BodyRef> {
+        self.grasps[side.index()].map(|g| g.body)
+    }
+
+    /// `in hand`: whether either hand holds the object (by its body or one of its links).
+    pub fn is_holding(&self, object: ObjectId) -> bool {
+        self.grasps
+            .iter()
+            .flatten()
+            .any(|g| g.body.object == object)
+    }
+
+    /// `in reach`: whether the object's centre is within 2 m of the body (see `relative.rs`).
+    pub fn in_reach(&self, world: &World, object: ObjectId) -> bool {
+        relative::in_reach(world, self.body_pose(world).translation, object)
+    }
+
+    /// `in the same room`: whether the object is in the room the body is in.
+    pub fn in_same_room(&self, world: &World, object: ObjectId) -> bool {
+        relative::in_same_room(world, self.body_pose(world).translation, object)
+    }
+
+    /// `in the field of view`, approximated geometrically until cameras exist: the object's
+    /// centre is in the eye's 120° view and nothing hides it (see `relative.rs`).
+    pub fn in_field_of_view(&self, world: &World, object: ObjectId) -> bool {
+        relative::in_view(world, self.eye_pose(world), object, &self.parts.all())
+    }
+
+    /// The robot's proprioception now.
+    pub fn proprioception(&self, world: &World) -> Proprioception {
+        let body = self.body_pose(world);
+        let hand = |side: Side| LocalPose::of(body.inv_mul(&self.hand_pose(world, side)));
+        Proprioception {
+            hands: [hand(Side::Left), hand(Side::Right)],
+            eye: LocalPose::of(self.targets.eye),
+            triggers: self.targets.triggers,
+            grasping: [self.grasps[0].is_some(), self.grasps[1].is_some()],
+        }
+    }
+}
+
+impl StepHooks for BehaviorRobot {
+    fn before_substep(&mut self, world: &mut World, substep: u32) {
+        if substep == 0 {
+            self.begin_step(world);
+        }
+        self.move_parts(world, substep);
+    }
+
+    fn after_step(&mut self, world: &mut World) {
+        self.update_grasps(world);
+        if !self.releases.is_empty() {
+            // Contacts come back after the release step, once apart, and not while held again.
+            let (grasps, now) = (self.grasps, world.steps());
+            let held = |body: BodyRef| grasps.iter().flatten().any(|g| g.body == body);
+            self.releases
+                .retain_mut(|r| held(r.body) || r.since == now || !r.settle(world));
+        }
+        if self.moved {
+            self.press_with_hands(world);
+        }
+    }
+}
+
+impl BehaviorRobot {
+    /// Tells the world where the palms and fingertips are, for buttons.
+    fn press_with_hands(&self, world: &mut World) {
+        let [l, r] = Side::BOTH.map(|s| HandPoints::pressing(world, self.parts.hand(s), s));
+        world.set_hand_points(&[l, r].concat());
+    }
+
+    /// Takes the pending action: the step's targets, checked against fixed bodies.
+    fn begin_step(&mut self, world: &mut World) {
+        let action = std::mem::take(&mut self.pending);
+        let old = self.targets;
+        let wanted = old.after(&action);
+        if wanted != old {
+            let own = self.parts.all();
+            let blocker = Blocker {
+                world,
+                filter: QueryFilter::excluding(&own),
+            };
+            self.targets = blocker.allow(&old, wanted);
+        }
+        self.step_from = old.body;
+        self.moved = false;
+        self.drive_fingers(world);
+        for side in Side::BOTH {
+            self.park_or_unpark(world, side);
+        }
+    }
+
+    /// Parks a hand that rests at its target for the whole step (held to the body, so that it
+    /// can sleep), and unparks one that must move or whose parking broke.
+    fn park_or_unpark(&mut self, world: &mut World, side: Side) {
+        let i = side.index();
+        let palm = BodyRef::from(self.parts.hand(side));
+        let still = self.step_from == self.targets.body
+            && self.hands[i].rests_on(&self.targets.hand_in_world(side));
+        match self.parked[i] {
+            Some(id) => {
+                let intact = world.core().attachment(id).is_some_and(|a| !a.broken);
+                if !(still && intact) {
+                    world.core_mut().detach(id);
+                    self.parked[i] = None;
+                }
+            }
+            None if still && settled(world, palm, &self.hands[i].pose) => self.park(world, side),
+            None => {}
+        }
+    }
+
+    /// Holds a hand to the body where it is.
+    fn park(&mut self, world: &mut World, side: Side) {
+        let palm = BodyRef::from(self.parts.hand(side));
+        let spec = AttachmentSpec {
+            holder: BodyRef::from(self.parts.body),
+            held: palm,
+            at: world.pose(palm.object).translation,
+            kind: AttachmentKind::Fixed,
+            max_force: PARKING_FORCE,
+        };
+        self.parked[side.index()] = world.core_mut().attach(spec).ok();
+    }
+
+    /// Moves the body and palms for one substep.
+    fn move_parts(&mut self, world: &mut World, substep: u32) {
+        let n = world.core().substeps().count();
+        let body = if substep + 1 >= n {
+            self.targets.body
+        } else {
+            let t = (substep + 1) as f32 / n as f32;
+            self.step_from.lerp(&self.targets.body, t)
+        };
+        let core = world.core_mut();
+        if self.step_from != self.targets.body {
+            // Finite poses and kinematic parts: the world cannot refuse these.
+            let _ = core.set_kinematic_target(self.parts.body.into(), body);
+            self.moved = true;
+        }
+        let dt = STEP_SECONDS / n as f32;
+        for side in Side::BOTH {
+            let i = side.index();
+            if self.parked[i].is_some() {
+                continue;
+            }
+            let target = body * self.targets.hands[i];
+            self.hands[i].advance(&target, dt, &HAND_LIMITS);
+            servo(world, self.parts.hand(side), side, &self.hands[i].pose, dt);
+            self.moved = true;
+        }
+    }
+
+    /// Sets each hand's finger drives where they changed: toward `trigger × closed`, or frozen
+    /// while holding.
+    fn drive_fingers(&mut self, world: &mut World) {
+        for side in Side::BOTH {
+            let i = side.index();
+            let wanted: [f32; FINGERS] = match self.grasps[i] {
+                Some(grasp) => grasp.fingers,
+                None => std::array::from_fn(|l| closed_angle(l, self.targets.triggers[i])),
+            };
+            if wanted == self.fingers[i] {
+                continue;
+            }
+            let hand = self.parts.hand(side);
+            for (link, &angle) in wanted.iter().enumerate() {
+                let drive = Drive::position(angle, FINGER_STIFFNESS, FINGER_DAMPING, FINGER_TORQUE);
+                let _ = world.core_mut().drive_joint(hand, link, drive);
+            }
+            self.fingers[i] = wanted;
+        }
+    }
+
+    /// After a step: lets go where a grasp must end, grasps where a pressed hand finds something.
+    fn update_grasps(&mut self, world: &mut World) {
+        for side in Side::BOTH {
+            let i = side.index();
+            let trigger = self.targets.triggers[i];
+            match self.grasps[i] {
+                Some(grasp) if must_release(world, &grasp, trigger, &self.rules) => {
+                    world.core_mut().detach(grasp.attachment);
+                    self.grasps[i] = None;
+                    self.releases.push(Release {
+                        body: grasp.body,
+                        parts: vec![self.parts.hand(side), self.parts.body],
+                        since: world.steps(),
+                    });
+                }
+                None if trigger > self.rules.threshold => {
+                    let own = self.parts.all();
+                    let grasper = Grasper {
+                        rules: &self.rules,
+                        hand: (self.parts.hand(side), side),
+                        torso: self.parts.body,
+                        own: &own,
+                        other_holds: self.holding(side.other()),
+                    };
+                    self.grasps[i] = grasper.try_grasp(world);
+                }
+                _ => {}
+            }
+        }
+    }
+}

@@ -707,3 +707,42 @@ fn facts_of_every_activity_match_between_sample_and_the_saved_instance_and_imply
         behavior_ok(&["bddl", "eval", &name, "--state", state.to_str().unwrap()]);
     }
 }
+
+#[test]
+fn stats_json_agrees_with_a_naive_set_evaluation_at_init_on_every_enumerable_activity() {
+    // The default counting is the paper's: an option is a set of literals.
+    let data = DataDir::locate(None, |_| ()).unwrap();
+    let knowledge =
+        behavior_bddl::Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();
+    let rows: Vec<Value> =
+        serde_json::from_slice(&behavior_ok(&["bddl", "stats", "--json"]).stdout).unwrap();
+    let mut checked = 0;
+    for row in &rows {
+        let name = row["activity"].as_str().unwrap();
+        let source = behavior_bddl::load::read_source(&data.problem_path(name).unwrap()).unwrap();
+        let (activity, _) = knowledge.load(&source).unwrap();
+        let formula = activity.goal_formula();
+        let Some(options) = common::dnf(&activity, &formula, &mut Vec::new(), true) else {
+            continue; // too many options to enumerate naively
+        };
+        let init = activity.initial_facts();
+        let is_true = |a: Atom| init.contains(&a);
+        let (volume, q) = common::volume_and_q(&options, &is_true, Counting::Set);
+        assert_eq!(row["volume"].as_u64(), volume.map(|v| v as u64), "{name}");
+        match q {
+            Some((s, n)) => {
+                let reported = row["q_at_init"].as_f64().unwrap();
+                assert!(
+                    (reported - s as f64 / n as f64).abs() < 1e-12,
+                    "{name}: {reported} vs {s}/{n}"
+                );
+            }
+            None => assert!(row["q_at_init"].is_null(), "{name}"),
+        }
+        checked += 1;
+    }
+    assert!(
+        checked >= 90,
+        "only {checked} activities could be enumerated"
+    );
+}

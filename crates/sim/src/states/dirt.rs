@@ -14,7 +14,7 @@
 //! off when the tool is soaked.
 
 use crate::core::{Core, untag};
-use crate::object::{ObjectId, PointKind};
+use crate::object::{Object, ObjectId, PointKind};
 use crate::states::StateError;
 use crate::states::water::Water;
 use behavior_core::rng::{SimRng, uniform};
@@ -59,12 +59,22 @@ pub(crate) struct ParticleSet {
 pub(crate) struct Dirt {
     dust: Vec<ParticleSet>,
     stain: Vec<ParticleSet>,
+    /// The cleaning tools, in id order.
+    tools: Vec<ObjectId>,
+    /// The objects that can get dusty or stained, in id order: only they are wiped.
+    dirtyable: Vec<ObjectId>,
 }
 
 impl Dirt {
-    pub(crate) fn add_object(&mut self) {
+    pub(crate) fn add_object(&mut self, id: ObjectId, object: &Object) {
         self.dust.push(ParticleSet::default());
         self.stain.push(ParticleSet::default());
+        if object.has(Ability::CleaningTool) {
+            self.tools.push(id);
+        }
+        if object.has(Ability::Dustyable) || object.has(Ability::Stainable) {
+            self.dirtyable.push(id);
+        }
     }
 
     fn set(&self, id: ObjectId, kind: Predicate) -> &ParticleSet {
@@ -153,11 +163,9 @@ impl Dirt {
 
     /// One step of cleaning: every cleaning tool wipes what it touches.
     pub(crate) fn update(&mut self, core: &Core, water: &Water) {
-        let tools = core
-            .objects()
-            .filter(|(_, o)| o.has(Ability::CleaningTool))
-            .map(|(id, _)| id);
-        for tool in tools {
+        // By index: the loop wipes this system's particles while reading its lists.
+        for t in 0..self.tools.len() {
+            let tool = self.tools[t];
             let area = core.aabb(tool).loosened(WIPE_MARGIN);
             let face = core
                 .object(tool)
@@ -172,7 +180,8 @@ impl Dirt {
             } else {
                 &[Predicate::Dusty]
             };
-            for (dirty, _) in core.objects() {
+            for d in 0..self.dirtyable.len() {
+                let dirty = self.dirtyable[d];
                 let clean = self.dust[dirty.0 as usize].points.is_empty()
                     && self.stain[dirty.0 as usize].points.is_empty();
                 if dirty == tool || clean || !core.touching(tool, dirty) {

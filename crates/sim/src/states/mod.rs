@@ -154,9 +154,10 @@ impl Systems {
     /// Makes room for a new object in every system.
     pub(crate) fn add_object(&mut self, core: &mut Core, id: ObjectId) {
         self.water.add_object(core, id);
-        self.toggles.add_object();
-        self.temperatures.add_object();
-        self.dirt.add_object();
+        let object = core.object(id);
+        self.toggles.add_object(id, object);
+        self.temperatures.add_object(id, object);
+        self.dirt.add_object(id, object);
         self.flags.0.push(0);
     }
 

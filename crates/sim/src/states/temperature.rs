@@ -10,7 +10,7 @@
 //! (`../shared/reference/igibson-2.0-reference.md` §1.4), read from the taxonomy's abilities.
 
 use crate::core::Core;
-use crate::object::{ObjectId, PointKind};
+use crate::object::{Object, ObjectId, PointKind};
 use crate::states::toggling::Toggles;
 use behavior_core::Ability;
 use rapier3d::math::Vector;
@@ -52,12 +52,28 @@ pub(crate) struct Temperatures {
     /// The active sources of the current step, kept between steps so that a step allocates
     /// nothing.
     sources: Vec<Source>,
+    /// The heat and cold sources, in id order.
+    source_ids: Vec<ObjectId>,
+    /// The objects that can cook, burn or freeze, in id order: the rule visits only them.
+    thermal: Vec<ObjectId>,
 }
 
 impl Temperatures {
-    pub(crate) fn add_object(&mut self) {
+    pub(crate) fn add_object(&mut self, id: ObjectId, object: &Object) {
         self.now.push(ROOM_TEMPERATURE);
         self.max.push(f32::NEG_INFINITY);
+        if [Ability::HeatSource, Ability::ColdSource]
+            .into_iter()
+            .any(|a| object.has(a))
+        {
+            self.source_ids.push(id);
+        }
+        if [Ability::Cookable, Ability::Burnable, Ability::Freezable]
+            .into_iter()
+            .any(|a| object.has(a))
+        {
+            self.thermal.push(id);
+        }
     }
 
     /// °C now.
@@ -90,9 +106,11 @@ impl Temperatures {
     }
 
     /// Fills `sources` with the sources active this step.
-    fn find_active_sources(sources: &mut Vec<Source>, core: &Core, toggles: &Toggles) {
+    fn find_active_sources(&mut self, core: &Core, toggles: &Toggles) {
+        let sources = &mut self.sources;
         sources.clear();
-        for (id, object) in core.objects() {
+        for &id in &self.source_ids {
+            let object = core.object(id);
             let Some(ability) = [Ability::HeatSource, Ability::ColdSource]
                 .into_iter()
                 .find(|&a| object.has(a))
@@ -136,21 +154,14 @@ impl Temperatures {
 
     /// One step of the temperature rule.
     pub(crate) fn update(&mut self, core: &Core, toggles: &Toggles, dt: f32) {
-        let mut sources = std::mem::take(&mut self.sources);
-        Self::find_active_sources(&mut sources, core, toggles);
-        for (id, object) in core.objects() {
-            if ![Ability::Cookable, Ability::Burnable, Ability::Freezable]
-                .into_iter()
-                .any(|a| object.has(a))
-            {
-                continue;
-            }
+        self.find_active_sources(core, toggles);
+        for &id in &self.thermal {
             let i = id.0 as usize;
             let old = self.now[i];
             let center = core.aabb(id).center();
             let mut new = old;
             let mut reached = false;
-            for source in sources.iter().filter(|s| s.id != id) {
+            for source in self.sources.iter().filter(|s| s.id != id) {
                 let reaches = match source.reach {
                     Some(reach) => Self::near_element(core, source.id, center, reach),
                     None => core.inside(id, source.id),
@@ -166,6 +177,5 @@ impl Temperatures {
             self.now[i] = new;
             self.max[i] = self.max[i].max(new);
         }
-        self.sources = sources;
     }
 }

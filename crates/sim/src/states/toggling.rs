@@ -5,7 +5,7 @@
 //! ([`crate::World::set_hand_points`]).
 
 use crate::core::Core;
-use crate::object::{ObjectId, PointKind};
+use crate::object::{Object, ObjectId, PointKind};
 use behavior_core::Ability;
 use rapier3d::math::Vector;
 
@@ -20,12 +20,17 @@ pub(crate) struct Toggles {
     on: Vec<bool>,
     held_steps: Vec<u32>,
     hands: Vec<Vector>,
+    /// The toggleable objects, in id order: the rule visits only them.
+    toggleable: Vec<ObjectId>,
 }
 
 impl Toggles {
-    pub(crate) fn add_object(&mut self) {
+    pub(crate) fn add_object(&mut self, id: ObjectId, object: &Object) {
         self.on.push(false);
         self.held_steps.push(0);
+        if object.has(Ability::Toggleable) {
+            self.toggleable.push(id);
+        }
     }
 
     pub(crate) fn is_on(&self, id: ObjectId) -> bool {
@@ -58,8 +63,9 @@ impl Toggles {
     }
 
     pub(crate) fn update(&mut self, core: &Core) {
-        for (id, object) in core.objects() {
-            if !object.has(Ability::Toggleable) || !object.is_present() {
+        for &id in &self.toggleable {
+            let object = core.object(id);
+            if !object.is_present() {
                 continue;
             }
             let Some(button) = object.point(PointKind::ToggleButton) else {

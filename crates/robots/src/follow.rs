@@ -36,8 +36,6 @@ pub(crate) struct Limits {
 pub const HAND_FORCE: f32 = 300.0;
 /// The most a palm's servo changes its angular velocity per second, rad/s².
 const HAND_ANGULAR_ACCELERATION: f32 = 1000.0;
-/// The world's gravity, m/s² along −z (`World::new`).
-const GRAVITY: f32 = 9.81;
 
 /// A hand's limits: fast enough to keep up with its target (a hand command and the body's
 /// motion together reach about 5 m/s at full reach), accelerating as the original's hand can.
@@ -116,7 +114,8 @@ pub(crate) fn servo(world: &mut World, hand: ObjectId, side: Side, reference: &P
     else {
         return;
     };
-    let lift = Vector::new(0.0, 0.0, GRAVITY * dt);
+    // What gravity takes off the velocity during the substep, given back in advance.
+    let lift = -world.core().gravity() * dt;
     let wanted = (reference.translation - now.translation) / dt + lift;
     let limit = HAND_FORCE / (PALM_MASS + FINGERS as f32 * FINGER_MASS) * dt;
     let linear = velocity.linear + (wanted - velocity.linear).clamp_length_max(limit);

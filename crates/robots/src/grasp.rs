@@ -83,7 +83,8 @@ impl GraspRules {
             let moves = object.links[link].joint.kind != JointKind::Fixed;
             return moves.then_some(AttachmentKind::Point);
         }
-        let light = world.core().mass(body.object) <= self.max_mass;
+        // What the hand would lift: the object with its links (a box with its lid).
+        let light = world.core().total_mass(body.object) <= self.max_mass;
         let movable = object.body_kind == BodyKind::Dynamic;
         (movable && (light || self.allowed.contains(&object.category)))
             .then_some(AttachmentKind::Fixed)

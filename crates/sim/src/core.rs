@@ -261,6 +261,27 @@ impl Core {
         self.physics.bodies[self.object(id).body].mass()
     }
 
+    /// The mass of one body, the object's or a link's, kg.
+    pub fn body_mass(&self, body: BodyRef) -> Result<f32, WorldError> {
+        Ok(self.physics.bodies[self.handle(body)?].mass())
+    }
+
+    /// The mass of an object with all its links (a box with its lid), kg: what a hand lifts.
+    pub fn total_mass(&self, id: ObjectId) -> f32 {
+        let object = self.object(id);
+        let links: f32 = object
+            .links
+            .iter()
+            .map(|l| self.physics.bodies[l.body].mass())
+            .sum();
+        self.mass(id) + links
+    }
+
+    /// The world's gravity (m/s²), −9.81 along z unless changed.
+    pub fn gravity(&self) -> Vector {
+        self.physics.gravity
+    }
+
     /// Whether the object's body is asleep.
     pub fn is_sleeping(&self, id: ObjectId) -> bool {
         self.physics.bodies[self.object(id).body].is_sleeping()

@@ -842,3 +842,54 @@ fn a_velocity_driven_base_carries_its_multibody_arm_and_the_arm_keeps_its_target
         assert!((q - target).abs() < 0.02, "joint {k} at {q} for {target}");
     }
 }
+
+#[test]
+fn masses_of_bodies_links_and_whole_objects_and_the_gravity_they_feel() {
+    use behavior_sim::{BodyRef, JointKind, JointSpec, LinkSpec, ObjectSpec, Part};
+    let mut world = World::default();
+    // A 20 × 20 × 10 cm box of 1000 kg/m³ (4 kg) with a 20 × 20 × 1 cm lid of 500 kg/m³ (0.2 kg).
+    let mut spec = ObjectSpec::new(
+        "box_1",
+        "carton.n.02",
+        vec![Part::new(cuboid(0.1, 0.1, 0.05))],
+    );
+    spec.density = 1000.0;
+    let lid = LinkSpec {
+        name: "lid".into(),
+        parts: vec![Part::at(cuboid(0.1, 0.1, 0.005), v(0.0, 0.0, 0.055))],
+        parent: None,
+        joint: JointSpec::opening(
+            JointKind::Revolute,
+            v(0.0, 0.1, 0.05),
+            v(-1.0, 0.0, 0.0),
+            1.5,
+            1.0,
+        ),
+        density: 500.0,
+    };
+    let id = world.add(spec.link(lid)).unwrap();
+    let body = world.core().body_mass(BodyRef::from(id)).unwrap();
+    let link = world
+        .core()
+        .body_mass(BodyRef {
+            object: id,
+            link: Some(0),
+        })
+        .unwrap();
+    assert!(
+        (body - 4.0).abs() < 1e-3 && (link - 0.2).abs() < 1e-4,
+        "{body} {link}"
+    );
+    assert!((world.core().total_mass(id) - 4.2).abs() < 1e-3);
+    assert_eq!(world.core().mass(id), body);
+    assert!(
+        world
+            .core()
+            .body_mass(BodyRef {
+                object: id,
+                link: Some(3)
+            })
+            .is_err()
+    );
+    assert_eq!(world.core().gravity(), v(0.0, 0.0, -9.81));
+}

@@ -682,23 +682,7 @@ fn facts_of_every_activity_match_between_sample_and_the_saved_instance_and_imply
         let source = behavior_bddl::load::read_source(&data.problem_path(&name).unwrap()).unwrap();
         let (activity, _) = knowledge.load(&source).unwrap();
         let listed: std::collections::BTreeSet<Vec<String>> = facts.into_iter().collect();
-        let named = |i: behavior_bddl::activity::InstanceId| activity.instance(i).name.clone();
-        for literal in &activity.init {
-            let (fact, positive) = match literal {
-                InitLiteral::Atom(l) => {
-                    let mut fact = vec![l.atom.predicate.name().to_string(), named(l.atom.subject)];
-                    fact.extend(l.atom.object.map(named));
-                    (fact, l.positive)
-                }
-                InitLiteral::InRoom {
-                    instance,
-                    room,
-                    positive,
-                } => (
-                    vec!["inroom".into(), named(*instance), room.name().to_string()],
-                    *positive,
-                ),
-            };
+        for (fact, positive) in common::init_as_facts(&activity) {
             assert_eq!(listed.contains(&fact), positive, "{name}: {fact:?}");
         }
         // `bddl eval` reads the facts back, inroom included.

@@ -11,6 +11,9 @@ use behavior_sampling::{
     instantiate,
 };
 
+#[path = "../../bddl/tests/common/mod.rs"]
+mod naive;
+
 fn setup() -> (DataDir, Knowledge) {
     let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
     let knowledge =
@@ -45,25 +48,10 @@ fn init_unmet_in_facts(activity: &Activity, facts: &[behavior_sampling::Fact]) -
             v
         })
         .collect();
-    let name = |i: behavior_bddl::activity::InstanceId| activity.instance(i).name.clone();
-    activity.init.iter().find_map(|l| {
-        let (fact, positive) = match l {
-            InitLiteral::Atom(l) => {
-                let mut fact = vec![l.atom.predicate.name().to_string(), name(l.atom.subject)];
-                fact.extend(l.atom.object.map(name));
-                (fact, l.positive)
-            }
-            InitLiteral::InRoom {
-                instance,
-                room,
-                positive,
-            } => (
-                vec!["inroom".into(), name(*instance), room.name().to_string()],
-                *positive,
-            ),
-        };
-        (listed.contains(&fact) != positive).then(|| format!("{fact:?} (positive: {positive})"))
-    })
+    naive::init_as_facts(activity)
+        .into_iter()
+        .find(|(fact, positive)| listed.contains(fact) != *positive)
+        .map(|(fact, positive)| format!("{fact:?} (positive: {positive})"))
 }
 
 /// Re-checks every positive and negative init literal through the BDDL oracle, independently of

@@ -349,3 +349,30 @@ pub fn random_truth(seed: u64) -> impl Fn(Atom) -> bool {
         x & 1 == 1
     }
 }
+
+/// Every `:init` literal as a fact in the form `behavior facts` prints (`["ontop", "a", "b"]`,
+/// `["inroom", "a", "kitchen"]`), with whether it must hold: to read an initial state off a list
+/// of facts alone.
+pub fn init_as_facts(activity: &Activity) -> Vec<(Vec<String>, bool)> {
+    use behavior_bddl::activity::InitLiteral;
+    let name = |i: InstanceId| activity.instance(i).name.clone();
+    activity
+        .init
+        .iter()
+        .map(|literal| match literal {
+            InitLiteral::Atom(l) => {
+                let mut fact = vec![l.atom.predicate.name().to_string(), name(l.atom.subject)];
+                fact.extend(l.atom.object.map(name));
+                (fact, l.positive)
+            }
+            InitLiteral::InRoom {
+                instance,
+                room,
+                positive,
+            } => (
+                vec!["inroom".into(), name(*instance), room.name().to_string()],
+                *positive,
+            ),
+        })
+        .collect()
+}

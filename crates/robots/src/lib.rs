@@ -38,6 +38,7 @@
 
 mod action;
 mod body;
+mod embodiment;
 mod follow;
 mod grasp;
 mod hand;
@@ -48,6 +49,7 @@ mod robot;
 
 pub use action::{ACTION_DIM, ACTION_SCALE, Action, ActionError, ActionSpace};
 pub use body::{BODY_HEIGHT, BODY_LENGTH, BODY_MASS, BODY_RADIUS, EYE_REACH, HAND_REACH};
+pub use embodiment::{Robot, RobotKind, TrackedPart};
 pub use grasp::GraspRules;
 pub use hand::{
     FINGER_CLOSED, FINGER_MASS, FINGER_TORQUE, FINGERS, HAND_FRICTION, PALM_MASS, Side,

@@ -1,0 +1,207 @@
+//! Any robot, for code that does not care which: an environment, metrics, recordings.
+//!
+//! [`Robot`] is an enum over the embodiments (not a trait object) so that it can be cloned with
+//! the world for snapshots and replay, and matched where the embodiments differ. Its methods are
+//! what an episode needs of a body: actions as plain numbers, proprioception as plain numbers,
+//! where the body and hands are, what the hands hold, and the robot-relative predicates.
+
+use crate::action::{ActionError, ActionSpace};
+use crate::hand::Side;
+use crate::proprioception::Proprioception;
+use crate::robot::{BehaviorRobot, RobotError};
+use behavior_sim::{ObjectId, StepHooks, World};
+use rapier3d::math::Pose;
+
+/// Which embodiment.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum RobotKind {
+    /// The bimanual humanoid of the VR demonstrations ([`BehaviorRobot`]).
+    #[default]
+    Behavior,
+}
+
+impl RobotKind {
+    /// Every embodiment.
+    pub const ALL: [RobotKind; 1] = [RobotKind::Behavior];
+
+    /// Its name on the command line and in files: `behavior`.
+    pub fn name(self) -> &'static str {
+        match self {
+            RobotKind::Behavior => "behavior",
+        }
+    }
+
+    /// The kind with that [`RobotKind::name`].
+    pub fn from_name(name: &str) -> Option<RobotKind> {
+        RobotKind::ALL.into_iter().find(|k| k.name() == name)
+    }
+}
+
+/// A part of a robot whose motion the episode's metrics follow (the original's body and hands,
+/// or body and gripper).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TrackedPart {
+    /// `body`, `left_hand`, `right_hand` or `gripper`.
+    pub name: &'static str,
+    /// The world object it is.
+    pub object: ObjectId,
+    /// Whether it holds something now.
+    pub holding: bool,
+}
+
+/// A robot of any kind, with the action space it is driven through.
+#[derive(Clone, Debug)]
+pub enum Robot {
+    /// A [`BehaviorRobot`] and the space its actions come in.
+    Behavior(BehaviorRobot, ActionSpace),
+}
+
+impl Robot {
+    /// Adds a robot of `kind` standing at `pose` (its base on the floor below, see each
+    /// embodiment), driven through `space` (a BehaviorRobot's reduced spaces, reference §4.2).
+    pub fn add(
+        kind: RobotKind,
+        space: ActionSpace,
+        world: &mut World,
+        pose: Pose,
+    ) -> Result<Robot, RobotError> {
+        match kind {
+            RobotKind::Behavior => Ok(Robot::Behavior(BehaviorRobot::add(world, pose)?, space)),
+        }
+    }
+
+    /// Which embodiment it is.
+    pub fn kind(&self) -> RobotKind {
+        match self {
+            Robot::Behavior(..) => RobotKind::Behavior,
+        }
+    }
+
+    /// How many numbers an action has.
+    pub fn action_dim(&self) -> usize {
+        match self {
+            Robot::Behavior(_, space) => space.dim(),
+        }
+    }
+
+    /// Checks `values` as an action and sets it for the next step. A bad one is an error and
+    /// changes nothing.
+    pub fn set_action(&mut self, values: &[f32]) -> Result<(), ActionError> {
+        match self {
+            Robot::Behavior(robot, space) => {
+                robot.set_action(space.action(values)?);
+                Ok(())
+            }
+        }
+    }
+
+    /// How many numbers [`Robot::proprioception`] gives.
+    pub fn proprioception_dim(&self) -> usize {
+        match self {
+            Robot::Behavior(..) => Proprioception::DIM,
+        }
+    }
+
+    /// Appends the robot's proprioception to `out` ([`Robot::proprioception_dim`] numbers).
+    pub fn proprioception(&self, world: &World, out: &mut Vec<f32>) {
+        match self {
+            Robot::Behavior(robot, _) => out.extend(robot.proprioception(world).to_array()),
+        }
+    }
+
+    /// The base's pose (a BehaviorRobot's body centre).
+    pub fn base_pose(&self, world: &World) -> Pose {
+        match self {
+            Robot::Behavior(robot, _) => robot.body_pose(world),
+        }
+    }
+
+    /// The world objects the robot is made of.
+    pub fn objects(&self) -> Vec<ObjectId> {
+        match self {
+            Robot::Behavior(robot, _) => robot.parts().all().to_vec(),
+        }
+    }
+
+    /// The base, then each hand or gripper, as the original's metrics follow them.
+    pub fn tracked_parts(&self) -> Vec<TrackedPart> {
+        match self {
+            Robot::Behavior(robot, _) => {
+                let parts = robot.parts();
+                let hand = |name, side: Side| TrackedPart {
+                    name,
+                    object: parts.hand(side),
+                    holding: robot.holding(side).is_some(),
+                };
+                vec![
+                    TrackedPart {
+                        name: "body",
+                        object: parts.body,
+                        holding: false,
+                    },
+                    hand("left_hand", Side::Left),
+                    hand("right_hand", Side::Right),
+                ]
+            }
+        }
+    }
+
+    /// How many hands (or grippers) it has.
+    pub fn hands(&self) -> usize {
+        match self {
+            Robot::Behavior(..) => 2,
+        }
+    }
+
+    /// The object hand `k` holds (0 left, 1 right for a BehaviorRobot).
+    pub fn held(&self, hand: usize) -> Option<ObjectId> {
+        match self {
+            Robot::Behavior(robot, _) => {
+                let side = *Side::BOTH.get(hand)?;
+                robot.holding(side).map(|b| b.object)
+            }
+        }
+    }
+
+    /// `in hand`: whether a hand holds the object.
+    pub fn is_holding(&self, object: ObjectId) -> bool {
+        match self {
+            Robot::Behavior(robot, _) => robot.is_holding(object),
+        }
+    }
+
+    /// `in reach` (see `relative.rs`).
+    pub fn in_reach(&self, world: &World, object: ObjectId) -> bool {
+        match self {
+            Robot::Behavior(robot, _) => robot.in_reach(world, object),
+        }
+    }
+
+    /// `in the same room` (see `relative.rs`).
+    pub fn in_same_room(&self, world: &World, object: ObjectId) -> bool {
+        match self {
+            Robot::Behavior(robot, _) => robot.in_same_room(world, object),
+        }
+    }
+
+    /// `in the field of view` (see `relative.rs`).
+    pub fn in_field_of_view(&self, world: &World, object: ObjectId) -> bool {
+        match self {
+            Robot::Behavior(robot, _) => robot.in_field_of_view(world, object),
+        }
+    }
+}
+
+impl StepHooks for Robot {
+    fn before_substep(&mut self, world: &mut World, substep: u32) {
+        match self {
+            Robot::Behavior(robot, _) => robot.before_substep(world, substep),
+        }
+    }
+
+    fn after_step(&mut self, world: &mut World) {
+        match self {
+            Robot::Behavior(robot, _) => robot.after_step(world),
+        }
+    }
+}

@@ -54,6 +54,7 @@ impl Core {
             visual: spec.visual,
             meshes: spec.meshes,
             replaced_by: None,
+            retired: false,
         });
         debug_assert_eq!(pushed, id);
         self.refresh();

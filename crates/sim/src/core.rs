@@ -379,6 +379,31 @@ impl Core {
         }
     }
 
+    /// Takes an object out of the simulation for good: its bodies stop colliding and moving, and
+    /// it is no longer [`Object::is_present`], so no predicate, placement or query sees it. For a
+    /// stand-in that something else replaces (an activity's `agent.n.01` capsule, by a robot).
+    pub fn retire(&mut self, id: ObjectId) {
+        let object = &mut self.objects[id.0 as usize];
+        object.retired = true;
+        let bodies: Vec<RigidBodyHandle> = std::iter::once(object.body)
+            .chain(object.links.iter().map(|l| l.body))
+            .collect();
+        for body in bodies {
+            if let Some(b) = self.physics.bodies.get_mut(body) {
+                b.set_enabled(false);
+            }
+        }
+        self.moved(id);
+        self.refresh();
+    }
+
+    /// Sets the physics substeps per action step (an instance sampled at 1/300 s may be run at
+    /// 1/120 s). Takes effect from the next step.
+    pub fn set_substeps(&mut self, substeps: Substeps) {
+        self.substeps = substeps;
+        self.physics.integration_parameters.dt = STEP_SECONDS / substeps.count() as f32;
+    }
+
     /// Lets resting bodies sleep (the default) or keeps every body simulated, for benchmarks of
     /// an awake scene.
     pub fn set_sleeping_allowed(&mut self, allowed: bool) {

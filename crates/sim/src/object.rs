@@ -376,6 +376,8 @@ pub struct Object {
     pub meshes: Vec<VisualMesh>,
     /// The two objects that replaced it when it was sliced: it has left the simulation.
     pub replaced_by: Option<[ObjectId; 2]>,
+    /// Taken out of the simulation by [`crate::Core::retire`] (a stand-in a robot replaced).
+    pub retired: bool,
 }
 
 /// A built link: its body, colliders and joint.
@@ -437,8 +439,8 @@ impl Object {
         self.body_kind == BodyKind::Fixed
     }
 
-    /// Whether it is still in the simulation (not replaced by its halves).
+    /// Whether it is still in the simulation (not replaced by its halves, not retired).
     pub fn is_present(&self) -> bool {
-        self.replaced_by.is_none()
+        self.replaced_by.is_none() && !self.retired
     }
 }

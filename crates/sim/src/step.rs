@@ -35,6 +35,12 @@ pub trait StepHooks {
         let _ = (world, substep);
     }
 
+    /// After the step's last physics substep, before its state rules (for timing, or for
+    /// reading contacts as the solver left them).
+    fn after_physics(&mut self, world: &mut World) {
+        let _ = world;
+    }
+
     /// After the state rules of the step.
     fn after_step(&mut self, world: &mut World) {
         let _ = world;
@@ -68,6 +74,7 @@ impl World {
     /// Advances one action step, running `hooks` inside it (see the module docs).
     pub fn step_with(&mut self, hooks: &mut dyn StepHooks) {
         let pressed = self.substeps(hooks);
+        hooks.after_physics(self);
         self.core.note_motion();
         self.systems.update(&mut self.core, STEP_SECONDS);
         for id in pressed {

@@ -1,0 +1,366 @@
+//! The environment: Gymnasium's `reset` and `step`, in Rust.
+
+use crate::config::{EnvConfig, Instances, Reward};
+use crate::episode::{AGENT_SYNSET, Episode, Start, embody};
+use crate::metrics::{EpisodeMetrics, Series, Tracker};
+use crate::observation::{Obs, Sensor, SensorInput, task_obs};
+use crate::score::{Score, Scorer};
+use crate::timing::{StepTimings, Timed};
+use behavior_assets::Library;
+use behavior_robots::{ActionError, Robot, RobotError};
+use behavior_sampling::{LoadError, SampleError, SavedInstance, instantiate};
+use behavior_sim::{BoundWorld, ObjectId, World};
+use std::sync::Arc;
+use std::time::Instant;
+
+/// Steps of settling after a reset, at most (the original's `SIMULATOR_SETTLE_TIME`).
+pub const SETTLE_STEPS: usize = 150;
+
+/// Why a reset or a step could not be done. Nothing changed when one is returned.
+#[derive(Debug, thiserror::Error)]
+pub enum EnvError {
+    /// `step` before the first `reset`.
+    #[error("step called before reset")]
+    NotReset,
+    /// `step` after the episode ended (terminated or truncated); reset first.
+    #[error("the episode is over after {steps} steps; call reset to start another")]
+    EpisodeOver {
+        /// Steps the episode took.
+        steps: u32,
+    },
+    /// The action is not one of the robot's.
+    #[error("bad action: {0}")]
+    Action(#[from] ActionError),
+    /// The configuration has no home to sample in, or no saved instance to draw.
+    #[error("the environment has no {0} to start episodes from")]
+    Empty(&'static str),
+    /// No instance could be sampled.
+    #[error("sampling {activity} in {scene} (seed {seed}): {source}")]
+    Sample {
+        /// The activity.
+        activity: String,
+        /// The home.
+        scene: String,
+        /// The seed.
+        seed: u64,
+        /// Why.
+        source: SampleError,
+    },
+    /// A saved instance does not load.
+    #[error("loading the instance: {0}")]
+    Load(#[from] LoadError),
+    /// The robot could not be added.
+    #[error("adding the robot: {0}")]
+    Robot(#[from] RobotError),
+}
+
+/// What a step returns (Gymnasium's five values; `info` is [`Info`]).
+#[derive(Clone, Debug)]
+pub struct Step {
+    /// The observation after the step.
+    pub obs: Obs,
+    /// The reward (see [`Reward`]).
+    pub reward: f64,
+    /// The goal holds: the episode succeeded.
+    pub terminated: bool,
+    /// The step limit was reached first.
+    pub truncated: bool,
+    /// Q, success and the goal's conjuncts after the step.
+    pub info: Info,
+}
+
+/// What the environment says besides the observation.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Info {
+    /// Steps taken in the episode.
+    pub steps: u32,
+    /// The goal's standing.
+    pub score: Score,
+}
+
+/// A saved episode state; [`Env::restore`] continues from it bit-identically.
+#[derive(Clone)]
+pub struct Checkpoint(Episode);
+
+impl std::fmt::Debug for Checkpoint {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Checkpoint(step {})", self.0.steps)
+    }
+}
+
+/// A BEHAVIOR environment: one activity, a robot, episodes reset from a seed (see the crate
+/// docs for an example).
+pub struct Env {
+    config: EnvConfig,
+    scorer: Scorer,
+    /// The objects `task_obs` reports, as activity instance indices.
+    task_objects: Vec<usize>,
+    sensors: Vec<Box<dyn Sensor>>,
+    episode: Option<Episode>,
+    timings: StepTimings,
+}
+
+impl Env {
+    /// An environment for `config`; no episode runs until [`Env::reset`].
+    pub fn new(config: EnvConfig) -> Env {
+        let activity = &config.activity;
+        let task_objects = activity
+            .instances
+            .iter()
+            .enumerate()
+            .filter(|(_, i)| {
+                let synset = &activity.categories[i.category.0 as usize].name;
+                synset != AGENT_SYNSET && synset != "floor.n.01"
+            })
+            .map(|(k, _)| k)
+            .collect();
+        Env {
+            scorer: Scorer::new(activity),
+            config,
+            task_objects,
+            sensors: Vec::new(),
+            episode: None,
+            timings: StepTimings::default(),
+        }
+    }
+
+    /// Adds a sensor; its readings appear in every observation from the next reset or step.
+    pub fn add_sensor(&mut self, sensor: Box<dyn Sensor>) {
+        self.sensors.push(sensor);
+    }
+
+    /// The configuration.
+    pub fn config(&self) -> &EnvConfig {
+        &self.config
+    }
+
+    /// Starts an episode from `seed`: an instance sampled (or drawn from the saved ones), the
+    /// robot put where the activity's agent stands, the world settled; returns the first
+    /// observation. On error the previous episode is gone and `step` refuses until a reset
+    /// succeeds.
+    pub fn reset(&mut self, seed: u64) -> Result<(Obs, Info), EnvError> {
+        self.episode = None;
+        let instance = self.instance_for(seed)?;
+        self.reset_to(Start { seed, instance })
+    }
+
+    /// Starts an episode from a given initial state (a recording's header does this).
+    pub fn reset_to(&mut self, start: Start) -> Result<(Obs, Info), EnvError> {
+        self.episode = None;
+        let library = Library::new(&self.config.taxonomy);
+        let loaded = start.instance.load(&self.config.activity, &library)?;
+        let mut world = loaded.world;
+        world.core_mut().set_substeps(self.config.physics);
+        let (robot, agent) = embody(
+            &mut world,
+            &self.config.activity,
+            &loaded.bindings,
+            self.config.robot,
+            self.config.action_space,
+        )?;
+        world.settle(SETTLE_STEPS);
+        let mut bindings: Vec<Option<ObjectId>> = loaded.bindings.iter().copied().map(Some).collect();
+        let base = robot.objects()[0];
+        for b in bindings.iter_mut().filter(|b| **b == agent && agent.is_some()) {
+            *b = Some(base);
+        }
+        let mut ignored = robot.objects();
+        ignored.extend(agent);
+        let oracle = BoundWorld {
+            world: &world,
+            bindings: &bindings,
+        };
+        let score = self.scorer.score(&oracle);
+        let potential = self.scorer.first_option(&oracle);
+        let tracker = Tracker::start(&world, &robot, &ignored, &score);
+        self.episode = Some(Episode {
+            world,
+            robot,
+            bindings,
+            steps: 0,
+            score: score.clone(),
+            potential,
+            tracker,
+            start: Arc::new(start),
+            over: false,
+        });
+        let obs = self.observe();
+        Ok((obs, Info { steps: 0, score }))
+    }
+
+    /// The initial state for a seed, from the configured source.
+    fn instance_for(&self, seed: u64) -> Result<SavedInstance, EnvError> {
+        let c = &self.config;
+        match &c.instances {
+            Instances::Saved(saved) if saved.is_empty() => Err(EnvError::Empty("saved instance")),
+            Instances::Saved(saved) => Ok(saved[(seed % saved.len() as u64) as usize].clone()),
+            Instances::Sampled if c.scenes.is_empty() => Err(EnvError::Empty("home")),
+            Instances::Sampled => {
+                let scene = &c.scenes[(seed % c.scenes.len() as u64) as usize];
+                let library = Library::new(&c.taxonomy);
+                let instance = instantiate(&c.activity, scene, seed, &library, &c.taxonomy)
+                    .map_err(|source| EnvError::Sample {
+                        activity: c.activity.name.clone(),
+                        scene: scene.name.clone(),
+                        seed,
+                        source,
+                    })?;
+                Ok(instance.save())
+            }
+        }
+    }
+
+    /// Takes one action step (1/30 s). A bad action, or a step outside an episode, is an error
+    /// and changes nothing.
+    pub fn step(&mut self, action: &[f32]) -> Result<Step, EnvError> {
+        let episode = self.episode.as_mut().ok_or(EnvError::NotReset)?;
+        if episode.over {
+            return Err(EnvError::EpisodeOver {
+                steps: episode.steps,
+            });
+        }
+        episode.robot.set_action(action)?;
+        let start = Instant::now();
+        let mut timed = Timed::new(&mut episode.robot, start);
+        episode.world.step_with(&mut timed);
+        let (physics, rules) = timed.split();
+        let oracle = BoundWorld {
+            world: &episode.world,
+            bindings: &episode.bindings,
+        };
+        let score = self.scorer.score(&oracle);
+        let reward = match self.config.reward {
+            Reward::DeltaQ => score.q - episode.score.q,
+            Reward::FirstOption => {
+                let potential = self.scorer.first_option(&oracle);
+                let change = potential - episode.potential;
+                episode.potential = potential;
+                change
+            }
+        };
+        episode.steps += 1;
+        episode
+            .tracker
+            .step(&episode.world, &episode.robot, &score);
+        let terminated = score.success;
+        let truncated = !terminated && episode.steps >= self.config.max_steps;
+        episode.over = terminated || truncated;
+        episode.score = score.clone();
+        let info = Info {
+            steps: episode.steps,
+            score,
+        };
+        let scored = Instant::now();
+        let obs = self.observe();
+        self.timings.add(physics, rules, scored.elapsed(), start.elapsed());
+        Ok(Step {
+            obs,
+            reward,
+            terminated,
+            truncated,
+            info,
+        })
+    }
+
+    /// The observation of the episode's world now.
+    fn observe(&mut self) -> Obs {
+        let Some(episode) = &self.episode else {
+            return Obs::default();
+        };
+        let (world, robot) = (&episode.world, &episode.robot);
+        let mut obs = Obs::default();
+        if self.config.observations.proprioception {
+            robot.proprioception(world, &mut obs.proprioception);
+        }
+        if self.config.observations.task_obs {
+            let objects: Vec<ObjectId> = self
+                .task_objects
+                .iter()
+                .filter_map(|&k| episode.bindings[k])
+                .collect();
+            task_obs(world, robot, &objects, &mut obs.task_obs);
+        }
+        let input = SensorInput {
+            world,
+            robot,
+            bindings: &episode.bindings,
+        };
+        obs.sensors = self
+            .sensors
+            .iter_mut()
+            .map(|s| (s.name().to_string(), s.observe(&input)))
+            .collect();
+        obs
+    }
+
+    fn current(&self) -> Option<&Episode> {
+        self.episode.as_ref()
+    }
+
+    /// The episode's world (`None` before the first reset).
+    pub fn world(&self) -> Option<&World> {
+        self.current().map(|e| &e.world)
+    }
+
+    /// The episode's robot.
+    pub fn robot(&self) -> Option<&Robot> {
+        self.current().map(|e| &e.robot)
+    }
+
+    /// How the episode began.
+    pub fn start(&self) -> Option<&Start> {
+        self.current().map(|e| e.start.as_ref())
+    }
+
+    /// The object of each activity instance (the agent's is the robot's base).
+    pub fn bindings(&self) -> Option<&[Option<ObjectId>]> {
+        self.current().map(|e| e.bindings.as_slice())
+    }
+
+    /// Steps taken in the episode.
+    pub fn steps(&self) -> u32 {
+        self.current().map_or(0, |e| e.steps)
+    }
+
+    /// The goal's standing after the last step.
+    pub fn score(&self) -> Option<&Score> {
+        self.current().map(|e| &e.score)
+    }
+
+    /// Whether the episode ended (terminated or truncated).
+    pub fn is_over(&self) -> bool {
+        self.current().is_some_and(|e| e.over)
+    }
+
+    /// The episode's metrics as of now: the logical disarrangement compares the start with the
+    /// world now (a few milliseconds in a full home, so ask at the end).
+    pub fn metrics(&self) -> Option<EpisodeMetrics> {
+        self.current().map(|e| e.tracker.finish(&e.world))
+    }
+
+    /// The per-step values of the episode so far (for plots).
+    pub fn series(&self) -> Option<&Series> {
+        self.current().map(|e| e.tracker.series())
+    }
+
+    /// Where the time of the steps since the last [`Env::take_timings`] went.
+    pub fn take_timings(&mut self) -> StepTimings {
+        std::mem::take(&mut self.timings)
+    }
+
+    /// The episode's whole state (`None` before the first reset).
+    pub fn checkpoint(&self) -> Option<Checkpoint> {
+        self.current().cloned().map(Checkpoint)
+    }
+
+    /// Goes back to a checkpoint of this environment; the episode continues from there as it
+    /// did the first time, bit for bit.
+    pub fn restore(&mut self, checkpoint: &Checkpoint) {
+        self.episode = Some(checkpoint.0.clone());
+    }
+
+    /// The robot, for code that drives it between steps (a planner's primitives).
+    pub fn robot_mut(&mut self) -> Option<&mut Robot> {
+        self.episode.as_mut().map(|e| &mut e.robot)
+    }
+}

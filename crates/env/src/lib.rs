@@ -1,0 +1,56 @@
+//! The BEHAVIOR episode: a robot in an activity instance, stepped at 30 Hz through Gymnasium's
+//! contract (`reset(seed)`, `step(action)` → observation, reward, terminated, truncated, info),
+//! scored every step by the success score Q and the paper's metrics, recorded to MCAP and
+//! replayed bit for bit.
+//!
+//! It owns the episode: where initial states come from (sampled, saved, a pool), the robot put
+//! in the place of the activity's `agent.n.01`, observations (proprioception, `task_obs`, and
+//! [`Sensor`]s others add), reward, termination, the metrics and recordings. It knows nothing of
+//! rendering, Python or the command line; it builds on the world (`behavior-sim`), the robots,
+//! the sampler and BDDL's goal evaluation.
+//!
+//! ```no_run
+//! use behavior_env::{Agent, Env, EnvConfig};
+//! # fn config() -> EnvConfig { unimplemented!() }
+//! let mut env = Env::new(config()); // an activity, its homes, a robot (see EnvConfig)
+//! let (_obs, info) = env.reset(7).unwrap();
+//! let mut agent = Agent::named("random", 7).unwrap();
+//! let mut action = Vec::new();
+//! let dim = env.robot().unwrap().action_dim();
+//! loop {
+//!     agent.act(dim, &mut action);
+//!     let step = env.step(&action).unwrap();
+//!     if step.terminated || step.truncated {
+//!         break;
+//!     }
+//! }
+//! println!("Q {} → {}", info.score.q, env.metrics().unwrap().q_final);
+//! ```
+//!
+//! Inside: `config.rs` (what an env is made of), `env.rs` (reset and step), `episode.rs` (an
+//! episode's state, the robot replacing the agent), `observation.rs`, `score.rs` (Q and goal
+//! status), `metrics/` (one module per metric, the benchmark's aggregate and human
+//! normalization), `record/` (MCAP recordings and replay), `timing.rs`, `agent.rs` (idle and
+//! random agents).
+
+#![warn(missing_docs)]
+
+mod agent;
+mod config;
+mod env;
+mod episode;
+pub mod metrics;
+mod observation;
+mod score;
+mod timing;
+
+pub use agent::Agent;
+pub use config::{DEFAULT_MAX_STEPS, EnvConfig, Instances, Observations, Reward};
+pub use env::{Checkpoint, Env, EnvError, Info, SETTLE_STEPS, Step};
+pub use episode::Start;
+pub use metrics::{EpisodeMetrics, Series};
+pub use observation::{
+    Obs, Reading, Sensor, SensorInput, TASK_OBJECT_DIM, TASK_OBJECTS, TASK_OBS_DIM,
+};
+pub use score::Score;
+pub use timing::StepTimings;

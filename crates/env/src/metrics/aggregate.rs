@@ -1,0 +1,151 @@
+//! The benchmark protocol's summary over episodes (reference §6.2) and the human-normalized
+//! metrics.
+//!
+//! The summary: Success Score (mean final Q), Success Score Top 5 (the mean of the five best
+//! per-activity mean Qs), and the means of simulated time, kinematic disarrangement (relative),
+//! logical disarrangement, distance navigated and displacement of hands (left + right).
+//!
+//! Human-normalized metrics: the paper reports each efficiency metric relative to the best human
+//! demonstration of the same activity and instance. The original code has no implementation
+//! (reference §6.2), so ours is: agent value / best (smallest) human value, per metric, where
+//! the demonstrations' values come from the same metric code run on their recordings. 1 is as
+//! efficient as the best person; 2 twice as wasteful. A metric whose best human value is 0 is
+//! 1 when the agent's is 0 too and undefined (`None`) otherwise.
+
+use super::EpisodeMetrics;
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+
+/// The benchmark's aggregated metrics.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Aggregate {
+    /// Episodes summarized.
+    pub episodes: usize,
+    /// Mean final Q.
+    pub success_score: f64,
+    /// Mean of the five best per-activity mean Qs (of all, with fewer than five activities).
+    pub success_score_top5: f64,
+    /// Mean simulated time, s.
+    pub simulated_time: f64,
+    /// Mean relative kinematic disarrangement, m.
+    pub kinematic_disarrangement: f64,
+    /// Mean logical disarrangement.
+    pub logical_disarrangement: f64,
+    /// Mean distance navigated, m.
+    pub distance_navigated: f64,
+    /// Mean displacement of both hands while touching or holding, m.
+    pub displacement_of_hands: f64,
+}
+
+fn mean(values: impl Iterator<Item = f64>) -> f64 {
+    let (sum, n) = values.fold((0.0, 0usize), |(s, n), v| (s + v, n + 1));
+    if n == 0 { 0.0 } else { sum / n as f64 }
+}
+
+/// Summarizes episodes, each with its activity's name, as the benchmark protocol does.
+pub fn aggregate(episodes: &[(String, EpisodeMetrics)]) -> Aggregate {
+    let mut by_activity: BTreeMap<&str, Vec<f64>> = BTreeMap::new();
+    for (activity, m) in episodes {
+        by_activity.entry(activity).or_default().push(m.q_final);
+    }
+    let mut activity_means: Vec<f64> = by_activity
+        .values()
+        .map(|qs| mean(qs.iter().copied()))
+        .collect();
+    activity_means.sort_by(|a, b| b.total_cmp(a));
+    let all = || episodes.iter().map(|(_, m)| m);
+    Aggregate {
+        episodes: episodes.len(),
+        success_score: mean(all().map(|m| m.q_final)),
+        success_score_top5: mean(activity_means.iter().take(5).copied()),
+        simulated_time: mean(all().map(|m| m.sim_time_s)),
+        kinematic_disarrangement: mean(all().map(|m| m.kinematic_disarrangement)),
+        logical_disarrangement: mean(all().map(|m| f64::from(m.logical_disarrangement))),
+        distance_navigated: mean(all().map(|m| m.distance_navigated)),
+        displacement_of_hands: mean(
+            all().map(|m| m.hand_displacement_left + m.hand_displacement_right),
+        ),
+    }
+}
+
+/// The efficiency metrics relative to the best person (see the module docs).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Normalized {
+    /// Simulated time.
+    pub simulated_time: Option<f64>,
+    /// Kinematic disarrangement.
+    pub kinematic_disarrangement: Option<f64>,
+    /// Logical disarrangement.
+    pub logical_disarrangement: Option<f64>,
+    /// Distance navigated.
+    pub distance_navigated: Option<f64>,
+    /// Displacement of hands.
+    pub displacement_of_hands: Option<f64>,
+}
+
+/// The five efficiency metrics of an episode, in [`Normalized`]'s order.
+fn efficiency(m: &EpisodeMetrics) -> [f64; 5] {
+    [
+        m.sim_time_s,
+        m.kinematic_disarrangement,
+        f64::from(m.logical_disarrangement),
+        m.distance_navigated,
+        m.hand_displacement_left + m.hand_displacement_right,
+    ]
+}
+
+/// The best (smallest) human value of each efficiency metric, per activity and instance.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct HumanReference {
+    /// Activity → instance → the best values.
+    best: BTreeMap<String, BTreeMap<String, [f64; 5]>>,
+}
+
+impl HumanReference {
+    /// An empty reference.
+    pub fn new() -> HumanReference {
+        HumanReference::default()
+    }
+
+    /// Adds a human demonstration's metrics for an activity and instance (any label: a saved
+    /// instance's file name, the original's instance id).
+    pub fn add(&mut self, activity: &str, instance: &str, human: &EpisodeMetrics) {
+        let values = efficiency(human);
+        self.best
+            .entry(activity.to_string())
+            .or_default()
+            .entry(instance.to_string())
+            .and_modify(|best| {
+                for (b, v) in best.iter_mut().zip(values) {
+                    *b = b.min(v);
+                }
+            })
+            .or_insert(values);
+    }
+
+    /// An agent's episode relative to the best person on the same activity and instance;
+    /// `None` without a demonstration of it.
+    pub fn normalize(
+        &self,
+        activity: &str,
+        instance: &str,
+        agent: &EpisodeMetrics,
+    ) -> Option<Normalized> {
+        let best = self.best.get(activity)?.get(instance)?;
+        let ratio = |k: usize| {
+            let (a, h) = (efficiency(agent)[k], best[k]);
+            match (a, h) {
+                (a, h) if h > 0.0 => Some(a / h),
+                (a, _) if a == 0.0 => Some(1.0),
+                _ => None,
+            }
+        };
+        Some(Normalized {
+            simulated_time: ratio(0),
+            kinematic_disarrangement: ratio(1),
+            logical_disarrangement: ratio(2),
+            distance_navigated: ratio(3),
+            displacement_of_hands: ratio(4),
+        })
+    }
+}

@@ -1,0 +1,94 @@
+//! Kinematic disarrangement (reference §6.1): how far the home's objects moved.
+//!
+//! Every movable object but the robot's parts and the agent's stand-in is followed by the
+//! position of its origin. Per step: the sum of the distances moved. Integrated: the sum of the
+//! per-step values. Relative (what the benchmark reports): the sum of the distances between
+//! where each object is now and where it was at the start. A sliced object's halves take over
+//! from the whole: each half's first step is measured from the whole's last position and its
+//! relative distance from the whole's start; the whole then drops out.
+
+use behavior_sim::{ObjectId, World};
+use rapier3d::math::Vector;
+
+/// One followed object: where it started and where it was last step.
+#[derive(Clone, Debug)]
+struct Followed {
+    id: ObjectId,
+    start: Vector,
+    last: Vector,
+}
+
+/// The running kinematic disarrangement of an episode.
+#[derive(Clone, Debug)]
+pub(crate) struct Kinematic {
+    followed: Vec<Followed>,
+    /// Objects the world had when last looked at (new ones may be halves).
+    seen: usize,
+    pub(crate) integrated: f64,
+    pub(crate) last_step: f64,
+}
+
+impl Kinematic {
+    /// Starts following every movable object of `world` but `ignored`.
+    pub(crate) fn start(world: &World, ignored: &[ObjectId]) -> Kinematic {
+        let followed = world
+            .objects()
+            .filter(|(id, o)| !o.is_fixed() && o.is_present() && !ignored.contains(id))
+            .map(|(id, _)| {
+                let at = world.pose(id).translation;
+                Followed {
+                    id,
+                    start: at,
+                    last: at,
+                }
+            })
+            .collect();
+        Kinematic {
+            followed,
+            seen: world.objects().len(),
+            integrated: 0.0,
+            last_step: 0.0,
+        }
+    }
+
+    /// Measures one step; returns its disarrangement, m.
+    pub(crate) fn step(&mut self, world: &World) -> f64 {
+        self.adopt_halves(world);
+        let mut moved = 0.0;
+        for f in &mut self.followed {
+            let now = world.pose(f.id).translation;
+            moved += f64::from((now - f.last).length());
+            f.last = now;
+        }
+        self.integrated += moved;
+        self.last_step = moved;
+        moved
+    }
+
+    /// The relative disarrangement: Σ ‖now − start‖, m.
+    pub(crate) fn relative(&self) -> f64 {
+        self.followed
+            .iter()
+            .map(|f| f64::from((f.last - f.start).length()))
+            .sum()
+    }
+
+    /// Objects added since the last look that are halves of a followed whole replace it.
+    fn adopt_halves(&mut self, world: &World) {
+        let count = world.objects().len();
+        if count == self.seen {
+            return;
+        }
+        self.seen = count;
+        let mut followed = Vec::with_capacity(self.followed.len() + 2);
+        for f in self.followed.drain(..) {
+            match world.halves(f.id) {
+                Some(halves) if !world.object(f.id).is_present() => {
+                    followed.extend(halves.map(|id| Followed { id, ..f }));
+                }
+                _ => followed.push(f),
+            }
+        }
+        self.followed = followed;
+    }
+}

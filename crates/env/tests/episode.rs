@@ -1,0 +1,44 @@
+//! Episodes as a user runs them: reset, step, observations, reward, termination, bad actions.
+
+mod common;
+
+use behavior_env::{EnvError, TASK_OBS_DIM};
+
+#[test]
+fn a_reset_puts_the_robot_where_the_agent_stood_and_observes() {
+    let mut env = common::env("bringing_in_wood");
+    let (obs, info) = env.reset(3).unwrap();
+    assert_eq!(obs.proprioception.len(), 22);
+    assert_eq!(obs.task_obs.len(), TASK_OBS_DIM);
+    // Three planks, valid, and the rest of the slots empty.
+    let valid: Vec<f32> = (0..50).map(|k| obs.task_obs[6 + 9 * k]).collect();
+    assert_eq!(&valid[..3], &[1.0; 3]);
+    assert!(valid[3..].iter().all(|&v| v == 0.0));
+    assert_eq!(info.steps, 0);
+    assert!(!info.score.success);
+    let world = env.world().unwrap();
+    let stand_in = world.object_named("agent.n.01_1").unwrap();
+    assert!(!world.object(stand_in).is_present(), "the robot replaced the stand-in");
+}
+
+#[test]
+fn bad_actions_are_refused_and_change_nothing() {
+    let mut env = common::env("bringing_in_wood");
+    assert!(matches!(env.step(&[0.0; 26]), Err(EnvError::NotReset)));
+    env.reset(1).unwrap();
+    let before = env.checkpoint().unwrap();
+    let pose = |env: &behavior_env::Env| env.robot().unwrap().base_pose(env.world().unwrap());
+    let start = pose(&env);
+    for bad in [vec![0.0; 25], vec![f32::NAN; 26], {
+        let mut v = vec![0.0; 26];
+        v[3] = f32::INFINITY;
+        v
+    }] {
+        let err = env.step(&bad).unwrap_err();
+        assert!(matches!(err, EnvError::Action(_)), "{err}");
+    }
+    assert_eq!(env.steps(), 0);
+    assert_eq!(pose(&env), start);
+    env.restore(&before);
+    assert_eq!(env.steps(), 0);
+}

@@ -159,9 +159,13 @@ impl Env {
             self.config.action_space,
         )?;
         world.settle(SETTLE_STEPS);
-        let mut bindings: Vec<Option<ObjectId>> = loaded.bindings.iter().copied().map(Some).collect();
+        let mut bindings: Vec<Option<ObjectId>> =
+            loaded.bindings.iter().copied().map(Some).collect();
         let base = robot.objects()[0];
-        for b in bindings.iter_mut().filter(|b| **b == agent && agent.is_some()) {
+        for b in bindings
+            .iter_mut()
+            .filter(|b| **b == agent && agent.is_some())
+        {
             *b = Some(base);
         }
         let mut ignored = robot.objects();
@@ -239,9 +243,7 @@ impl Env {
             }
         };
         episode.steps += 1;
-        episode
-            .tracker
-            .step(&episode.world, &episode.robot, &score);
+        episode.tracker.step(&episode.world, &episode.robot, &score);
         let terminated = score.success;
         let truncated = !terminated && episode.steps >= self.config.max_steps;
         episode.over = terminated || truncated;
@@ -252,7 +254,8 @@ impl Env {
         };
         let scored = Instant::now();
         let obs = self.observe();
-        self.timings.add(physics, rules, scored.elapsed(), start.elapsed());
+        self.timings
+            .add(physics, rules, scored.elapsed(), start.elapsed());
         Ok(Step {
             obs,
             reward,

@@ -59,7 +59,10 @@ pub(crate) fn embody(
         Some(id) => {
             let aabb = world.aabb(id);
             let (yaw, _, _) = world.pose(id).rotation.to_euler(EulerRot::ZYX);
-            (Vector::new(aabb.center().x, aabb.center().y, aabb.mins.z), yaw)
+            (
+                Vector::new(aabb.center().x, aabb.center().y, aabb.mins.z),
+                yaw,
+            )
         }
         None => (first_floor_centre(world), 0.0),
     };

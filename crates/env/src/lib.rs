@@ -41,6 +41,7 @@ mod env;
 mod episode;
 pub mod metrics;
 mod observation;
+pub mod record;
 mod score;
 mod timing;
 

@@ -21,7 +21,13 @@ pub struct StepTimings {
 }
 
 impl StepTimings {
-    pub(crate) fn add(&mut self, physics: Duration, rules: Duration, scoring: Duration, total: Duration) {
+    pub(crate) fn add(
+        &mut self,
+        physics: Duration,
+        rules: Duration,
+        scoring: Duration,
+        total: Duration,
+    ) {
         self.steps += 1;
         self.physics += physics;
         self.rules += rules;

@@ -90,7 +90,12 @@ pub(crate) struct Tracker {
 impl Tracker {
     /// Starts measuring; `ignored` are the objects the home's metrics leave out (the robot's
     /// parts, the agent's stand-in).
-    pub(crate) fn start(world: &World, robot: &Robot, ignored: &[ObjectId], score: &Score) -> Tracker {
+    pub(crate) fn start(
+        world: &World,
+        robot: &Robot,
+        ignored: &[ObjectId],
+        score: &Score,
+    ) -> Tracker {
         Tracker {
             steps: 0,
             q: score.q,

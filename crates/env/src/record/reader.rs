@@ -1,0 +1,206 @@
+//! Reading a recording back: the header, then one frame per step, as far as the file is whole.
+
+use super::{FORMAT_VERSION, Header};
+use mcap::read::{MessageStream, Options};
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+
+/// Why a recording cannot be read at all.
+#[derive(Debug, thiserror::Error)]
+pub enum ReadError {
+    /// The file could not be read.
+    #[error("cannot read {path}: {source}")]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// It is not an MCAP file, or its start is damaged.
+    #[error("{path} is not a readable MCAP recording: {reason}")]
+    NotMcap {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        reason: String,
+    },
+    /// It has no header message, or one this version cannot read.
+    #[error("{path}: {reason}")]
+    BadHeader {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        reason: String,
+    },
+}
+
+/// One recorded step.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Frame {
+    /// The step (1 for the first action).
+    pub step: u32,
+    /// The action taken.
+    pub action: Vec<f32>,
+    /// Q after it, if recorded.
+    pub q: Option<f64>,
+    /// Every object's pose after it, if recorded.
+    pub poses: Option<Vec<[f32; 7]>>,
+}
+
+/// A recording as read.
+#[derive(Clone, Debug)]
+pub struct Recording {
+    /// The header.
+    pub header: Header,
+    /// Q at the start (step 0).
+    pub start_q: Option<f64>,
+    /// The steps, in order.
+    pub frames: Vec<Frame>,
+    /// The checkpoints: (step, digest).
+    pub checkpoints: Vec<(u32, String)>,
+    /// Where and why reading stopped early, for a damaged or cut file; the frames before it
+    /// are usable.
+    pub damage: Option<String>,
+}
+
+#[derive(Deserialize)]
+struct ActionMsg {
+    step: u32,
+    values: Vec<f32>,
+}
+
+#[derive(Deserialize)]
+struct PosesMsg {
+    step: u32,
+    poses: Vec<[f32; 7]>,
+}
+
+#[derive(Deserialize)]
+struct ScoreMsg {
+    step: u32,
+    q: f64,
+}
+
+#[derive(Deserialize)]
+struct CheckpointMsg {
+    step: u32,
+    digest: String,
+}
+
+/// Reads a recording. A file cut or damaged after its header reads up to the last whole
+/// chunk, with [`Recording::damage`] saying where it stopped.
+pub fn read(path: &Path) -> Result<Recording, ReadError> {
+    let bytes = std::fs::read(path).map_err(|source| ReadError::Io {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    let not_mcap = |reason: String| ReadError::NotMcap {
+        path: path.to_path_buf(),
+        reason,
+    };
+    let stream = MessageStream::new_with_options(&bytes, Options::IgnoreEndMagic.into())
+        .map_err(|e| not_mcap(e.to_string()))?;
+    let mut reading = Reading::default();
+    for message in stream {
+        let message = match message {
+            Ok(m) => m,
+            Err(e) => {
+                reading.damage = Some(format!(
+                    "the file ({} bytes) is damaged or cut after step {}: {e}",
+                    bytes.len(),
+                    reading.last_step(),
+                ));
+                break;
+            }
+        };
+        if let Err(reason) = reading.take(&message.channel.topic, &message.data) {
+            reading.damage = Some(format!("after step {}: {reason}", reading.last_step()));
+            break;
+        }
+    }
+    reading.finish(path)
+}
+
+/// What has been read so far.
+#[derive(Default)]
+struct Reading {
+    header: Option<Header>,
+    start_q: Option<f64>,
+    frames: Vec<Frame>,
+    checkpoints: Vec<(u32, String)>,
+    damage: Option<String>,
+}
+
+impl Reading {
+    fn last_step(&self) -> u32 {
+        self.frames.last().map_or(0, |f| f.step)
+    }
+
+    /// Takes one message; an error says why it makes no sense.
+    fn take(&mut self, topic: &str, data: &[u8]) -> Result<(), String> {
+        let bad = |e: serde_json::Error| format!("a bad {topic} message: {e}");
+        match topic {
+            "/header" => {
+                let header: Header = serde_json::from_slice(data).map_err(bad)?;
+                if header.format_version != FORMAT_VERSION {
+                    return Err(format!(
+                        "format version {} (this build reads {FORMAT_VERSION})",
+                        header.format_version
+                    ));
+                }
+                self.header = Some(header);
+            }
+            "/action" => {
+                let m: ActionMsg = serde_json::from_slice(data).map_err(bad)?;
+                if m.step != self.last_step() + 1 {
+                    return Err(format!("action of step {} out of order", m.step));
+                }
+                self.frames.push(Frame {
+                    step: m.step,
+                    action: m.values,
+                    ..Frame::default()
+                });
+            }
+            "/poses" => {
+                let m: PosesMsg = serde_json::from_slice(data).map_err(bad)?;
+                if let Some(f) = self.frames.last_mut().filter(|f| f.step == m.step) {
+                    f.poses = Some(m.poses);
+                }
+            }
+            "/score" => {
+                let m: ScoreMsg = serde_json::from_slice(data).map_err(bad)?;
+                match self.frames.last_mut().filter(|f| f.step == m.step) {
+                    Some(f) => f.q = Some(m.q),
+                    None if m.step == 0 => self.start_q = Some(m.q),
+                    None => {}
+                }
+            }
+            "/checkpoint" => {
+                let m: CheckpointMsg = serde_json::from_slice(data).map_err(bad)?;
+                self.checkpoints.push((m.step, m.digest));
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
+    fn finish(self, path: &Path) -> Result<Recording, ReadError> {
+        let Some(header) = self.header else {
+            let reason = match self.damage {
+                Some(damage) => format!("no readable header: {damage}"),
+                None => "no header message: not a BEHAVIOR recording".to_string(),
+            };
+            return Err(ReadError::BadHeader {
+                path: path.to_path_buf(),
+                reason,
+            });
+        };
+        Ok(Recording {
+            header,
+            start_q: self.start_q,
+            frames: self.frames,
+            checkpoints: self.checkpoints,
+            damage: self.damage,
+        })
+    }
+}

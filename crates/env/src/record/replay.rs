@@ -1,0 +1,128 @@
+//! Replay: the episode begun again from the header, every recorded action taken again, the
+//! state compared with the recording at every checkpoint.
+
+use super::reader::Recording;
+use super::state_digest;
+use super::writer::space_name;
+use crate::config::{EnvConfig, Instances};
+use crate::env::{Env, EnvError};
+use crate::episode::Start;
+use behavior_robots::{ActionSpace, RobotKind};
+use behavior_sim::Substeps;
+use serde::Serialize;
+
+/// Why a recording could not be replayed.
+#[derive(Debug, thiserror::Error)]
+pub enum ReplayError {
+    /// The header names something this build does not have.
+    #[error("the recording's {field} `{value}` is not one this build knows")]
+    Unknown {
+        /// Which header field.
+        field: &'static str,
+        /// Its value.
+        value: String,
+    },
+    /// The environment refused the start or a step.
+    #[error("replaying step {step}: {source}")]
+    Env {
+        /// The step (0: the reset).
+        step: u32,
+        /// Why.
+        source: EnvError,
+    },
+}
+
+/// What a replay found.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct ReplayReport {
+    /// Steps replayed.
+    pub frames: u32,
+    /// Checkpoints compared.
+    pub checkpoints: u32,
+    /// Whether every compared checkpoint matched bit for bit.
+    pub identical: bool,
+    /// The first checkpoint step that differed.
+    pub first_difference: Option<u32>,
+    /// Q at the end of the replay.
+    pub q_final: f64,
+}
+
+impl Recording {
+    /// The environment the recording was made in, for its activity (parsed from
+    /// [`super::Header::definition`] by the caller, who has the taxonomy).
+    pub fn config(
+        &self,
+        activity: std::sync::Arc<behavior_bddl::Activity>,
+        taxonomy: std::sync::Arc<behavior_bddl::Taxonomy>,
+    ) -> Result<EnvConfig, ReplayError> {
+        let h = &self.header;
+        let unknown = |field, value: &str| ReplayError::Unknown {
+            field,
+            value: value.to_string(),
+        };
+        let robot = RobotKind::from_name(&h.robot).ok_or_else(|| unknown("robot", &h.robot))?;
+        let action_space = [
+            ActionSpace::Full,
+            ActionSpace::Navigation,
+            ActionSpace::MobileManipulation,
+            ActionSpace::TabletopManipulation,
+        ]
+        .into_iter()
+        .find(|s| space_name(*s) == h.action_space)
+        .ok_or_else(|| unknown("action space", &h.action_space))?;
+        let physics = [Substeps::Hz300, Substeps::Hz120]
+            .into_iter()
+            .find(|s| s.count() * h.action_hz == h.physics_hz && h.action_hz == 30)
+            .ok_or_else(|| unknown("physics rate", &h.physics_hz.to_string()))?;
+        let mut config = EnvConfig::new(activity, taxonomy, Vec::new());
+        config.instances = Instances::Saved(vec![h.instance.clone()]);
+        config.robot = robot;
+        config.action_space = action_space;
+        config.physics = physics;
+        config.max_steps = h.max_steps;
+        Ok(config)
+    }
+}
+
+/// Replays a recording in `config` (see [`Recording::config`]), comparing the state digest at
+/// every checkpoint.
+pub fn replay(recording: &Recording, config: EnvConfig) -> Result<ReplayReport, ReplayError> {
+    let mut env = Env::new(config);
+    let start = Start {
+        seed: recording.header.seed,
+        instance: recording.header.instance.clone(),
+    };
+    env.reset_to(start)
+        .map_err(|source| ReplayError::Env { step: 0, source })?;
+    let mut report = ReplayReport {
+        identical: true,
+        ..ReplayReport::default()
+    };
+    let mut checkpoints = recording.checkpoints.iter().peekable();
+    let mut check = |env: &Env, report: &mut ReplayReport| {
+        while let Some((step, digest)) = checkpoints.next_if(|(s, _)| *s <= env.steps()) {
+            if *step != env.steps() {
+                continue;
+            }
+            let (Some(world), Some(robot)) = (env.world(), env.robot()) else {
+                return;
+            };
+            report.checkpoints += 1;
+            if state_digest(world, robot, env.steps()) != *digest && report.identical {
+                report.identical = false;
+                report.first_difference = Some(*step);
+            }
+        }
+    };
+    check(&env, &mut report);
+    for frame in &recording.frames {
+        env.step(&frame.action).map_err(|source| ReplayError::Env {
+            step: frame.step,
+            source,
+        })?;
+        report.frames += 1;
+        check(&env, &mut report);
+    }
+    report.q_final = env.score().map_or(0.0, |s| s.q);
+    Ok(report)
+}

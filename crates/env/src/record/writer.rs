@@ -1,0 +1,221 @@
+//! Writing a recording as the episode runs (see the module docs for the layout).
+
+use super::{CHUNK_BYTES, FORMAT_VERSION, Header, state_digest};
+use crate::env::Env;
+use crate::metrics::ACTION_HZ;
+use behavior_robots::ActionSpace;
+use mcap::records::MessageHeader;
+use mcap::{Compression, WriteOptions, Writer};
+use serde::Serialize;
+use serde_json::json;
+use std::collections::BTreeMap;
+use std::fs::File;
+use std::path::{Path, PathBuf};
+
+/// Why a recording could not be written.
+#[derive(Debug, thiserror::Error)]
+pub enum RecordError {
+    /// The file could not be created or written.
+    #[error("cannot write the recording {path}: {source}")]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// The MCAP writer refused.
+    #[error("cannot write the recording {path}: {source}")]
+    Mcap {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        source: mcap::McapError,
+    },
+    /// There is no episode to record: reset the environment first.
+    #[error("nothing to record: reset the environment first")]
+    NoEpisode,
+}
+
+/// The name of an action space in files and on the command line.
+pub(crate) fn space_name(space: ActionSpace) -> &'static str {
+    match space {
+        ActionSpace::Full => "full",
+        ActionSpace::Navigation => "navigation",
+        ActionSpace::MobileManipulation => "mobile_manipulation",
+        ActionSpace::TabletopManipulation => "tabletop_manipulation",
+    }
+}
+
+/// The topics, in the order their channels are added.
+const TOPICS: [&str; 5] = ["/header", "/action", "/poses", "/score", "/checkpoint"];
+
+/// An episode being recorded.
+pub struct Recorder {
+    writer: Writer<File>,
+    path: PathBuf,
+    channels: [u16; 5],
+    sequence: u32,
+    checkpoint_every: u32,
+}
+
+impl Recorder {
+    /// Starts a recording of the episode `env` has just reset: writes the header, the starting
+    /// poses and the first checkpoint. `definition` is the activity's BDDL text.
+    pub fn create(
+        path: &Path,
+        env: &Env,
+        definition: &str,
+        checkpoint_every: u32,
+    ) -> Result<Recorder, RecordError> {
+        let (Some(start), Some(world)) = (env.start(), env.world()) else {
+            return Err(RecordError::NoEpisode);
+        };
+        let io = |source| RecordError::Io {
+            path: path.to_path_buf(),
+            source,
+        };
+        let file = File::create(path).map_err(io)?;
+        let mcap = |source| RecordError::Mcap {
+            path: path.to_path_buf(),
+            source,
+        };
+        let options = WriteOptions::new()
+            .compression(Some(Compression::Zstd))
+            .chunk_size(Some(CHUNK_BYTES))
+            .profile("behavior");
+        let mut writer = options.create(file).map_err(mcap)?;
+        let mut channels = [0; 5];
+        for (k, topic) in TOPICS.iter().enumerate() {
+            let schema = writer
+                .add_schema(topic, "jsonschema", schema_of(topic).as_bytes())
+                .map_err(mcap)?;
+            channels[k] = writer
+                .add_channel(schema, topic, "json", &BTreeMap::new())
+                .map_err(mcap)?;
+        }
+        let config = env.config();
+        let header = Header {
+            format_version: FORMAT_VERSION,
+            crate_version: env!("CARGO_PKG_VERSION").to_string(),
+            activity: config.activity.name.clone(),
+            definition: definition.to_string(),
+            scene: start.instance.scene.name.clone(),
+            seed: start.seed,
+            robot: config.robot.name().to_string(),
+            action_space: space_name(config.action_space).to_string(),
+            physics_hz: config.physics.count() * ACTION_HZ,
+            action_hz: ACTION_HZ,
+            max_steps: config.max_steps,
+            checkpoint_every: checkpoint_every.max(1),
+            instance: start.instance.clone(),
+            objects: world.objects().map(|(_, o)| o.name.clone()).collect(),
+        };
+        let mut recorder = Recorder {
+            writer,
+            path: path.to_path_buf(),
+            channels,
+            sequence: 0,
+            checkpoint_every: checkpoint_every.max(1),
+        };
+        recorder.write(0, 0, &header)?;
+        recorder.write_state(env)?;
+        Ok(recorder)
+    }
+
+    /// Records the step `env` has just taken with `action`.
+    pub fn record(&mut self, env: &Env, action: &[f32]) -> Result<(), RecordError> {
+        let step = env.steps();
+        self.write(1, step, &json!({ "step": step, "values": action }))?;
+        self.write_state(env)
+    }
+
+    /// Closes the file with MCAP's summary and index.
+    pub fn finish(mut self) -> Result<(), RecordError> {
+        let path = self.path.clone();
+        self.writer
+            .finish()
+            .map(|_| ())
+            .map_err(|source| RecordError::Mcap { path, source })
+    }
+
+    /// Poses and score after a step (or the reset), and a checkpoint when one is due.
+    fn write_state(&mut self, env: &Env) -> Result<(), RecordError> {
+        let (Some(world), Some(robot), Some(score)) = (env.world(), env.robot(), env.score())
+        else {
+            return Err(RecordError::NoEpisode);
+        };
+        let step = env.steps();
+        let poses: Vec<[f32; 7]> = world
+            .objects()
+            .map(|(id, _)| {
+                let p = world.pose(id);
+                let (t, r) = (p.translation, p.rotation);
+                [t.x, t.y, t.z, r.x, r.y, r.z, r.w]
+            })
+            .collect();
+        self.write(2, step, &json!({ "step": step, "poses": poses }))?;
+        let score = json!({
+            "step": step,
+            "q": score.q,
+            "success": score.success,
+            "conjuncts": score.conjuncts,
+        });
+        self.write(3, step, &score)?;
+        if step % self.checkpoint_every == 0 {
+            let digest = state_digest(world, robot, step);
+            self.write(4, step, &json!({ "step": step, "digest": digest }))?;
+            self.writer.flush().map_err(|source| RecordError::Mcap {
+                path: self.path.clone(),
+                source,
+            })?;
+        }
+        Ok(())
+    }
+
+    fn write(
+        &mut self,
+        channel: usize,
+        step: u32,
+        value: &impl Serialize,
+    ) -> Result<(), RecordError> {
+        let data = serde_json::to_vec(value).map_err(|e| RecordError::Io {
+            path: self.path.clone(),
+            source: e.into(),
+        })?;
+        let time = u64::from(step) * 1_000_000_000 / u64::from(ACTION_HZ);
+        let header = MessageHeader {
+            channel_id: self.channels[channel],
+            sequence: self.sequence,
+            log_time: time,
+            publish_time: time,
+        };
+        self.sequence += 1;
+        self.writer
+            .write_to_known_channel(&header, &data)
+            .map_err(|source| RecordError::Mcap {
+                path: self.path.clone(),
+                source,
+            })
+    }
+}
+
+/// The JSON Schema of a topic's messages.
+fn schema_of(topic: &str) -> String {
+    let number = json!({ "type": "number" });
+    let step = json!({ "type": "integer", "minimum": 0 });
+    let schema = match topic {
+        "/header" => json!({ "type": "object", "description": "behavior_env::record::Header" }),
+        "/action" => json!({ "type": "object", "properties": {
+            "step": step, "values": { "type": "array", "items": number } } }),
+        "/poses" => json!({ "type": "object", "properties": {
+            "step": step, "poses": { "type": "array", "items": {
+                "type": "array", "items": number, "minItems": 7, "maxItems": 7,
+                "description": "x, y, z (m), qx, qy, qz, qw" } } } }),
+        "/score" => json!({ "type": "object", "properties": {
+            "step": step, "q": number, "success": { "type": "boolean" },
+            "conjuncts": { "type": "array", "items": { "type": "boolean" } } } }),
+        _ => json!({ "type": "object", "properties": {
+            "step": step, "digest": { "type": "string", "description": "SHA-256, hex" } } }),
+    };
+    schema.to_string()
+}

@@ -1,0 +1,127 @@
+//! Recording and replay: a recorded episode replays bit for bit, a cut file replays up to where
+//! it was cut and says so, a file that is not a recording is refused, and an episode resumed
+//! from a checkpoint continues identically.
+
+mod common;
+
+use behavior_env::record::{Recorder, read, replay, state_digest};
+use behavior_env::{Agent, Env};
+use std::path::PathBuf;
+
+fn temp(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("behavior-env-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
+}
+
+/// Records `steps` steps of a random agent; returns the environment at the end.
+fn record(path: &PathBuf, steps: u32, every: u32) -> Env {
+    let mut env = common::env("bringing_in_wood");
+    env.reset(5).unwrap();
+    let mut recorder = Recorder::create(path, &env, "(definition text)", every).unwrap();
+    let mut agent = Agent::named("random", 5).unwrap();
+    let mut action = Vec::new();
+    for _ in 0..steps {
+        agent.act(26, &mut action);
+        env.step(&action).unwrap();
+        recorder.record(&env, &action).unwrap();
+    }
+    recorder.finish().unwrap();
+    env
+}
+
+#[test]
+fn a_recorded_episode_replays_bit_for_bit() {
+    let path = temp("whole.mcap");
+    let env = record(&path, 90, 30);
+    let recording = read(&path).unwrap();
+    assert_eq!(recording.damage, None);
+    assert_eq!(recording.frames.len(), 90);
+    assert_eq!(recording.checkpoints.len(), 4, "steps 0, 30, 60, 90");
+    let config = recording
+        .config(common::activity("bringing_in_wood"), common::taxonomy())
+        .unwrap();
+    let report = replay(&recording, config).unwrap();
+    assert_eq!((report.frames, report.checkpoints), (90, 4));
+    assert!(report.identical, "{report:?}");
+    // The recording's last checkpoint is the digest of the original run's state.
+    let (world, robot) = (env.world().unwrap(), env.robot().unwrap());
+    assert_eq!(recording.checkpoints[3].1, state_digest(world, robot, 90));
+}
+
+#[test]
+fn a_replay_notices_a_different_action() {
+    let path = temp("changed.mcap");
+    record(&path, 40, 20);
+    let mut recording = read(&path).unwrap();
+    recording.frames[25].action[0] = -recording.frames[25].action[0] + 0.5;
+    let config = recording
+        .config(common::activity("bringing_in_wood"), common::taxonomy())
+        .unwrap();
+    let report = replay(&recording, config).unwrap();
+    assert!(!report.identical);
+    assert_eq!(report.first_difference, Some(40));
+}
+
+#[test]
+fn a_cut_recording_replays_up_to_the_cut_and_says_where() {
+    let path = temp("cut.mcap");
+    record(&path, 120, 10);
+    let bytes = std::fs::read(&path).unwrap();
+    let cut = temp("cut_short.mcap");
+    std::fs::write(&cut, &bytes[..bytes.len() * 6 / 10]).unwrap();
+    let recording = read(&cut).unwrap();
+    let damage = recording.damage.clone().expect("the cut is reported");
+    assert!(damage.contains("after step"), "{damage}");
+    let frames = recording.frames.len();
+    assert!(frames > 10 && frames < 120, "{frames} frames survive");
+    let config = recording
+        .config(common::activity("bringing_in_wood"), common::taxonomy())
+        .unwrap();
+    let report = replay(&recording, config).unwrap();
+    assert!(report.identical && report.checkpoints >= 2, "{report:?}");
+}
+
+#[test]
+fn files_that_are_not_recordings_are_refused_with_a_reason() {
+    let junk = temp("junk.mcap");
+    std::fs::write(&junk, b"not an mcap file at all").unwrap();
+    let err = read(&junk).unwrap_err().to_string();
+    assert!(err.contains("junk.mcap"), "{err}");
+    let path = temp("header_only.mcap");
+    record(&path, 5, 10);
+    let bytes = std::fs::read(&path).unwrap();
+    let cut = temp("too_short.mcap");
+    std::fs::write(&cut, &bytes[..40]).unwrap();
+    let err = read(&cut).unwrap_err().to_string();
+    assert!(err.contains("header"), "{err}");
+    assert!(read(&temp("missing.mcap")).is_err());
+}
+
+#[test]
+fn an_episode_resumed_from_a_checkpoint_continues_identically() {
+    let mut env = common::env("bringing_in_wood");
+    env.reset(8).unwrap();
+    let mut agent = Agent::named("random", 8).unwrap();
+    let actions: Vec<Vec<f32>> = (0..60)
+        .map(|_| {
+            let mut a = Vec::new();
+            agent.act(26, &mut a);
+            a
+        })
+        .collect();
+    for a in &actions[..20] {
+        env.step(a).unwrap();
+    }
+    let checkpoint = env.checkpoint().unwrap();
+    let digest = |env: &Env| state_digest(env.world().unwrap(), env.robot().unwrap(), env.steps());
+    for a in &actions[20..] {
+        env.step(a).unwrap();
+    }
+    let first = (digest(&env), env.metrics().unwrap());
+    env.restore(&checkpoint);
+    for a in &actions[20..] {
+        env.step(a).unwrap();
+    }
+    assert_eq!((digest(&env), env.metrics().unwrap()), first);
+}

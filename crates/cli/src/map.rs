@@ -161,7 +161,7 @@ fn outline(img: &mut RgbImage, (x0, y0): (f32, f32), (x1, y1): (f32, f32), color
 
 /// ASCII text centred on (cx, cy), with 8×8 glyphs scaled by `size`, on a white band so it reads
 /// over outlines.
-fn text(img: &mut RgbImage, s: &str, cx: f32, cy: f32, size: u32, color: Rgb<u8>) {
+pub(crate) fn text(img: &mut RgbImage, s: &str, cx: f32, cy: f32, size: u32, color: Rgb<u8>) {
     let glyph = 8 * size;
     let width = s.chars().count() as u32 * glyph;
     let x0 = cx as i64 - i64::from(width / 2);

@@ -39,9 +39,14 @@
 mod action;
 mod body;
 mod embodiment;
+mod fetch;
+mod fetch_action;
+mod fetch_body;
+mod fetch_proprioception;
 mod follow;
 mod grasp;
 mod hand;
+mod ik;
 mod motion;
 mod proprioception;
 mod relative;
@@ -50,11 +55,25 @@ mod robot;
 pub use action::{ACTION_DIM, ACTION_SCALE, Action, ActionError, ActionSpace};
 pub use body::{BODY_HEIGHT, BODY_LENGTH, BODY_MASS, BODY_RADIUS, EYE_REACH, HAND_REACH};
 pub use embodiment::{Robot, RobotKind, TrackedPart};
+pub use fetch::{
+    ARM_GAIN, Fetch, FetchParts, WORKSPACE_CENTRE, WORKSPACE_HEIGHT, WORKSPACE_RADIUS,
+};
+pub use fetch_action::{
+    EEF_STEP, EEF_TURN, FETCH_ACTION_DIM, FetchAction, HEAD_SPEED, MAX_ANGULAR_SPEED,
+    MAX_LINEAR_SPEED,
+};
+pub use fetch_body::{
+    BASE_RADIUS, CAMERA_OFFSET, DIAGONAL30, FETCH_FINGER_MASS, FETCH_JOINTS, FETCH_LINKS,
+    FETCH_MASS, FINGER_OPEN, FetchJoint, FetchJoints, FetchLink, GRIPPER_CENTRE, GRIPPER_FRICTION,
+    GRIPPER_OFFSET, JointInfo, START_TILT, START_TORSO, WHEEL_RADIUS, WHEEL_SEPARATION, link_mass,
+};
+pub use fetch_proprioception::FetchProprioception;
 pub use grasp::GraspRules;
 pub use hand::{
     FINGER_CLOSED, FINGER_MASS, FINGER_TORQUE, FINGERS, HAND_FRICTION, PALM_MASS, Side,
     THUMB_CLOSED,
 };
+pub use ik::{IK_JOINTS, IkError, IkSolver};
 pub use proprioception::{LocalPose, Proprioception};
 pub use relative::{EYE_FOV, REACH_DISTANCE};
 pub use robot::{BehaviorRobot, RobotError, RobotParts};

@@ -8,14 +8,14 @@ use crate::fetch_body::{
 };
 use crate::fetch_proprioception::FetchProprioception;
 use crate::grasp::{GraspRules, Release};
-use crate::ik::{IkError, IkSolver};
+use crate::ik::{IkError, IkSolver, rotation_error};
 use crate::motion::Blocker;
 use crate::proprioception::LocalPose;
 use crate::relative;
 use crate::robot::{RobotError, pose_ok};
 use behavior_sim::{
     AttachmentId, AttachmentSpec, BodyRef, Drive, JointState, ObjectId, Primitive, QueryFilter,
-    STEP_SECONDS, StepHooks, World, WorldError, groups,
+    STEP_SECONDS, StepHooks, Velocity, World, WorldError, groups,
 };
 use rapier3d::glamx::EulerRot;
 use rapier3d::math::{Pose, Rotation, Vector};
@@ -85,7 +85,7 @@ struct Config {
 /// parallel gripper, driven by an 11-d [`FetchAction`] whose end-effector part goes through
 /// inverse kinematics ([`IkSolver`]), holding things by assisted grasping ([`GraspRules`]).
 ///
-/// **Body model.** Every link is a kinematic body, placed each substep where the joint
+/// **Body model.** Every link is a kinematic body, moved each substep to where the joint
 /// positions put it (forward kinematics from the URDF's joint table, `fetch_body.rs`):
 /// - The base drives as a unicycle at the commanded (v, ω), within the wheels' 17.4 rad/s, and
 ///   stays upright on the floor. The original's base rolls on simulated wheels; ours goes
@@ -102,9 +102,16 @@ struct Config {
 ///   with the URDF's 60 N, so they close on what they meet and yield, and a body they both
 ///   touch can be grasped ([`Fetch::holding`]).
 ///
-/// Measured (`tests/timing.rs`): a kinematic arm keeps the robot out of the solver's island —
-/// an action step costs what the scene costs plus microseconds for the robot, where a simulated
-/// 9-link arm costs 0.65–3 ms (DESIGN.md §4).
+/// Why velocity-driven kinematic bodies, each given each substep the velocity that lands it on
+/// its pose: rapier derives a position-driven body's velocity from its target and its pose
+/// through a product that is not exactly the identity once the body is turned, so a turned
+/// position-driven body never has exactly zero velocity and never sleeps (measured: a
+/// BehaviorRobot that has turned away from the origin idles at ≈ 390 µs per step instead of
+/// 0.3). Ours are stopped at exactly zero and sleep.
+///
+/// Measured (`tests/timing.rs`, dev profile, a table with 20 objects, 10 × 1/300 s): 0.2 µs per
+/// step standing still, ≈ 0.25 ms driving, ≈ 0.45 ms moving the arm — a simulated 9-link arm
+/// costs 0.65–3 ms driving (DESIGN.md §4).
 ///
 /// **State.** As the BehaviorRobot's: what it was told lives here, the rest in the world;
 /// clone it with [`World::snapshot`] and the pair continues bit-identically. Step the world with
@@ -130,6 +137,8 @@ pub struct Fetch {
     pending: FetchAction,
     /// Why the last end-effector command could not be followed exactly.
     ik_error: Option<IkError>,
+    /// Whether the kinematic parts have a velocity set.
+    moving: bool,
     ik: IkSolver,
     rules: GraspRules,
 }
@@ -168,6 +177,7 @@ impl Fetch {
             releases: Vec::new(),
             pending: FetchAction::ZERO,
             ik_error: None,
+            moving: false,
             ik: IkSolver::default(),
             rules,
         };
@@ -367,6 +377,17 @@ fn in_workspace(p: Vector) -> Vector {
     centre + flat + Vector::new(0.0, 0.0, z)
 }
 
+/// The velocity that takes a link from `now` to `target` in one substep of `dt`, as the
+/// physics integrates a body: a turn about its centre of mass, then the centre's motion.
+fn velocity_to(now: Pose, target: Pose, link: FetchLink, dt: f32) -> Velocity {
+    let centre = link_centre(link);
+    let turn = rotation_error(now.rotation, target.rotation);
+    Velocity {
+        linear: (target.transform_point(centre) - now.transform_point(centre)) / dt,
+        angular: turn / dt,
+    }
+}
+
 /// `q` moved toward `goal` for one step at `ARM_GAIN · (goal − q)`, within `max_velocity`.
 fn approach(q: f32, goal: f32, max_velocity: f32) -> f32 {
     let rate = (ARM_GAIN * (goal - q)).clamp(-max_velocity, max_velocity);
@@ -501,9 +522,19 @@ impl Fetch {
             .unwrap_or(now)
     }
 
-    /// Places every kinematic part for one substep, if any moves in this step.
+    /// Moves every kinematic part for one substep, if any moves in this step; stops them
+    /// (velocity exactly 0, so that they can sleep) in the first substep of a step without
+    /// motion.
     fn move_parts(&mut self, world: &mut World, substep: u32) {
         if self.from == self.now {
+            if self.moving {
+                for &id in &self.parts.links {
+                    let _ = world
+                        .core_mut()
+                        .set_velocity(id.into(), Velocity::default());
+                }
+                self.moving = false;
+            }
             return;
         }
         let n = world.core().substeps().count();
@@ -523,11 +554,14 @@ impl Fetch {
             }
         };
         let poses = config.joints.link_poses();
-        let core = world.core_mut();
-        for (k, &id) in self.parts.links.iter().enumerate() {
-            // Finite poses and kinematic parts: the world cannot refuse these.
-            let _ = core.set_kinematic_target(id.into(), config.base * poses[k]);
+        let dt = STEP_SECONDS / n as f32;
+        for (k, link) in FetchLink::ALL.into_iter().enumerate() {
+            let id = self.parts.link(link);
+            let velocity = velocity_to(world.pose(id), config.base * poses[k], link, dt);
+            // Finite poses make finite velocities: the world cannot refuse these.
+            let _ = world.core_mut().set_velocity(id.into(), velocity);
         }
+        self.moving = true;
     }
 
     /// Sets both finger drives toward `target` if it changed.

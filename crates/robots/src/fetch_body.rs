@@ -322,7 +322,7 @@ impl Default for FetchJoints {
     }
 }
 
-/// Fetch's kinematic links, each a world object (see [`link_spec`]).
+/// Fetch's kinematic links, each a world object ([`crate::FetchParts`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum FetchLink {
     /// The base with the fixed part of the torso.
@@ -620,8 +620,9 @@ pub(crate) fn link_centre(link: FetchLink) -> Vector {
         / total
 }
 
-/// The spec of a kinematic link standing at `pose`: a position-driven kinematic body of the
-/// link's real mass; the gripper carries the two fingers as dynamic links.
+/// The spec of a kinematic link standing at `pose`: a velocity-driven kinematic body of the
+/// link's real mass (see `Fetch` for why not position-driven); the gripper carries the two
+/// fingers as dynamic links.
 pub(crate) fn link_spec(link: FetchLink, pose: Pose) -> ObjectSpec {
     let parts = link_parts(link);
     let total: f32 = parts.iter().map(volume).sum();
@@ -630,7 +631,7 @@ pub(crate) fn link_spec(link: FetchLink, pose: Pose) -> ObjectSpec {
         _ => [60, 80, 160],
     };
     let mut spec = ObjectSpec::new(link.name(), AGENT_SYNSET, parts)
-        .body(BodyKind::KinematicPosition)
+        .body(BodyKind::KinematicVelocity)
         .looks(colour, Material::Plastic);
     spec.pose = pose;
     spec.density = link_mass(link) / total;

@@ -4,7 +4,7 @@ use crate::action::ActionError;
 use crate::fetch_action::FetchAction;
 use crate::fetch_body::{
     FETCH_LINKS, FINGER_LINKS, FINGER_OPEN, FetchJoint, FetchJoints, FetchLink, GRIPPER_CENTRE,
-    WHEEL_RADIUS, WHEEL_SEPARATION, link_centre, link_mass, link_parts, link_spec, pad_face,
+    WHEEL_RADIUS, WHEEL_SEPARATION, blocking_parts, link_centre, link_mass, link_spec, pad_face,
 };
 use crate::fetch_proprioception::FetchProprioception;
 use crate::grasp::{GraspRules, Release};
@@ -733,7 +733,7 @@ fn blocked(blocker: &Blocker, from: &Config, to: &Config) -> bool {
     FetchLink::ALL.into_iter().enumerate().any(|(k, link)| {
         let (pa, pb) = (from.base * a[k], to.base * b[k]);
         pa != pb
-            && link_parts(link).into_iter().any(|part| {
+            && blocking_parts(link).into_iter().any(|part| {
                 let shape: (Primitive, Pose) = (part.primitive, part.offset);
                 blocker.blocked(&shape, pa, pb)
             })

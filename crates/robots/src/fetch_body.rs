@@ -599,6 +599,19 @@ fn finger_link(joint: FetchJoint, sign: f32) -> LinkSpec {
     }
 }
 
+/// The shapes that must not move into fixed bodies, in a link's frame: its parts, and for the
+/// gripper also the box the finger pads sweep over their whole travel (the fingers are dynamic
+/// links, which the kinematic palm would otherwise drive into a table).
+pub(crate) fn blocking_parts(link: FetchLink) -> Vec<Part> {
+    let mut parts = link_parts(link);
+    if link == FetchLink::Gripper {
+        let y = FINGER_OPEN + 2.0 * PAD_HALF.y;
+        let (x, z) = (PAD_HALF.x, PAD_HALF.z);
+        parts.push(cuboid([0.001 - x, -y, -z], [0.001 + x, y, z]));
+    }
+    parts
+}
+
 /// The finger links' indices in the gripper object, right then left.
 pub(crate) const FINGER_LINKS: [usize; 2] = [0, 1];
 

@@ -378,3 +378,19 @@ fn proprioception_reports_the_start_pose_and_the_arm_loads() {
     assert!(lift < -5.0, "{lift}");
     assert!(p.to_array().iter().all(|x| x.is_finite()));
 }
+
+#[test]
+fn the_table_stops_the_gripper_pressed_down_into_it() {
+    let mut world = World::default();
+    floor(&mut world);
+    table(&mut world, 0.95, 0.0);
+    let mut robot = fetch_at(&mut world, 0.0, 0.0);
+    // Straight down at full speed for three seconds: the eef starts 23 cm above the table top.
+    go(&mut world, &mut robot, act(&[(6, -1.0)]), 90);
+    let eef = robot.eef_pose(&world).translation;
+    // The fingers' pads reach 3 cm beyond the eef along its x, which points down here.
+    assert!(eef.z > 0.75 && eef.z < 0.85, "{eef:?}");
+    let gripper = robot.parts().gripper();
+    let table_top = 0.75;
+    assert!(world.aabb(gripper).mins.z > table_top - 0.01);
+}

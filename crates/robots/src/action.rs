@@ -172,7 +172,7 @@ pub enum ActionSpace {
 }
 
 impl ActionSpace {
-    /// How many values an action of this space has.
+    /// How many values a BehaviorRobot action of this space has (Fetch's: [`ActionSpace::fetch_dim`]).
     pub fn dim(self) -> usize {
         match self {
             ActionSpace::Full => ACTION_DIM,

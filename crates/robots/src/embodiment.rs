@@ -6,11 +6,14 @@
 //! where the body and hands are, what the hands hold, and the robot-relative predicates.
 
 use crate::action::{ActionError, ActionSpace};
+use crate::body::BODY_HEIGHT;
+use crate::fetch::Fetch;
+use crate::fetch_proprioception::FetchProprioception;
 use crate::hand::Side;
 use crate::proprioception::Proprioception;
 use crate::robot::{BehaviorRobot, RobotError};
 use behavior_sim::{ObjectId, StepHooks, World};
-use rapier3d::math::Pose;
+use rapier3d::math::{Pose, Rotation, Vector};
 
 /// Which embodiment.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -18,16 +21,19 @@ pub enum RobotKind {
     /// The bimanual humanoid of the VR demonstrations ([`BehaviorRobot`]).
     #[default]
     Behavior,
+    /// The Fetch mobile manipulator ([`Fetch`]).
+    Fetch,
 }
 
 impl RobotKind {
     /// Every embodiment.
-    pub const ALL: [RobotKind; 1] = [RobotKind::Behavior];
+    pub const ALL: [RobotKind; 2] = [RobotKind::Behavior, RobotKind::Fetch];
 
-    /// Its name on the command line and in files: `behavior`.
+    /// Its name on the command line and in files: `behavior` or `fetch`.
     pub fn name(self) -> &'static str {
         match self {
             RobotKind::Behavior => "behavior",
+            RobotKind::Fetch => "fetch",
         }
     }
 
@@ -54,11 +60,20 @@ pub struct TrackedPart {
 pub enum Robot {
     /// A [`BehaviorRobot`] and the space its actions come in.
     Behavior(BehaviorRobot, ActionSpace),
+    /// A [`Fetch`] and the space its actions come in.
+    Fetch(Fetch, ActionSpace),
 }
 
 impl Robot {
-    /// Adds a robot of `kind` standing at `pose` (its base on the floor below, see each
-    /// embodiment), driven through `space` (a BehaviorRobot's reduced spaces, reference §4.2).
+    /// Adds a robot of `kind` driven through `space` (the original's reduced spaces; each kind
+    /// has its own reading of them: [`ActionSpace::dim`] for a BehaviorRobot,
+    /// [`ActionSpace::fetch_dim`] for Fetch).
+    ///
+    /// `pose` is the robot's own origin, which differs by kind:
+    /// - [`RobotKind::Behavior`]: the body capsule's centre, [`BODY_HEIGHT`] above the floor;
+    /// - [`RobotKind::Fetch`]: the base's origin on the floor's top (only its yaw counts).
+    ///
+    /// [`Robot::standing_pose`] gives it for a point on the floor, so that callers need not know.
     pub fn add(
         kind: RobotKind,
         space: ActionSpace,
@@ -67,13 +82,35 @@ impl Robot {
     ) -> Result<Robot, RobotError> {
         match kind {
             RobotKind::Behavior => Ok(Robot::Behavior(BehaviorRobot::add(world, pose)?, space)),
+            RobotKind::Fetch => Ok(Robot::Fetch(Fetch::add(world, pose)?, space)),
         }
+    }
+
+    /// The pose to pass to [`Robot::add`] for a robot of `kind` standing on the floor at
+    /// `floor_point` (on the floor's top surface), facing `yaw` (rad, about z from +x).
+    pub fn standing_pose(kind: RobotKind, floor_point: Vector, yaw: f32) -> Pose {
+        let lift = match kind {
+            RobotKind::Behavior => BODY_HEIGHT,
+            RobotKind::Fetch => 0.0,
+        };
+        Pose::from_parts(
+            floor_point + Vector::new(0.0, 0.0, lift),
+            Rotation::from_rotation_z(yaw),
+        )
     }
 
     /// Which embodiment it is.
     pub fn kind(&self) -> RobotKind {
         match self {
             Robot::Behavior(..) => RobotKind::Behavior,
+            Robot::Fetch(..) => RobotKind::Fetch,
+        }
+    }
+
+    /// The action space it is driven through.
+    pub fn space(&self) -> ActionSpace {
+        match self {
+            Robot::Behavior(_, space) | Robot::Fetch(_, space) => *space,
         }
     }
 
@@ -81,6 +118,7 @@ impl Robot {
     pub fn action_dim(&self) -> usize {
         match self {
             Robot::Behavior(_, space) => space.dim(),
+            Robot::Fetch(_, space) => space.fetch_dim(),
         }
     }
 
@@ -92,6 +130,10 @@ impl Robot {
                 robot.set_action(space.action(values)?);
                 Ok(())
             }
+            Robot::Fetch(robot, space) => {
+                robot.set_action(space.fetch_action(values)?);
+                Ok(())
+            }
         }
     }
 
@@ -99,6 +141,7 @@ impl Robot {
     pub fn proprioception_dim(&self) -> usize {
         match self {
             Robot::Behavior(..) => Proprioception::DIM,
+            Robot::Fetch(..) => FetchProprioception::DIM,
         }
     }
 
@@ -106,13 +149,15 @@ impl Robot {
     pub fn proprioception(&self, world: &World, out: &mut Vec<f32>) {
         match self {
             Robot::Behavior(robot, _) => out.extend(robot.proprioception(world).to_array()),
+            Robot::Fetch(robot, _) => out.extend(robot.proprioception(world).to_array()),
         }
     }
 
-    /// The base's pose (a BehaviorRobot's body centre).
+    /// The base's pose (a BehaviorRobot's body centre, Fetch's base origin on the floor).
     pub fn base_pose(&self, world: &World) -> Pose {
         match self {
             Robot::Behavior(robot, _) => robot.body_pose(world),
+            Robot::Fetch(robot, _) => robot.base_pose(world),
         }
     }
 
@@ -120,6 +165,7 @@ impl Robot {
     pub fn objects(&self) -> Vec<ObjectId> {
         match self {
             Robot::Behavior(robot, _) => robot.parts().all().to_vec(),
+            Robot::Fetch(robot, _) => robot.parts().all().to_vec(),
         }
     }
 
@@ -143,6 +189,21 @@ impl Robot {
                     hand("right_hand", Side::Right),
                 ]
             }
+            Robot::Fetch(robot, _) => {
+                let parts = robot.parts();
+                vec![
+                    TrackedPart {
+                        name: "body",
+                        object: parts.base(),
+                        holding: false,
+                    },
+                    TrackedPart {
+                        name: "gripper",
+                        object: parts.gripper(),
+                        holding: robot.holding().is_some(),
+                    },
+                ]
+            }
         }
     }
 
@@ -150,16 +211,18 @@ impl Robot {
     pub fn hands(&self) -> usize {
         match self {
             Robot::Behavior(..) => 2,
+            Robot::Fetch(..) => 1,
         }
     }
 
-    /// The object hand `k` holds (0 left, 1 right for a BehaviorRobot).
+    /// The object hand `k` holds (0 left, 1 right for a BehaviorRobot; 0 the gripper for Fetch).
     pub fn held(&self, hand: usize) -> Option<ObjectId> {
         match self {
             Robot::Behavior(robot, _) => {
                 let side = *Side::BOTH.get(hand)?;
                 robot.holding(side).map(|b| b.object)
             }
+            Robot::Fetch(robot, _) => robot.holding().filter(|_| hand == 0).map(|b| b.object),
         }
     }
 
@@ -167,6 +230,7 @@ impl Robot {
     pub fn is_holding(&self, object: ObjectId) -> bool {
         match self {
             Robot::Behavior(robot, _) => robot.is_holding(object),
+            Robot::Fetch(robot, _) => robot.is_holding(object),
         }
     }
 
@@ -174,6 +238,7 @@ impl Robot {
     pub fn in_reach(&self, world: &World, object: ObjectId) -> bool {
         match self {
             Robot::Behavior(robot, _) => robot.in_reach(world, object),
+            Robot::Fetch(robot, _) => robot.in_reach(world, object),
         }
     }
 
@@ -181,6 +246,7 @@ impl Robot {
     pub fn in_same_room(&self, world: &World, object: ObjectId) -> bool {
         match self {
             Robot::Behavior(robot, _) => robot.in_same_room(world, object),
+            Robot::Fetch(robot, _) => robot.in_same_room(world, object),
         }
     }
 
@@ -188,6 +254,7 @@ impl Robot {
     pub fn in_field_of_view(&self, world: &World, object: ObjectId) -> bool {
         match self {
             Robot::Behavior(robot, _) => robot.in_field_of_view(world, object),
+            Robot::Fetch(robot, _) => robot.in_field_of_view(world, object),
         }
     }
 }
@@ -196,12 +263,14 @@ impl StepHooks for Robot {
     fn before_substep(&mut self, world: &mut World, substep: u32) {
         match self {
             Robot::Behavior(robot, _) => robot.before_substep(world, substep),
+            Robot::Fetch(robot, _) => robot.before_substep(world, substep),
         }
     }
 
     fn after_step(&mut self, world: &mut World) {
         match self {
             Robot::Behavior(robot, _) => robot.after_step(world),
+            Robot::Fetch(robot, _) => robot.after_step(world),
         }
     }
 }

@@ -90,7 +90,7 @@ impl GraspRules {
             .then_some(AttachmentKind::Fixed)
     }
 
-    fn max_force(&self, kind: AttachmentKind) -> f32 {
+    pub(crate) fn max_force(&self, kind: AttachmentKind) -> f32 {
         match kind {
             AttachmentKind::Fixed => self.fixed_force,
             AttachmentKind::Point => self.point_force,

@@ -4,8 +4,23 @@
 //! It owns the robots' bodies (built from our own simple shapes, with the original robots' real
 //! dimensions and masses), their action spaces, how an action becomes motion, assisted grasping,
 //! proprioception and the robot-relative predicates (in hand, in reach, in the same room, in the
-//! field of view). Today that is the [`BehaviorRobot`], the bimanual humanoid of the VR
-//! demonstrations; Fetch comes next, and a shared trait with it.
+//! field of view). The two embodiments of BEHAVIOR:
+//! - the [`BehaviorRobot`], the bimanual humanoid of the VR demonstrations (26-d [`Action`],
+//!   22-d [`Proprioception`]);
+//! - [`Fetch`], the mobile manipulator (11-d [`FetchAction`] with an end-effector controller
+//!   through inverse kinematics, [`IkSolver`]; 49-d [`FetchProprioception`]).
+//!
+//! [`Robot`] is either, for code that does not care which; [`ActionSpace`] names the original's
+//! reduced action spaces, which each kind reads its own way (see `fetch_action.rs` for Fetch's).
+//!
+//! **Body models, chosen for cost.** Both robots move their bodies kinematically (exactly where
+//! they are told, refusing moves into fixed bodies) and keep dynamic bodies only where contact
+//! forces matter: the BehaviorRobot's palms and fingers, Fetch's fingers. Fetch's torso, head
+//! and arm are kinematic links placed by forward kinematics each substep, not a simulated
+//! chain: measured in `tests/timing.rs` (dev profile, one core, a table with 20 objects, 10 ×
+//! 1/300 s), an action step costs 0.2 µs standing still, ≈ 0.25 ms driving and ≈ 0.45 ms
+//! moving the arm (IK, the fixed-body checks and the awake fingers) — where DESIGN.md §4
+//! measured 0.65–3 ms for a simulated 9-link arm while driving.
 //!
 //! It knows nothing of BDDL, activities, episodes, rewards, metrics or rendering: an environment
 //! builds on it, and reads the world through [`behavior_sim`] as any other crate does.
@@ -29,19 +44,48 @@
 //! assert!(robot.step(&mut world, &[f32::NAN; 26]).is_err());
 //! ```
 //!
+//! Fetch, from the floor up (its base origin is on the floor; [`Robot::standing_pose`] gives
+//! each kind's pose for a point on the floor):
+//!
+//! ```
+//! use behavior_robots::{Fetch, FetchAction, FETCH_ACTION_DIM};
+//! use behavior_sim::World;
+//! use rapier3d::math::Pose;
+//!
+//! let mut world = World::default();
+//! let mut fetch = Fetch::add(&mut world, Pose::IDENTITY).unwrap();
+//! let mut forward = [0.0; FETCH_ACTION_DIM];
+//! forward[FetchAction::LINEAR] = 1.0; // 1 m/s
+//! forward[FetchAction::GRIPPER] = 1.0; // keep the gripper open
+//! for _ in 0..30 {
+//!     fetch.step(&mut world, &forward).unwrap();
+//! }
+//! assert!((fetch.base_pose(&world).translation.x - 1.0).abs() < 1e-3);
+//! assert_eq!(fetch.proprioception(&world).to_array().len(), 49);
+//! assert!(fetch.step(&mut world, &[0.0; 26]).is_err());
+//! ```
+//!
 //! Inside: `action.rs` (the action and the reduced spaces), `body.rs` and `hand.rs` (the parts
 //! and their constants), `motion.rs` (from an action to the step's targets), `follow.rs` (how a
 //! palm follows its target), `grasp.rs` (assisted grasping), `proprioception.rs`, `relative.rs`
-//! (robot-relative predicates) and `robot.rs` (the robot as a step hook).
+//! (robot-relative predicates) and `robot.rs` (the robot as a step hook); for Fetch,
+//! `fetch_body.rs` (joints, links, forward kinematics), `ik.rs`, `fetch_action.rs`,
+//! `fetch_proprioception.rs` and `fetch.rs` (the robot as a step hook); `embodiment.rs` (either
+//! robot).
 
 #![warn(missing_docs)]
 
 mod action;
 mod body;
 mod embodiment;
+mod fetch;
+mod fetch_action;
+mod fetch_body;
+mod fetch_proprioception;
 mod follow;
 mod grasp;
 mod hand;
+mod ik;
 mod motion;
 mod proprioception;
 mod relative;
@@ -50,11 +94,25 @@ mod robot;
 pub use action::{ACTION_DIM, ACTION_SCALE, Action, ActionError, ActionSpace};
 pub use body::{BODY_HEIGHT, BODY_LENGTH, BODY_MASS, BODY_RADIUS, EYE_REACH, HAND_REACH};
 pub use embodiment::{Robot, RobotKind, TrackedPart};
+pub use fetch::{
+    ARM_GAIN, Fetch, FetchParts, WORKSPACE_CENTRE, WORKSPACE_HEIGHT, WORKSPACE_RADIUS,
+};
+pub use fetch_action::{
+    EEF_STEP, EEF_TURN, FETCH_ACTION_DIM, FetchAction, HEAD_SPEED, MAX_ANGULAR_SPEED,
+    MAX_LINEAR_SPEED,
+};
+pub use fetch_body::{
+    BASE_RADIUS, CAMERA_OFFSET, DIAGONAL30, FETCH_FINGER_MASS, FETCH_JOINTS, FETCH_LINKS,
+    FETCH_MASS, FINGER_OPEN, FetchJoint, FetchJoints, FetchLink, GRIPPER_CENTRE, GRIPPER_FRICTION,
+    GRIPPER_OFFSET, JointInfo, START_TILT, START_TORSO, WHEEL_RADIUS, WHEEL_SEPARATION, link_mass,
+};
+pub use fetch_proprioception::FetchProprioception;
 pub use grasp::GraspRules;
 pub use hand::{
     FINGER_CLOSED, FINGER_MASS, FINGER_TORQUE, FINGERS, HAND_FRICTION, PALM_MASS, Side,
     THUMB_CLOSED,
 };
+pub use ik::{IK_JOINTS, IkError, IkSolver};
 pub use proprioception::{LocalPose, Proprioception};
 pub use relative::{EYE_FOV, REACH_DISTANCE};
 pub use robot::{BehaviorRobot, RobotError, RobotParts};

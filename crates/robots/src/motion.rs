@@ -97,7 +97,7 @@ impl Blocker<'_> {
     }
 
     /// Whether moving a part from `from` to `to` enters a fixed body.
-    fn blocked(&self, shape: &(Primitive, Pose), from: Pose, to: Pose) -> bool {
+    pub(crate) fn blocked(&self, shape: &(Primitive, Pose), from: Pose, to: Pose) -> bool {
         if from == to {
             return false;
         }

@@ -125,7 +125,7 @@ pub struct BehaviorRobot {
 /// weigh; a blow that breaks it just wakes the hand's servo.
 const PARKING_FORCE: f32 = 5000.0;
 
-fn pose_ok(pose: &Pose) -> bool {
+pub(crate) fn pose_ok(pose: &Pose) -> bool {
     pose.is_finite() && (pose.rotation.length() - 1.0).abs() < 1e-3
 }
 

@@ -1,0 +1,771 @@
+//! Fetch: adding it to a world, stepping it, and reading it.
+
+use crate::action::ActionError;
+use crate::fetch_action::FetchAction;
+use crate::fetch_body::{
+    FETCH_LINKS, FINGER_LINKS, FINGER_OPEN, FetchJoint, FetchJoints, FetchLink, GRIPPER_CENTRE,
+    WHEEL_RADIUS, WHEEL_SEPARATION, blocking_parts, link_centre, link_mass, link_spec, pad_face,
+};
+use crate::fetch_proprioception::FetchProprioception;
+use crate::grasp::{GraspRules, Release};
+use crate::ik::{IkError, IkSolver, rotation_error};
+use crate::motion::Blocker;
+use crate::proprioception::LocalPose;
+use crate::relative;
+use crate::robot::{RobotError, pose_ok};
+use behavior_sim::{
+    AttachmentId, AttachmentSpec, BodyRef, Drive, JointState, ObjectId, Primitive, QueryFilter,
+    STEP_SECONDS, StepHooks, Velocity, World, WorldError, groups,
+};
+use rapier3d::glamx::EulerRot;
+use rapier3d::math::{Pose, Rotation, Vector};
+
+/// How fast the torso and arm joints close on the IK solution, 1/s (iGibson's `kv`): each
+/// moves at `ARM_GAIN · (q_ik − q)`, within its maximum velocity. A full Δ of 5 cm per step so
+/// moves the end effector at about 0.1 m/s, as the original's.
+pub const ARM_GAIN: f32 = 2.0;
+/// The end effector's targets are kept within this distance of [`WORKSPACE_CENTRE`] (x, y in
+/// the base frame), m (iGibson's radius limit).
+pub const WORKSPACE_RADIUS: f32 = 0.5;
+/// The centre of the end effector's workspace disk, base frame (x, y), m.
+pub const WORKSPACE_CENTRE: [f32; 2] = [0.25, 0.0];
+/// The end effector's targets are kept between these heights above the base's origin, m.
+pub const WORKSPACE_HEIGHT: [f32; 2] = [0.2, 1.5];
+/// Finger drive: at most the URDF's 60 N, stiff enough to close on a 0.2 kg apple at full
+/// force within 3 cm of travel, damped near critically for the finger's 0.08 kg.
+const FINGER_STIFFNESS: f32 = 2000.0;
+const FINGER_DAMPING: f32 = 25.0;
+
+/// The world objects Fetch is made of: one kinematic body per link ([`FetchLink`]); the
+/// gripper's object carries the two fingers as dynamic links (0 right, 1 left).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FetchParts {
+    /// In [`FetchLink::ALL`] order.
+    pub links: [ObjectId; FETCH_LINKS],
+}
+
+impl FetchParts {
+    /// A link's object.
+    pub fn link(&self, link: FetchLink) -> ObjectId {
+        self.links[link as usize]
+    }
+
+    /// The base's object.
+    pub fn base(&self) -> ObjectId {
+        self.link(FetchLink::Base)
+    }
+
+    /// The gripper's object (its frame is the end effector's).
+    pub fn gripper(&self) -> ObjectId {
+        self.link(FetchLink::Gripper)
+    }
+
+    /// Every object, base first.
+    pub fn all(&self) -> [ObjectId; FETCH_LINKS] {
+        self.links
+    }
+}
+
+/// What the gripper holds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct FetchGrasp {
+    body: BodyRef,
+    attachment: AttachmentId,
+}
+
+/// Where every kinematic part is: the base on the floor and the joints.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Config {
+    base: Pose,
+    joints: FetchJoints,
+}
+
+/// The Fetch mobile manipulator (iGibson 2.0's `FetchGripper`, reference §4.3): a
+/// differential-drive base, a torso lift, a pan/tilt head with the camera, a 7-joint arm and a
+/// parallel gripper, driven by an 11-d [`FetchAction`] whose end-effector part goes through
+/// inverse kinematics ([`IkSolver`]), holding things by assisted grasping ([`GraspRules`]).
+///
+/// **Body model.** Every link is a kinematic body, moved each substep to where the joint
+/// positions put it (forward kinematics from the URDF's joint table, `fetch_body.rs`):
+/// - The base drives as a unicycle at the commanded (v, ω), within the wheels' 17.4 rad/s, and
+///   stays upright on the floor. The original's base rolls on simulated wheels; ours goes
+///   exactly where it is told (it drives 1 m when told to), costs the solver nothing, and
+///   sleeps when still.
+/// - The torso, head and arm joints move toward their targets at the URDF's maximum velocities:
+///   the head at the commanded rates, the torso and arm toward the IK solution at
+///   [`ARM_GAIN`]` · (q_ik − q)`, as the original's velocity controller.
+/// - No part is ever sent into a fixed body (walls, furniture, the floor): a step whose base
+///   motion or joint motion would make a part newly overlap one is refused — first the base's
+///   motion, then the arm's, then both (see `motion.rs`). Movable things are pushed, with
+///   unbounded force (the original's arm pushes with its joints' efforts).
+/// - The fingers are dynamic links of the gripper on prismatic joints, position-driven at most
+///   with the URDF's 60 N, so they close on what they meet and yield, and a body they both
+///   touch can be grasped ([`Fetch::holding`]).
+///
+/// Why velocity-driven kinematic bodies, each given each substep the velocity that lands it on
+/// its pose: rapier derives a position-driven body's velocity from its target and its pose
+/// through a product that is not exactly the identity once the body is turned, so a turned
+/// position-driven body never has exactly zero velocity and never sleeps (measured: a
+/// BehaviorRobot that has turned away from the origin idles at ≈ 390 µs per step instead of
+/// 0.3). Ours are stopped at exactly zero and sleep.
+///
+/// Measured (`tests/timing.rs`, dev profile, a table with 20 objects, 10 × 1/300 s): 0.2 µs per
+/// step standing still, ≈ 0.25 ms driving, ≈ 0.45 ms moving the arm — a simulated 9-link arm
+/// costs 0.65–3 ms driving (DESIGN.md §4).
+///
+/// **State.** As the BehaviorRobot's: what it was told lives here, the rest in the world;
+/// clone it with [`World::snapshot`] and the pair continues bit-identically. Step the world with
+/// the robot ([`World::step_with`]); an action acts for one step.
+#[derive(Clone, Debug)]
+pub struct Fetch {
+    parts: FetchParts,
+    /// Where the parts are at the end of the step begun last.
+    now: Config,
+    /// Where they were at its start.
+    from: Config,
+    /// The base's (v, ω) in that step.
+    drive: (f32, f32),
+    /// The wheels' angles and rates (right, left).
+    wheels: [f32; 2],
+    wheel_rates: [f32; 2],
+    /// The finger drives' target in force.
+    fingers: f32,
+    /// The gripper command of the step begun last.
+    gripper: f32,
+    grasp: Option<FetchGrasp>,
+    releases: Vec<Release>,
+    pending: FetchAction,
+    /// Why the last end-effector command could not be followed exactly.
+    ik_error: Option<IkError>,
+    /// Whether the kinematic parts have a velocity set.
+    moving: bool,
+    ik: IkSolver,
+    rules: GraspRules,
+}
+
+impl Fetch {
+    /// Adds Fetch with its base's origin at `pose` — a point on the floor's top, between the
+    /// wheels; only the rotation's yaw counts (the base stays upright) — in iGibson's BEHAVIOR
+    /// start pose (torso 0.385 m, head tilted 0.45 rad down, arm `diagonal30`, gripper open),
+    /// with the original's grasp rules.
+    pub fn add(world: &mut World, pose: Pose) -> Result<Fetch, RobotError> {
+        Fetch::add_with(world, pose, GraspRules::default())
+    }
+
+    /// [`Fetch::add`] with other grasp rules.
+    pub fn add_with(world: &mut World, pose: Pose, rules: GraspRules) -> Result<Fetch, RobotError> {
+        if !pose_ok(&pose) {
+            return Err(RobotError::BadPose);
+        }
+        let (yaw, _, _) = pose.rotation.normalize().to_euler(EulerRot::ZYX);
+        let base = Pose::from_parts(pose.translation, Rotation::from_rotation_z(yaw));
+        let config = Config {
+            base,
+            joints: FetchJoints::default(),
+        };
+        let parts = add_parts(world, &config)?;
+        let mut fetch = Fetch {
+            parts,
+            now: config,
+            from: config,
+            drive: (0.0, 0.0),
+            wheels: [0.0; 2],
+            wheel_rates: [0.0; 2],
+            fingers: f32::NAN,
+            gripper: 1.0,
+            grasp: None,
+            releases: Vec::new(),
+            pending: FetchAction::ZERO,
+            ik_error: None,
+            moving: false,
+            ik: IkSolver::default(),
+            rules,
+        };
+        for link in FINGER_LINKS {
+            world.set_joint_position(parts.gripper(), link, FINGER_OPEN)?;
+        }
+        fetch.drive_fingers(world, FINGER_OPEN);
+        fetch.press_with_gripper(world);
+        Ok(fetch)
+    }
+
+    /// The action for the next step (replacing one set before).
+    pub fn set_action(&mut self, action: FetchAction) {
+        self.pending = action;
+    }
+
+    /// Checks `values` as a [`FetchAction`] and, if it is one, takes a step of the world with it.
+    /// A bad action is an error and leaves the world and the robot untouched.
+    pub fn step(&mut self, world: &mut World, values: &[f32]) -> Result<(), ActionError> {
+        self.set_action(FetchAction::new(values)?);
+        world.step_with(self);
+        Ok(())
+    }
+
+    /// The world objects it is made of.
+    pub fn parts(&self) -> FetchParts {
+        self.parts
+    }
+
+    /// The grasp rules in force.
+    pub fn rules(&self) -> &GraspRules {
+        &self.rules
+    }
+
+    /// The IK solver the end-effector controller uses.
+    pub fn ik(&self) -> &IkSolver {
+        &self.ik
+    }
+
+    /// Why the last end-effector command could not be followed exactly (an unreachable
+    /// target: the arm then heads for the closest pose found), or `None`.
+    pub fn ik_error(&self) -> Option<&IkError> {
+        self.ik_error.as_ref()
+    }
+
+    /// The base's pose in the world: its origin on the floor between the wheels, x forward.
+    pub fn base_pose(&self, world: &World) -> Pose {
+        world.pose(self.parts.base())
+    }
+
+    /// The torso, head and arm positions (where the step begun last ends).
+    pub fn joints(&self) -> FetchJoints {
+        self.now.joints
+    }
+
+    /// The end effector's pose in the world (`gripper_link`: x out of the gripper, the fingers
+    /// along ±y).
+    pub fn eef_pose(&self, world: &World) -> Pose {
+        world.pose(self.parts.gripper())
+    }
+
+    /// The head camera's pose in the world: it looks along its +x, with no roll.
+    pub fn camera_pose(&self, world: &World) -> Pose {
+        self.base_pose(world) * self.now.joints.camera()
+    }
+
+    /// The finger positions (right, left), m: 0 closed, 0.05 open.
+    pub fn fingers(&self, world: &World) -> [f32; 2] {
+        FINGER_LINKS.map(|l| world.core().joint_position(self.parts.gripper(), l))
+    }
+
+    /// The body the gripper holds.
+    pub fn holding(&self) -> Option<BodyRef> {
+        self.grasp.map(|g| g.body)
+    }
+
+    /// `in hand`: whether the gripper holds the object (by its body or one of its links).
+    pub fn is_holding(&self, object: ObjectId) -> bool {
+        self.grasp.is_some_and(|g| g.body.object == object)
+    }
+
+    /// `in reach`: the object's centre is within 2 m of the base's origin (iGibson measures
+    /// from the robot's base position).
+    pub fn in_reach(&self, world: &World, object: ObjectId) -> bool {
+        relative::in_reach(world, self.base_pose(world).translation, object)
+    }
+
+    /// `in the same room`: the object is in the room the base stands in.
+    pub fn in_same_room(&self, world: &World, object: ObjectId) -> bool {
+        relative::in_same_room(world, self.base_pose(world).translation, object)
+    }
+
+    /// `in the field of view` of the head camera (120° × 120°, iGibson's), approximated
+    /// geometrically as the BehaviorRobot's (see `relative.rs`).
+    pub fn in_field_of_view(&self, world: &World, object: ObjectId) -> bool {
+        let camera = self.camera_pose(world);
+        relative::in_view(world, camera, object, &self.parts.all())
+    }
+
+    /// The robot's proprioception now.
+    pub fn proprioception(&self, world: &World) -> FetchProprioception {
+        let eef = self.now.joints.eef();
+        let rate = |a: f32, b: f32| (b - a) / STEP_SECONDS;
+        let (from, now) = (self.from.joints, self.now.joints);
+        let efforts = self.static_efforts(world);
+        let joints = FetchJoint::ALL.map(|j| match j {
+            FetchJoint::RightWheel | FetchJoint::LeftWheel => JointState {
+                position: self.wheels[j.index()],
+                velocity: self.wheel_rates[j.index()],
+                effort: 0.0,
+            },
+            FetchJoint::RightFinger | FetchJoint::LeftFinger => {
+                let link = j.index() - FetchJoint::RightFinger.index();
+                let state = world.core().joint_state(self.parts.gripper(), link);
+                state.unwrap_or(JointState {
+                    position: 0.0,
+                    velocity: 0.0,
+                    effort: 0.0,
+                })
+            }
+            _ => {
+                let (a, b) = (from.get(j).unwrap_or(0.0), now.get(j).unwrap_or(0.0));
+                JointState {
+                    position: b,
+                    velocity: rate(a, b),
+                    effort: load_index(j).map_or(0.0, |k| efforts[k]),
+                }
+            }
+        });
+        FetchProprioception {
+            eef: LocalPose::of(eef),
+            grasping: self.grasp.is_some(),
+            joints,
+        }
+    }
+}
+
+/// Where a joint's static load is in `Fetch::static_efforts`: the torso first, then the arm.
+fn load_index(joint: FetchJoint) -> Option<usize> {
+    if joint == FetchJoint::TorsoLift {
+        return Some(0);
+    }
+    FetchJoint::ARM
+        .iter()
+        .position(|&a| a == joint)
+        .map(|k| k + 1)
+}
+
+/// Adds every link at its place, in the robot's collision group.
+fn add_parts(world: &mut World, config: &Config) -> Result<FetchParts, WorldError> {
+    let poses = config.joints.link_poses();
+    let mut links = [ObjectId(0); FETCH_LINKS];
+    for (k, link) in FetchLink::ALL.into_iter().enumerate() {
+        links[k] = world.add(link_spec(link, config.base * poses[k]))?;
+    }
+    // Robot parts touch neither each other nor water.
+    let others = groups::ALL & !groups::ROBOT & !groups::WATER;
+    for id in links {
+        world
+            .core_mut()
+            .set_collision_groups(id, groups::ROBOT, others);
+    }
+    Ok(FetchParts { links })
+}
+
+/// Where a unicycle at `pose` is after `t` seconds at (v, ω): along an arc in its own frame.
+fn unicycle(pose: Pose, (v, w): (f32, f32), t: f32) -> Pose {
+    let turn = w * t;
+    let local = if turn.abs() < 1e-6 {
+        Vector::new(v * t, 0.0, 0.0)
+    } else {
+        let r = v / w;
+        Vector::new(r * turn.sin(), r * (1.0 - turn.cos()), 0.0)
+    };
+    pose * Pose::from_parts(local, Rotation::from_rotation_z(turn))
+}
+
+/// The wheel rates (right, left) for (v, ω), each within its maximum, and the (v, ω) they give.
+fn wheel_limited((v, w): (f32, f32)) -> ([f32; 2], (f32, f32)) {
+    let max = FetchJoint::RightWheel.info().max_velocity;
+    let half = 0.5 * WHEEL_SEPARATION;
+    let right = ((v + w * half) / WHEEL_RADIUS).clamp(-max, max);
+    let left = ((v - w * half) / WHEEL_RADIUS).clamp(-max, max);
+    let v = 0.5 * WHEEL_RADIUS * (right + left);
+    let w = WHEEL_RADIUS * (right - left) / WHEEL_SEPARATION;
+    ([right, left], (v, w))
+}
+
+/// A base-frame end-effector position kept in the workspace (iGibson's clips).
+fn in_workspace(p: Vector) -> Vector {
+    let centre = Vector::new(WORKSPACE_CENTRE[0], WORKSPACE_CENTRE[1], 0.0);
+    let mut flat = Vector::new(p.x, p.y, 0.0) - centre;
+    if flat.length() > WORKSPACE_RADIUS {
+        flat *= WORKSPACE_RADIUS / flat.length();
+    }
+    let z = p.z.clamp(WORKSPACE_HEIGHT[0], WORKSPACE_HEIGHT[1]);
+    centre + flat + Vector::new(0.0, 0.0, z)
+}
+
+/// The velocity that takes a link from `now` to `target` in one substep of `dt`, as the
+/// physics integrates a body: a turn about its centre of mass, then the centre's motion.
+fn velocity_to(now: Pose, target: Pose, link: FetchLink, dt: f32) -> Velocity {
+    let centre = link_centre(link);
+    let turn = rotation_error(now.rotation, target.rotation);
+    Velocity {
+        linear: (target.transform_point(centre) - now.transform_point(centre)) / dt,
+        angular: turn / dt,
+    }
+}
+
+/// `q` moved toward `goal` for one step at `ARM_GAIN · (goal − q)`, within `max_velocity`.
+fn approach(q: f32, goal: f32, max_velocity: f32) -> f32 {
+    let rate = (ARM_GAIN * (goal - q)).clamp(-max_velocity, max_velocity);
+    q + rate * STEP_SECONDS
+}
+
+impl StepHooks for Fetch {
+    fn before_substep(&mut self, world: &mut World, substep: u32) {
+        if substep == 0 {
+            self.begin_step(world);
+        }
+        self.move_parts(world, substep);
+    }
+
+    fn after_step(&mut self, world: &mut World) {
+        self.update_grasp(world);
+        if !self.releases.is_empty() {
+            // Contacts come back after the release step, once apart, and not while held again.
+            let (held, now) = (self.holding(), world.steps());
+            self.releases
+                .retain_mut(|r| Some(r.body) == held || r.since == now || !r.settle(world));
+        }
+        if self.from != self.now {
+            self.press_with_gripper(world);
+        }
+    }
+}
+
+impl Fetch {
+    /// Takes the pending action: the step's base motion and joint targets, checked against
+    /// fixed bodies, and the fingers' drive.
+    fn begin_step(&mut self, world: &mut World) {
+        let action = std::mem::take(&mut self.pending);
+        self.from = self.now;
+        let (rates, drive) = wheel_limited(action.base());
+        let wanted = Config {
+            base: unicycle(self.now.base, drive, STEP_SECONDS),
+            joints: self.joint_targets(&action),
+        };
+        let allowed = if wanted == self.now {
+            wanted
+        } else {
+            self.allow(world, wanted)
+        };
+        let base_moves = allowed.base != self.now.base;
+        self.drive = if base_moves { drive } else { (0.0, 0.0) };
+        self.wheel_rates = if base_moves { rates } else { [0.0; 2] };
+        for k in 0..2 {
+            self.wheels[k] += self.wheel_rates[k] * STEP_SECONDS;
+        }
+        self.now = allowed;
+        self.gripper = action.gripper();
+        if self.grasp.is_none() {
+            let stroke = FetchJoint::RightFinger.info().max_velocity * STEP_SECONDS;
+            let direction = if self.gripper > 0.0 { 1.0 } else { -1.0 };
+            let target = (self.fingers + direction * stroke).clamp(0.0, FINGER_OPEN);
+            self.drive_fingers(world, target);
+        }
+    }
+
+    /// The head's and arm's positions at the end of the step the action asks for.
+    fn joint_targets(&mut self, action: &FetchAction) -> FetchJoints {
+        let mut joints = self.now.joints;
+        let [pan, tilt] = action.head();
+        joints.head = [
+            joints.head[0] + pan * STEP_SECONDS,
+            joints.head[1] + tilt * STEP_SECONDS,
+        ];
+        if action.moves_eef() {
+            let goal = self.ik_goal(action);
+            joints.torso = approach(
+                joints.torso,
+                goal.torso,
+                FetchJoint::TorsoLift.info().max_velocity,
+            );
+            for (k, joint) in FetchJoint::ARM.iter().enumerate() {
+                let v = joint.info().max_velocity;
+                joints.arm[k] = approach(joints.arm[k], goal.arm[k], v);
+            }
+        }
+        joints.clamped()
+    }
+
+    /// The IK solution for the action's end-effector target (or the closest found).
+    fn ik_goal(&mut self, action: &FetchAction) -> FetchJoints {
+        let now = self.now.joints;
+        let eef = now.eef();
+        let (dp, dr) = action.eef();
+        let target = Pose::from_parts(
+            in_workspace(eef.translation + dp),
+            (dr * eef.rotation).normalize(),
+        );
+        match self.ik.solve(&now, &target) {
+            Ok(q) => {
+                self.ik_error = None;
+                q
+            }
+            Err(error) => {
+                let closest = match &error {
+                    IkError::Unreachable { closest, .. } => *closest,
+                    IkError::NotFinite => now,
+                };
+                self.ik_error = Some(error);
+                closest
+            }
+        }
+    }
+
+    /// `wanted` as far as fixed bodies let it be: all of it, or the joints' motion without the
+    /// base's, or the base's without the joints', or nothing.
+    fn allow(&self, world: &World, wanted: Config) -> Config {
+        let own = self.parts.all();
+        let blocker = Blocker {
+            world,
+            filter: QueryFilter::excluding(&own),
+        };
+        let now = self.now;
+        let candidates = [
+            wanted,
+            Config {
+                base: now.base,
+                ..wanted
+            },
+            Config {
+                joints: now.joints,
+                ..wanted
+            },
+        ];
+        candidates
+            .into_iter()
+            .find(|c| *c != now && !blocked(&blocker, &now, c))
+            .unwrap_or(now)
+    }
+
+    /// Moves every kinematic part for one substep, if any moves in this step; stops them
+    /// (velocity exactly 0, so that they can sleep) in the first substep of a step without
+    /// motion.
+    fn move_parts(&mut self, world: &mut World, substep: u32) {
+        if self.from == self.now {
+            if self.moving {
+                for &id in &self.parts.links {
+                    let _ = world
+                        .core_mut()
+                        .set_velocity(id.into(), Velocity::default());
+                }
+                self.moving = false;
+            }
+            return;
+        }
+        let n = world.core().substeps().count();
+        let config = if substep + 1 >= n {
+            self.now
+        } else {
+            let t = (substep + 1) as f32 / n as f32;
+            let lerp = |a: f32, b: f32| a + (b - a) * t;
+            let (a, b) = (self.from.joints, self.now.joints);
+            Config {
+                base: unicycle(self.from.base, self.drive, t * STEP_SECONDS),
+                joints: FetchJoints {
+                    torso: lerp(a.torso, b.torso),
+                    head: std::array::from_fn(|k| lerp(a.head[k], b.head[k])),
+                    arm: std::array::from_fn(|k| lerp(a.arm[k], b.arm[k])),
+                },
+            }
+        };
+        let poses = config.joints.link_poses();
+        let dt = STEP_SECONDS / n as f32;
+        for (k, link) in FetchLink::ALL.into_iter().enumerate() {
+            let id = self.parts.link(link);
+            let velocity = velocity_to(world.pose(id), config.base * poses[k], link, dt);
+            // Finite poses make finite velocities: the world cannot refuse these.
+            let _ = world.core_mut().set_velocity(id.into(), velocity);
+        }
+        self.moving = true;
+    }
+
+    /// Sets both finger drives toward `target` if it changed.
+    fn drive_fingers(&mut self, world: &mut World, target: f32) {
+        if target == self.fingers {
+            return;
+        }
+        let effort = FetchJoint::RightFinger.info().max_effort;
+        let drive = Drive::position(target, FINGER_STIFFNESS, FINGER_DAMPING, effort);
+        for link in FINGER_LINKS {
+            // The links exist and the drive's numbers are finite: this cannot fail.
+            let _ = world
+                .core_mut()
+                .drive_joint(self.parts.gripper(), link, drive);
+        }
+        self.fingers = target;
+    }
+
+    /// Tells the world where the gripper's centre and pads are, for buttons.
+    fn press_with_gripper(&self, world: &mut World) {
+        let gripper = self.parts.gripper();
+        let centre = world.pose(gripper).transform_point(GRIPPER_CENTRE);
+        let pads = FINGER_LINKS.map(|k| {
+            let pose = world.core().link_pose(gripper, k);
+            pose.transform_point(pad_face(k))
+        });
+        world.set_hand_points(&[centre, pads[0], pads[1]]);
+    }
+
+    /// After a step: lets go where the grasp must end, grasps where a closing gripper has a
+    /// body between its fingers.
+    fn update_grasp(&mut self, world: &mut World) {
+        match self.grasp {
+            Some(grasp) if self.must_release(world, &grasp) => {
+                world.core_mut().detach(grasp.attachment);
+                self.grasp = None;
+                self.releases.push(Release {
+                    body: grasp.body,
+                    parts: vec![self.parts.gripper()],
+                    since: world.steps(),
+                });
+            }
+            None if self.gripper < 0.0 => self.try_grasp(world),
+            _ => {}
+        }
+    }
+
+    fn must_release(&self, world: &World, grasp: &FetchGrasp) -> bool {
+        match world.core().attachment(grasp.attachment) {
+            None => true,
+            Some(state) => {
+                self.gripper > 0.0 || state.broken || state.violation > self.rules.max_violation
+            }
+        }
+    }
+
+    /// The assisted grasp (reference §4.3): a body touching both fingers, the one closest to
+    /// the gripper's centre, if the rules let it be held; attached to the palm where it
+    /// touches, its contacts with the gripper off and the fingers frozen while held.
+    fn try_grasp(&mut self, world: &mut World) {
+        let Some((body, at)) = self.candidate(world) else {
+            return;
+        };
+        let Some(kind) = self.rules.holdable(world, body) else {
+            return;
+        };
+        let gripper = self.parts.gripper();
+        let spec = AttachmentSpec {
+            holder: BodyRef::from(gripper),
+            held: body,
+            at,
+            kind,
+            max_force: self.rules.max_force(kind),
+        };
+        let Ok(attachment) = world.core_mut().attach(spec) else {
+            return;
+        };
+        let bodies = [BodyRef::from(gripper)]
+            .into_iter()
+            .chain(FINGER_LINKS.map(|l| BodyRef::link(gripper, l)));
+        for part in bodies {
+            let _ = world.core_mut().ignore_contacts(part, body, true);
+        }
+        let [right, _] = self.fingers(world);
+        self.drive_fingers(world, right.clamp(0.0, FINGER_OPEN));
+        self.grasp = Some(FetchGrasp { body, attachment });
+    }
+
+    /// The body touching both fingers closest to the gripper's centre, and the middle of its
+    /// contacts with them.
+    fn candidate(&self, world: &World) -> Option<(BodyRef, Vector)> {
+        let gripper = self.parts.gripper();
+        let own = self.parts.all();
+        let contacts = FINGER_LINKS.map(|l| {
+            let all = world.core().contacts(BodyRef::link(gripper, l));
+            all.unwrap_or_default()
+                .into_iter()
+                .filter_map(|c| Some((c.other?, c.point)))
+                .filter(|(b, _)| !own.contains(&b.object))
+                .collect::<Vec<_>>()
+        });
+        let centre = world.pose(gripper).transform_point(GRIPPER_CENTRE);
+        let mut best: Option<(f32, BodyRef, Vector)> = None;
+        for &(body, _) in &contacts[0] {
+            if !contacts[1].iter().any(|(b, _)| *b == body) {
+                continue;
+            }
+            let points: Vec<Vector> = contacts
+                .iter()
+                .flatten()
+                .filter(|(b, _)| *b == body)
+                .map(|(_, p)| *p)
+                .collect();
+            let at = points.iter().copied().sum::<Vector>() / points.len() as f32;
+            let d = points
+                .iter()
+                .map(|p| (*p - centre).length())
+                .fold(f32::INFINITY, f32::min);
+            if best.is_none_or(|(bd, bb, _)| d < bd || (d == bd && body < bb)) {
+                best = Some((d, body, at));
+            }
+        }
+        best.map(|(_, body, at)| (body, at))
+    }
+
+    /// The static loads of the torso and the arm joints (torso first): what holds the links
+    /// beyond each, and what the gripper holds, against gravity (see `fetch_proprioception.rs`).
+    fn static_efforts(&self, world: &World) -> [f32; 8] {
+        let gravity = self.now.base.rotation.inverse() * world.core().gravity();
+        let poses = self.now.joints.link_poses();
+        let held = self
+            .grasp
+            .map_or(0.0, |g| world.core().total_mass(g.body.object));
+        // (mass, centre in the base frame) of each link the arm carries, gripper last.
+        let mut loads: Vec<(f32, Vector)> = (4..FETCH_LINKS)
+            .map(|k| {
+                let link = FetchLink::ALL[k];
+                (link_mass(link), poses[k].transform_point(link_centre(link)))
+            })
+            .collect();
+        let gripper = poses[FetchLink::Gripper as usize];
+        loads.push((
+            held + 2.0 * crate::fetch_body::FETCH_FINGER_MASS,
+            gripper.transform_point(GRIPPER_CENTRE * 0.5),
+        ));
+        let mut out = [0.0; 8];
+        let carried: f32 = (1..4).map(|k| link_mass(FetchLink::ALL[k])).sum::<f32>()
+            + loads.iter().map(|l| l.0).sum::<f32>();
+        out[0] = -carried * gravity.z;
+        let mut frame = poses[FetchLink::Torso as usize];
+        for (k, joint) in FetchJoint::ARM.iter().enumerate() {
+            let at = frame * Pose::from_translation(joint.info().origin);
+            let axis = at.rotation * joint.info().axis;
+            // The links from this joint's own onward: link 4 + k is the shoulder pan for k 0.
+            let moment: Vector = loads[k..]
+                .iter()
+                .map(|&(m, c)| (c - at.translation).cross(gravity * m))
+                .sum();
+            out[k + 1] = -axis.dot(moment);
+            frame *= joint.transform(self.now.joints.arm[k]);
+        }
+        out
+    }
+}
+
+/// Whether moving every part from `from` to `to` makes one newly overlap a fixed body.
+fn blocked(blocker: &Blocker, from: &Config, to: &Config) -> bool {
+    let (a, b) = (from.joints.link_poses(), to.joints.link_poses());
+    FetchLink::ALL.into_iter().enumerate().any(|(k, link)| {
+        let (pa, pb) = (from.base * a[k], to.base * b[k]);
+        pa != pb
+            && blocking_parts(link).into_iter().any(|part| {
+                let shape: (Primitive, Pose) = (part.primitive, part.offset);
+                blocker.blocked(&shape, pa, pb)
+            })
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_base_drives_along_arcs_within_its_wheels() {
+        let end = unicycle(Pose::IDENTITY, (1.0, 0.0), 1.0);
+        assert!((end.translation - Vector::X).length() < 1e-6);
+        // A quarter turn at radius 1: from (0, 0) to (1, 1), facing +y.
+        let quarter = std::f32::consts::FRAC_PI_2;
+        let end = unicycle(Pose::IDENTITY, (quarter, quarter), 1.0);
+        assert!((end.translation - Vector::new(1.0, 1.0, 0.0)).length() < 1e-5);
+        assert!(((end.rotation * Vector::X) - Vector::Y).length() < 1e-5);
+        // Full speed ahead and full turn at once is more than the wheels give.
+        let (rates, (v, w)) = wheel_limited((1.0, std::f32::consts::PI));
+        assert_eq!(rates[0], 17.4);
+        assert!(v < 1.0 && w > 0.0);
+        let (_, straight) = wheel_limited((1.0, 0.0));
+        assert!((straight.0 - 1.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn targets_are_kept_in_the_workspace() {
+        let p = in_workspace(Vector::new(2.0, 0.0, 3.0));
+        assert!((p - Vector::new(0.75, 0.0, 1.5)).length() < 1e-6);
+        let inside = Vector::new(0.5, -0.1, 0.9);
+        assert_eq!(in_workspace(inside), inside);
+    }
+}

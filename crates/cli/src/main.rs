@@ -4,9 +4,13 @@
 //! knowledge, library, named homes); this file only parses arguments and reports errors. Machine-readable output (`--json`) is documented per command in the README.
 
 mod bddl;
+mod bench_env;
 mod facts;
 mod map;
+mod plot;
 mod prelude;
+mod replay;
+mod run;
 mod sample;
 mod scene;
 
@@ -44,6 +48,19 @@ enum Command {
     SampleAll(sample::SampleAllArgs),
     /// The logical state of a saved instance: every predicate that holds among its objects.
     Facts(facts::FactsArgs),
+    /// Run an agent in an activity: a robot in a sampled home, scored by Q and the metrics.
+    Run(run::RunArgs),
+    /// Read a recording; with --verify, re-simulate it and check it bit for bit.
+    Replay(replay::ReplayArgs),
+    /// Benchmarks of the whole system.
+    #[command(subcommand)]
+    Bench(BenchCommand),
+}
+
+#[derive(Subcommand)]
+enum BenchCommand {
+    /// Environment steps per second: both robots, idle and random agents, 1/300 and 1/120 s.
+    Env(bench_env::BenchEnvArgs),
 }
 
 fn main() -> ExitCode {
@@ -60,6 +77,9 @@ fn main() -> ExitCode {
         Command::Sample(args) => sample::sample(args, cli.data_dir.as_deref()),
         Command::SampleAll(args) => sample::sample_all(args, cli.data_dir.as_deref()),
         Command::Facts(args) => facts::facts(args, cli.data_dir.as_deref()),
+        Command::Run(args) => run::run(args, cli.data_dir.as_deref()),
+        Command::Replay(args) => replay::run(args, cli.data_dir.as_deref()),
+        Command::Bench(BenchCommand::Env(args)) => bench_env::run(args, cli.data_dir.as_deref()),
     };
     match result {
         Ok(code) => code,

@@ -4,11 +4,11 @@
 use crate::metrics::Tracker;
 use crate::score::Score;
 use behavior_bddl::Activity;
-use behavior_robots::{BODY_HEIGHT, Robot, RobotError, RobotKind};
+use behavior_robots::{Robot, RobotError, RobotKind};
 use behavior_sampling::SavedInstance;
 use behavior_sim::{ObjectId, World};
 use rapier3d::glamx::EulerRot;
-use rapier3d::math::{Pose, Rotation, Vector};
+use rapier3d::math::Vector;
 use std::sync::Arc;
 
 /// The synset of the activity's stand-in for the agent, which the robot replaces.
@@ -69,16 +69,8 @@ pub(crate) fn embody(
     if let Some(id) = agent {
         world.core_mut().retire(id);
     }
-    let robot = Robot::add(kind, space, world, standing_pose(kind, at, yaw))?;
+    let robot = Robot::add(kind, space, world, Robot::standing_pose(kind, at, yaw))?;
     Ok((robot, agent))
-}
-
-/// Where a robot of `kind` stands on the floor point `at`, facing `yaw`.
-fn standing_pose(kind: RobotKind, at: Vector, yaw: f32) -> Pose {
-    let lift = match kind {
-        RobotKind::Behavior => BODY_HEIGHT,
-    };
-    Pose::from_parts(at + Vector::Z * lift, Rotation::from_rotation_z(yaw))
 }
 
 /// For an activity without an agent: the centre of the first floor.

@@ -1,0 +1,190 @@
+//! `behavior bench env`: environment steps per second for both robots, idle and random agents,
+//! physics at 1/300 and 1/120 s, state only, on the original's speed-benchmark activities in a
+//! covering home with clutter; the time split as the original reports it, and memory per env.
+
+use crate::prelude::Prelude;
+use crate::run::{physics, robot_kind};
+use crate::sample::first_covering;
+use crate::scene::with_clutter;
+use anyhow::{Context, Result};
+use behavior_env::{Agent, Env, EnvConfig, Instances};
+use indicatif::ProgressBar;
+use serde::Serialize;
+use std::path::Path;
+use std::process::ExitCode;
+use std::sync::Arc;
+
+/// The original's runtime activities (reference §8).
+const ACTIVITIES: [&str; 3] = [
+    "bringing_in_wood",
+    "re-shelving_library_books",
+    "laying_tile_floors",
+];
+/// Steps before timing starts, as the original discards its first 900 of 1000.
+const WARMUP: u32 = 100;
+
+#[derive(clap::Args)]
+pub struct BenchEnvArgs {
+    /// Timed steps per configuration.
+    #[arg(long, default_value_t = 1000)]
+    steps: u32,
+    #[arg(long)]
+    json: bool,
+}
+
+#[derive(Serialize)]
+struct Row {
+    activity: String,
+    scene: String,
+    objects: usize,
+    robot: String,
+    agent: String,
+    physics_dt: String,
+    steps_per_second: f64,
+    /// Mean per step, µs.
+    physics_us: f64,
+    rules_us: f64,
+    scoring_us: f64,
+    total_us: f64,
+    /// The goal check, metrics and observations as a share of the step.
+    scoring_share: f64,
+}
+
+#[derive(Serialize)]
+struct Report {
+    steps: u32,
+    rows: Vec<Row>,
+    /// Resident memory added by one environment (instance, world, robot, metrics), MB.
+    memory_per_env_mb: f64,
+}
+
+fn resident_mb() -> f64 {
+    let statm = std::fs::read_to_string("/proc/self/statm").unwrap_or_default();
+    let pages: f64 = statm
+        .split_whitespace()
+        .nth(1)
+        .and_then(|p| p.parse().ok())
+        .unwrap_or(0.0);
+    pages * 4096.0 / 1e6
+}
+
+pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
+    let prelude = Prelude::load(data_dir)?;
+    let library = prelude.library();
+    let taxonomy = Arc::new(prelude.knowledge.taxonomy.clone());
+    let mut rows = Vec::new();
+    let mut memory = 0.0f64;
+    let bar = if args.json {
+        ProgressBar::hidden()
+    } else {
+        ProgressBar::new(ACTIVITIES.len() as u64 * 8)
+    };
+    for name in ACTIVITIES {
+        let activity = Arc::new(prelude.activity(name)?);
+        let home = first_covering(&activity, &library, &prelude.knowledge.taxonomy)?;
+        let home = with_clutter(home, &library, true)?;
+        let base = EnvConfig::new(activity.clone(), taxonomy.clone(), vec![home.clone()]);
+        // Sample once; every configuration starts from the same instance.
+        let before = resident_mb();
+        let mut sampler = Env::new(base.clone());
+        sampler.reset(0).with_context(|| format!("sampling {name}"))?;
+        let instance = sampler.start().context("no episode")?.instance.clone();
+        memory = memory.max(resident_mb() - before);
+        let objects = sampler
+            .world()
+            .map_or(0, |w| w.objects().filter(|(_, o)| o.category != "wall.n.01").count());
+        drop(sampler);
+        for robot in ["behavior", "fetch"] {
+            for agent in ["idle", "random"] {
+                for dt in ["1/300", "1/120"] {
+                    let mut config = base.clone();
+                    config.instances = Instances::Saved(vec![instance.clone()]);
+                    config.robot = robot_kind(robot)?;
+                    config.physics = physics(dt)?;
+                    config.max_steps = u32::MAX;
+                    let row = measure(config, agent, args.steps)?;
+                    rows.push(Row {
+                        activity: name.to_string(),
+                        scene: home.name.clone(),
+                        objects,
+                        robot: robot.to_string(),
+                        agent: agent.to_string(),
+                        physics_dt: dt.to_string(),
+                        ..row
+                    });
+                    bar.inc(1);
+                }
+            }
+        }
+    }
+    bar.finish_and_clear();
+    let report = Report {
+        steps: args.steps,
+        rows,
+        memory_per_env_mb: memory,
+    };
+    if args.json {
+        println!("{}", serde_json::to_string_pretty(&report)?);
+    } else {
+        print(&report);
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Steps one configuration: the warm-up, then `steps` timed.
+fn measure(config: EnvConfig, agent: &str, steps: u32) -> Result<Row> {
+    let mut env = Env::new(config);
+    env.reset(0)?;
+    let mut agent = Agent::named(agent, 0).context("agent")?;
+    let dim = env.robot().map_or(0, |r| r.action_dim());
+    let mut action = Vec::with_capacity(dim);
+    for k in 0..WARMUP + steps {
+        if k == WARMUP {
+            env.take_timings();
+        }
+        agent.act(dim, &mut action);
+        env.step(&action)?;
+    }
+    let t = env.take_timings();
+    let per = |d: std::time::Duration| d.as_secs_f64() * 1e6 / f64::from(t.steps.max(1));
+    Ok(Row {
+        activity: String::new(),
+        scene: String::new(),
+        objects: 0,
+        robot: String::new(),
+        agent: String::new(),
+        physics_dt: String::new(),
+        steps_per_second: f64::from(t.steps) / t.total.as_secs_f64().max(1e-12),
+        physics_us: per(t.physics),
+        rules_us: per(t.rules),
+        scoring_us: per(t.scoring),
+        total_us: per(t.total),
+        scoring_share: t.scoring.as_secs_f64() / t.total.as_secs_f64().max(1e-12),
+    })
+}
+
+fn print(report: &Report) {
+    println!(
+        "{:<27} {:>7} {:<8} {:<6} {:<6} {:>9} {:>9} {:>8} {:>9} {:>7}",
+        "activity", "objects", "robot", "agent", "dt", "steps/s", "physics", "rules", "Q+metrics", "share"
+    );
+    for r in &report.rows {
+        println!(
+            "{:<27} {:>7} {:<8} {:<6} {:<6} {:>9.0} {:>7.0}µs {:>6.0}µs {:>7.0}µs {:>6.1}%",
+            r.activity,
+            r.objects,
+            r.robot,
+            r.agent,
+            r.physics_dt,
+            r.steps_per_second,
+            r.physics_us,
+            r.rules_us,
+            r.scoring_us,
+            r.scoring_share * 100.0
+        );
+    }
+    println!(
+        "{} timed steps per row after {WARMUP} warm-up steps; memory per env ≈ {:.0} MB",
+        report.steps, report.memory_per_env_mb
+    );
+}

@@ -1,0 +1,97 @@
+//! `behavior replay`: read a recording, and with `--verify` re-simulate it and compare every
+//! checkpoint bit for bit.
+
+use crate::prelude::Prelude;
+use anyhow::{Context, Result};
+use behavior_bddl::Source;
+use behavior_env::record::{read, replay};
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::sync::Arc;
+
+#[derive(clap::Args)]
+pub struct ReplayArgs {
+    /// A recording made by `behavior run --record`.
+    file: PathBuf,
+    /// Re-simulate the episode and check the state at every checkpoint.
+    #[arg(long)]
+    verify: bool,
+    #[arg(long)]
+    json: bool,
+}
+
+/// What `behavior replay --json` prints.
+#[derive(Serialize)]
+struct ReplayOutput {
+    activity: String,
+    scene: String,
+    seed: u64,
+    robot: String,
+    /// Steps in the file (whole chunks).
+    frames: usize,
+    /// Checkpoints in the file (with `--verify`: those compared).
+    checkpoints: usize,
+    /// With `--verify`: every compared checkpoint identical; without it: null.
+    identical: Option<bool>,
+    first_difference: Option<u32>,
+    /// Where reading stopped on a damaged or cut file.
+    damage: Option<String>,
+}
+
+pub fn run(args: ReplayArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
+    let recording = read(&args.file)?;
+    let h = &recording.header;
+    let mut out = ReplayOutput {
+        activity: h.activity.clone(),
+        scene: h.scene.clone(),
+        seed: h.seed,
+        robot: h.robot.clone(),
+        frames: recording.frames.len(),
+        checkpoints: recording.checkpoints.len(),
+        identical: None,
+        first_difference: None,
+        damage: recording.damage.clone(),
+    };
+    if args.verify {
+        let prelude = Prelude::load(data_dir)?;
+        let source = Source::new(&h.activity, &h.definition);
+        let activity = prelude
+            .load_activity(&source)
+            .with_context(|| format!("the definition in {}", args.file.display()))?;
+        let taxonomy = Arc::new(prelude.knowledge.taxonomy.clone());
+        let config = recording.config(Arc::new(activity), taxonomy)?;
+        let report = replay(&recording, config)?;
+        out.frames = report.frames as usize;
+        out.checkpoints = report.checkpoints as usize;
+        out.identical = Some(report.identical);
+        out.first_difference = report.first_difference;
+    }
+    if args.json {
+        println!("{}", serde_json::to_string_pretty(&out)?);
+    } else {
+        print(&out);
+    }
+    let failed = out.damage.is_some() || out.identical == Some(false);
+    Ok(if failed {
+        ExitCode::FAILURE
+    } else {
+        ExitCode::SUCCESS
+    })
+}
+
+fn print(out: &ReplayOutput) {
+    println!(
+        "{} in {} (seed {}), {} robot: {} steps, {} checkpoints",
+        out.activity, out.scene, out.seed, out.robot, out.frames, out.checkpoints
+    );
+    match (out.identical, out.first_difference) {
+        (Some(true), _) => println!("  replay: identical at every checkpoint"),
+        (Some(false), Some(step)) => println!("  replay: DIFFERS from step {step}'s checkpoint on"),
+        (Some(false), None) => println!("  replay: differs"),
+        (None, _) => println!("  (re-simulate with --verify)"),
+    }
+    if let Some(damage) = &out.damage {
+        eprintln!("error: {damage}");
+    }
+}

@@ -87,12 +87,16 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         // Sample once; every configuration starts from the same instance.
         let before = resident_mb();
         let mut sampler = Env::new(base.clone());
-        sampler.reset(0).with_context(|| format!("sampling {name}"))?;
+        sampler
+            .reset(0)
+            .with_context(|| format!("sampling {name}"))?;
         let instance = sampler.start().context("no episode")?.instance.clone();
         memory = memory.max(resident_mb() - before);
-        let objects = sampler
-            .world()
-            .map_or(0, |w| w.objects().filter(|(_, o)| o.category != "wall.n.01").count());
+        let objects = sampler.world().map_or(0, |w| {
+            w.objects()
+                .filter(|(_, o)| o.category != "wall.n.01")
+                .count()
+        });
         drop(sampler);
         for robot in ["behavior", "fetch"] {
             for agent in ["idle", "random"] {
@@ -166,7 +170,16 @@ fn measure(config: EnvConfig, agent: &str, steps: u32) -> Result<Row> {
 fn print(report: &Report) {
     println!(
         "{:<27} {:>7} {:<8} {:<6} {:<6} {:>9} {:>9} {:>8} {:>9} {:>7}",
-        "activity", "objects", "robot", "agent", "dt", "steps/s", "physics", "rules", "Q+metrics", "share"
+        "activity",
+        "objects",
+        "robot",
+        "agent",
+        "dt",
+        "steps/s",
+        "physics",
+        "rules",
+        "Q+metrics",
+        "share"
     );
     for r in &report.rows {
         println!(

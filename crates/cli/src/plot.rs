@@ -24,9 +24,21 @@ pub fn plot_episode(series: &Series, title: &str, path: &Path) -> Result<()> {
     };
     let panels = [
         ("success score Q", series.q.clone(), [30, 110, 200]),
-        ("kinematic disarrangement (m, cumulative)", cumulative(&series.kinematic), [200, 90, 40]),
-        ("distance navigated (m)", cumulative(&series.distance), [40, 150, 70]),
-        ("hand displacement in contact (m)", cumulative(&series.hands), [150, 60, 160]),
+        (
+            "kinematic disarrangement (m, cumulative)",
+            cumulative(&series.kinematic),
+            [200, 90, 40],
+        ),
+        (
+            "distance navigated (m)",
+            cumulative(&series.distance),
+            [40, 150, 70],
+        ),
+        (
+            "hand displacement in contact (m)",
+            cumulative(&series.hands),
+            [150, 60, 160],
+        ),
     ];
     let height = MARGIN + panels.len() as u32 * (PANEL + MARGIN);
     let mut img = RgbImage::from_pixel(WIDTH, height, Rgb([255, 255, 255]));
@@ -68,5 +80,12 @@ fn panel(img: &mut RgbImage, top: u32, name: &str, values: &[f32], color: Rgb<u8
         previous = Some((x, y));
     }
     let label = format!("{name}: max {max:.3} over {} steps", values.len());
-    text(img, &label, WIDTH as f32 / 2.0, top as f32 - 8.0, 1, Rgb([0, 0, 0]));
+    text(
+        img,
+        &label,
+        WIDTH as f32 / 2.0,
+        top as f32 - 8.0,
+        1,
+        Rgb([0, 0, 0]),
+    );
 }

@@ -200,7 +200,11 @@ pub fn sample(args: SampleArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
 }
 
 /// The first named home that covers the activity.
-pub(crate) fn first_covering(activity: &Activity, library: &Library, taxonomy: &Taxonomy) -> Result<Scene> {
+pub(crate) fn first_covering(
+    activity: &Activity,
+    library: &Library,
+    taxonomy: &Taxonomy,
+) -> Result<Scene> {
     let homes = named_homes(library)?;
     let first = covering(&homes, activity, taxonomy)
         .first()

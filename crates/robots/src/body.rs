@@ -59,7 +59,7 @@ pub(crate) fn body_spec(name: &str, pose: Pose) -> ObjectSpec {
     let (r, cylinder) = (BODY_RADIUS, BODY_LENGTH - 2.0 * BODY_RADIUS);
     let volume = pi * r * r * cylinder + 4.0 / 3.0 * pi * r.powi(3);
     let mut spec = ObjectSpec::new(name, AGENT_SYNSET, vec![Part::new(body_shape())])
-        .body(BodyKind::KinematicPosition)
+        .body(BodyKind::KinematicVelocity)
         .looks([90, 90, 200], Material::Plastic);
     spec.pose = pose;
     spec.density = BODY_MASS / volume;

@@ -181,7 +181,7 @@ const PARK_ANGLE: f32 = 0.01;
 const PARK_SPEED: f32 = 0.05;
 
 /// The rotation vector (axis × angle, the short way round) taking `from` to `to`.
-fn rotation_error(from: Rotation, to: Rotation) -> Vector {
+pub(crate) fn rotation_error(from: Rotation, to: Rotation) -> Vector {
     let mut q = to * from.inverse();
     if q.w < 0.0 {
         q = -q;

@@ -2,7 +2,7 @@
 
 use crate::action::{Action, ActionError};
 use crate::body::{body_spec, eye_rest, hand_rest};
-use crate::follow::{Follower, HAND_LIMITS, servo, settled};
+use crate::follow::{Follower, HAND_LIMITS, rotation_error, servo, settled};
 use crate::grasp::{Grasp, GraspRules, Grasper, Release, must_release};
 use crate::hand::{
     FINGER_DAMPING, FINGER_STIFFNESS, FINGER_TORQUE, FINGERS, HandPoints, Side, closed_angle,
@@ -13,7 +13,7 @@ use crate::proprioception::{LocalPose, Proprioception};
 use crate::relative;
 use behavior_sim::{
     AttachmentId, AttachmentKind, AttachmentSpec, BodyRef, Drive, ObjectId, QueryFilter,
-    STEP_SECONDS, StepHooks, World, WorldError, groups,
+    STEP_SECONDS, StepHooks, Velocity, World, WorldError, groups,
 };
 use rapier3d::math::Pose;
 
@@ -75,7 +75,8 @@ impl RobotParts {
 ///
 /// **Body model.** The original moves every part by a force-limited constraint toward its target
 /// (body 7,500 N, hands 300 N). Ours:
-/// - The body is a kinematic body, moved at constant speed within each step to its target. It
+/// - The body is a velocity-driven kinematic body, moved at constant speed within each step to
+///   its target (stopped with exactly zero velocity, so that it sleeps at any heading). It
 ///   costs the solver nothing, goes exactly where it is told (it drives 1 m when told to), and
 ///   sleeps when still. Walls and furniture stop it: it is never sent into a fixed body (see
 ///   `motion.rs`). Movable objects in its way it pushes with unbounded force (the original: at
@@ -118,6 +119,8 @@ pub struct BehaviorRobot {
     pending: Action,
     /// Whether a part moved in the step being taken.
     moved: bool,
+    /// Whether the body was given a velocity that must be stopped.
+    body_moving: bool,
     rules: GraspRules,
 }
 
@@ -165,6 +168,7 @@ impl BehaviorRobot {
             releases: Vec::new(),
             pending: Action::ZERO,
             moved: false,
+            body_moving: false,
             rules,
         };
         robot.drive_fingers(world);
@@ -355,13 +359,28 @@ impl BehaviorRobot {
             let t = (substep + 1) as f32 / n as f32;
             self.step_from.lerp(&self.targets.body, t)
         };
-        let core = world.core_mut();
-        if self.step_from != self.targets.body {
-            // Finite poses and kinematic parts: the world cannot refuse these.
-            let _ = core.set_kinematic_target(self.parts.body.into(), body);
-            self.moved = true;
-        }
         let dt = STEP_SECONDS / n as f32;
+        if self.step_from != self.targets.body {
+            // The velocity that lands the body on this substep's pose. A velocity-driven body
+            // stopped with exactly zero velocity sleeps; a position-driven one turned by any
+            // angle never does (rapier derives its velocity from rounded rotations).
+            let now = world.pose(self.parts.body);
+            let velocity = Velocity {
+                linear: (body.translation - now.translation) / dt,
+                angular: rotation_error(now.rotation, body.rotation) / dt,
+            };
+            // Finite poses make finite velocities: the world cannot refuse these.
+            let _ = world
+                .core_mut()
+                .set_velocity(self.parts.body.into(), velocity);
+            self.moved = true;
+            self.body_moving = true;
+        } else if self.body_moving {
+            let _ = world
+                .core_mut()
+                .set_velocity(self.parts.body.into(), Velocity::default());
+            self.body_moving = false;
+        }
         for side in Side::BOTH {
             let i = side.index();
             if self.parked[i].is_some() {

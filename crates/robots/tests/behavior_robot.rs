@@ -51,6 +51,29 @@ fn the_robot_drives_one_metre_and_its_body_moves_one_metre() {
 }
 
 #[test]
+fn a_turned_robot_comes_to_rest_and_sleeps() {
+    let mut world = World::default();
+    floor(&mut world);
+    let at = Pose::from_parts(
+        v(1.3, 2.7, behavior_robots::BODY_HEIGHT),
+        rapier3d::math::Rotation::from_rotation_z(0.7),
+    );
+    let mut robot = BehaviorRobot::add(&mut world, at).unwrap();
+    for _ in 0..5 {
+        step(&mut world, &mut robot, action(&[(0, 1.0), (5, 1.0)]));
+    }
+    // Every part falls asleep, so an idle robot costs an idle world nothing.
+    idle(&mut world, &mut robot, 90);
+    for id in robot.parts().all() {
+        assert!(
+            world.core().is_sleeping(id),
+            "{} is awake",
+            world.object(id).name
+        );
+    }
+}
+
+#[test]
 fn a_wall_stops_the_body_and_a_table_stops_the_hand() {
     let mut world = World::default();
     floor(&mut world);

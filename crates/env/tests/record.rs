@@ -16,13 +16,18 @@ fn temp(name: &str) -> PathBuf {
 
 /// Records `steps` steps of a random agent; returns the environment at the end.
 fn record(path: &PathBuf, steps: u32, every: u32) -> Env {
-    let mut env = common::env("bringing_in_wood");
+    record_with(common::config("bringing_in_wood"), path, steps, every)
+}
+
+fn record_with(config: behavior_env::EnvConfig, path: &PathBuf, steps: u32, every: u32) -> Env {
+    let mut env = Env::new(config);
     env.reset(5).unwrap();
+    let dim = env.robot().unwrap().action_dim();
     let mut recorder = Recorder::create(path, &env, "(definition text)", every).unwrap();
     let mut agent = Agent::named("random", 5).unwrap();
     let mut action = Vec::new();
     for _ in 0..steps {
-        agent.act(26, &mut action);
+        agent.act(dim, &mut action);
         env.step(&action).unwrap();
         recorder.record(&env, &action).unwrap();
     }
@@ -47,6 +52,25 @@ fn a_recorded_episode_replays_bit_for_bit() {
     // The recording's last checkpoint is the digest of the original run's state.
     let (world, robot) = (env.world().unwrap(), env.robot().unwrap());
     assert_eq!(recording.checkpoints[3].1, state_digest(world, robot, 90));
+}
+
+#[test]
+fn a_fetch_episode_replays_bit_for_bit() {
+    let path = temp("fetch.mcap");
+    let mut config = common::config("re-shelving_library_books");
+    config.robot = behavior_robots::RobotKind::Fetch;
+    record_with(config, &path, 60, 20);
+    let recording = read(&path).unwrap();
+    assert_eq!(recording.header.robot, "fetch");
+    assert_eq!(recording.frames[0].action.len(), 11);
+    let config = recording
+        .config(
+            common::activity("re-shelving_library_books"),
+            common::taxonomy(),
+        )
+        .unwrap();
+    let report = replay(&recording, config).unwrap();
+    assert!(report.identical && report.checkpoints == 4, "{report:?}");
 }
 
 #[test]

@@ -149,3 +149,70 @@ impl HumanReference {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn episode(q: f64, time: f64, hands: (f64, f64)) -> EpisodeMetrics {
+        EpisodeMetrics {
+            q_final: q,
+            sim_time_s: time,
+            kinematic_disarrangement: 2.0 * time,
+            logical_disarrangement: 3,
+            distance_navigated: 10.0,
+            hand_displacement_left: hands.0,
+            hand_displacement_right: hands.1,
+            ..EpisodeMetrics::default()
+        }
+    }
+
+    #[test]
+    fn the_summary_is_the_benchmark_protocol_s() {
+        let mut episodes = Vec::new();
+        // Six activities with mean Q 0.6, 0.5, 0.4, 0.3, 0.2 and 0.1; the first has two episodes.
+        episodes.push(("a0".to_string(), episode(0.8, 10.0, (1.0, 0.0))));
+        episodes.push(("a0".to_string(), episode(0.4, 20.0, (0.0, 1.0))));
+        for (k, q) in [0.5, 0.4, 0.3, 0.2, 0.1].into_iter().enumerate() {
+            episodes.push((format!("a{}", k + 1), episode(q, 30.0, (0.5, 0.5))));
+        }
+        let s = aggregate(&episodes);
+        assert_eq!(s.episodes, 7);
+        assert!((s.success_score - 2.7 / 7.0).abs() < 1e-12);
+        assert!((s.success_score_top5 - (0.6 + 0.5 + 0.4 + 0.3 + 0.2) / 5.0).abs() < 1e-12);
+        assert!((s.simulated_time - 180.0 / 7.0).abs() < 1e-12);
+        assert!((s.kinematic_disarrangement - 360.0 / 7.0).abs() < 1e-12);
+        assert_eq!(s.logical_disarrangement, 3.0);
+        assert_eq!(s.distance_navigated, 10.0);
+        assert_eq!(s.displacement_of_hands, 1.0);
+    }
+
+    #[test]
+    fn metrics_are_normalized_by_the_best_person_on_that_instance() {
+        let mut humans = HumanReference::new();
+        humans.add("a", "0", &episode(1.0, 40.0, (2.0, 0.0)));
+        humans.add("a", "0", &episode(1.0, 30.0, (3.0, 1.0)));
+        let agent = episode(0.5, 60.0, (4.0, 2.0));
+        let n = humans.normalize("a", "0", &agent).unwrap();
+        assert_eq!(n.simulated_time, Some(2.0), "60 s against the best 30 s");
+        assert_eq!(n.kinematic_disarrangement, Some(2.0));
+        assert_eq!(n.logical_disarrangement, Some(1.0));
+        assert_eq!(n.distance_navigated, Some(1.0));
+        assert_eq!(
+            n.displacement_of_hands,
+            Some(3.0),
+            "6 m against the best 2 m"
+        );
+        assert_eq!(humans.normalize("a", "1", &agent), None);
+        let mut still = HumanReference::new();
+        still.add("b", "0", &episode(1.0, 10.0, (0.0, 0.0)));
+        let n = still
+            .normalize("b", "0", &episode(1.0, 10.0, (0.0, 0.0)))
+            .unwrap();
+        assert_eq!(n.displacement_of_hands, Some(1.0));
+        let n = still
+            .normalize("b", "0", &episode(1.0, 10.0, (1.0, 0.0)))
+            .unwrap();
+        assert_eq!(n.displacement_of_hands, None);
+    }
+}

@@ -92,3 +92,39 @@ impl Kinematic {
         self.followed = followed;
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use behavior_sim::{ObjectSpec, Part, Primitive};
+    use rapier3d::math::Pose;
+
+    fn block(world: &mut World, name: &str, x: f32) -> ObjectId {
+        let shape = Primitive::Box {
+            half_extents: Vector::splat(0.05),
+        };
+        let spec = ObjectSpec::new(name, "block.n.01", vec![Part::new(shape)])
+            .at(Vector::new(x, 0.0, 2.0));
+        world.add(spec).unwrap()
+    }
+
+    #[test]
+    fn moves_are_summed_per_step_integrated_and_measured_from_the_start() {
+        let mut world = World::default();
+        world.core_mut().set_sleeping_allowed(false);
+        let a = block(&mut world, "a", 0.0);
+        let ignored = block(&mut world, "robot", 5.0);
+        let mut k = Kinematic::start(&world, &[ignored]);
+        // Teleported 3-4-5 away and back halfway, with gravity off by holding it in place.
+        let at = |x: f32, y: f32| Pose::from_translation(Vector::new(x, y, 2.0));
+        world.set_pose(a, at(0.3, 0.4)).unwrap();
+        world.set_pose(ignored, at(9.0, 0.0)).unwrap();
+        let first = k.step(&world);
+        world.set_pose(a, at(0.0, 0.4)).unwrap();
+        let second = k.step(&world);
+        assert!((first - 0.5).abs() < 1e-6, "{first}");
+        assert!((second - 0.3).abs() < 1e-6, "{second}");
+        assert!((k.integrated - 0.8).abs() < 1e-6);
+        assert!((k.relative() - 0.4).abs() < 1e-6, "{}", k.relative());
+    }
+}

@@ -155,3 +155,85 @@ fn picture_of(world: &World, id: ObjectId, others: &[ObjectId], floors: &[Object
         relations,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use behavior_sim::{ObjectSpec, Part, Primitive};
+    use rapier3d::math::{Pose, Vector};
+
+    fn boxed(
+        world: &mut World,
+        name: &str,
+        category: &str,
+        half: Vector,
+        at: Vector,
+    ) -> ObjectSpec {
+        let _ = world;
+        ObjectSpec::new(
+            name,
+            category,
+            vec![Part::new(Primitive::Box { half_extents: half })],
+        )
+        .at(at)
+    }
+
+    #[test]
+    fn an_object_counts_once_for_its_relations_and_walking_robots_count_nothing() {
+        let mut world = World::default();
+        let floor = boxed(
+            &mut world,
+            "floor",
+            "floor.n.01",
+            Vector::new(5.0, 5.0, 0.05),
+            Vector::new(0.0, 0.0, -0.05),
+        );
+        world.add(floor.fixed()).unwrap();
+        let table = boxed(
+            &mut world,
+            "table",
+            "table.n.02",
+            Vector::new(0.5, 0.5, 0.4),
+            Vector::new(0.0, 0.0, 0.4),
+        );
+        world.add(table.fixed()).unwrap();
+        let small = Vector::splat(0.04);
+        let apples: Vec<ObjectId> = (0..3)
+            .map(|k| {
+                let spec = boxed(
+                    &mut world,
+                    &format!("apple_{k}"),
+                    "apple.n.01",
+                    small,
+                    Vector::new(-0.3 + 0.3 * k as f32, 0.0, 0.85),
+                );
+                world.add(spec).unwrap()
+            })
+            .collect();
+        let robot = boxed(
+            &mut world,
+            "robot",
+            "agent.n.01",
+            Vector::splat(0.2),
+            Vector::new(2.0, 0.0, 0.2),
+        );
+        let robot = world.add(robot).unwrap();
+        world.settle(200);
+        let logical = Logical::start(&world, &[robot]);
+        // Two apples go from the table to the floor; the robot walks up to the third one's side.
+        for (k, &apple) in apples[..2].iter().enumerate() {
+            let to = Pose::from_translation(Vector::new(1.0, -0.5 + k as f32, 0.04));
+            world.set_pose(apple, to).unwrap();
+        }
+        world
+            .set_pose(robot, Pose::from_translation(Vector::new(0.8, 0.0, 0.2)))
+            .unwrap();
+        world.settle(200);
+        let change = logical.compare(&world);
+        // Each moved apple counts once (ontop, touching and onfloor changed, grouped); the
+        // table counts once too: it no longer touches them. The robot is not pictured.
+        assert_eq!(change.relative, 3);
+        assert_eq!(change.total_objects, 4, "three apples and the table");
+        assert_eq!(change.total_states, 4 * 10);
+    }
+}

@@ -6,7 +6,8 @@ use crate::sample::first_covering;
 use crate::scene::{load_scene, with_clutter};
 use anyhow::{Context, Result, bail};
 use behavior_env::record::{CHECKPOINT_EVERY, Recorder};
-use behavior_env::{Agent, Env, EnvConfig, EpisodeMetrics};
+use behavior_env::{Agent, Env, EnvConfig, EpisodeMetrics, Instances};
+use behavior_sampling::SavedInstance;
 use behavior_robots::RobotKind;
 use behavior_sim::Substeps;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -38,6 +39,9 @@ pub struct RunArgs {
     /// Physics time step: 1/300 or 1/120.
     #[arg(long, default_value = "1/300")]
     physics_dt: String,
+    /// Start from a saved instance (`behavior sample --out`) instead of sampling one.
+    #[arg(long, value_name = "FILE.json")]
+    instance: Option<PathBuf>,
     /// Record the episode to an MCAP file.
     #[arg(long, value_name = "FILE.mcap")]
     record: Option<PathBuf>,
@@ -93,19 +97,30 @@ pub fn run(args: RunArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let activity = prelude.load_activity(&source)?;
     let mut agent = Agent::named(&args.agent, args.seed)
         .with_context(|| format!("--agent must be idle or random, not `{}`", args.agent))?;
-    let scene = match &args.scene {
-        Some(name) => load_scene(name, &library)?,
-        None => first_covering(&activity, &library, &prelude.knowledge.taxonomy)?,
+    // A saved instance holds its home; otherwise sample in the home asked for.
+    let scenes = match (&args.instance, &args.scene) {
+        (Some(_), _) => Vec::new(),
+        (None, Some(name)) => vec![load_scene(name, &library)?],
+        (None, None) => vec![first_covering(&activity, &library, &prelude.knowledge.taxonomy)?],
     };
-    let scene = with_clutter(scene, &library, !args.no_clutter)?;
+    let scenes = scenes
+        .into_iter()
+        .map(|s| with_clutter(s, &library, !args.no_clutter))
+        .collect::<Result<Vec<_>>>()?;
     let mut config = EnvConfig::new(
         Arc::new(activity),
         Arc::new(prelude.knowledge.taxonomy.clone()),
-        vec![scene],
+        scenes,
     );
     config.robot = robot_kind(&args.robot)?;
     config.physics = physics(&args.physics_dt)?;
     config.max_steps = args.steps.max(1);
+    if let Some(path) = &args.instance {
+        let text = std::fs::read_to_string(path)
+            .with_context(|| format!("cannot read {}", path.display()))?;
+        let saved = SavedInstance::from_json(&text).with_context(|| path.display().to_string())?;
+        config.instances = Instances::Saved(vec![saved]);
+    }
     let mut env = Env::new(config);
     env.reset(args.seed)
         .with_context(|| format!("starting {} (seed {})", args.activity, args.seed))?;

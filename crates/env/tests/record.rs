@@ -4,7 +4,7 @@
 
 mod common;
 
-use behavior_env::record::{Recorder, read, replay, state_digest};
+use behavior_env::record::{Recorder, read, replay, resume, state_digest};
 use behavior_env::{Agent, Env};
 use std::path::PathBuf;
 
@@ -148,4 +148,25 @@ fn an_episode_resumed_from_a_checkpoint_continues_identically() {
         env.step(a).unwrap();
     }
     assert_eq!((digest(&env), env.metrics().unwrap()), first);
+}
+
+#[test]
+fn a_recording_resumed_at_a_checkpoint_continues_as_recorded() {
+    let path = temp("resume.mcap");
+    let env = record(&path, 60, 20);
+    let recording = read(&path).unwrap();
+    let config = || {
+        recording
+            .config(common::activity("bringing_in_wood"), common::taxonomy())
+            .unwrap()
+    };
+    let mut resumed = resume(&recording, config(), 20).unwrap();
+    assert_eq!(resumed.steps(), 20);
+    for frame in &recording.frames[20..] {
+        resumed.step(&frame.action).unwrap();
+    }
+    let digest = |env: &Env| state_digest(env.world().unwrap(), env.robot().unwrap(), env.steps());
+    assert_eq!(digest(&resumed), digest(&env));
+    assert_eq!(digest(&resumed), recording.checkpoints[3].1);
+    assert!(resume(&recording, config(), 25).is_err(), "no checkpoint at 25");
 }

@@ -23,7 +23,7 @@ mod writer;
 
 pub use digest::state_digest;
 pub use reader::{Frame, ReadError, Recording, read};
-pub use replay::{ReplayError, ReplayReport, replay};
+pub use replay::{ReplayError, ReplayReport, replay, resume};
 pub use writer::{RecordError, Recorder};
 
 use behavior_sampling::SavedInstance;

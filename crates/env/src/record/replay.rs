@@ -22,6 +22,12 @@ pub enum ReplayError {
         /// Its value.
         value: String,
     },
+    /// The recording has no checkpoint at the step asked to resume from.
+    #[error("the recording has no checkpoint at step {0}")]
+    NoCheckpoint(u32),
+    /// Re-simulated to a checkpoint, the state differs from the recording's.
+    #[error("the state re-simulated to step {0} differs from the recording's checkpoint")]
+    Differs(u32),
     /// The environment refused the start or a step.
     #[error("replaying step {step}: {source}")]
     Env {
@@ -125,4 +131,38 @@ pub fn replay(recording: &Recording, config: EnvConfig) -> Result<ReplayReport, 
     }
     report.q_final = env.score().map_or(0.0, |s| s.q);
     Ok(report)
+}
+
+/// Resumes a recorded episode at one of its checkpoints: re-simulates it from the header up to
+/// `step`, checks the state against the checkpoint bit for bit, and hands back the environment
+/// there, ready to continue (with the recorded actions, it continues as recorded; with others,
+/// it branches off).
+pub fn resume(recording: &Recording, config: EnvConfig, step: u32) -> Result<Env, ReplayError> {
+    let digest = recording
+        .checkpoints
+        .iter()
+        .find(|(s, _)| *s == step)
+        .map(|(_, d)| d)
+        .ok_or(ReplayError::NoCheckpoint(step))?;
+    let mut env = Env::new(config);
+    let start = Start {
+        seed: recording.header.seed,
+        instance: recording.header.instance.clone(),
+    };
+    env.reset_to(start)
+        .map_err(|source| ReplayError::Env { step: 0, source })?;
+    for frame in recording.frames.iter().take_while(|f| f.step <= step) {
+        env.step(&frame.action).map_err(|source| ReplayError::Env {
+            step: frame.step,
+            source,
+        })?;
+    }
+    let same = match (env.world(), env.robot()) {
+        (Some(world), Some(robot)) => state_digest(world, robot, env.steps()) == *digest,
+        _ => false,
+    };
+    if !same || env.steps() != step {
+        return Err(ReplayError::Differs(step));
+    }
+    Ok(env)
 }

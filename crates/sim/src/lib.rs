@@ -33,6 +33,7 @@
 #![warn(missing_docs)]
 
 mod attachments;
+mod bytes;
 mod construct;
 mod contacts;
 mod core;
@@ -50,6 +51,7 @@ mod visual;
 mod world;
 
 pub use attachments::{AttachmentId, AttachmentKind, AttachmentSpec, AttachmentState};
+pub use bytes::{WORLD_FORMAT_VERSION, WORLD_MAGIC, WorldBytesError};
 pub use contacts::{Contact, groups};
 pub use core::{Core, STEP_SECONDS, Substeps, WorldError};
 pub use dynamics::Velocity;

@@ -94,9 +94,13 @@ struct Saved {
 }
 
 impl World {
-    /// The whole state as bytes (see the module docs of `bytes.rs` for the layout): everything
-    /// [`World::snapshot`] keeps, so [`World::from_bytes`] gives a world that continues
-    /// bit-identically, and saving that world again gives the same bytes.
+    /// The whole state as bytes: everything [`World::snapshot`] keeps (see the crate docs), so
+    /// [`World::from_bytes`] gives a world that continues bit-identically, and saving that world
+    /// again gives the same bytes.
+    ///
+    /// Layout: a 24-byte header — [`WORLD_MAGIC`], [`WORLD_FORMAT_VERSION`] (u32 little-endian),
+    /// the CRC-32 of the payload (u32 LE), the payload's length (u64 LE) — then the payload, the
+    /// world in postcard's wire format (floats as their raw bits).
     ///
     /// ```
     /// use behavior_sim::{ObjectSpec, Part, Primitive, World};

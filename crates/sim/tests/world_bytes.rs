@@ -312,3 +312,44 @@ fn world_bytes_public_ids_serialize() {
     let back: (ObjectId, BodyRef, AttachmentId) = serde_json::from_str(&text).unwrap();
     assert_eq!(back, (ObjectId(3), body, attachment));
 }
+
+/// Saved right after changes made between steps — a new attachment, a teleport, a new drive —
+/// before any step has taken them in, the loaded world still continues as the original.
+#[test]
+fn world_bytes_changes_made_between_steps_are_saved_too() {
+    let mut original = busy_scene();
+    run(&mut original, 40);
+    let a = original.object_named("thing_10").unwrap();
+    let b = original.object_named("thing_11").unwrap();
+    let at = original.pose(a).translation;
+    original
+        .core_mut()
+        .attach(AttachmentSpec {
+            holder: a.into(),
+            held: b.into(),
+            at,
+            kind: AttachmentKind::Fixed,
+            max_force: 1000.0,
+        })
+        .unwrap();
+    let c = original.object_named("thing_20").unwrap();
+    let mut pose = original.pose(c);
+    pose.translation.z += 0.3;
+    original.set_pose(c, pose).unwrap();
+    let fridge = original.object_named("fridge_1").unwrap();
+    original
+        .core_mut()
+        .drive_joint(fridge, 0, Drive::position(0.2, 200.0, 20.0, 50.0))
+        .unwrap();
+    let mut loaded = World::from_bytes(&original.to_bytes()).unwrap();
+    for step in 0..60 {
+        original.step();
+        loaded.step();
+        assert_eq!(
+            loaded.core().motion_bits(),
+            original.core().motion_bits(),
+            "step {step} after loading"
+        );
+    }
+    assert_eq!(digest(&loaded), digest(&original));
+}

@@ -1,6 +1,7 @@
 //! Generating a home from a seed, cluttering it, building a scene into a world, and stepping a
 //! freshly built home with and without clutter (which costs next to nothing once the first step
-//! has found the resting contacts: everything starts asleep).
+//! has found the resting contacts: everything starts asleep), and saving and loading a home's
+//! full state as bytes (`World::to_bytes`, `World::from_bytes`).
 //! `cargo bench -p behavior-assets`.
 
 use behavior_assets::{Library, NAMED_HOMES, Scene, clutter, generate};
@@ -73,6 +74,14 @@ fn cluttered(c: &mut Criterion, library: &Library, scene: &Scene) {
         built.world.step();
         group.bench_function(format!("idle_step_of_a_{label}"), |b| {
             b.iter(|| built.world.step())
+        });
+        // A full-state checkpoint of the home at rest, with its resting contacts.
+        group.bench_function(format!("{label}_to_bytes"), |b| {
+            b.iter(|| black_box(built.world.to_bytes().len()))
+        });
+        let bytes = built.world.to_bytes();
+        group.bench_function(format!("{label}_from_bytes"), |b| {
+            b.iter(|| black_box(behavior_sim::World::from_bytes(&bytes).unwrap().steps()))
         });
     }
     group.finish();

@@ -6,8 +6,10 @@ use std::collections::BTreeMap;
 use std::fmt;
 use std::str::FromStr;
 
-/// What an object of a synset can do or undergo, as annotated in the taxonomy.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+/// What an object of a synset can do or undergo, as annotated in the taxonomy. Serialized by
+/// its taxonomy spelling ([`Ability::name`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "camelCase")]
 pub enum Ability {
     /// Can break.
     Breakable,

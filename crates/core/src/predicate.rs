@@ -6,24 +6,31 @@
 //! the official activities without being declared there, as in the original simulator.
 
 use crate::Ability;
+use serde::{Deserialize, Serialize};
 use std::fmt;
 
-/// A BDDL predicate. The set is closed: see the module docs.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+/// A BDDL predicate. The set is closed: see the module docs. Serialized by its BDDL name
+/// ([`Predicate::name`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum Predicate {
     /// `(inside a b)`: `a` is within `b`.
     Inside,
     /// `(nextto a b)`: beside each other, a small gap apart.
+    #[serde(rename = "nextto")]
     NextTo,
     /// `(ontop a b)`: `b` supports `a` from below.
+    #[serde(rename = "ontop")]
     OnTop,
     /// `(under a b)`: `a` is below `b`.
     Under,
     /// `(touching a b)`: in contact.
     Touching,
     /// `(onfloor a floor)`: resting on a room's floor.
+    #[serde(rename = "onfloor")]
     OnFloor,
     /// `(inroom obj room_type)`: its second argument is a room type, not an object. `:init` only.
+    #[serde(rename = "inroom")]
     InRoom,
     /// Heated past its cook temperature at some time.
     Cooked,
@@ -50,6 +57,7 @@ pub enum Predicate {
     /// Screwed in (no official activity uses it).
     Screwed,
     /// Its time set (no official activity uses it).
+    #[serde(rename = "timeset")]
     TimeSet,
 }
 
@@ -173,5 +181,19 @@ mod tests {
             assert_eq!(Predicate::from_name(p.name()), Some(p));
         }
         assert_eq!(Predicate::from_name("ontopp"), None);
+    }
+
+    #[test]
+    fn predicates_and_abilities_serialize_by_their_names() {
+        for p in Predicate::ALL {
+            let text = serde_json::to_string(&p).unwrap();
+            assert_eq!(text, format!("\"{}\"", p.name()));
+            assert_eq!(serde_json::from_str::<Predicate>(&text).unwrap(), p);
+        }
+        for a in Ability::ALL {
+            let text = serde_json::to_string(&a).unwrap();
+            assert_eq!(text, format!("\"{}\"", a.name()));
+            assert_eq!(serde_json::from_str::<Ability>(&text).unwrap(), a);
+        }
     }
 }

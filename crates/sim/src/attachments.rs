@@ -15,14 +15,15 @@ use rapier3d::dynamics::{
     FixedJointBuilder, GenericJoint, ImpulseJointHandle, SphericalJointBuilder,
 };
 use rapier3d::math::{Pose, Vector};
+use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
 /// Identifies an attachment for the world's life.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 pub struct AttachmentId(pub u64);
 
 /// How an attachment holds.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum AttachmentKind {
     /// Keeps the two bodies' relative pose (a grasp).
     Fixed,
@@ -31,7 +32,7 @@ pub enum AttachmentKind {
 }
 
 /// What to attach.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct AttachmentSpec {
     /// The holder (a hand).
     pub holder: BodyRef,
@@ -46,7 +47,7 @@ pub struct AttachmentSpec {
 }
 
 /// An attachment's condition after the last step.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct AttachmentState {
     /// As it was made.
     pub spec: AttachmentSpec,
@@ -58,7 +59,7 @@ pub struct AttachmentState {
     pub broken: bool,
 }
 
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 struct Record {
     spec: AttachmentSpec,
     joint: Option<ImpulseJointHandle>,
@@ -68,10 +69,32 @@ struct Record {
 }
 
 /// The attachments of a world.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub(crate) struct Attachments {
     records: BTreeMap<AttachmentId, Record>,
     next: u64,
+}
+
+impl Attachments {
+    /// Whether every attachment names known bodies and, unless broken, a joint in the physics.
+    pub(crate) fn check_consistency(
+        &self,
+        body_known: impl Fn(BodyRef) -> bool,
+        joint_known: impl Fn(ImpulseJointHandle) -> bool,
+    ) -> Result<(), String> {
+        let bad = self.records.iter().find(|(_, r)| {
+            !body_known(r.spec.holder)
+                || !body_known(r.spec.held)
+                || r.joint.is_some_and(|j| !joint_known(j))
+        });
+        match bad {
+            Some((id, _)) => Err(format!("attachment {} names a missing body or joint", id.0)),
+            None if self.records.keys().any(|id| id.0 >= self.next) => {
+                Err("an attachment id beyond the next one".into())
+            }
+            None => Ok(()),
+        }
+    }
 }
 
 impl Core {

@@ -10,6 +10,7 @@ use rapier3d::geometry::{
 };
 use rapier3d::math::Vector;
 use rapier3d::pipeline::{ActiveHooks, PairFilterContext, PhysicsHooks};
+use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
 
 /// Collision groups: bit masks saying what a body is and what it collides with. Two bodies
@@ -26,7 +27,7 @@ pub mod groups {
 }
 
 /// One contact point of a body with another, from the last physics substep.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Contact {
     /// The other body, or `None` for a water drop.
     pub other: Option<BodyRef>,

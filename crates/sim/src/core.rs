@@ -15,6 +15,7 @@ use rapier3d::math::{Pose, Vector};
 use rapier3d::parry::bounding_volume::BoundingVolume;
 use rapier3d::pipeline::{CollisionPipeline, PhysicsPipeline, PhysicsWorld};
 use rapier3d::prelude::Aabb;
+use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
 
@@ -25,7 +26,7 @@ pub const STEP_SECONDS: f32 = 1.0 / 30.0;
 pub(crate) const DROP_TAG: u128 = u128::MAX;
 
 /// How finely each action step is integrated.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Substeps {
     /// 10 substeps of 1/300 s: stable stacking of small objects.
     #[default]
@@ -75,7 +76,9 @@ pub enum WorldError {
     },
 }
 
-/// Objects, bodies, joints, rooms and the physics engine.
+/// Objects, bodies, joints, rooms and the physics engine. Its serde form is the core's part of
+/// [`crate::World::to_bytes`]: everything but the query index, which is rebuilt on first use.
+#[derive(Serialize, Deserialize)]
 pub struct Core {
     pub(crate) physics: PhysicsWorld,
     pub(crate) objects: Vec<Object>,
@@ -84,6 +87,7 @@ pub struct Core {
     motion: Vec<u64>,
     pub(crate) memo: RelationMemo,
     /// A ray and shape query structure over every collider, rebuilt on first use after a change.
+    #[serde(skip)]
     pub(crate) index: OnceLock<QueryIndex>,
     pub(crate) attachments: Attachments,
     /// Bodies whose contacts with each other are ignored (a hand and what it holds).
@@ -500,6 +504,81 @@ impl Core {
                 self.motion[i] += 1;
             }
         }
+    }
+}
+
+impl Core {
+    /// Whether a decoded core holds together: a table entry per object, and every handle an
+    /// object, a room, a drive or an attachment names is in the physics (see
+    /// [`crate::World::from_bytes`]).
+    pub(crate) fn check_consistency(&self) -> Result<(), String> {
+        let n = self.objects.len();
+        let p = &self.physics;
+        if self.motion.len() != n {
+            return Err(format!(
+                "{} motion counts for {n} objects",
+                self.motion.len()
+            ));
+        }
+        let known = |id: ObjectId| (id.0 as usize) < n;
+        for (i, object) in self.objects.iter().enumerate() {
+            let bad = |what: &str| Err(format!("object {i} (`{}`): {what}", object.name));
+            if object.colliders.is_empty() {
+                return bad("no collider");
+            }
+            let bodies = std::iter::once(object.body).chain(object.links.iter().map(|l| l.body));
+            if bodies.into_iter().any(|b| p.bodies.get(b).is_none()) {
+                return bad("a body missing from the physics");
+            }
+            if object
+                .colliders
+                .iter()
+                .any(|&c| p.colliders.get(c).is_none())
+            {
+                return bad("a collider missing from the physics");
+            }
+            for (l, link) in object.links.iter().enumerate() {
+                let joint = match link.handle {
+                    JointHandle::Impulse(h) => p.impulse_joints.get(h).is_some(),
+                    JointHandle::Multibody(h) => p.multibody_joints.get(h).is_some(),
+                };
+                if !joint || link.parent.is_some_and(|parent| parent >= l) {
+                    return bad("a link with a missing joint or a bad parent");
+                }
+            }
+            if object
+                .replaced_by
+                .is_some_and(|halves| !halves.into_iter().all(known))
+            {
+                return bad("halves that are not objects");
+            }
+        }
+        let body_known = |b: &BodyRef| {
+            known(b.object)
+                && b.link
+                    .is_none_or(|l| l < self.objects[b.object.0 as usize].links.len())
+        };
+        if self
+            .rooms
+            .iter()
+            .any(|r| r.floor.is_some_and(|f| !known(f)))
+            || self
+                .ignored
+                .iter()
+                .any(|(a, b)| !body_known(a) || !body_known(b))
+            || self
+                .drives
+                .keys()
+                .any(|&(id, link)| !known(id) || link >= self.objects[id.0 as usize].links.len())
+            || self.carried.keys().any(|&id| !known(id))
+        {
+            return Err("a room, ignored pair or drive names an unknown object or link".into());
+        }
+        if self.pushed.iter().any(|&h| p.bodies.get(h).is_none()) {
+            return Err("a pushed body missing from the physics".into());
+        }
+        self.attachments
+            .check_consistency(|b| body_known(&b), |j| p.impulse_joints.get(j).is_some())
     }
 }
 

@@ -8,9 +8,10 @@ use crate::core::{Core, WorldError, pose_is_finite};
 use crate::object::{BodyKind, BodyRef, JointHandle, Object, ObjectId};
 use rapier3d::dynamics::{MultibodyJointHandle, RigidBody};
 use rapier3d::math::{Pose, Rotation, Vector};
+use serde::{Deserialize, Serialize};
 
 /// A body's velocity.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct Velocity {
     /// m/s, of its centre of mass, in the world frame.
     pub linear: Vector,

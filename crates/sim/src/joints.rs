@@ -26,12 +26,13 @@ use behavior_core::rng::{SimRng, uniform};
 use rand_chacha::rand_core::Rng;
 use rapier3d::dynamics::{GenericJoint, JointAxis, MotorModel};
 use rapier3d::math::{Pose, Rotation, Vector};
+use serde::{Deserialize, Serialize};
 
 /// Fraction of a joint's range beyond which it counts as open.
 pub const OPEN_FRACTION: f32 = 0.05;
 
 /// A joint's state.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct JointState {
     /// Radians or metres.
     pub position: f32,
@@ -43,7 +44,7 @@ pub struct JointState {
 
 /// A motor on a joint: toward a position (a spring-damper) and/or a velocity, with a force limit.
 /// Gains are physical (N·m/rad and N·m·s/rad, or N/m and N·s/m).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Drive {
     /// The position it pulls toward, if any.
     pub target_position: Option<f32>,

@@ -77,6 +77,25 @@ impl Clone for RelationMemo {
     }
 }
 
+/// One memoized relation, as saved.
+type MemoEntry = ((Predicate, ObjectId, ObjectId), (bool, (u64, u64)));
+
+/// Saved sorted by key, so that equal memos give equal bytes whatever the map's order.
+impl serde::Serialize for RelationMemo {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut entries: Vec<MemoEntry> = self.lock().iter().map(|(&k, &v)| (k, v)).collect();
+        entries.sort_unstable_by_key(|&(k, _)| k);
+        serde::Serialize::serialize(&entries, s)
+    }
+}
+
+impl<'de> serde::Deserialize<'de> for RelationMemo {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let entries: Vec<MemoEntry> = serde::Deserialize::deserialize(d)?;
+        Ok(RelationMemo(Mutex::new(entries.into_iter().collect())))
+    }
+}
+
 impl RelationMemo {
     fn lock(&self) -> std::sync::MutexGuard<'_, MemoMap> {
         // A panic while holding the lock cannot leave the map half-written (inserts are atomic

@@ -28,11 +28,27 @@
 //! `construct.rs` builds one, `step.rs` runs a step and its hooks, `kinematics.rs` computes the
 //! relations, `joints.rs`, `dynamics.rs`, `attachments.rs`, `contacts.rs` and `query.rs` are what
 //! robots, cameras and planners use, `visual.rs` is what renderers draw, `placement.rs` is what
-//! the sampler places with, `oracle.rs` the bridge to the language.
+//! the sampler places with, `oracle.rs` the bridge to the language, `bytes.rs` the checkpoints.
+//!
+//! Checkpoints: [`World::to_bytes`] saves everything a [`Snapshot`] keeps, so a world read back
+//! with [`World::from_bytes`] continues bit-identically (`tests/world_bytes.rs`, and a cluttered
+//! home in `behavior-assets`' tests). Saved: the objects, rooms, drives, attachments, ignored
+//! pairs, step and motion counters, the memoized relations (in key order, so equal worlds give
+//! equal bytes), every state system with its generator, and rapier's whole state — bodies,
+//! colliders, impulse and multibody joints, the island manager, the broad phase and the narrow
+//! phase with its contact manifolds and warm-start impulses. Rebuilt: the query index (on first
+//! use, as after any step), rapier's physics and collision pipelines and CCD solver (scratch
+//! space, as a clone rebuilds them), and the few caches rapier itself leaves out of its serde
+//! form. The bytes carry a magic, a format version ([`WORLD_FORMAT_VERSION`], bumped when a
+//! saved type, ours or rapier's, changes shape) and a CRC-32; bad bytes are a
+//! [`WorldBytesError`], never a panic. A cluttered home of 248 objects saves to about 0.9 MB
+//! (a third of it the narrow phase's contacts; gzip takes it to 0.34 MB) in about 2 ms and
+//! loads in about 4.5 ms.
 
 #![warn(missing_docs)]
 
 mod attachments;
+mod bytes;
 mod construct;
 mod contacts;
 mod core;
@@ -50,6 +66,7 @@ mod visual;
 mod world;
 
 pub use attachments::{AttachmentId, AttachmentKind, AttachmentSpec, AttachmentState};
+pub use bytes::{WORLD_FORMAT_VERSION, WORLD_MAGIC, WorldBytesError};
 pub use contacts::{Contact, groups};
 pub use core::{Core, STEP_SECONDS, Substeps, WorldError};
 pub use dynamics::Velocity;

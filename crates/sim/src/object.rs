@@ -11,17 +11,18 @@ use behavior_core::{Ability, AbilityParams, ParamValue};
 use rapier3d::dynamics::{ImpulseJointHandle, MultibodyJointHandle, RigidBodyHandle};
 use rapier3d::geometry::ColliderHandle;
 use rapier3d::math::{Pose, Vector};
+use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
 /// Index of an object in its [`crate::World`], stable for the world's life.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 pub struct ObjectId(pub u32);
 
 /// One rigid body of the world: an object's own body (`link: None`) or one of its links.
 ///
 /// Velocities, forces, contacts and attachments act on bodies, so a hand can hold a drawer by its
 /// front without holding the cabinet.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 pub struct BodyRef {
     /// The object the body belongs to.
     pub object: ObjectId,
@@ -46,7 +47,7 @@ impl BodyRef {
 }
 
 /// A collision primitive in the object's frame. Cylinders and capsules stand along z.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Primitive {
     /// A box of the given half extents.
     Box {
@@ -80,7 +81,7 @@ pub enum Primitive {
 }
 
 /// One primitive of an object's compound shape, placed in the object's frame.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Part {
     /// Its shape.
     pub primitive: Primitive,
@@ -117,7 +118,7 @@ impl Part {
 }
 
 /// How an object's body moves.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum BodyKind {
     /// Never moves: furniture, walls, floors.
     Fixed,
@@ -133,7 +134,7 @@ pub enum BodyKind {
 }
 
 /// Everything needed to add an object.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct ObjectSpec {
     /// E.g. `apple.n.01_1` once bound to an activity, or a scene name such as `table_3`.
     pub name: String,
@@ -158,6 +159,7 @@ pub struct ObjectSpec {
     /// without it a round object nudged on a flat plate rolls away for ever.
     pub angular_damping: f32,
     /// What the object can do or undergo, with the parameters (from the taxonomy).
+    #[serde(with = "crate::bytes::abilities")]
     pub abilities: BTreeMap<Ability, AbilityParams>,
     /// Named points in the object's frame: heating element, toggle button, water outlet, slicing
     /// edge, cleaning area.
@@ -175,7 +177,7 @@ pub struct ObjectSpec {
 }
 
 /// Where an ability acts, as a point in the object's frame.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 pub enum PointKind {
     /// A heat source's element (stove burner): objects within its distance threshold heat up.
     HeatingElement,
@@ -191,7 +193,7 @@ pub enum PointKind {
 }
 
 /// How a link moves relative to its parent.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum JointKind {
     /// Turns about the axis (radians).
     Revolute,
@@ -202,7 +204,7 @@ pub enum JointKind {
 }
 
 /// How the solver treats a joint.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum JointModel {
     /// A constraint between two free bodies (rapier's impulse joints): cheap, and right for doors,
     /// drawers and lids, whose looseness nobody sees.
@@ -214,7 +216,7 @@ pub enum JointModel {
 }
 
 /// The joint that carries a link.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct JointSpec {
     /// Revolute, prismatic or fixed.
     pub kind: JointKind,
@@ -233,7 +235,7 @@ pub struct JointSpec {
 
 /// A moving part of an object: its parts (in the object's frame, at the zero position of every
 /// joint) and the joint that carries it.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct LinkSpec {
     /// E.g. `door_0`, `shoulder_pan_link`.
     pub name: String,
@@ -343,7 +345,7 @@ impl ObjectSpec {
 }
 
 /// A built object, as the world keeps it.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Object {
     /// Its name, unique by convention (not enforced).
     pub name: String,
@@ -355,6 +357,7 @@ pub struct Object {
     /// Every collider of the object, its links' included.
     pub(crate) colliders: Vec<ColliderHandle>,
     /// What it can do or undergo.
+    #[serde(with = "crate::bytes::abilities")]
     pub abilities: BTreeMap<Ability, AbilityParams>,
     /// Named points in its frame.
     pub points: Vec<(PointKind, Vector)>,
@@ -381,7 +384,7 @@ pub struct Object {
 }
 
 /// A built link: its body, colliders and joint.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Link {
     /// Its name.
     pub name: String,
@@ -396,7 +399,7 @@ pub struct Link {
 }
 
 /// The solver's handle of a link's joint.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Serialize, Deserialize)]
 pub(crate) enum JointHandle {
     Impulse(ImpulseJointHandle),
     Multibody(MultibodyJointHandle),

@@ -16,9 +16,10 @@ use rapier3d::parry::bounding_volume::{Aabb, BoundingVolume};
 use rapier3d::parry::partitioning::{Bvh, BvhBuildStrategy};
 use rapier3d::parry::query;
 use rapier3d::prelude::Ray;
+use serde::{Deserialize, Serialize};
 
 /// What a query ignores.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct QueryFilter {
     /// Objects to ignore entirely (the robot itself).
     pub exclude_objects: Vec<ObjectId>,
@@ -51,7 +52,7 @@ impl QueryFilter {
 }
 
 /// The first hit of a ray.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RayHit {
     /// The body hit, or `None` for a water drop.
     pub body: Option<BodyRef>,
@@ -64,7 +65,7 @@ pub struct RayHit {
 }
 
 /// The nearest body to a shape.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Proximity {
     /// The body.
     pub body: BodyRef,

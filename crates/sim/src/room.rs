@@ -2,10 +2,11 @@
 
 use crate::object::ObjectId;
 use behavior_core::RoomType;
+use serde::{Deserialize, Serialize};
 
 /// A room of a home: its type, its instance number among rooms of that type, its footprint (an
 /// axis-aligned rectangle in x, y) and its floor object.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Room {
     /// Kitchen, bedroom, …
     pub kind: RoomType,

@@ -7,9 +7,10 @@
 use crate::core::Core;
 use crate::object::{ObjectId, Part, Primitive};
 use rapier3d::math::{Pose, Vector};
+use serde::{Deserialize, Serialize};
 
 /// What a surface is made of.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub enum Material {
     /// Furniture, boards.
     #[default]
@@ -55,7 +56,7 @@ impl Material {
 }
 
 /// A surface's appearance: an sRGB colour and a material.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Visual {
     /// sRGB, 0–255.
     pub color: [u8; 3],
@@ -74,7 +75,7 @@ impl Default for Visual {
 }
 
 /// A visual-only triangle mesh (an imported model's look), in the frame of its body.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct VisualMesh {
     /// The link it moves with, or `None` for the object's body.
     pub link: Option<usize>,

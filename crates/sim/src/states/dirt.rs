@@ -21,6 +21,7 @@ use behavior_core::rng::{SimRng, uniform};
 use behavior_core::{Ability, FLOOR_SYNSET, Predicate};
 use rapier3d::math::{Pose, Vector};
 use rapier3d::parry::bounding_volume::BoundingVolume;
+use serde::{Deserialize, Serialize};
 
 /// Particles placed on a newly dirty object.
 pub const PARTICLES_PER_SET: usize = 20;
@@ -38,7 +39,7 @@ pub const WIPE_MARGIN: f32 = 0.01;
 pub const CLEANING_REACH: f32 = 0.1;
 
 /// A particle: where it sits in the frame of the body it lies on.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub(crate) struct Particle {
     /// The link it lies on, or `None` for the object's body.
     pub(crate) link: Option<usize>,
@@ -47,7 +48,7 @@ pub(crate) struct Particle {
 }
 
 /// Particles of one kind on one object.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub(crate) struct ParticleSet {
     pub(crate) points: Vec<Particle>,
     /// How many were placed when the set was last made.
@@ -55,7 +56,7 @@ pub(crate) struct ParticleSet {
 }
 
 /// The dirt system: each object's dust and stain particles.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub(crate) struct Dirt {
     dust: Vec<ParticleSet>,
     stain: Vec<ParticleSet>,
@@ -63,6 +64,34 @@ pub(crate) struct Dirt {
     tools: Vec<ObjectId>,
     /// The objects that can get dusty or stained, in id order: only they are wiped.
     dirtyable: Vec<ObjectId>,
+}
+
+impl Dirt {
+    /// Two particle sets per object, each particle on a link the object has; the tools and
+    /// dirtyable objects are objects.
+    pub(crate) fn check_consistency(&self, core: &Core) -> Result<(), String> {
+        let n = core.objects.len();
+        let on_links = |sets: &[ParticleSet]| {
+            sets.iter().zip(&core.objects).all(|(set, object)| {
+                set.points
+                    .iter()
+                    .all(|p| p.link.is_none_or(|l| l < object.links.len()))
+            })
+        };
+        if self.dust.len() != n
+            || self.stain.len() != n
+            || !on_links(&self.dust)
+            || !on_links(&self.stain)
+            || self
+                .tools
+                .iter()
+                .chain(&self.dirtyable)
+                .any(|id| id.0 as usize >= n)
+        {
+            return Err("dirt: tables disagree with the objects".into());
+        }
+        Ok(())
+    }
 }
 
 impl Dirt {

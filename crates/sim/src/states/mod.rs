@@ -41,6 +41,7 @@ use crate::object::ObjectId;
 use behavior_core::rng::{SimRng, seeded};
 use behavior_core::{Ability, Predicate};
 use dirt::Dirt;
+use serde::{Deserialize, Serialize};
 use temperature::{
     DEFAULT_BURN_TEMPERATURE, DEFAULT_COOK_TEMPERATURE, DEFAULT_FREEZE_TEMPERATURE,
     ROOM_TEMPERATURE, Temperatures,
@@ -98,7 +99,7 @@ pub enum StateError {
 }
 
 /// Stored truth of the unary predicates that no rule computes.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub(crate) struct Flags(Vec<u32>);
 
 impl Flags {
@@ -126,7 +127,7 @@ impl Flags {
 
 /// Every state system, each owning its data (one entry per object, by id), and the generator
 /// the setters draw from.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub(crate) struct Systems {
     pub(crate) water: Water,
     pub(crate) toggles: Toggles,
@@ -177,6 +178,20 @@ impl Systems {
         self.toggles.update(core);
         self.temperatures.update(core, &self.toggles, dt);
         self.dirt.update(core, &self.water);
+    }
+}
+
+impl Systems {
+    /// Whether decoded systems fit the decoded core: an entry per object in every table, and
+    /// every object or body they name present (see [`World::from_bytes`]).
+    pub(crate) fn check_consistency(&self, n: usize, core: &Core) -> Result<(), String> {
+        if self.flags.0.len() != n {
+            return Err("flags: a table that disagrees with the objects".into());
+        }
+        self.water.check_consistency(n, core)?;
+        self.toggles.check_consistency(n)?;
+        self.temperatures.check_consistency(n)?;
+        self.dirt.check_consistency(core)
     }
 }
 

@@ -10,9 +10,10 @@ use crate::states::dirt::{Particle, ParticleSet};
 use crate::states::{Flags, StateError};
 use behavior_core::Predicate;
 use rapier3d::math::Vector;
+use serde::{Deserialize, Serialize};
 
 /// Dust or stain particles of one object, as [`crate::World::object_state`] reports them.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct ParticleRecord {
     /// Each particle: the link it lies on (`None`: the object's body) and its position in that
     /// body's frame.
@@ -23,7 +24,7 @@ pub struct ParticleRecord {
 }
 
 /// The non-geometric state of one object.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ObjectState {
     /// °C now.
     pub temperature: f32,

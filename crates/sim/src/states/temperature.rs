@@ -14,6 +14,7 @@ use crate::object::{Object, ObjectId, PointKind};
 use crate::states::toggling::Toggles;
 use behavior_core::Ability;
 use rapier3d::math::Vector;
+use serde::{Deserialize, Serialize};
 
 /// °C.
 pub const ROOM_TEMPERATURE: f32 = 23.0;
@@ -33,7 +34,7 @@ pub const DEFAULT_HEATING_RATE: f32 = 0.04;
 pub const DEFAULT_DISTANCE_THRESHOLD: f32 = 0.2;
 
 /// What a source does to objects this step.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 struct Source {
     id: ObjectId,
     temperature: f32,
@@ -44,7 +45,7 @@ struct Source {
 }
 
 /// The temperature system: each object's temperature and the highest it ever reached.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub(crate) struct Temperatures {
     now: Vec<f32>,
     /// `-inf` before the first step.
@@ -56,6 +57,19 @@ pub(crate) struct Temperatures {
     source_ids: Vec<ObjectId>,
     /// The objects that can cook, burn or freeze, in id order: the rule visits only them.
     thermal: Vec<ObjectId>,
+}
+
+impl Temperatures {
+    /// Two temperatures per object; every source and thermal object is an object.
+    pub(crate) fn check_consistency(&self, n: usize) -> Result<(), String> {
+        let ids = self.sources.iter().map(|s| s.id);
+        let ids = ids.chain(self.source_ids.iter().copied());
+        let mut ids = ids.chain(self.thermal.iter().copied());
+        if self.now.len() != n || self.max.len() != n || ids.any(|id| id.0 as usize >= n) {
+            return Err("temperature: tables disagree with the objects".into());
+        }
+        Ok(())
+    }
 }
 
 impl Temperatures {

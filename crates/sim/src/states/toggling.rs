@@ -8,6 +8,7 @@ use crate::core::Core;
 use crate::object::{Object, ObjectId, PointKind};
 use behavior_core::Ability;
 use rapier3d::math::Vector;
+use serde::{Deserialize, Serialize};
 
 /// How near a hand must be to a button (m).
 pub const TOGGLE_DISTANCE: f32 = 0.1;
@@ -15,13 +16,26 @@ pub const TOGGLE_DISTANCE: f32 = 0.1;
 pub const TOGGLE_STEPS: u32 = 5;
 
 /// The toggling system: each object's switch and how long a hand has been at its button.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub(crate) struct Toggles {
     on: Vec<bool>,
     held_steps: Vec<u32>,
     hands: Vec<Vector>,
     /// The toggleable objects, in id order: the rule visits only them.
     toggleable: Vec<ObjectId>,
+}
+
+impl Toggles {
+    /// A switch and a count per object; the toggleables are objects.
+    pub(crate) fn check_consistency(&self, n: usize) -> Result<(), String> {
+        if self.on.len() != n
+            || self.held_steps.len() != n
+            || self.toggleable.iter().any(|id| id.0 as usize >= n)
+        {
+            return Err("toggling: tables disagree with the objects".into());
+        }
+        Ok(())
+    }
 }
 
 impl Toggles {

@@ -16,6 +16,7 @@ use rapier3d::dynamics::{RigidBodyBuilder, RigidBodyHandle};
 use rapier3d::geometry::{Ball, ColliderBuilder};
 use rapier3d::math::{Pose, Vector};
 use rapier3d::pipeline::QueryFilter;
+use serde::{Deserialize, Serialize};
 
 /// Drops in each source's pool.
 pub const DROPS_PER_SOURCE: usize = 10;
@@ -30,14 +31,14 @@ pub const DROP_LIFETIME_STEPS: u32 = 60;
 /// Drops leave the outlet this far below it (m).
 pub const OUTLET_OFFSET: f32 = 0.05;
 
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 struct WaterStream {
     source: ObjectId,
     drops: Vec<Drop>,
     steps_since_drop: u32,
 }
 
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Serialize, Deserialize)]
 struct Drop {
     body: RigidBodyHandle,
     /// Steps since emission; `None` while pooled.
@@ -45,10 +46,26 @@ struct Drop {
 }
 
 /// The water system: each source's drops, and which objects are soaked.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub(crate) struct Water {
     streams: Vec<WaterStream>,
     soaked: Vec<bool>,
+}
+
+impl Water {
+    /// A soaked flag per object; every stream's source is an object and its drops are bodies.
+    pub(crate) fn check_consistency(&self, n: usize, core: &Core) -> Result<(), String> {
+        let drops_known = self.streams.iter().all(|s| {
+            (s.source.0 as usize) < n
+                && s.drops
+                    .iter()
+                    .all(|d| core.physics.bodies.get(d.body).is_some())
+        });
+        if self.soaked.len() != n || !drops_known {
+            return Err("water: tables disagree with the objects or the physics".into());
+        }
+        Ok(())
+    }
 }
 
 impl Water {

@@ -45,8 +45,9 @@ struct Row {
     physics_us: f64,
     rules_us: f64,
     scoring_us: f64,
+    observing_us: f64,
     total_us: f64,
-    /// The goal check, metrics and observations as a share of the step.
+    /// The goal check and the metrics as a share of the step.
     scoring_share: f64,
 }
 
@@ -54,7 +55,8 @@ struct Row {
 struct Report {
     steps: u32,
     rows: Vec<Row>,
-    /// Resident memory added by one environment (instance, world, robot, metrics), MB.
+    /// Resident memory added per environment (world, robot, metrics, instance), MB: the growth
+    /// of the process's resident set over eight environments kept alive, divided by eight.
     memory_per_env_mb: f64,
 }
 
@@ -85,13 +87,12 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         let home = with_clutter(home, &library, true)?;
         let base = EnvConfig::new(activity.clone(), taxonomy.clone(), vec![home.clone()]);
         // Sample once; every configuration starts from the same instance.
-        let before = resident_mb();
         let mut sampler = Env::new(base.clone());
         sampler
             .reset(0)
             .with_context(|| format!("sampling {name}"))?;
         let instance = sampler.start().context("no episode")?.instance.clone();
-        memory = memory.max(resident_mb() - before);
+        memory = memory.max(memory_per_env(&base, &instance)?);
         let objects = sampler.world().map_or(0, |w| {
             w.objects()
                 .filter(|(_, o)| o.category != "wall.n.01")
@@ -135,6 +136,26 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
+/// The resident memory eight environments of `instance` add, each reset and stepped, per env.
+fn memory_per_env(base: &EnvConfig, instance: &behavior_sampling::SavedInstance) -> Result<f64> {
+    const ENVS: usize = 8;
+    let before = resident_mb();
+    let mut envs = Vec::with_capacity(ENVS);
+    for _ in 0..ENVS {
+        let mut config = base.clone();
+        config.instances = Instances::Saved(vec![instance.clone()]);
+        let mut env = Env::new(config);
+        env.reset(0)?;
+        for _ in 0..30 {
+            env.step(&[0.0; 26])?;
+        }
+        envs.push(env);
+    }
+    let grown = resident_mb() - before;
+    drop(envs);
+    Ok(grown / ENVS as f64)
+}
+
 /// Steps one configuration: the warm-up, then `steps` timed.
 fn measure(config: EnvConfig, agent: &str, steps: u32) -> Result<Row> {
     let mut env = Env::new(config);
@@ -162,6 +183,7 @@ fn measure(config: EnvConfig, agent: &str, steps: u32) -> Result<Row> {
         physics_us: per(t.physics),
         rules_us: per(t.rules),
         scoring_us: per(t.scoring),
+        observing_us: per(t.observing),
         total_us: per(t.total),
         scoring_share: t.scoring.as_secs_f64() / t.total.as_secs_f64().max(1e-12),
     })
@@ -169,7 +191,7 @@ fn measure(config: EnvConfig, agent: &str, steps: u32) -> Result<Row> {
 
 fn print(report: &Report) {
     println!(
-        "{:<27} {:>7} {:<8} {:<6} {:<6} {:>9} {:>9} {:>8} {:>9} {:>7}",
+        "{:<27} {:>7} {:<8} {:<6} {:<6} {:>9} {:>9} {:>8} {:>9} {:>7} {:>7}",
         "activity",
         "objects",
         "robot",
@@ -179,11 +201,12 @@ fn print(report: &Report) {
         "physics",
         "rules",
         "Q+metrics",
+        "obs",
         "share"
     );
     for r in &report.rows {
         println!(
-            "{:<27} {:>7} {:<8} {:<6} {:<6} {:>9.0} {:>7.0}µs {:>6.0}µs {:>7.0}µs {:>6.1}%",
+            "{:<27} {:>7} {:<8} {:<6} {:<6} {:>9.0} {:>7.0}µs {:>6.0}µs {:>7.1}µs {:>5.1}µs {:>6.1}%",
             r.activity,
             r.objects,
             r.robot,
@@ -193,6 +216,7 @@ fn print(report: &Report) {
             r.physics_us,
             r.rules_us,
             r.scoring_us,
+            r.observing_us,
             r.scoring_share * 100.0
         );
     }

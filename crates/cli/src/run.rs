@@ -7,8 +7,8 @@ use crate::scene::{load_scene, with_clutter};
 use anyhow::{Context, Result, bail};
 use behavior_env::record::{CHECKPOINT_EVERY, Recorder};
 use behavior_env::{Agent, Env, EnvConfig, EpisodeMetrics, Instances};
-use behavior_sampling::SavedInstance;
 use behavior_robots::RobotKind;
+use behavior_sampling::SavedInstance;
 use behavior_sim::Substeps;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
@@ -101,7 +101,11 @@ pub fn run(args: RunArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let scenes = match (&args.instance, &args.scene) {
         (Some(_), _) => Vec::new(),
         (None, Some(name)) => vec![load_scene(name, &library)?],
-        (None, None) => vec![first_covering(&activity, &library, &prelude.knowledge.taxonomy)?],
+        (None, None) => vec![first_covering(
+            &activity,
+            &library,
+            &prelude.knowledge.taxonomy,
+        )?],
     };
     let scenes = scenes
         .into_iter()

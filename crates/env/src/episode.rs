@@ -32,7 +32,7 @@ pub(crate) struct Episode {
 }
 
 /// How an episode began: enough to begin it again identically.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
 pub struct Start {
     /// The seed given to reset.
     pub seed: u64,
@@ -82,4 +82,103 @@ fn first_floor_centre(world: &World) -> Vector {
             let aabb = world.aabb(id);
             Vector::new(aabb.center().x, aabb.center().y, aabb.maxs.z)
         })
+}
+
+/// The start of an episode checkpoint's bytes, then a little-endian format version.
+const CHECKPOINT_MAGIC: &[u8; 8] = b"BHVEPISD";
+/// Bumped whenever a saved type changes shape (postcard does not describe its layout).
+pub const CHECKPOINT_FORMAT_VERSION: u32 = 1;
+
+/// Why bytes are not an episode checkpoint.
+#[derive(Debug, thiserror::Error)]
+pub enum CheckpointError {
+    /// They do not start as a checkpoint does.
+    #[error("not an episode checkpoint (the bytes do not start with its magic)")]
+    NotACheckpoint,
+    /// Another version of the format.
+    #[error("checkpoint format version {found}, but this build reads version {expected} only")]
+    Version {
+        /// The file's.
+        found: u32,
+        /// Ours.
+        expected: u32,
+    },
+    /// The robot, bindings or metrics do not decode.
+    #[error("a damaged episode checkpoint: {0}")]
+    Decode(String),
+    /// The world does not decode.
+    #[error("a damaged episode checkpoint: {0}")]
+    World(#[from] behavior_sim::WorldBytesError),
+}
+
+/// What an episode checkpoint holds: everything but how the episode began.
+#[derive(serde::Serialize, serde::Deserialize)]
+struct Saved {
+    world: Vec<u8>,
+    robot: Robot,
+    bindings: Vec<Option<ObjectId>>,
+    steps: u32,
+    score: Score,
+    potential: f64,
+    tracker: Tracker,
+    over: bool,
+}
+
+impl Episode {
+    /// The episode as bytes: magic, version, then the world's own bytes and the rest.
+    pub(crate) fn to_bytes(&self) -> Vec<u8> {
+        let saved = Saved {
+            world: self.world.to_bytes(),
+            robot: self.robot.clone(),
+            bindings: self.bindings.clone(),
+            steps: self.steps,
+            score: self.score.clone(),
+            potential: self.potential,
+            tracker: self.tracker.clone(),
+            over: self.over,
+        };
+        let mut bytes = CHECKPOINT_MAGIC.to_vec();
+        bytes.extend(CHECKPOINT_FORMAT_VERSION.to_le_bytes());
+        // Plain data of our own types: encoding cannot fail.
+        bytes.extend(postcard::to_stdvec(&saved).unwrap_or_default());
+        bytes
+    }
+
+    /// An episode from [`Episode::to_bytes`], begun as `start` says.
+    pub(crate) fn from_bytes(bytes: &[u8], start: Arc<Start>) -> Result<Episode, CheckpointError> {
+        let body = bytes
+            .strip_prefix(CHECKPOINT_MAGIC.as_slice())
+            .ok_or(CheckpointError::NotACheckpoint)?;
+        let (version, body) = body
+            .split_at_checked(4)
+            .ok_or(CheckpointError::NotACheckpoint)?;
+        let found = u32::from_le_bytes([version[0], version[1], version[2], version[3]]);
+        if found != CHECKPOINT_FORMAT_VERSION {
+            return Err(CheckpointError::Version {
+                found,
+                expected: CHECKPOINT_FORMAT_VERSION,
+            });
+        }
+        let saved: Saved =
+            postcard::from_bytes(body).map_err(|e| CheckpointError::Decode(e.to_string()))?;
+        let world = World::from_bytes(&saved.world)?;
+        let objects = world.objects().len();
+        let known = |id: &ObjectId| (id.0 as usize) < objects;
+        if !saved.robot.objects().iter().all(known) || !saved.bindings.iter().flatten().all(known) {
+            return Err(CheckpointError::Decode(
+                "the robot or the bindings name objects the world does not have".into(),
+            ));
+        }
+        Ok(Episode {
+            world,
+            robot: saved.robot,
+            bindings: saved.bindings,
+            steps: saved.steps,
+            score: saved.score,
+            potential: saved.potential,
+            tracker: saved.tracker,
+            start,
+            over: saved.over,
+        })
+    }
 }

@@ -48,7 +48,7 @@ mod timing;
 pub use agent::Agent;
 pub use config::{DEFAULT_MAX_STEPS, EnvConfig, Instances, Observations, Reward};
 pub use env::{Checkpoint, Env, EnvError, Info, SETTLE_STEPS, Step};
-pub use episode::Start;
+pub use episode::{CHECKPOINT_FORMAT_VERSION, CheckpointError, Start};
 pub use metrics::{EpisodeMetrics, Series};
 pub use observation::{
     Obs, Reading, Sensor, SensorInput, TASK_OBJECT_DIM, TASK_OBJECTS, TASK_OBS_DIM,

@@ -1,6 +1,6 @@
 //! Where a step's time goes, split as the original's speed benchmark reports it (reference §8):
-//! physics (the substeps with the robot's control), the state rules (non-physics), and the goal
-//! check with the metrics and observations.
+//! physics (the substeps with the robot's control), the state rules (non-physics), the goal
+//! check with the metrics, and the observations.
 
 use behavior_sim::{StepHooks, World};
 use std::time::{Duration, Instant};
@@ -14,24 +14,22 @@ pub struct StepTimings {
     pub physics: Duration,
     /// The state rules (heat, water, dirt, slicing, toggling).
     pub rules: Duration,
-    /// Q, the metrics and the observations.
+    /// Q (the goal check) and the metrics.
     pub scoring: Duration,
+    /// The observations (proprioception, `task_obs`, sensors).
+    pub observing: Duration,
     /// The whole steps.
     pub total: Duration,
 }
 
 impl StepTimings {
-    pub(crate) fn add(
-        &mut self,
-        physics: Duration,
-        rules: Duration,
-        scoring: Duration,
-        total: Duration,
-    ) {
+    /// Adds a step: physics, rules, scoring and observing times, and the whole step's.
+    pub(crate) fn add(&mut self, parts: [Duration; 4], total: Duration) {
         self.steps += 1;
-        self.physics += physics;
-        self.rules += rules;
-        self.scoring += scoring;
+        self.physics += parts[0];
+        self.rules += parts[1];
+        self.scoring += parts[2];
+        self.observing += parts[3];
         self.total += total;
     }
 }

@@ -154,19 +154,42 @@ fn an_episode_resumed_from_a_checkpoint_continues_identically() {
 fn a_recording_resumed_at_a_checkpoint_continues_as_recorded() {
     let path = temp("resume.mcap");
     let env = record(&path, 60, 20);
-    let recording = read(&path).unwrap();
-    let config = || {
-        recording
-            .config(common::activity("bringing_in_wood"), common::taxonomy())
+    let mut recording = read(&path).unwrap();
+    assert_eq!(
+        recording.states.len(),
+        4,
+        "a full state with every checkpoint"
+    );
+    let config = |r: &behavior_env::record::Recording| {
+        r.config(common::activity("bringing_in_wood"), common::taxonomy())
             .unwrap()
     };
-    let mut resumed = resume(&recording, config(), 20).unwrap();
-    assert_eq!(resumed.steps(), 20);
-    for frame in &recording.frames[20..] {
-        resumed.step(&frame.action).unwrap();
-    }
     let digest = |env: &Env| state_digest(env.world().unwrap(), env.robot().unwrap(), env.steps());
-    assert_eq!(digest(&resumed), digest(&env));
-    assert_eq!(digest(&resumed), recording.checkpoints[3].1);
-    assert!(resume(&recording, config(), 25).is_err(), "no checkpoint at 25");
+    for at in [20, 40] {
+        let mut resumed = resume(&recording, config(&recording), at).unwrap();
+        assert_eq!(resumed.steps(), at);
+        for frame in &recording.frames[at as usize..] {
+            resumed.step(&frame.action).unwrap();
+        }
+        assert_eq!(digest(&resumed), digest(&env));
+        assert_eq!(digest(&resumed), recording.checkpoints[3].1);
+        assert_eq!(resumed.metrics(), env.metrics());
+    }
+    assert!(
+        resume(&recording, config(&recording), 25).is_err(),
+        "no checkpoint at 25"
+    );
+    // A damaged saved state is refused, naming the checkpoint; without saved states the
+    // episode is re-simulated to the checkpoint instead.
+    let state = &mut recording.states[2].1;
+    let middle = state.len() / 2;
+    state[middle] ^= 0x55;
+    let err = match resume(&recording, config(&recording), 40) {
+        Ok(_) => panic!("a damaged state was accepted"),
+        Err(e) => e.to_string(),
+    };
+    assert!(err.contains("step 40"), "{err}");
+    recording.states.clear();
+    let resimulated = resume(&recording, config(&recording), 40).unwrap();
+    assert_eq!(resimulated.steps(), 40);
 }

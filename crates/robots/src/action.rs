@@ -52,11 +52,11 @@ pub enum ActionError {
 
 /// A valid BehaviorRobot action: 26 finite values in [−1, 1] (see the module docs for the
 /// layout). It acts for one step.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq)]
 pub struct Action([f32; ACTION_DIM]);
 
 /// One part's motion for one step, scaled: metres and a rotation.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Delta {
     pub(crate) translation: Vector,
     pub(crate) rotation: Rotation,
@@ -157,7 +157,7 @@ impl Default for Action {
 
 /// The reduced action spaces of iGibson's `BehaviorEnv` (its `action_filter`): a smaller vector
 /// whose values go to some of the 26 entries, the others being zero.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum ActionSpace {
     /// All 26 values.
     #[default]

@@ -16,7 +16,19 @@ use behavior_sim::{ObjectId, StepHooks, World};
 use rapier3d::math::{Pose, Rotation, Vector};
 
 /// Which embodiment.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(
+    serde::Serialize,
+    serde::Deserialize,
+    Clone,
+    Copy,
+    Debug,
+    Default,
+    PartialEq,
+    Eq,
+    Hash,
+    PartialOrd,
+    Ord,
+)]
 pub enum RobotKind {
     /// The bimanual humanoid of the VR demonstrations ([`BehaviorRobot`]).
     #[default]
@@ -56,7 +68,7 @@ pub struct TrackedPart {
 }
 
 /// A robot of any kind, with the action space it is driven through.
-#[derive(Clone, Debug)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Debug)]
 pub enum Robot {
     /// A [`BehaviorRobot`] and the space its actions come in.
     Behavior(BehaviorRobot, ActionSpace),

@@ -38,7 +38,7 @@ const FINGER_DAMPING: f32 = 25.0;
 
 /// The world objects Fetch is made of: one kinematic body per link ([`FetchLink`]); the
 /// gripper's object carries the two fingers as dynamic links (0 right, 1 left).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq, Eq)]
 pub struct FetchParts {
     /// In [`FetchLink::ALL`] order.
     pub links: [ObjectId; FETCH_LINKS],
@@ -67,14 +67,14 @@ impl FetchParts {
 }
 
 /// What the gripper holds.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq)]
 struct FetchGrasp {
     body: BodyRef,
     attachment: AttachmentId,
 }
 
 /// Where every kinematic part is: the base on the floor and the joints.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq)]
 struct Config {
     base: Pose,
     joints: FetchJoints,
@@ -116,7 +116,7 @@ struct Config {
 /// **State.** As the BehaviorRobot's: what it was told lives here, the rest in the world;
 /// clone it with [`World::snapshot`] and the pair continues bit-identically. Step the world with
 /// the robot ([`World::step_with`]); an action acts for one step.
-#[derive(Clone, Debug)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Debug)]
 pub struct Fetch {
     parts: FetchParts,
     /// Where the parts are at the end of the step begun last.

@@ -38,7 +38,7 @@ pub const EEF_STEP: f32 = 0.05;
 pub const EEF_TURN: f32 = std::f32::consts::FRAC_PI_6 * 0.5;
 
 /// A valid Fetch action (see the module docs for the layout). It acts for one step.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, Default, PartialEq)]
 pub struct FetchAction([f32; FETCH_ACTION_DIM]);
 
 impl FetchAction {

@@ -20,7 +20,9 @@ use std::f32::consts::FRAC_PI_2;
 
 /// The joints Fetch reports and drives, in iGibson's order (its `ordered_joints`): the order of
 /// proprioception.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(
+    serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord,
+)]
 pub enum FetchJoint {
     /// The right wheel (at −y), continuous.
     RightWheel,
@@ -301,7 +303,7 @@ pub const START_TILT: f32 = 0.45;
 
 /// The positions of the joints Fetch moves kinematically: torso, head and arm (the wheels are
 /// the base's motion, the fingers are simulated).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq)]
 pub struct FetchJoints {
     /// Torso lift, m.
     pub torso: f32,
@@ -323,7 +325,9 @@ impl Default for FetchJoints {
 }
 
 /// Fetch's kinematic links, each a world object ([`crate::FetchParts`]).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(
+    serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord,
+)]
 pub enum FetchLink {
     /// The base with the fixed part of the torso.
     Base,

@@ -20,7 +20,7 @@ use behavior_sim::{BodyRef, ObjectId, Velocity, World};
 use rapier3d::math::{Pose, Rotation, Vector};
 
 /// How fast a follower may move and change speed.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Limits {
     /// m/s.
     pub(crate) speed: f32,
@@ -50,7 +50,7 @@ pub(crate) const HAND_LIMITS: Limits = Limits {
 const SNAP: f32 = 1e-5;
 
 /// A kinematic part's pose and velocity.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Follower {
     pub(crate) pose: Pose,
     linear: Vector,

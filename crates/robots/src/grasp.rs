@@ -37,7 +37,7 @@ use rapier3d::parry::bounding_volume::BoundingVolume;
 use std::collections::BTreeSet;
 
 /// The rules of assisted grasping; [`Default`] gives the original's.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Debug, PartialEq)]
 pub struct GraspRules {
     /// A trigger fraction above this grasps; at or below it, lets go.
     pub threshold: f32,
@@ -99,7 +99,7 @@ impl GraspRules {
 }
 
 /// What a hand holds.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Grasp {
     pub(crate) body: BodyRef,
     pub(crate) attachment: AttachmentId,
@@ -108,7 +108,7 @@ pub(crate) struct Grasp {
 }
 
 /// A released body whose contacts with some robot parts are still off.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Debug, PartialEq)]
 pub(crate) struct Release {
     pub(crate) body: BodyRef,
     /// Robot objects (a hand, the body) still ignoring it.

@@ -26,7 +26,9 @@ use behavior_sim::{
 use rapier3d::math::{Pose, Rotation, Vector};
 
 /// Which hand.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[derive(
+    serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash,
+)]
 pub enum Side {
     /// The left hand (first in actions and proprioception).
     Left,

@@ -20,7 +20,7 @@ use rapier3d::math::{Pose, Rotation, Vector};
 pub const IK_JOINTS: usize = 8;
 
 /// Why there is no solution.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Debug, PartialEq, thiserror::Error)]
 pub enum IkError {
     /// The target or the starting positions are not finite numbers.
     #[error("an IK target and start must be finite, with a unit quaternion for the rotation")]
@@ -42,7 +42,7 @@ pub enum IkError {
 }
 
 /// The solver's settings; [`Default`] gives those of the robot's controller.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq)]
 pub struct IkSolver {
     /// Whether the torso lift moves too (iGibson's `ik_with_trunk`, on by default).
     pub with_trunk: bool,

@@ -26,7 +26,7 @@ use behavior_sim::{BodyRef, Primitive, QueryFilter, World};
 use rapier3d::math::Pose;
 
 /// What the robot is told to do by the end of the step.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Targets {
     /// The body, in the world.
     pub(crate) body: Pose,

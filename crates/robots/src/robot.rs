@@ -29,7 +29,7 @@ pub enum RobotError {
 }
 
 /// The world objects a BehaviorRobot is made of.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq, Eq)]
 pub struct RobotParts {
     /// The floating body.
     pub body: ObjectId,
@@ -102,7 +102,7 @@ impl RobotParts {
 /// Step the world with the robot ([`World::step_with`]): a step without it moves nothing of the
 /// robot, and a hand that was moving (not parked) is then not held up. Buttons are pressed by the
 /// palms and fingertips ([`World::set_hand_points`]), so one robot per world.
-#[derive(Clone, Debug)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Debug)]
 pub struct BehaviorRobot {
     parts: RobotParts,
     /// Targets at the end of the last step begun.

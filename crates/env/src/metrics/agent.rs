@@ -29,14 +29,14 @@ pub struct PartTotals {
     pub work: f64,
 }
 
-#[derive(Clone, Debug)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Debug)]
 struct Last {
     position: Vector,
     velocity: Vector,
 }
 
 /// The running agent metrics of an episode.
-#[derive(Clone, Debug)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Debug)]
 pub(crate) struct AgentMetrics {
     pub(crate) parts: Vec<PartTotals>,
     last: Vec<Last>,

@@ -11,7 +11,7 @@ use behavior_sim::{ObjectId, World};
 use rapier3d::math::Vector;
 
 /// One followed object: where it started and where it was last step.
-#[derive(Clone, Debug)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Debug)]
 struct Followed {
     id: ObjectId,
     start: Vector,
@@ -19,7 +19,7 @@ struct Followed {
 }
 
 /// The running kinematic disarrangement of an episode.
-#[derive(Clone, Debug)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Debug)]
 pub(crate) struct Kinematic {
     followed: Vec<Followed>,
     /// Objects the world had when last looked at (new ones may be halves).

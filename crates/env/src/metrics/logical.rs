@@ -28,7 +28,7 @@ const RELATIONS: [Predicate; 4] = [
 ];
 
 /// One object's logical state.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Debug, PartialEq)]
 struct Picture {
     id: ObjectId,
     states: [bool; Predicate::UNARY_STATES.len()],
@@ -37,7 +37,7 @@ struct Picture {
 }
 
 /// The logical state of the home at the start of an episode.
-#[derive(Clone, Debug)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Debug)]
 pub(crate) struct Logical {
     start: Vec<Picture>,
     ignored: Vec<ObjectId>,

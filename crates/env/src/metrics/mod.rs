@@ -75,7 +75,7 @@ pub struct Series {
 
 /// The running metrics of an episode: started after the reset settled, stepped after every
 /// step, finished on demand.
-#[derive(Clone, Debug)]
+#[derive(serde::Serialize, serde::Deserialize, Clone, Debug)]
 pub(crate) struct Tracker {
     steps: u32,
     q: f64,

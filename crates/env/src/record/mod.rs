@@ -11,6 +11,7 @@
 //! | `/poses` | every step | `{"step", "poses"}`: every object's position and quaternion (x, y, z, qx, qy, qz, qw), in the header's object order, after the step |
 //! | `/score` | every step | `{"step", "q", "success", "conjuncts"}` after the step |
 //! | `/checkpoint` | step 0 and every `checkpoint_every` steps | `{"step", "digest"}`: SHA-256 of the full state (see `digest.rs`) |
+//! | `/state` | with each checkpoint | the full state as bytes (encoding [`STATE_ENCODING`], no schema): the world (`World::to_bytes`), the robot, the bindings, the running metrics; an episode resumes from it |
 //!
 //! Chunks are zstd-compressed and appended as they fill ([`CHUNK_BYTES`]), and the file is
 //! flushed at every checkpoint: a killed process leaves a file readable up to its last whole
@@ -33,6 +34,9 @@ use serde::{Deserialize, Serialize};
 pub const FORMAT_VERSION: u32 = 1;
 /// Chunks are written once they hold this many bytes (before compression).
 pub const CHUNK_BYTES: u64 = 256 * 1024;
+/// The MCAP message encoding of `/state`: an episode checkpoint's bytes
+/// ([`crate::Checkpoint::to_bytes`]).
+pub const STATE_ENCODING: &str = "behavior-episode-checkpoint";
 /// Checkpoints every this many steps by default.
 pub const CHECKPOINT_EVERY: u32 = 100;
 

@@ -1,6 +1,7 @@
 //! Reading a recording back: the header, then one frame per step, as far as the file is whole.
 
 use super::{FORMAT_VERSION, Header};
+use crate::metrics::ACTION_HZ;
 use mcap::read::{MessageStream, Options};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -58,6 +59,8 @@ pub struct Recording {
     pub frames: Vec<Frame>,
     /// The checkpoints: (step, digest).
     pub checkpoints: Vec<(u32, String)>,
+    /// The full states saved with the checkpoints: (step, episode checkpoint bytes).
+    pub states: Vec<(u32, Vec<u8>)>,
     /// Where and why reading stopped early, for a damaged or cut file; the frames before it
     /// are usable.
     pub damage: Option<String>,
@@ -113,6 +116,13 @@ pub fn read(path: &Path) -> Result<Recording, ReadError> {
                 break;
             }
         };
+        if message.channel.topic == "/state" {
+            // Log times are whole nanoseconds of step / 30 s, rounded down: round back.
+            let step = (message.log_time * u64::from(ACTION_HZ) + 500_000_000) / 1_000_000_000;
+            let step = u32::try_from(step).unwrap_or(u32::MAX);
+            reading.states.push((step, message.data.into_owned()));
+            continue;
+        }
         if let Err(reason) = reading.take(&message.channel.topic, &message.data) {
             reading.damage = Some(format!("after step {}: {reason}", reading.last_step()));
             break;
@@ -128,6 +138,7 @@ struct Reading {
     start_q: Option<f64>,
     frames: Vec<Frame>,
     checkpoints: Vec<(u32, String)>,
+    states: Vec<(u32, Vec<u8>)>,
     damage: Option<String>,
 }
 
@@ -200,6 +211,7 @@ impl Reading {
             start_q: self.start_q,
             frames: self.frames,
             checkpoints: self.checkpoints,
+            states: self.states,
             damage: self.damage,
         })
     }

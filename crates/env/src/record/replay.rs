@@ -28,6 +28,14 @@ pub enum ReplayError {
     /// Re-simulated to a checkpoint, the state differs from the recording's.
     #[error("the state re-simulated to step {0} differs from the recording's checkpoint")]
     Differs(u32),
+    /// The saved state at the checkpoint does not load.
+    #[error("the state saved at step {step}: {source}")]
+    State {
+        /// The checkpoint's step.
+        step: u32,
+        /// Why.
+        source: crate::CheckpointError,
+    },
     /// The environment refused the start or a step.
     #[error("replaying step {step}: {source}")]
     Env {
@@ -133,10 +141,10 @@ pub fn replay(recording: &Recording, config: EnvConfig) -> Result<ReplayReport, 
     Ok(report)
 }
 
-/// Resumes a recorded episode at one of its checkpoints: re-simulates it from the header up to
-/// `step`, checks the state against the checkpoint bit for bit, and hands back the environment
-/// there, ready to continue (with the recorded actions, it continues as recorded; with others,
-/// it branches off).
+/// Resumes a recorded episode at one of its checkpoints: loads the full state saved there (or,
+/// in a recording without one, re-simulates from the header up to `step`), checks it against
+/// the checkpoint's digest bit for bit, and hands back the environment there, ready to
+/// continue (with the recorded actions it continues as recorded; with others it branches off).
 pub fn resume(recording: &Recording, config: EnvConfig, step: u32) -> Result<Env, ReplayError> {
     let digest = recording
         .checkpoints
@@ -149,13 +157,11 @@ pub fn resume(recording: &Recording, config: EnvConfig, step: u32) -> Result<Env
         seed: recording.header.seed,
         instance: recording.header.instance.clone(),
     };
-    env.reset_to(start)
-        .map_err(|source| ReplayError::Env { step: 0, source })?;
-    for frame in recording.frames.iter().take_while(|f| f.step <= step) {
-        env.step(&frame.action).map_err(|source| ReplayError::Env {
-            step: frame.step,
-            source,
-        })?;
+    match recording.states.iter().find(|(s, _)| *s == step) {
+        Some((_, bytes)) => env
+            .restore_bytes(start, bytes)
+            .map_err(|source| ReplayError::State { step, source })?,
+        None => resimulate(&mut env, recording, start, step)?,
     }
     let same = match (env.world(), env.robot()) {
         (Some(world), Some(robot)) => state_digest(world, robot, env.steps()) == *digest,
@@ -165,4 +171,22 @@ pub fn resume(recording: &Recording, config: EnvConfig, step: u32) -> Result<Env
         return Err(ReplayError::Differs(step));
     }
     Ok(env)
+}
+
+/// Begins the episode again and takes the recorded actions up to `step`.
+fn resimulate(
+    env: &mut Env,
+    recording: &Recording,
+    start: Start,
+    step: u32,
+) -> Result<(), ReplayError> {
+    env.reset_to(start)
+        .map_err(|source| ReplayError::Env { step: 0, source })?;
+    for frame in recording.frames.iter().take_while(|f| f.step <= step) {
+        env.step(&frame.action).map_err(|source| ReplayError::Env {
+            step: frame.step,
+            source,
+        })?;
+    }
+    Ok(())
 }

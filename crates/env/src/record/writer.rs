@@ -1,6 +1,6 @@
 //! Writing a recording as the episode runs (see the module docs for the layout).
 
-use super::{CHUNK_BYTES, FORMAT_VERSION, Header, state_digest};
+use super::{CHUNK_BYTES, FORMAT_VERSION, Header, STATE_ENCODING, state_digest};
 use crate::env::Env;
 use crate::metrics::ACTION_HZ;
 use behavior_robots::ActionSpace;
@@ -47,13 +47,20 @@ pub(crate) fn space_name(space: ActionSpace) -> &'static str {
 }
 
 /// The topics, in the order their channels are added.
-const TOPICS: [&str; 5] = ["/header", "/action", "/poses", "/score", "/checkpoint"];
+const TOPICS: [&str; 6] = [
+    "/header",
+    "/action",
+    "/poses",
+    "/score",
+    "/checkpoint",
+    "/state",
+];
 
 /// An episode being recorded.
 pub struct Recorder {
     writer: Writer<File>,
     path: PathBuf,
-    channels: [u16; 5],
+    channels: [u16; 6],
     sequence: u32,
     checkpoint_every: u32,
 }
@@ -84,8 +91,8 @@ impl Recorder {
             .chunk_size(Some(CHUNK_BYTES))
             .profile("behavior");
         let mut writer = options.create(file).map_err(mcap)?;
-        let mut channels = [0; 5];
-        for (k, topic) in TOPICS.iter().enumerate() {
+        let mut channels = [0; 6];
+        for (k, topic) in TOPICS.iter().enumerate().take(5) {
             let schema = writer
                 .add_schema(topic, "jsonschema", schema_of(topic).as_bytes())
                 .map_err(mcap)?;
@@ -93,6 +100,10 @@ impl Recorder {
                 .add_channel(schema, topic, "json", &BTreeMap::new())
                 .map_err(mcap)?;
         }
+        // The episode's bytes: no schema, the encoding names the format.
+        channels[5] = writer
+            .add_channel(0, TOPICS[5], STATE_ENCODING, &BTreeMap::new())
+            .map_err(mcap)?;
         let config = env.config();
         let header = Header {
             format_version: FORMAT_VERSION,
@@ -164,6 +175,9 @@ impl Recorder {
         if step % self.checkpoint_every == 0 {
             let digest = state_digest(world, robot, step);
             self.write(4, step, &json!({ "step": step, "digest": digest }))?;
+            if let Some(checkpoint) = env.checkpoint() {
+                self.write_bytes(5, step, &checkpoint.to_bytes())?;
+            }
             self.writer.flush().map_err(|source| RecordError::Mcap {
                 path: self.path.clone(),
                 source,
@@ -182,6 +196,10 @@ impl Recorder {
             path: self.path.clone(),
             source: e.into(),
         })?;
+        self.write_bytes(channel, step, &data)
+    }
+
+    fn write_bytes(&mut self, channel: usize, step: u32, data: &[u8]) -> Result<(), RecordError> {
         let time = u64::from(step) * 1_000_000_000 / u64::from(ACTION_HZ);
         let header = MessageHeader {
             channel_id: self.channels[channel],
@@ -191,7 +209,7 @@ impl Recorder {
         };
         self.sequence += 1;
         self.writer
-            .write_to_known_channel(&header, &data)
+            .write_to_known_channel(&header, data)
             .map_err(|source| RecordError::Mcap {
                 path: self.path.clone(),
                 source,

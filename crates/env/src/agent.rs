@@ -9,7 +9,7 @@ pub enum Agent {
     /// Every action all zeros: the robot holds still (the original's speed benchmark agent).
     Idle,
     /// Every value uniform in [−1, 1], from a generator seeded once.
-    Random(ChaCha8Rng),
+    Random(Box<ChaCha8Rng>),
 }
 
 impl Agent {
@@ -17,7 +17,7 @@ impl Agent {
     pub fn named(name: &str, seed: u64) -> Option<Agent> {
         match name {
             "idle" => Some(Agent::Idle),
-            "random" => Some(Agent::Random(ChaCha8Rng::seed_from_u64(seed))),
+            "random" => Some(Agent::Random(Box::new(ChaCha8Rng::seed_from_u64(seed)))),
             _ => None,
         }
     }

@@ -44,7 +44,7 @@ pub enum EnvError {
         /// The seed.
         seed: u64,
         /// Why.
-        source: SampleError,
+        source: Box<SampleError>,
     },
     /// A saved instance does not load.
     #[error("loading the instance: {0}")]
@@ -184,6 +184,7 @@ impl Env {
             bindings: &bindings,
         };
         let score = self.scorer.score(&oracle);
+        let atoms = self.scorer.atoms(&oracle);
         let potential = self.scorer.first_option(&oracle);
         let tracker = Tracker::start(&world, &robot, &ignored, &score);
         self.episode = Some(Episode {
@@ -191,6 +192,7 @@ impl Env {
             robot,
             bindings,
             steps: 0,
+            atoms,
             score: score.clone(),
             potential,
             tracker,
@@ -216,7 +218,7 @@ impl Env {
                         activity: c.activity.name.clone(),
                         scene: scene.name.clone(),
                         seed,
-                        source,
+                        source: Box::new(source),
                     })?;
                 Ok(instance.save())
             }
@@ -242,7 +244,9 @@ impl Env {
             world: &episode.world,
             bindings: &episode.bindings,
         };
-        let score = self.scorer.score(&oracle);
+        let score = self
+            .scorer
+            .rescore(&oracle, &mut episode.atoms, &episode.score);
         let reward = match self.config.reward {
             Reward::DeltaQ => score.q - episode.score.q,
             Reward::FirstOption => {

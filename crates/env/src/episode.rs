@@ -22,6 +22,8 @@ pub(crate) struct Episode {
     /// The object of each activity instance; the agent's is the robot's base.
     pub(crate) bindings: Vec<Option<ObjectId>>,
     pub(crate) steps: u32,
+    /// The truth of the goal's atoms when `score` was computed.
+    pub(crate) atoms: Vec<bool>,
     pub(crate) score: Score,
     /// The first-option potential, for [`crate::Reward::FirstOption`].
     pub(crate) potential: f64,
@@ -118,6 +120,7 @@ struct Saved {
     robot: Robot,
     bindings: Vec<Option<ObjectId>>,
     steps: u32,
+    atoms: Vec<bool>,
     score: Score,
     potential: f64,
     tracker: Tracker,
@@ -132,6 +135,7 @@ impl Episode {
             robot: self.robot.clone(),
             bindings: self.bindings.clone(),
             steps: self.steps,
+            atoms: self.atoms.clone(),
             score: self.score.clone(),
             potential: self.potential,
             tracker: self.tracker.clone(),
@@ -174,6 +178,7 @@ impl Episode {
             robot: saved.robot,
             bindings: saved.bindings,
             steps: saved.steps,
+            atoms: saved.atoms,
             score: saved.score,
             potential: saved.potential,
             tracker: saved.tracker,

@@ -33,9 +33,35 @@ impl Scorer {
         Scorer { goal, first_option }
     }
 
+    /// Scores the goal in the state `oracle` answers for; `last` holds the atoms' truth when
+    /// `previous` was scored, and is updated. When no atom changed, the score is `previous`.
+    pub(crate) fn rescore(
+        &self,
+        oracle: &impl PredicateOracle,
+        last: &mut Vec<bool>,
+        previous: &Score,
+    ) -> Score {
+        let truth = self.goal.atom_truth(oracle);
+        if truth == *last {
+            return previous.clone();
+        }
+        let score = self.score_truth(&truth);
+        *last = truth;
+        score
+    }
+
+    /// Every atom's truth in the state `oracle` answers for.
+    pub(crate) fn atoms(&self, oracle: &impl PredicateOracle) -> Vec<bool> {
+        self.goal.atom_truth(oracle)
+    }
+
     /// Scores the goal in the state `oracle` answers for.
     pub(crate) fn score(&self, oracle: &impl PredicateOracle) -> Score {
-        let truth = self.goal.atom_truth(oracle);
+        self.score_truth(&self.goal.atom_truth(oracle))
+    }
+
+    /// The score given every atom's truth.
+    fn score_truth(&self, truth: &[bool]) -> Score {
         let holds = |a: behavior_bddl::ground::AtomId| truth[a.0 as usize];
         let conjuncts = self
             .goal
@@ -45,7 +71,7 @@ impl Scorer {
             .collect();
         // A goal with no consistent option can never hold: its Q is 0.
         let q = Optimizer::new(&self.goal)
-            .q_with_truth(&truth)
+            .q_with_truth(truth)
             .map_or(0.0, |r| r.to_f64());
         Score {
             q,

@@ -15,11 +15,16 @@ fn temp(name: &str) -> PathBuf {
 }
 
 /// Records `steps` steps of a random agent; returns the environment at the end.
-fn record(path: &PathBuf, steps: u32, every: u32) -> Env {
+fn record(path: &std::path::Path, steps: u32, every: u32) -> Env {
     record_with(common::config("bringing_in_wood"), path, steps, every)
 }
 
-fn record_with(config: behavior_env::EnvConfig, path: &PathBuf, steps: u32, every: u32) -> Env {
+fn record_with(
+    config: behavior_env::EnvConfig,
+    path: &std::path::Path,
+    steps: u32,
+    every: u32,
+) -> Env {
     let mut env = Env::new(config);
     env.reset(5).unwrap();
     let dim = env.robot().unwrap().action_dim();

@@ -125,10 +125,10 @@ pub enum BodyKind {
     /// Moved by forces and contacts.
     #[default]
     Dynamic,
-    /// Moved only by the caller, toward a pose set with [`crate::World::set_kinematic_target`];
+    /// Moved only by the caller, toward a pose set with [`crate::Core::set_kinematic_target`];
     /// it pushes dynamic bodies and nothing pushes it (a robot's base driven to a pose).
     KinematicPosition,
-    /// Moved only by the caller, at a velocity set with [`crate::World::set_velocity`]
+    /// Moved only by the caller, at a velocity set with [`crate::Core::set_velocity`]
     /// (a differential-drive base).
     KinematicVelocity,
 }

@@ -70,7 +70,7 @@ impl AgentMetrics {
             totals.work += delta * f64::from(force(world, robot, part, &self.last[k], &now));
             if k == 0 {
                 base = delta;
-            } else if part.holding || touches(world, robot, part) {
+            } else if delta > 0.0 && (part.holding || touches(world, robot, part)) {
                 totals.contact_distance += delta;
                 hands += delta;
             }

@@ -136,7 +136,7 @@ impl HumanReference {
             let (a, h) = (efficiency(agent)[k], best[k]);
             match (a, h) {
                 (a, h) if h > 0.0 => Some(a / h),
-                (a, _) if a == 0.0 => Some(1.0),
+                (0.0, _) => Some(1.0),
                 _ => None,
             }
         };

@@ -16,6 +16,8 @@ struct Followed {
     id: ObjectId,
     start: Vector,
     last: Vector,
+    /// The world's motion count of the object when last read: unchanged, it has not moved.
+    motion: u64,
 }
 
 /// The running kinematic disarrangement of an episode.
@@ -40,6 +42,7 @@ impl Kinematic {
                     id,
                     start: at,
                     last: at,
+                    motion: world.core().motion(id),
                 }
             })
             .collect();
@@ -55,7 +58,13 @@ impl Kinematic {
     pub(crate) fn step(&mut self, world: &World) -> f64 {
         self.adopt_halves(world);
         let mut moved = 0.0;
+        let core = world.core();
         for f in &mut self.followed {
+            let motion = core.motion(f.id);
+            if motion == f.motion {
+                continue;
+            }
+            f.motion = motion;
             let now = world.pose(f.id).translation;
             moved += f64::from((now - f.last).length());
             f.last = now;

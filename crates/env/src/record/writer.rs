@@ -172,7 +172,7 @@ impl Recorder {
             "conjuncts": score.conjuncts,
         });
         self.write(3, step, &score)?;
-        if step % self.checkpoint_every == 0 {
+        if step.is_multiple_of(self.checkpoint_every) {
             let digest = state_digest(world, robot, step);
             self.write(4, step, &json!({ "step": step, "digest": digest }))?;
             if let Some(checkpoint) = env.checkpoint() {

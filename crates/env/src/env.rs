@@ -16,7 +16,8 @@ use std::time::Instant;
 /// Steps of settling after a reset, at most (the original's `SIMULATOR_SETTLE_TIME`).
 pub const SETTLE_STEPS: usize = 150;
 
-/// Why a reset or a step could not be done. Nothing changed when one is returned.
+/// Why a reset or a step could not be done. A refused step changes nothing; a failed reset
+/// leaves no episode (step refuses until a reset succeeds).
 #[derive(Debug, thiserror::Error)]
 pub enum EnvError {
     /// `step` before the first `reset`.

@@ -91,3 +91,53 @@ fn an_idle_agent_navigates_nothing_and_a_random_one_more() {
     );
     assert!(random.work > 0.0 && idle.work < random.work);
 }
+
+#[test]
+fn an_agent_is_normalized_by_a_recorded_demonstration() {
+    use behavior_env::Start;
+    use behavior_env::metrics::HumanReference;
+    use behavior_env::record::{Recorder, read};
+    // A "demonstration": 60 random steps, recorded.
+    let path = std::env::temp_dir().join(format!("behavior-demo-{}.mcap", std::process::id()));
+    let mut env = common::env("bringing_in_wood");
+    env.reset(6).unwrap();
+    let mut recorder = Recorder::create(&path, &env, "(text)", 30).unwrap();
+    let mut agent = Agent::named("random", 6).unwrap();
+    let mut action = Vec::new();
+    for _ in 0..60 {
+        agent.act(26, &mut action);
+        env.step(&action).unwrap();
+        recorder.record(&env, &action).unwrap();
+    }
+    recorder.finish().unwrap();
+    // The demonstration's metrics, from the recording alone (begun again, its actions replayed).
+    let recording = read(&path).unwrap();
+    let config = recording
+        .config(common::activity("bringing_in_wood"), common::taxonomy())
+        .unwrap();
+    let mut demo = Env::new(config);
+    let start = Start {
+        seed: recording.header.seed,
+        instance: recording.header.instance.clone(),
+    };
+    demo.reset_to(start.clone()).unwrap();
+    for frame in &recording.frames {
+        demo.step(&frame.action).unwrap();
+    }
+    let human = demo.metrics().unwrap();
+    assert_eq!(Some(&human), env.metrics().as_ref());
+    let mut reference = HumanReference::new();
+    reference.add("bringing_in_wood", "alder/6", &human);
+    // An agent that idles 90 steps on the same instance: 1.5 × the time, no distance.
+    let mut idle = Env::new(common::config("bringing_in_wood"));
+    idle.reset_to(start).unwrap();
+    for _ in 0..90 {
+        idle.step(&[0.0; 26]).unwrap();
+    }
+    let n = reference
+        .normalize("bringing_in_wood", "alder/6", &idle.metrics().unwrap())
+        .unwrap();
+    assert_eq!(n.simulated_time, Some(1.5));
+    assert_eq!(n.distance_navigated, Some(0.0));
+    assert!(human.distance_navigated > 1.0);
+}

@@ -45,3 +45,38 @@ fn bad_actions_are_refused_and_change_nothing() {
     env.restore(&before);
     assert_eq!(env.steps(), 0);
 }
+
+#[test]
+fn the_first_option_reward_sums_to_the_change_of_that_option_s_satisfied_fraction() {
+    use behavior_bddl::{GroundGoal, PredicateOracle, options::options};
+    use behavior_env::{Agent, Env, Reward};
+    use behavior_sim::BoundWorld;
+    let mut config = common::config("re-shelving_library_books");
+    config.reward = Reward::FirstOption;
+    let first = options(&GroundGoal::new(&config.activity)).next().unwrap();
+    let mut env = Env::new(config);
+    env.reset(3).unwrap();
+    let fraction = |env: &Env| {
+        let oracle = BoundWorld {
+            world: env.world().unwrap(),
+            bindings: env.bindings().unwrap(),
+        };
+        let holding = first
+            .iter()
+            .filter(|l| oracle.holds(l.atom) == l.positive)
+            .count();
+        holding as f64 / first.len() as f64
+    };
+    let before = fraction(&env);
+    let mut agent = Agent::named("random", 3).unwrap();
+    let (mut action, mut total) = (Vec::new(), 0.0);
+    for _ in 0..40 {
+        agent.act(26, &mut action);
+        total += env.step(&action).unwrap().reward;
+    }
+    assert!((total - (fraction(&env) - before)).abs() < 1e-12, "{total}");
+    assert!(
+        before > 0.0,
+        "some of the first option holds at the start: {before}"
+    );
+}

@@ -502,7 +502,10 @@ impl Fetch {
         let own = self.parts.all();
         let blocker = Blocker {
             world,
-            filter: QueryFilter::excluding(&own),
+            filter: QueryFilter {
+                fixed_only: true,
+                ..QueryFilter::excluding(&own)
+            },
         };
         let now = self.now;
         let candidates = [

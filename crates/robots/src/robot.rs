@@ -305,7 +305,10 @@ impl BehaviorRobot {
             let own = self.parts.all();
             let blocker = Blocker {
                 world,
-                filter: QueryFilter::excluding(&own),
+                filter: QueryFilter {
+                    fixed_only: true,
+                    ..QueryFilter::excluding(&own)
+                },
             };
             self.targets = blocker.allow(&old, wanted);
         }

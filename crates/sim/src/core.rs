@@ -89,6 +89,9 @@ pub struct Core {
     /// A ray and shape query structure over every collider, rebuilt on first use after a change.
     #[serde(skip)]
     pub(crate) index: OnceLock<QueryIndex>,
+    /// The same over fixed bodies only: unchanged by steps, rebuilt after a change of objects.
+    #[serde(skip)]
+    pub(crate) fixed_index: OnceLock<QueryIndex>,
     pub(crate) attachments: Attachments,
     /// Bodies whose contacts with each other are ignored (a hand and what it holds).
     pub(crate) ignored: std::collections::BTreeSet<(BodyRef, BodyRef)>,
@@ -133,6 +136,7 @@ impl Clone for Core {
             motion: self.motion.clone(),
             memo: self.memo.clone(),
             index: self.index.clone(),
+            fixed_index: self.fixed_index.clone(),
             attachments: self.attachments.clone(),
             ignored: self.ignored.clone(),
             pushed: self.pushed.clone(),
@@ -173,6 +177,7 @@ impl Core {
             motion: Vec::new(),
             memo: RelationMemo::default(),
             index: OnceLock::new(),
+            fixed_index: OnceLock::new(),
             attachments: Attachments::default(),
             ignored: Default::default(),
             pushed: Vec::new(),
@@ -474,6 +479,7 @@ impl Core {
     pub(crate) fn refresh(&mut self) {
         self.quiet = false;
         self.index = OnceLock::new();
+        self.fixed_index = OnceLock::new();
         let physics = &mut self.physics;
         physics
             .bodies

@@ -27,6 +27,12 @@ pub struct QueryFilter {
     pub exclude_bodies: Vec<BodyRef>,
     /// Whether water drops count (they are ignored by default).
     pub include_drops: bool,
+    /// Only the bodies of fixed objects (walls, floors, furniture) count. Such queries are
+    /// answered from an index of fixed bodies that survives steps (it changes only when objects
+    /// are added, retired or teleported), so a robot checking its moves against walls every step
+    /// does not rebuild an index of the whole, moving world.
+    #[serde(default)]
+    pub fixed_only: bool,
 }
 
 impl QueryFilter {
@@ -81,12 +87,15 @@ pub(crate) struct QueryIndex {
 }
 
 impl QueryIndex {
-    fn build(core: &Core) -> QueryIndex {
+    /// Over every enabled collider, or only over those of fixed bodies.
+    fn build(core: &Core, fixed_only: bool) -> QueryIndex {
+        let bodies = &core.physics.bodies;
+        let fixed = |c: &Collider| c.parent().is_some_and(|b| bodies[b].is_fixed());
         let (colliders, boxes): (Vec<ColliderHandle>, Vec<Aabb>) = core
             .physics
             .colliders
             .iter()
-            .filter(|(_, c)| c.is_enabled())
+            .filter(|(_, c)| c.is_enabled() && (!fixed_only || fixed(c)))
             .map(|(h, c)| (h, c.compute_aabb()))
             .unzip();
         QueryIndex {
@@ -98,7 +107,7 @@ impl QueryIndex {
 
 impl Core {
     fn index(&self) -> &QueryIndex {
-        self.index.get_or_init(|| QueryIndex::build(self))
+        self.index.get_or_init(|| QueryIndex::build(self, false))
     }
 
     /// The first thing a ray from `origin` along `direction` hits within `max_distance`.
@@ -222,7 +231,12 @@ impl Core {
         margin: f32,
         filter: &'a QueryFilter,
     ) -> impl Iterator<Item = &'a Collider> + 'a {
-        let index = self.index();
+        let index = if filter.fixed_only {
+            self.fixed_index
+                .get_or_init(|| QueryIndex::build(self, true))
+        } else {
+            self.index()
+        };
         let area = probe.compute_aabb().loosened(margin);
         let leaves: Vec<u32> = index.bvh.intersect_aabb(&area).collect();
         leaves

@@ -67,7 +67,9 @@ impl AgentMetrics {
                 .min(f64::from(MAX_STEP_DISTANCE));
             let totals = &mut self.parts[k];
             totals.distance += delta;
-            totals.work += delta * f64::from(force(world, robot, part, &self.last[k], &now));
+            if delta > 0.0 {
+                totals.work += delta * f64::from(force(world, robot, part, &self.last[k], &now));
+            }
             if k == 0 {
                 base = delta;
             } else if delta > 0.0 && (part.holding || touches(world, robot, part)) {

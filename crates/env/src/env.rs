@@ -171,7 +171,7 @@ impl Env {
         world.settle(SETTLE_STEPS);
         let mut bindings: Vec<Option<ObjectId>> =
             loaded.bindings.iter().copied().map(Some).collect();
-        let base = robot.objects()[0];
+        let base = robot.base();
         for b in bindings
             .iter_mut()
             .filter(|b| **b == agent && agent.is_some())

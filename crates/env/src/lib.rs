@@ -9,22 +9,25 @@
 //! rendering, Python or the command line; it builds on the world (`behavior-sim`), the robots,
 //! the sampler and BDDL's goal evaluation.
 //!
-//! ```no_run
-//! use behavior_env::{Agent, Env, EnvConfig};
-//! # fn config() -> EnvConfig { unimplemented!() }
-//! let mut env = Env::new(config()); // an activity, its homes, a robot (see EnvConfig)
-//! let (_obs, info) = env.reset(7).unwrap();
-//! let mut agent = Agent::named("random", 7).unwrap();
-//! let mut action = Vec::new();
-//! let dim = env.robot().unwrap().action_dim();
-//! loop {
-//!     agent.act(dim, &mut action);
-//!     let step = env.step(&action).unwrap();
-//!     if step.terminated || step.truncated {
-//!         break;
+//! ```
+//! use behavior_env::{Agent, Env, EnvConfig, EnvError};
+//!
+//! /// A random agent's episode in an environment made from `config` (an activity, its
+//! /// homes, a robot: see [`EnvConfig::new`]); returns the final Q.
+//! fn random_episode(config: EnvConfig, seed: u64) -> Result<f64, EnvError> {
+//!     let mut env = Env::new(config);
+//!     env.reset(seed)?;
+//!     let mut agent = Agent::named("random", seed).expect("a built-in agent");
+//!     let dim = env.robot().map_or(0, |r| r.action_dim());
+//!     let mut action = Vec::new();
+//!     loop {
+//!         agent.act(dim, &mut action);
+//!         let step = env.step(&action)?;
+//!         if step.terminated || step.truncated {
+//!             return Ok(step.info.score.q);
+//!         }
 //!     }
 //! }
-//! println!("Q {} → {}", info.score.q, env.metrics().unwrap().q_final);
 //! ```
 //!
 //! Inside: `config.rs` (what an env is made of), `env.rs` (reset and step), `episode.rs` (an

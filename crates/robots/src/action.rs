@@ -172,6 +172,30 @@ pub enum ActionSpace {
 }
 
 impl ActionSpace {
+    /// Every space.
+    pub const ALL: [ActionSpace; 4] = [
+        ActionSpace::Full,
+        ActionSpace::Navigation,
+        ActionSpace::MobileManipulation,
+        ActionSpace::TabletopManipulation,
+    ];
+
+    /// Its name in files and on the command line: `full`, `navigation`,
+    /// `mobile_manipulation` or `tabletop_manipulation`.
+    pub fn name(self) -> &'static str {
+        match self {
+            ActionSpace::Full => "full",
+            ActionSpace::Navigation => "navigation",
+            ActionSpace::MobileManipulation => "mobile_manipulation",
+            ActionSpace::TabletopManipulation => "tabletop_manipulation",
+        }
+    }
+
+    /// The space with that [`ActionSpace::name`].
+    pub fn from_name(name: &str) -> Option<ActionSpace> {
+        ActionSpace::ALL.into_iter().find(|s| s.name() == name)
+    }
+
     /// How many values a BehaviorRobot action of this space has (Fetch's: [`ActionSpace::fetch_dim`]).
     pub fn dim(self) -> usize {
         match self {

@@ -173,6 +173,14 @@ impl Robot {
         }
     }
 
+    /// The base's object (a BehaviorRobot's body, Fetch's base link).
+    pub fn base(&self) -> ObjectId {
+        match self {
+            Robot::Behavior(robot, _) => robot.parts().body,
+            Robot::Fetch(robot, _) => robot.parts().base(),
+        }
+    }
+
     /// The world objects the robot is made of.
     pub fn objects(&self) -> Vec<ObjectId> {
         match self {

@@ -127,6 +127,9 @@ pub enum BodyKind {
     Dynamic,
     /// Moved only by the caller, toward a pose set with [`crate::Core::set_kinematic_target`];
     /// it pushes dynamic bodies and nothing pushes it (a robot's base driven to a pose).
+    /// Beware: once turned away from the identity rotation it never sleeps, even untouched
+    /// (rapier derives its velocity from rounded rotations, about 1e-4 rad/s); a body that must
+    /// rest cheaply (the robots' parts) is better `KinematicVelocity`, stopped at exactly zero.
     KinematicPosition,
     /// Moved only by the caller, at a velocity set with [`crate::Core::set_velocity`]
     /// (a differential-drive base).

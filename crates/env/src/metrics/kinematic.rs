@@ -27,7 +27,6 @@ pub(crate) struct Kinematic {
     /// Objects the world had when last looked at (new ones may be halves).
     seen: usize,
     pub(crate) integrated: f64,
-    pub(crate) last_step: f64,
 }
 
 impl Kinematic {
@@ -50,7 +49,6 @@ impl Kinematic {
             followed,
             seen: world.objects().len(),
             integrated: 0.0,
-            last_step: 0.0,
         }
     }
 
@@ -70,7 +68,6 @@ impl Kinematic {
             f.last = now;
         }
         self.integrated += moved;
-        self.last_step = moved;
         moved
     }
 

@@ -162,14 +162,7 @@ mod tests {
     use behavior_sim::{ObjectSpec, Part, Primitive};
     use rapier3d::math::{Pose, Vector};
 
-    fn boxed(
-        world: &mut World,
-        name: &str,
-        category: &str,
-        half: Vector,
-        at: Vector,
-    ) -> ObjectSpec {
-        let _ = world;
+    fn boxed(name: &str, category: &str, half: Vector, at: Vector) -> ObjectSpec {
         ObjectSpec::new(
             name,
             category,
@@ -182,7 +175,6 @@ mod tests {
     fn an_object_counts_once_for_its_relations_and_walking_robots_count_nothing() {
         let mut world = World::default();
         let floor = boxed(
-            &mut world,
             "floor",
             "floor.n.01",
             Vector::new(5.0, 5.0, 0.05),
@@ -190,7 +182,6 @@ mod tests {
         );
         world.add(floor.fixed()).unwrap();
         let table = boxed(
-            &mut world,
             "table",
             "table.n.02",
             Vector::new(0.5, 0.5, 0.4),
@@ -201,7 +192,6 @@ mod tests {
         let apples: Vec<ObjectId> = (0..3)
             .map(|k| {
                 let spec = boxed(
-                    &mut world,
                     &format!("apple_{k}"),
                     "apple.n.01",
                     small,
@@ -211,7 +201,6 @@ mod tests {
             })
             .collect();
         let robot = boxed(
-            &mut world,
             "robot",
             "agent.n.01",
             Vector::splat(0.2),

@@ -3,7 +3,6 @@
 
 use super::reader::Recording;
 use super::state_digest;
-use super::writer::space_name;
 use crate::config::{EnvConfig, Instances};
 use crate::env::{Env, EnvError};
 use crate::episode::Start;
@@ -75,15 +74,8 @@ impl Recording {
             value: value.to_string(),
         };
         let robot = RobotKind::from_name(&h.robot).ok_or_else(|| unknown("robot", &h.robot))?;
-        let action_space = [
-            ActionSpace::Full,
-            ActionSpace::Navigation,
-            ActionSpace::MobileManipulation,
-            ActionSpace::TabletopManipulation,
-        ]
-        .into_iter()
-        .find(|s| space_name(*s) == h.action_space)
-        .ok_or_else(|| unknown("action space", &h.action_space))?;
+        let action_space = ActionSpace::from_name(&h.action_space)
+            .ok_or_else(|| unknown("action space", &h.action_space))?;
         let physics = [Substeps::Hz300, Substeps::Hz120]
             .into_iter()
             .find(|s| s.count() * h.action_hz == h.physics_hz && h.action_hz == 30)

@@ -3,7 +3,6 @@
 use super::{CHUNK_BYTES, FORMAT_VERSION, Header, STATE_ENCODING, state_digest};
 use crate::env::Env;
 use crate::metrics::ACTION_HZ;
-use behavior_robots::ActionSpace;
 use mcap::records::MessageHeader;
 use mcap::{Compression, WriteOptions, Writer};
 use serde::Serialize;
@@ -34,16 +33,6 @@ pub enum RecordError {
     /// There is no episode to record: reset the environment first.
     #[error("nothing to record: reset the environment first")]
     NoEpisode,
-}
-
-/// The name of an action space in files and on the command line.
-pub(crate) fn space_name(space: ActionSpace) -> &'static str {
-    match space {
-        ActionSpace::Full => "full",
-        ActionSpace::Navigation => "navigation",
-        ActionSpace::MobileManipulation => "mobile_manipulation",
-        ActionSpace::TabletopManipulation => "tabletop_manipulation",
-    }
 }
 
 /// The topics, in the order their channels are added.
@@ -113,7 +102,7 @@ impl Recorder {
             scene: start.instance.scene.name.clone(),
             seed: start.seed,
             robot: config.robot.name().to_string(),
-            action_space: space_name(config.action_space).to_string(),
+            action_space: config.action_space.name().to_string(),
             physics_hz: config.physics.count() * ACTION_HZ,
             action_hz: ACTION_HZ,
             max_steps: config.max_steps,

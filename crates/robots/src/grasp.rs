@@ -133,9 +133,15 @@ pub(crate) struct Grasper<'a> {
 impl Grasper<'_> {
     /// Tries to grasp (steps 1–5 of the module docs) and attaches on success.
     pub(crate) fn try_grasp(&self, world: &mut World) -> Option<Grasp> {
+        // Only a touched body can be held (step 3), so a hand touching nothing casts no rays:
+        // the rays need the world's query index, rebuilt after every substep in which
+        // something moved, and a hand waving through the air would pay for it every step.
+        let touched = self.touched(world);
+        if touched.is_empty() {
+            return None;
+        }
         let (body, at) = self.candidate(world)?;
-        let touching = bodies(self.hand.0).any(|part| touches(world, part, body));
-        if !touching || self.other_holds.is_some_and(|o| o == body) {
+        if !touched.contains(&body) || self.other_holds.is_some_and(|o| o == body) {
             return None;
         }
         let kind = self.rules.holdable(world, body)?;
@@ -159,6 +165,17 @@ impl Grasper<'_> {
             attachment,
             fingers,
         })
+    }
+
+    /// Every body the hand (palm or a finger) touched in the last substep, its own excepted.
+    fn touched(&self, world: &World) -> Vec<BodyRef> {
+        let mut touched = Vec::new();
+        for part in bodies(self.hand.0) {
+            let contacts = world.core().contacts(part).unwrap_or_default();
+            let others = contacts.iter().filter_map(|c| c.other);
+            touched.extend(others.filter(|b| !self.own.contains(&b.object)));
+        }
+        touched
     }
 
     /// The body hit closest to the palm's centre by the rays between palm and fingertips, and
@@ -201,11 +218,6 @@ fn first_hit(
     Some((hit.body?, hit.point))
 }
 
-/// Whether `part` touched `body` in the last substep.
-fn touches(world: &World, part: BodyRef, body: BodyRef) -> bool {
-    let contacts = world.core().contacts(part).unwrap_or_default();
-    contacts.iter().any(|c| c.other == Some(body))
-}
 
 /// Whether a grasp must end: its trigger let go, or its attachment broke or drifted.
 pub(crate) fn must_release(world: &World, grasp: &Grasp, trigger: f32, rules: &GraspRules) -> bool {

@@ -15,7 +15,7 @@
 //! 10 · (300 / 12 + 9.81) ≈ 350 N, under the grasp's 500 N, so the hand's own motion never
 //! breaks a grasp.
 
-use crate::hand::{FINGER_MASS, FINGERS, PALM_MASS, Side, finger_centre, finger_joint};
+use crate::hand::HAND_MASS;
 use behavior_sim::{BodyRef, ObjectId, Velocity, World};
 use rapier3d::math::{Pose, Rotation, Vector};
 
@@ -41,7 +41,7 @@ const HAND_ANGULAR_ACCELERATION: f32 = 1000.0;
 /// motion together reach about 5 m/s at full reach), accelerating as the original's hand can.
 pub(crate) const HAND_LIMITS: Limits = Limits {
     speed: 6.0,
-    acceleration: HAND_FORCE / (PALM_MASS + FINGERS as f32 * FINGER_MASS),
+    acceleration: HAND_FORCE / HAND_MASS,
     angular_speed: 6.0,
     angular_acceleration: 500.0,
 };
@@ -104,20 +104,25 @@ impl Follower {
 }
 
 /// Sets a hand's velocity so that its palm lands on `reference` at the end of a substep of `dt`,
-/// within the force limit (see the module docs). The fingers are given the palm's motion plus
-/// their own joint's: the hand moves as one piece, so none of the servo's push is lost to
-/// dragging the fingers (which, as heavy as the palm and farther out, would otherwise make the
-/// palm's turning oscillate).
-pub(crate) fn servo(world: &mut World, hand: ObjectId, side: Side, reference: &Pose, dt: f32) {
+/// within the force limit (see the module docs). The fingers are shapes of the hand's body, so
+/// they move with it.
+pub(crate) fn servo(world: &mut World, hand: ObjectId, reference: &Pose, dt: f32) {
     let palm = BodyRef::from(hand);
-    let (Ok(now), Ok(velocity)) = (world.core().body_pose(palm), world.core().velocity(palm))
-    else {
+    let core = world.core();
+    let (Ok(now), Ok(velocity), Ok(centre)) = (
+        core.body_pose(palm),
+        core.velocity(palm),
+        core.centre_of_mass(palm),
+    ) else {
         return;
     };
+    // The velocity is the centre of mass's (off the palm's origin: the fingers weigh too), so
+    // it is sent where it is when the hand is at the reference.
+    let centre_there = reference.transform_point(now.inverse_transform_point(centre));
     // What gravity takes off the velocity during the substep, given back in advance.
-    let lift = -world.core().gravity() * dt;
-    let wanted = (reference.translation - now.translation) / dt + lift;
-    let limit = HAND_FORCE / (PALM_MASS + FINGERS as f32 * FINGER_MASS) * dt;
+    let lift = -core.gravity() * dt;
+    let wanted = (centre_there - centre) / dt + lift;
+    let limit = HAND_FORCE / HAND_MASS * dt;
     let linear = velocity.linear + (wanted - velocity.linear).clamp_length_max(limit);
     let turn = rotation_error(now.rotation, reference.rotation) / dt;
     let spin = (turn - velocity.angular).clamp_length_max(HAND_ANGULAR_ACCELERATION * dt);
@@ -125,40 +130,8 @@ pub(crate) fn servo(world: &mut World, hand: ObjectId, side: Side, reference: &P
         linear,
         angular: velocity.angular + spin,
     };
-    let fingers: Vec<(usize, Velocity)> = (0..FINGERS)
-        .map(|l| (l, finger_velocity(world, (hand, side, l), now, twist, lift)))
-        .collect();
-    let core = world.core_mut();
-    // Finite: the reference and the hand's state are; the world cannot refuse these.
-    let _ = core.set_velocity(palm, twist);
-    for (link, v) in fingers {
-        let _ = core.set_velocity(BodyRef::link(hand, link), v);
-    }
-}
-
-/// A finger's velocity when its palm moves with `twist`, keeping its joint's own speed.
-fn finger_velocity(
-    world: &World,
-    (hand, side, link): (ObjectId, Side, usize),
-    palm: Pose,
-    twist: Velocity,
-    lift: Vector,
-) -> Velocity {
-    let core = world.core();
-    let rate = core.joint_state(hand, link).map_or(0.0, |s| s.velocity);
-    let (anchor, axis) = finger_joint(side, link);
-    let axis = palm.rotation * axis;
-    let centre = core
-        .link_pose(hand, link)
-        .transform_point(finger_centre(side, link));
-    let own = axis * rate;
-    Velocity {
-        linear: twist.linear
-            + twist.angular.cross(centre - palm.translation)
-            + own.cross(centre - palm.transform_point(anchor))
-            + lift,
-        angular: twist.angular + own,
-    }
+    // Finite: the reference and the hand's state are; the world cannot refuse it.
+    let _ = world.core_mut().set_velocity(palm, twist);
 }
 
 /// Whether a palm rests within a few millimetres of `reference`: close enough to be parked there.

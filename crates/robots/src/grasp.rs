@@ -20,14 +20,16 @@
 //! A hand lets go after a step in which its trigger is at or below the threshold, the attachment
 //! broke (it needed more than its maximum force) or its two anchor points drifted more than
 //! 0.1 m apart. Contacts come back once the released object's box no longer overlaps the hand's
-//! (or the body's) box — for a link, after one step, the original's release window for all —
-//! so that a released object still inside closed fingers drops out instead of being pushed out.
+//! (or the body's) box — not after the original's fixed release window of one step — so that a
+//! released object still inside closed fingers drops out instead of being pushed out, a released
+//! lid falls past the fingers that held its edge instead of wedging on them (they are rigid, see
+//! `hand.rs`), and nothing is grasped again before the hand has left it.
 //!
 //! Differences from the original: it requires contact with a fingertip, we with any part of the
 //! hand (our fingers are single capsules); it re-enables contacts after a fixed 1/30 s, we once
 //! apart; its allow-list comes from per-category data we do not have (empty by default).
 
-use crate::hand::{HandPoints, Side, bodies};
+use crate::hand::{FINGERS, HandPoints};
 use behavior_sim::{
     AttachmentId, AttachmentKind, AttachmentSpec, BodyKind, BodyRef, JointKind, ObjectId,
     QueryFilter, World,
@@ -120,14 +122,16 @@ pub(crate) struct Release {
 /// The robot as the grasp sees it.
 pub(crate) struct Grasper<'a> {
     pub(crate) rules: &'a GraspRules,
-    /// The hand's object and side.
-    pub(crate) hand: (ObjectId, Side),
+    /// The hand's object.
+    pub(crate) hand: ObjectId,
     /// The robot's body object.
     pub(crate) torso: ObjectId,
     /// Every robot object, ignored by the rays.
     pub(crate) own: &'a [ObjectId],
     /// What the other hand holds.
     pub(crate) other_holds: Option<BodyRef>,
+    /// The hand's finger angles now: they stay so while it holds.
+    pub(crate) fingers: [f32; FINGERS],
 }
 
 impl Grasper<'_> {
@@ -145,43 +149,39 @@ impl Grasper<'_> {
             return None;
         }
         let kind = self.rules.holdable(world, body)?;
+        let hand = BodyRef::from(self.hand);
         let spec = AttachmentSpec {
-            holder: BodyRef::from(self.hand.0),
+            holder: hand,
             held: body,
             at,
             kind,
             max_force: self.rules.max_force(kind),
         };
         let attachment = world.core_mut().attach(spec).ok()?;
-        for part in bodies(self.hand.0).chain([BodyRef::from(self.torso)]) {
+        for part in [hand, BodyRef::from(self.torso)] {
             let _ = world.core_mut().ignore_contacts(part, body, true);
         }
-        let fingers = std::array::from_fn(|l| {
-            let state = world.core().joint_state(self.hand.0, l);
-            state.map_or(0.0, |s| s.position)
-        });
         Some(Grasp {
             body,
             attachment,
-            fingers,
+            fingers: self.fingers,
         })
     }
 
     /// Every body the hand (palm or a finger) touched in the last substep, its own excepted.
     fn touched(&self, world: &World) -> Vec<BodyRef> {
-        let mut touched = Vec::new();
-        for part in bodies(self.hand.0) {
-            let contacts = world.core().contacts(part).unwrap_or_default();
-            let others = contacts.iter().filter_map(|c| c.other);
-            touched.extend(others.filter(|b| !self.own.contains(&b.object)));
-        }
-        touched
+        let contacts = world.core().contacts(BodyRef::from(self.hand));
+        let others = contacts
+            .unwrap_or_default()
+            .into_iter()
+            .filter_map(|c| c.other);
+        others.filter(|b| !self.own.contains(&b.object)).collect()
     }
 
     /// The body hit closest to the palm's centre by the rays between palm and fingertips, and
     /// where.
     fn candidate(&self, world: &World) -> Option<(BodyRef, Vector)> {
-        let points = HandPoints::of(world, self.hand.0, self.hand.1);
+        let points = HandPoints::of(world, self.hand);
         let filter = QueryFilter::excluding(self.own);
         let mut best: Option<(f32, BodyRef, Vector)> = None;
         for origin in points.origins {
@@ -218,7 +218,6 @@ fn first_hit(
     Some((hit.body?, hit.point))
 }
 
-
 /// Whether a grasp must end: its trigger let go, or its attachment broke or drifted.
 pub(crate) fn must_release(world: &World, grasp: &Grasp, trigger: f32, rules: &GraspRules) -> bool {
     match world.core().attachment(grasp.attachment) {
@@ -234,8 +233,7 @@ impl Release {
     pub(crate) fn settle(&mut self, world: &mut World) -> bool {
         let body = self.body;
         self.parts.retain(|&part| {
-            let clear =
-                body.link.is_some() || !world.aabb(body.object).intersects(&world.aabb(part));
+            let clear = !world.aabb(body.object).intersects(&world.aabb(part));
             if clear {
                 let links = world.object(part).links.len();
                 let parts = std::iter::once(BodyRef::from(part))

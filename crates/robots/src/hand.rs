@@ -1,28 +1,26 @@
-//! A BehaviorRobot hand, built from our own shapes with the original's masses: a palm (a box of
-//! 1 kg) and five fingers (capsules of 0.2 kg each: the original's two 0.1 kg phalanges per
-//! finger, merged), friction 2.5 (reference §2.1, §2.3).
+//! A BehaviorRobot hand, built from our own shapes with the original's mass: one dynamic body of
+//! 2 kg (the original's 1 kg palm and five fingers of two 0.1 kg phalanges), made of a palm (a
+//! box) and five fingers (capsules), friction 2.5 (reference §2.1, §2.3). Its mass is spread over
+//! the shapes by volume.
 //!
 //! The hand's frame: x along the fingers, y to the hand's left, z out of its back; the palm faces
 //! −z. At rest the fingers lie straight in the palm's plane and the thumb sticks out sideways and
-//! forward. Each finger turns on one revolute joint at its knuckle, position-driven (at most
-//! 3 N·m, the original's motor force) toward `trigger × closed`: 1.2 rad for the fingers, 0.6 rad
-//! for the thumb (the original's close positions). The fingers close toward −z, the thumb swings
-//! down beside the palm.
+//! forward. Each finger turns about its knuckle toward `trigger × closed`: 1.2 rad for the
+//! fingers, 0.6 rad for the thumb (the original's close positions), at most [`FINGER_SPEED`]. The
+//! fingers close toward −z, the thumb swings down beside the palm.
 //!
-//! Why one joint per finger and not the original's two: every finger joint is a body and a
-//! constraint the solver pays for in every substep while the hand moves, and the fingers do not
-//! hold anything — the assisted grasp does ([`crate::GraspRules`]). Five joints per hand keep the
-//! look (fingers close with the trigger, touch what they close on) at half the cost.
+//! Why the fingers are shapes of the hand's body, turned in place each substep
+//! ([`behavior_sim::Core::set_part_offset`]), rather than links on joints as the original's:
+//! the fingers do not hold anything — the assisted grasp does ([`crate::GraspRules`]) — so they
+//! are there to be seen and to touch, and ten jointed finger bodies were most of what a moving
+//! robot cost the solver (about 40 % of a step under random actions). The price: a finger does
+//! not bend back against what it presses on; the hand as a whole yields instead (its servo is
+//! force-limited, see `follow.rs`), and a closing finger pushes a movable object aside.
 //!
-//! The palm is a dynamic body servoed onto its target (see `follow.rs`); the fingers are dynamic
-//! links on impulse joints, so they yield against what they press on (a table, the object being
-//! grasped).
+//! The palm is servoed onto its target (see `follow.rs`), carrying its fingers.
 
 use behavior_core::AGENT_SYNSET;
-use behavior_sim::{
-    BodyRef, JointKind, JointModel, JointSpec, LinkSpec, Material, ObjectId, ObjectSpec, Part,
-    Primitive, World,
-};
+use behavior_sim::{Material, ObjectId, ObjectSpec, Part, Primitive, World};
 use rapier3d::math::{Pose, Rotation, Vector};
 
 /// Which hand.
@@ -70,18 +68,18 @@ impl Side {
     }
 }
 
-/// The palm's mass, kg.
-pub const PALM_MASS: f32 = 1.0;
-/// Each finger's mass, kg (two phalanges of 0.1 kg).
-pub const FINGER_MASS: f32 = 0.2;
+/// The hand's mass, kg: the original's palm (1 kg) and five fingers (0.2 kg each).
+pub const HAND_MASS: f32 = 2.0;
 /// Friction coefficient of the palm and fingers.
 pub const HAND_FRICTION: f32 = 2.5;
-/// A finger's joint angle at a full trigger, rad.
+/// A finger's angle at a full trigger, rad.
 pub const FINGER_CLOSED: f32 = 1.2;
-/// The thumb's joint angle at a full trigger, rad.
+/// The thumb's angle at a full trigger, rad.
 pub const THUMB_CLOSED: f32 = 0.6;
-/// The most torque a finger's drive applies, N·m.
-pub const FINGER_TORQUE: f32 = 3.0;
+/// How fast a finger turns, rad/s: closed in 0.2 s. Faster than a trigger can ask (its
+/// fraction changes by at most 0.05 a step), so it binds only when the trigger jumps (a restored
+/// or reset robot).
+pub const FINGER_SPEED: f32 = 6.0;
 /// Finger links: index, middle, ring, little finger, then the thumb.
 pub const FINGERS: usize = 5;
 /// The thumb's link index.
@@ -93,18 +91,12 @@ const FINGER_LENGTH: f32 = 0.08;
 const FINGER_RADIUS: f32 = 0.009;
 const THUMB_LENGTH: f32 = 0.06;
 const THUMB_RADIUS: f32 = 0.01;
-/// Fingers may be bent back this far by what they press on, rad.
-const HYPEREXTENSION: f32 = -0.3;
-/// Finger drive gains: stiff enough to hold a finger against gravity within 0.02 rad, damped
-/// near critically for a finger's inertia about its knuckle (about 4·10⁻⁴ kg·m²).
-pub(crate) const FINGER_STIFFNESS: f32 = 5.0;
-pub(crate) const FINGER_DAMPING: f32 = 0.1;
 /// Each finger's distance from the hand's middle line, index first, toward the thumb's side.
 const FINGER_OFFSETS: [f32; 4] = [0.0315, 0.0105, -0.0105, -0.0315];
 
-/// The joint angle a trigger fraction asks of a finger link.
-pub(crate) fn closed_angle(link: usize, trigger: f32) -> f32 {
-    let closed = if link == THUMB {
+/// The angle a trigger fraction asks of a finger.
+pub(crate) fn closed_angle(finger: usize, trigger: f32) -> f32 {
+    let closed = if finger == THUMB {
         THUMB_CLOSED
     } else {
         FINGER_CLOSED
@@ -113,35 +105,23 @@ pub(crate) fn closed_angle(link: usize, trigger: f32) -> f32 {
 }
 
 /// Where a finger starts and which way it points, in the hand frame at rest.
-fn finger_line(side: Side, link: usize) -> (Vector, Vector) {
+fn finger_line(side: Side, finger: usize) -> (Vector, Vector) {
     let t = side.thumb_sign();
-    if link == THUMB {
+    if finger == THUMB {
         let direction = Vector::new(0.5, t * 0.866_025_4, 0.0);
         (Vector::new(-0.01, t * PALM_HALF.y, 0.0), direction)
     } else {
-        let knuckle = Vector::new(PALM_HALF.x, t * FINGER_OFFSETS[link], 0.0);
+        let knuckle = Vector::new(PALM_HALF.x, t * FINGER_OFFSETS[finger], 0.0);
         (knuckle, Vector::X)
     }
 }
 
-fn finger_size(link: usize) -> (f32, f32) {
-    if link == THUMB {
+fn finger_size(finger: usize) -> (f32, f32) {
+    if finger == THUMB {
         (THUMB_LENGTH, THUMB_RADIUS)
     } else {
         (FINGER_LENGTH, FINGER_RADIUS)
     }
-}
-
-/// A finger's tip in the hand frame at rest (its link's frame).
-pub(crate) fn fingertip(side: Side, link: usize) -> Vector {
-    let (start, direction) = finger_line(side, link);
-    start + direction * finger_size(link).0
-}
-
-/// A point halfway along the thumb, in its link's frame.
-pub(crate) fn thumb_middle(side: Side) -> Vector {
-    let (start, direction) = finger_line(side, THUMB);
-    start + direction * (0.5 * THUMB_LENGTH)
 }
 
 /// The middle of the palm's inner face, in the hand frame: where grasps are measured from.
@@ -149,22 +129,16 @@ pub(crate) const PALM_CENTRE: Vector = Vector::new(0.0, 0.0, -PALM_HALF.z);
 /// Near the wrist on the palm's inner face.
 pub(crate) const PALM_BASE: Vector = Vector::new(-0.7 * PALM_HALF.x, 0.0, -PALM_HALF.z);
 
-fn capsule_volume(length: f32, radius: f32) -> f32 {
-    let pi = std::f32::consts::PI;
-    pi * radius * radius * (length - 2.0 * radius) + 4.0 / 3.0 * pi * radius.powi(3)
+/// The part index of a finger's capsule in the hand's body: the palm is part 0.
+fn part(finger: usize) -> usize {
+    1 + finger
 }
 
-/// A finger's centre of mass in the hand frame at rest (its link's frame).
-pub(crate) fn finger_centre(side: Side, link: usize) -> Vector {
-    let (start, direction) = finger_line(side, link);
-    start + direction * (0.5 * finger_size(link).0)
-}
-
-/// A finger joint's anchor and axis in the hand frame. Fingers curl about the hand's y axis
-/// toward −z; the thumb turns about x, down beside the palm.
-pub(crate) fn finger_joint(side: Side, link: usize) -> (Vector, Vector) {
-    let (start, _) = finger_line(side, link);
-    let axis = if link == THUMB {
+/// A finger's knuckle and the axis it turns about, in the hand frame. Fingers curl about the
+/// hand's y axis toward −z; the thumb turns about x, down beside the palm.
+fn knuckle(side: Side, finger: usize) -> (Vector, Vector) {
+    let (start, _) = finger_line(side, finger);
+    let axis = if finger == THUMB {
         Vector::new(-side.thumb_sign(), 0.0, 0.0)
     } else {
         Vector::Y
@@ -172,49 +146,69 @@ pub(crate) fn finger_joint(side: Side, link: usize) -> (Vector, Vector) {
     (start, axis)
 }
 
-fn finger_link(side: Side, link: usize) -> LinkSpec {
-    let (_, direction) = finger_line(side, link);
-    let (length, radius) = finger_size(link);
-    let capsule = Primitive::Capsule {
-        radius,
-        half_height: 0.5 * length - radius,
-    };
-    let part = Part {
-        primitive: capsule,
-        offset: Pose::from_parts(
-            finger_centre(side, link),
-            Rotation::from_rotation_arc(Vector::Z, direction),
-        ),
-        visual: None,
-    };
-    let (anchor, axis) = finger_joint(side, link);
-    LinkSpec {
-        name: ["index", "middle", "ring", "little", "thumb"][link].to_string(),
-        parts: vec![part],
-        parent: None,
-        joint: JointSpec {
-            kind: JointKind::Revolute,
-            model: JointModel::Impulse,
-            anchor,
-            axis,
-            limits: Some([HYPEREXTENSION, closed_angle(link, 1.0)]),
-            damping: 0.0,
+/// A finger capsule's pose in the hand frame, turned `angle` about its knuckle. The capsule runs
+/// along its own z, from the knuckle to the tip.
+fn finger_offset(side: Side, finger: usize, angle: f32) -> Pose {
+    let (start, direction) = finger_line(side, finger);
+    let (anchor, axis) = knuckle(side, finger);
+    let centre = start + direction * (0.5 * finger_size(finger).0);
+    let rest = Pose::from_parts(centre, Rotation::from_rotation_arc(Vector::Z, direction));
+    let turn = Rotation::from_axis_angle(axis, angle);
+    let about_knuckle = Pose::from_parts(anchor - turn * anchor, turn);
+    about_knuckle * rest
+}
+
+/// A point on a finger's line, `along` its length from the knuckle (0) to the tip (1), in the
+/// frame of the finger's capsule.
+fn on_finger(finger: usize, along: f32) -> Vector {
+    Vector::new(0.0, 0.0, (along - 0.5) * finger_size(finger).0)
+}
+
+fn finger_part(side: Side, finger: usize) -> Part {
+    let (length, radius) = finger_size(finger);
+    Part {
+        primitive: Primitive::Capsule {
+            radius,
+            half_height: 0.5 * length - radius,
         },
-        density: FINGER_MASS / capsule_volume(length, radius),
+        offset: finger_offset(side, finger, 0.0),
+        visual: None,
     }
 }
 
-/// The spec of a hand standing at `pose`.
+fn capsule_volume(length: f32, radius: f32) -> f32 {
+    let pi = std::f32::consts::PI;
+    pi * radius * radius * (length - 2.0 * radius) + 4.0 / 3.0 * pi * radius.powi(3)
+}
+
+/// The hand's volume: the palm and its five fingers, m³.
+fn hand_volume() -> f32 {
+    let palm = 8.0 * PALM_HALF.x * PALM_HALF.y * PALM_HALF.z;
+    let fingers: f32 = (0..FINGERS)
+        .map(|f| {
+            let (length, radius) = finger_size(f);
+            capsule_volume(length, radius)
+        })
+        .sum();
+    palm + fingers
+}
+
+/// The spec of a hand standing at `pose`, its fingers straight.
 pub(crate) fn hand_spec(name: &str, side: Side, pose: Pose) -> ObjectSpec {
-    let palm = Primitive::Box {
+    let palm = Part::new(Primitive::Box {
         half_extents: PALM_HALF,
-    };
-    let mut spec = ObjectSpec::new(name, AGENT_SYNSET, vec![Part::new(palm)])
-        .looks([230, 190, 160], Material::Plastic);
+    });
+    let fingers = (0..FINGERS).map(|f| finger_part(side, f));
+    let mut spec = ObjectSpec::new(
+        name,
+        AGENT_SYNSET,
+        std::iter::once(palm).chain(fingers).collect(),
+    )
+    .looks([230, 190, 160], Material::Plastic);
     spec.pose = pose;
-    spec.density = PALM_MASS / (8.0 * PALM_HALF.x * PALM_HALF.y * PALM_HALF.z);
+    spec.density = HAND_MASS / hand_volume();
     spec.friction = HAND_FRICTION;
-    (0..FINGERS).fold(spec, |spec, link| spec.link(finger_link(side, link)))
+    spec
 }
 
 /// The shape that must not move into fixed things: the palm with its fingers straight, and its
@@ -232,9 +226,49 @@ pub(crate) fn sweep_shape() -> (Primitive, Pose) {
     )
 }
 
-/// Every body of a hand: the palm, then its fingers.
-pub(crate) fn bodies(hand: ObjectId) -> impl Iterator<Item = BodyRef> {
-    std::iter::once(BodyRef::from(hand)).chain((0..FINGERS).map(move |l| BodyRef::link(hand, l)))
+/// A hand's fingers: their angles, and how they turn toward what the trigger asks.
+#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Fingers {
+    /// Each finger's angle now, rad: index, middle, ring, little finger, thumb.
+    pub(crate) angles: [f32; FINGERS],
+}
+
+impl Fingers {
+    /// Straight.
+    pub(crate) const OPEN: Fingers = Fingers {
+        angles: [0.0; FINGERS],
+    };
+
+    /// The angles a trigger fraction asks for.
+    pub(crate) fn for_trigger(trigger: f32) -> [f32; FINGERS] {
+        std::array::from_fn(|f| closed_angle(f, trigger))
+    }
+
+    /// Turns each finger toward `wanted` by at most [`FINGER_SPEED`] · `dt`, and moves the
+    /// hand's capsules to match; whether any finger moved.
+    pub(crate) fn advance(
+        &mut self,
+        world: &mut World,
+        (hand, side): (ObjectId, Side),
+        wanted: &[f32; FINGERS],
+        dt: f32,
+    ) -> bool {
+        if self.angles == *wanted {
+            return false;
+        }
+        let most = FINGER_SPEED * dt;
+        for (f, (angle, &goal)) in self.angles.iter_mut().zip(wanted).enumerate() {
+            if *angle == goal {
+                continue;
+            }
+            *angle += (goal - *angle).clamp(-most, most);
+            // A finite angle makes a finite pose of an existing part: the world cannot refuse.
+            let _ = world
+                .core_mut()
+                .set_part_offset(hand, part(f), finger_offset(side, f, *angle));
+        }
+        true
+    }
 }
 
 /// The hand's points in the world now: the palm centre, and the palm, thumb and fingertip points
@@ -249,25 +283,29 @@ pub(crate) struct HandPoints {
 }
 
 impl HandPoints {
-    pub(crate) fn of(world: &World, hand: ObjectId, side: Side) -> HandPoints {
+    /// Where the hand's fingers are in the world (read from its parts, so always as built).
+    pub(crate) fn of(world: &World, hand: ObjectId) -> HandPoints {
         let palm = world.pose(hand);
-        let link = |l: usize| world.core().link_pose(hand, l);
-        let thumb = link(THUMB);
+        let parts = &world.object(hand).parts;
+        let at = |f: usize, along: f32| {
+            let finger = palm * parts[part(f)].offset;
+            finger.transform_point(on_finger(f, along))
+        };
         HandPoints {
             palm_centre: palm.transform_point(PALM_CENTRE),
             origins: [
                 palm.transform_point(PALM_CENTRE),
                 palm.transform_point(PALM_BASE),
-                thumb.transform_point(thumb_middle(side)),
-                thumb.transform_point(fingertip(side, THUMB)),
+                at(THUMB, 0.5),
+                at(THUMB, 1.0),
             ],
-            tips: std::array::from_fn(|l| link(l).transform_point(fingertip(side, l))),
+            tips: std::array::from_fn(|f| at(f, 1.0)),
         }
     }
 
     /// The points that press buttons: the palm centre and the five fingertips.
-    pub(crate) fn pressing(world: &World, hand: ObjectId, side: Side) -> [Vector; 6] {
-        let points = HandPoints::of(world, hand, side);
+    pub(crate) fn pressing(world: &World, hand: ObjectId) -> [Vector; 6] {
+        let points = HandPoints::of(world, hand);
         let [a, b, c, d] = points.tips;
         [points.palm_centre, a, b, c, d, points.origins[3]]
     }
@@ -283,14 +321,37 @@ mod tests {
         let hand = world
             .add(hand_spec("hand", Side::Right, Pose::IDENTITY))
             .unwrap();
-        assert!((world.core().mass(hand) - PALM_MASS).abs() < 1e-4);
-        assert_eq!(world.object(hand).links.len(), FINGERS);
+        assert!((world.core().mass(hand) - HAND_MASS).abs() < 1e-4);
+        assert_eq!(world.object(hand).parts.len(), 1 + FINGERS);
+        assert!(world.object(hand).links.is_empty());
         // The thumb of a right hand, palm down, is on its left.
-        assert!(fingertip(Side::Right, THUMB).y > 0.0);
-        assert!(fingertip(Side::Left, THUMB).y < 0.0);
+        let points = HandPoints::of(&world, hand);
+        assert!(points.origins[3].y > 0.0);
         // A capsule 0.08 m long of radius 0.009: a 0.062 m cylinder and a ball.
         let expected =
             std::f32::consts::PI * (0.009f32.powi(2) * 0.062 + 4.0 / 3.0 * 0.009f32.powi(3));
         assert!((capsule_volume(0.08, 0.009) - expected).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_finger_turns_about_its_knuckle_toward_the_palm_side() {
+        for side in Side::BOTH {
+            for f in 0..FINGERS {
+                let (anchor, _) = knuckle(side, f);
+                let tip =
+                    |angle: f32| finger_offset(side, f, angle).transform_point(on_finger(f, 1.0));
+                let knuckle_point = finger_offset(side, f, 0.9).transform_point(on_finger(f, 0.0));
+                // The knuckle stays; the tip keeps its distance from it and goes toward −z.
+                assert!((knuckle_point - anchor).length() < 1e-6);
+                let length = finger_size(f).0;
+                assert!(((tip(0.9) - anchor).length() - length).abs() < 1e-5);
+                assert!(
+                    tip(0.9).z < -0.5 * length,
+                    "{side:?} finger {f}: {:?}",
+                    tip(0.9)
+                );
+                assert!(tip(0.0).z.abs() < 1e-6);
+            }
+        }
     }
 }

@@ -4,16 +4,13 @@ use crate::action::{Action, ActionError};
 use crate::body::{body_spec, eye_rest, hand_rest};
 use crate::follow::{Follower, HAND_LIMITS, rotation_error, servo, settled};
 use crate::grasp::{Grasp, GraspRules, Grasper, Release, must_release};
-use crate::hand::{
-    FINGER_DAMPING, FINGER_STIFFNESS, FINGER_TORQUE, FINGERS, HandPoints, Side, closed_angle,
-    hand_spec,
-};
+use crate::hand::{FINGERS, Fingers, HandPoints, Side, hand_spec};
 use crate::motion::{Blocker, Targets};
 use crate::proprioception::{LocalPose, Proprioception};
 use crate::relative;
 use behavior_sim::{
-    AttachmentId, AttachmentKind, AttachmentSpec, BodyRef, Drive, ObjectId, QueryFilter,
-    STEP_SECONDS, StepHooks, Velocity, World, WorldError, groups,
+    AttachmentId, AttachmentKind, AttachmentSpec, BodyRef, ObjectId, QueryFilter, STEP_SECONDS,
+    StepHooks, Velocity, World, WorldError, groups,
 };
 use rapier3d::math::Pose;
 
@@ -87,10 +84,11 @@ impl RobotParts {
 ///   apple against a table with unbounded force and shoot it away. Hands are not sent into
 ///   fixed bodies either.
 /// - A hand that has come to rest at its target is *parked*: held to the body by a fixed
-///   attachment instead of the servo, so that it, its fingers and what it holds fall asleep (a
+///   attachment instead of the servo, so that it and what it holds fall asleep (a
 ///   servoed body holding itself up against gravity never would), and an idle robot costs an idle
 ///   world nothing. It is unparked as soon as it must move.
-/// - The fingers are dynamic links on the palms (see `hand.rs`).
+/// - The fingers are shapes of the hands' bodies, turned toward what the triggers ask each
+///   substep (see `hand.rs`).
 ///
 /// The eye is a frame on the body, not a body (the original's is massless and teleported).
 /// Robot parts are in [`groups::ROBOT`]: they collide with neither each other nor water.
@@ -112,8 +110,8 @@ pub struct BehaviorRobot {
     hands: [Follower; 2],
     /// Each hand's parking attachment to the body, while it rests.
     parked: [Option<AttachmentId>; 2],
-    /// The finger drive targets in force, per hand.
-    fingers: [[f32; FINGERS]; 2],
+    /// Each hand's fingers.
+    fingers: [Fingers; 2],
     grasps: [Option<Grasp>; 2],
     releases: Vec<Release>,
     pending: Action,
@@ -163,7 +161,7 @@ impl BehaviorRobot {
             step_from: pose,
             hands: Side::BOTH.map(|s| Follower::at(targets.hand_in_world(s))),
             parked: [None; 2],
-            fingers: [[f32::NAN; FINGERS]; 2],
+            fingers: [Fingers::OPEN; 2],
             grasps: [None; 2],
             releases: Vec::new(),
             pending: Action::ZERO,
@@ -171,7 +169,6 @@ impl BehaviorRobot {
             body_moving: false,
             rules,
         };
-        robot.drive_fingers(world);
         for side in Side::BOTH {
             robot.park(world, side);
         }
@@ -292,7 +289,7 @@ impl StepHooks for BehaviorRobot {
 impl BehaviorRobot {
     /// Tells the world where the palms and fingertips are, for buttons.
     fn press_with_hands(&self, world: &mut World) {
-        let [l, r] = Side::BOTH.map(|s| HandPoints::pressing(world, self.parts.hand(s), s));
+        let [l, r] = Side::BOTH.map(|s| HandPoints::pressing(world, self.parts.hand(s)));
         world.set_hand_points(&[l, r].concat());
     }
 
@@ -314,7 +311,6 @@ impl BehaviorRobot {
         }
         self.step_from = old.body;
         self.moved = false;
-        self.drive_fingers(world);
         for side in Side::BOTH {
             self.park_or_unpark(world, side);
         }
@@ -386,34 +382,27 @@ impl BehaviorRobot {
         }
         for side in Side::BOTH {
             let i = side.index();
+            let hand = (self.parts.hand(side), side);
+            let fingers = self.finger_targets(side);
+            if self.fingers[i].advance(world, hand, &fingers, dt) {
+                self.moved = true;
+            }
             if self.parked[i].is_some() {
                 continue;
             }
             let target = body * self.targets.hands[i];
             self.hands[i].advance(&target, dt, &HAND_LIMITS);
-            servo(world, self.parts.hand(side), side, &self.hands[i].pose, dt);
+            servo(world, self.parts.hand(side), &self.hands[i].pose, dt);
             self.moved = true;
         }
     }
 
-    /// Sets each hand's finger drives where they changed: toward `trigger × closed`, or frozen
-    /// while holding.
-    fn drive_fingers(&mut self, world: &mut World) {
-        for side in Side::BOTH {
-            let i = side.index();
-            let wanted: [f32; FINGERS] = match self.grasps[i] {
-                Some(grasp) => grasp.fingers,
-                None => std::array::from_fn(|l| closed_angle(l, self.targets.triggers[i])),
-            };
-            if wanted == self.fingers[i] {
-                continue;
-            }
-            let hand = self.parts.hand(side);
-            for (link, &angle) in wanted.iter().enumerate() {
-                let drive = Drive::position(angle, FINGER_STIFFNESS, FINGER_DAMPING, FINGER_TORQUE);
-                let _ = world.core_mut().drive_joint(hand, link, drive);
-            }
-            self.fingers[i] = wanted;
+    /// Where a hand's fingers are going: toward `trigger × closed`, or staying while it holds.
+    fn finger_targets(&self, side: Side) -> [f32; FINGERS] {
+        let i = side.index();
+        match self.grasps[i] {
+            Some(grasp) => grasp.fingers,
+            None => Fingers::for_trigger(self.targets.triggers[i]),
         }
     }
 
@@ -436,10 +425,11 @@ impl BehaviorRobot {
                     let own = self.parts.all();
                     let grasper = Grasper {
                         rules: &self.rules,
-                        hand: (self.parts.hand(side), side),
+                        hand: self.parts.hand(side),
                         torso: self.parts.body,
                         own: &own,
                         other_holds: self.holding(side.other()),
+                        fingers: self.fingers[i].angles,
                     };
                     self.grasps[i] = grasper.try_grasp(world);
                 }

@@ -138,35 +138,61 @@ fn a_hand_stays_within_reach_of_its_shoulder() {
     );
 }
 
+/// The hand's finger shapes (parts 1–5 of its body) as they are in the world now.
+fn finger_shapes(world: &World, hand: ObjectId) -> Vec<Pose> {
+    world.object(hand).parts[1..]
+        .iter()
+        .map(|p| p.offset)
+        .collect()
+}
+
+/// How far each finger has turned from `rest`, rad, read from the hand's shapes in the world.
+fn finger_turns(world: &World, hand: ObjectId, rest: &[Pose]) -> Vec<f32> {
+    let now = finger_shapes(world, hand);
+    let turn = |(a, b): (&Pose, &Pose)| (a.rotation * b.rotation.inverse()).to_scaled_axis();
+    now.iter().zip(rest).map(|p| turn(p).length()).collect()
+}
+
 #[test]
 fn triggers_close_the_fingers() {
     let mut world = World::default();
     floor(&mut world);
     let mut robot = robot_at(&mut world, 0.0, 0.0);
     let hand = robot.parts().hand(Side::Left);
+    let right = robot.parts().hand(Side::Right);
+    let (rest, right_rest) = (finger_shapes(&world, hand), finger_shapes(&world, right));
+    assert_eq!(rest.len(), 5);
     press(&mut world, &mut robot, Side::Left, 1.0, 25);
     idle(&mut world, &mut robot, 15);
     assert_eq!(robot.trigger(Side::Left), 1.0);
     assert_eq!(robot.trigger(Side::Right), 0.0);
-    for link in 0..5 {
-        let q = world.core().joint_state(hand, link).unwrap().position;
-        let closed = if link == 4 {
+    for (finger, q) in finger_turns(&world, hand, &rest).into_iter().enumerate() {
+        let closed = if finger == 4 {
             THUMB_CLOSED
         } else {
             FINGER_CLOSED
         };
         assert!(
-            (q - closed).abs() < 0.03,
-            "finger {link} at {q} rad, closed is {closed}"
+            (q - closed).abs() < 1e-4,
+            "finger {finger} at {q} rad, closed is {closed}"
         );
     }
-    let right = robot.parts().hand(Side::Right);
-    assert!(world.core().joint_state(right, 1).unwrap().position.abs() < 0.03);
+    assert!(
+        finger_turns(&world, right, &right_rest)
+            .iter()
+            .all(|&q| q == 0.0)
+    );
+    // The closed fingers curl under the palm: their shapes' centres are below its middle plane.
+    assert!(
+        finger_shapes(&world, hand)
+            .iter()
+            .all(|p| p.translation.z < -0.01)
+    );
     // Half open again.
     press(&mut world, &mut robot, Side::Left, -1.0, 10);
     idle(&mut world, &mut robot, 15);
-    let q = world.core().joint_state(hand, 1).unwrap().position;
-    assert!((q - 0.5 * FINGER_CLOSED).abs() < 0.03, "{q}");
+    let q = finger_turns(&world, hand, &rest)[1];
+    assert!((q - 0.5 * FINGER_CLOSED).abs() < 1e-4, "{q}");
 }
 
 /// A table with an apple on it, and a robot whose right hand has just closed on the apple.

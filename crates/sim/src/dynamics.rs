@@ -44,6 +44,13 @@ impl Core {
         })
     }
 
+    /// Where a body's centre of mass is, in the world frame: the point whose velocity
+    /// [`Velocity::linear`] is.
+    pub fn centre_of_mass(&self, body: BodyRef) -> Result<Vector, WorldError> {
+        let handle = self.handle(body)?;
+        Ok(self.physics.bodies[handle].center_of_mass())
+    }
+
     /// Sets a dynamic or velocity-driven kinematic body's velocity, waking it.
     pub fn set_velocity(&mut self, body: BodyRef, velocity: Velocity) -> Result<(), WorldError> {
         finite("a linear velocity", velocity.linear)?;
@@ -57,6 +64,44 @@ impl Core {
             self.carried.insert(body.object, velocity);
         }
         self.wake(handle);
+        Ok(())
+    }
+
+    /// Moves one of the parts of an object's body (not of a link) to a new pose in the object's
+    /// frame. This is for parts a controller animates without joints of their own, such as a
+    /// BehaviorRobot's fingers: no body and no joint for the solver to pay for, at the price that
+    /// the part goes exactly where it is put and does not yield — what it now overlaps is pushed
+    /// apart by contacts, moving whichever side is free to move. The body's mass properties
+    /// follow the parts (rapier recomputes them), and [`crate::Object::parts`] reports the new
+    /// pose at once; contacts and queries see it from the next substep on.
+    pub fn set_part_offset(
+        &mut self,
+        object: ObjectId,
+        part: usize,
+        offset: Pose,
+    ) -> Result<(), WorldError> {
+        let o = self.object(object);
+        if part >= o.parts.len() {
+            return Err(WorldError::BadObject {
+                name: o.name.clone(),
+                reason: format!("no part {part}: its body has {}", o.parts.len()),
+            });
+        }
+        if !pose_is_finite(&offset) {
+            return Err(WorldError::NotFinite {
+                what: "a part's offset",
+                value: f32::NAN,
+            });
+        }
+        // The body's parts come first among the object's colliders, in order.
+        let collider = o.colliders[part];
+        let body = o.body;
+        self.objects[object.0 as usize].parts[part].offset = offset;
+        if let Some(c) = self.physics.colliders.get_mut(collider) {
+            c.set_position_wrt_parent(offset);
+        }
+        self.index = std::sync::OnceLock::new();
+        self.wake(body);
         Ok(())
     }
 

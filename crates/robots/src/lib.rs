@@ -15,7 +15,8 @@
 //!
 //! **Body models, chosen for cost.** Both robots move their bodies kinematically (exactly where
 //! they are told, refusing moves into fixed bodies) and keep dynamic bodies only where contact
-//! forces matter: the BehaviorRobot's palms and fingers, Fetch's fingers. Fetch's torso, head
+//! forces matter: the BehaviorRobot's hands (each one body, its fingers shapes turned with the
+//! trigger rather than jointed links: see `hand.rs`), Fetch's fingers. Fetch's torso, head
 //! and arm are kinematic links placed by forward kinematics each substep, not a simulated
 //! chain: measured in `tests/timing.rs` (dev profile, one core, a table with 20 objects, 10 ×
 //! 1/300 s), an action step costs 0.2 µs standing still, ≈ 0.25 ms driving and ≈ 0.45 ms

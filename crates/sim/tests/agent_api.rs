@@ -893,3 +893,66 @@ fn masses_of_bodies_links_and_whole_objects_and_the_gravity_they_feel() {
     );
     assert_eq!(world.core().gravity(), v(0.0, 0.0, -9.81));
 }
+
+#[test]
+fn a_part_moved_within_its_body_is_where_queries_drawing_and_mass_find_it() {
+    let mut world = World::default();
+    floor(&mut world);
+    // A 40 × 40 × 4 cm slab on the floor with a 10 cm cube standing on its +x edge.
+    let flag = Pose::from_translation(v(0.15, 0.0, 0.07));
+    let spec = ObjectSpec::new(
+        "signpost",
+        "box.n.01",
+        vec![
+            Part::new(cuboid(0.2, 0.2, 0.02)),
+            Part {
+                primitive: cuboid(0.05, 0.05, 0.05),
+                offset: flag,
+                visual: None,
+            },
+        ],
+    )
+    .at(v(0.0, 0.0, 0.021));
+    let id = world.add(spec).unwrap();
+    steps(&mut world, 5);
+    let body = BodyRef::from(id);
+    let before = world.core().centre_of_mass(body).unwrap();
+    assert!(
+        before.x > 0.01,
+        "the cube weighs on the +x side: {before:?}"
+    );
+
+    // Over to the −x edge.
+    let moved = Pose::from_translation(v(-0.15, 0.0, 0.07));
+    world.core_mut().set_part_offset(id, 1, moved).unwrap();
+    assert_eq!(world.object(id).parts[1].offset, moved);
+    steps(&mut world, 1);
+    let after = world.core().centre_of_mass(body).unwrap();
+    assert!((after.x + before.x).abs() < 0.01, "{before:?} → {after:?}");
+    let down = |x: f32| {
+        let hit = world.core().cast_ray(
+            v(x, 0.0, 1.0),
+            v(0.0, 0.0, -1.0),
+            2.0,
+            &QueryFilter::default(),
+        );
+        hit.unwrap().unwrap().point.z
+    };
+    let top = world.pose(id).translation.z;
+    assert!(
+        (down(-0.15) - (top + 0.12)).abs() < 0.01,
+        "the cube is at −x now"
+    );
+    assert!(
+        (down(0.15) - (top + 0.02)).abs() < 0.01,
+        "and no longer at +x"
+    );
+    let drawn = world.core().visual_parts(id)[1].pose.translation;
+    assert!((drawn - world.pose(id).transform_point(moved.translation)).length() < 1e-5);
+
+    // A part it does not have, or a pose that is not finite: refused, nothing changed.
+    assert!(world.core_mut().set_part_offset(id, 2, moved).is_err());
+    let nan = Pose::from_translation(v(f32::NAN, 0.0, 0.0));
+    assert!(world.core_mut().set_part_offset(id, 1, nan).is_err());
+    assert_eq!(world.object(id).parts[1].offset, moved);
+}

@@ -270,6 +270,15 @@ impl Robot {
         }
     }
 
+    /// The on-board camera's pose in the world: the BehaviorRobot's eye, Fetch's head camera.
+    /// It looks along its +x, with +z up.
+    pub fn camera_pose(&self, world: &World) -> Pose {
+        match self {
+            Robot::Behavior(robot, _) => robot.eye_pose(world),
+            Robot::Fetch(robot, _) => robot.camera_pose(world),
+        }
+    }
+
     /// `in the field of view` (see `relative.rs`).
     pub fn in_field_of_view(&self, world: &World, object: ObjectId) -> bool {
         match self {

@@ -1,0 +1,309 @@
+//! What one frame draws: an instance per visible part (and per dust or stain particle and water
+//! drop), with its transform, last frame's transform, look and ids, grouped by mesh.
+
+use crate::appearance::{DUST, Look, STAIN, Shown, WATER, look};
+use crate::camera::Camera;
+use crate::categories::{CategoryTable, DUST_CATEGORY, STAIN_CATEGORY, WATER_CATEGORY};
+use crate::mesh::{Drawn, MeshStore, contains};
+use behavior_core::Predicate;
+use behavior_sim::{Material, ObjectId, Primitive, VisualShape, World};
+use bytemuck::{Pod, Zeroable};
+use rapier3d::glamx::{Mat3, Mat4, Vec4};
+use rapier3d::math::{Pose, Vector};
+use std::collections::BTreeMap;
+
+/// What is drawn and how it is labelled.
+pub struct Scene<'a> {
+    /// The world.
+    pub world: &'a World,
+    /// Semantic ids.
+    pub categories: &'a CategoryTable,
+    /// The objects the highlight mask shows (an activity's objects).
+    pub highlight: &'a [ObjectId],
+    /// Objects not drawn (none, usually: a camera inside a part does not draw that part anyway).
+    pub hidden: &'a [ObjectId],
+}
+
+/// One drawn shape as the GPU reads it (see `shader.wgsl`'s `InstanceIn`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub(crate) struct Instance {
+    model: [[f32; 4]; 3],
+    normal: [[f32; 4]; 3],
+    previous: [[f32; 4]; 3],
+    color: [f32; 4],
+    ids: [u32; 2],
+}
+
+/// Which drawn thing an instance is, to find its transform in the previous frame.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) enum Key {
+    Part(u32, u32),
+    Particle(u32, u8, u32),
+    Drop(u32),
+}
+
+/// The transforms of one frame, for the next frame's flow.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct History {
+    pub(crate) view_projection: Mat4,
+    pub(crate) models: BTreeMap<Key, [[f32; 4]; 3]>,
+}
+
+/// One frame's instances, grouped: `draws` holds (mesh, first instance, count).
+#[derive(Default)]
+pub(crate) struct Batch {
+    pub(crate) instances: Vec<Instance>,
+    pub(crate) draws: Vec<(u32, u32, u32)>,
+    pub(crate) models: BTreeMap<Key, [[f32; 4]; 3]>,
+}
+
+/// Rows of the affine transform `pose · scale`.
+fn rows(pose: &Pose, scale: Vector) -> [[f32; 4]; 3] {
+    let m = Mat3::from_quat(pose.rotation) * Mat3::from_diagonal(scale);
+    let t = pose.translation;
+    let r = m.transpose();
+    [
+        r.x_axis.extend(t.x),
+        r.y_axis.extend(t.y),
+        r.z_axis.extend(t.z),
+    ]
+    .map(|v| v.to_array())
+}
+
+/// Rows of the normal matrix of `pose · scale` (its inverse transpose: rotation · 1/scale).
+fn normal_rows(pose: &Pose, scale: Vector, shine: f32) -> [[f32; 4]; 3] {
+    let inverse = Vector::ONE / scale.max(Vector::splat(1e-6));
+    let r = (Mat3::from_quat(pose.rotation) * Mat3::from_diagonal(inverse)).transpose();
+    [
+        r.x_axis.extend(shine),
+        r.y_axis.extend(0.0),
+        r.z_axis.extend(0.0),
+    ]
+    .map(|v| v.to_array())
+}
+
+/// The six planes of a camera's view, as (normal, offset) with the inside positive.
+fn frustum(view_projection: &Mat4) -> [Vec4; 6] {
+    let m = view_projection.transpose();
+    let (r0, r1, r2, r3) = (m.x_axis, m.y_axis, m.z_axis, m.w_axis);
+    [r3 + r0, r3 - r0, r3 + r1, r3 - r1, r2, r3 - r2]
+}
+
+fn visible(planes: &[Vec4; 6], centre: Vector, radius: f32) -> bool {
+    planes
+        .iter()
+        .all(|p| p.truncate().dot(centre) + p.w >= -radius * p.truncate().length())
+}
+
+/// Gathers a frame's instances.
+pub(crate) struct Gatherer<'a> {
+    pub(crate) scene: &'a Scene<'a>,
+    pub(crate) camera: &'a Camera,
+    pub(crate) meshes: &'a mut MeshStore,
+    pub(crate) previous: Option<&'a History>,
+}
+
+/// One instance before it is grouped by mesh.
+struct Pending {
+    mesh: u32,
+    key: Key,
+    instance: Instance,
+}
+
+impl Gatherer<'_> {
+    pub(crate) fn gather(mut self) -> Batch {
+        let planes = frustum(&self.camera.view_projection());
+        let mut pending = Vec::new();
+        for (id, object) in self.scene.world.objects() {
+            if !object.is_present() || self.scene.hidden.contains(&id) {
+                continue;
+            }
+            self.object(id, &planes, &mut pending);
+        }
+        self.particles(&planes, &mut pending);
+        self.drops(&planes, &mut pending);
+        group(pending)
+    }
+
+    fn ids(&self, id: ObjectId, category: &str) -> [u32; 2] {
+        let highlighted = u32::from(self.scene.highlight.contains(&id));
+        let category = u32::from(self.scene.categories.id(category));
+        [id.0 + 1, category | (highlighted << 16)]
+    }
+
+    fn instance(
+        &self,
+        key: Key,
+        pose: &Pose,
+        scale: Vector,
+        look: Look,
+        ids: [u32; 2],
+    ) -> Instance {
+        let model = rows(pose, scale);
+        let previous = self
+            .previous
+            .and_then(|h| h.models.get(&key).copied())
+            .unwrap_or(model);
+        let [r, g, b] = look.albedo;
+        Instance {
+            model,
+            normal: normal_rows(pose, scale, look.shine),
+            previous,
+            color: [r, g, b, look.emission],
+            ids,
+        }
+    }
+
+    fn object(&mut self, id: ObjectId, planes: &[Vec4; 6], out: &mut Vec<Pending>) {
+        let world = self.scene.world;
+        let category = world.object(id).category.clone();
+        let ids = self.ids(id, &category);
+        let shown = Shown::of(world, id);
+        let eye = self.camera.pose.translation;
+        for (k, part) in world.core().visual_parts(id).iter().enumerate() {
+            let drawn = Drawn::of(&part.shape);
+            let centre = part.pose.translation;
+            if !visible(planes, centre, drawn.reach) {
+                continue;
+            }
+            if let VisualShape::Primitive(p) = part.shape
+                && contains(p, part.pose.inverse_transform_point(eye))
+            {
+                continue;
+            }
+            let mesh = self.meshes.id(drawn.key, &part.shape);
+            let look = look(part.visual.color, part.visual.material, shown);
+            let key = Key::Part(id.0, k as u32);
+            let instance = self.instance(key, &part.pose, drawn.scale, look, ids);
+            out.push(Pending {
+                mesh,
+                key,
+                instance,
+            });
+        }
+    }
+
+    /// Dust as small grey balls, stains as thin dark discs lying flat.
+    fn particles(&mut self, planes: &[Vec4; 6], out: &mut Vec<Pending>) {
+        let world = self.scene.world;
+        let kinds = [
+            (
+                Predicate::Dusty,
+                DUST_CATEGORY,
+                DUST,
+                Primitive::Sphere { radius: 0.008 },
+            ),
+            (
+                Predicate::Stained,
+                STAIN_CATEGORY,
+                STAIN,
+                Primitive::Cylinder {
+                    radius: 0.02,
+                    half_height: 0.002,
+                },
+            ),
+        ];
+        for (id, object) in world.objects() {
+            if !object.is_present() || self.scene.hidden.contains(&id) {
+                continue;
+            }
+            for (kind, (predicate, category, color, shape)) in kinds.iter().enumerate() {
+                let points = world.particle_positions(id, *predicate);
+                if points.is_empty() {
+                    continue;
+                }
+                let ids = [id.0 + 1, u32::from(self.scene.categories.id(category))];
+                let look = look(*color, Material::Paper, Shown::default());
+                let shape = VisualShape::Primitive(shape);
+                let drawn = Drawn::of(&shape);
+                let mesh = self.meshes.id(drawn.key, &shape);
+                for (n, &p) in points.iter().enumerate() {
+                    if !visible(planes, p, drawn.reach) {
+                        continue;
+                    }
+                    let key = Key::Particle(id.0, kind as u8, n as u32);
+                    let pose = Pose::from_translation(p);
+                    let instance = self.instance(key, &pose, drawn.scale, look, ids);
+                    out.push(Pending {
+                        mesh,
+                        key,
+                        instance,
+                    });
+                }
+            }
+        }
+    }
+
+    fn drops(&mut self, planes: &[Vec4; 6], out: &mut Vec<Pending>) {
+        let drops = self.scene.world.drops();
+        if drops.is_empty() {
+            return;
+        }
+        let ids = [0, u32::from(self.scene.categories.id(WATER_CATEGORY))];
+        let look = look(WATER, Material::Glass, Shown::default());
+        let ball = Primitive::Sphere { radius: 0.009 };
+        let shape = VisualShape::Primitive(&ball);
+        let drawn = Drawn::of(&shape);
+        let mesh = self.meshes.id(drawn.key, &shape);
+        for (n, &p) in drops.iter().enumerate() {
+            if !visible(planes, p, drawn.reach) {
+                continue;
+            }
+            let key = Key::Drop(n as u32);
+            let pose = Pose::from_translation(p);
+            let instance = self.instance(key, &pose, drawn.scale, look, ids);
+            out.push(Pending {
+                mesh,
+                key,
+                instance,
+            });
+        }
+    }
+}
+
+/// Sorts instances by mesh (stably, so the order is the world's) into draws.
+fn group(mut pending: Vec<Pending>) -> Batch {
+    pending.sort_by_key(|p| p.mesh);
+    let mut batch = Batch::default();
+    for p in pending {
+        match batch.draws.last_mut() {
+            Some((mesh, _, count)) if *mesh == p.mesh => *count += 1,
+            _ => batch.draws.push((p.mesh, batch.instances.len() as u32, 1)),
+        }
+        batch.models.insert(p.key, p.instance.model);
+        batch.instances.push(p.instance);
+    }
+    batch
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_transform_maps_the_unit_cube_onto_the_box() {
+        let pose = Pose::from_parts(
+            Vector::new(1.0, 2.0, 3.0),
+            rapier3d::math::Rotation::from_rotation_z(0.5),
+        );
+        let scale = Vector::new(0.1, 0.2, 0.3);
+        let r = rows(&pose, scale);
+        let corner = Vector::ONE;
+        let mapped = Vector::new(
+            Vec4::from(r[0]).dot(corner.extend(1.0)),
+            Vec4::from(r[1]).dot(corner.extend(1.0)),
+            Vec4::from(r[2]).dot(corner.extend(1.0)),
+        );
+        assert!((mapped - pose.transform_point(scale)).length() < 1e-5);
+    }
+
+    #[test]
+    fn the_frustum_keeps_what_is_ahead_and_drops_what_is_behind() {
+        let camera = Camera::eye(Pose::IDENTITY);
+        let planes = frustum(&camera.view_projection());
+        assert!(visible(&planes, Vector::new(2.0, 0.0, 0.0), 0.1));
+        assert!(!visible(&planes, Vector::new(-2.0, 0.0, 0.0), 0.1));
+        assert!(visible(&planes, Vector::new(-0.05, 0.0, 0.0), 0.1));
+    }
+}

@@ -1,0 +1,43 @@
+//! Sensors for BEHAVIOR: cameras drawn by an offscreen rasterizer, and lidar.
+//!
+//! A [`Renderer`] draws a [`Scene`] — the world's visual description
+//! ([`behavior_sim::Core::visual_parts`]), labelled by a [`CategoryTable`] and a highlight set —
+//! through a [`View`] (a [`Camera`] and its previous frame) into the [`Modality`]s asked for:
+//! colour, depth, normals, semantic and instance segmentation, the highlight mask, optical and
+//! scene flow. Only what is asked for is drawn and read back: the flow modalities take a second
+//! pass, each image its own readback.
+//!
+//! It runs headless on any machine: wgpu on Vulkan, through Mesa's lavapipe on a CPU (Debian's
+//! `mesa-vulkan-drivers libvulkan1`) or a GPU's driver; Metal and DX12 elsewhere. Without an
+//! adapter [`Renderer::new`] says which packages to install.
+//!
+//! States are visible (see `appearance.rs`): cooked browner, burnt dark, frozen frosted, soaked
+//! darker, toggled on glowing; doors and drawers at their joints, sliced halves, dust and stain
+//! particles on the surfaces they lie on, and water drops, as the world has them.
+//!
+//! [`Lidar`] casts beams through the world's batched ray queries: a planar fan (Fetch's base
+//! laser) or a multi-beam 3-D scan, as points and as a range image.
+//!
+//! It knows nothing of activities, episodes or robots: an environment places the cameras (an
+//! eye, a head camera) and says what to highlight.
+
+mod appearance;
+mod camera;
+mod categories;
+mod error;
+mod gpu;
+mod instances;
+mod lidar;
+mod mesh;
+mod modality;
+mod pipeline;
+mod renderer;
+mod targets;
+
+pub use camera::{Camera, EYE_FOV, EYE_SIZE, FAR, NEAR};
+pub use categories::{CategoryTable, DUST_CATEGORY, STAIN_CATEGORY, WATER_CATEGORY};
+pub use error::RenderError;
+pub use instances::Scene;
+pub use lidar::{Lidar, Pattern, Scan};
+pub use modality::{Frame, Image, Modality, Pixels, UnknownModality};
+pub use renderer::{Renderer, View};

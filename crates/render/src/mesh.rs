@@ -1,0 +1,396 @@
+//! Triangle meshes for the world's shapes, each made once and kept: unit meshes for boxes,
+//! balls and cylinders (stretched by the instance's scale), one mesh per capsule size, per convex
+//! hull and per imported visual mesh (found again by a hash of their numbers).
+
+use behavior_sim::{Primitive, VisualMesh, VisualShape};
+use bytemuck::{Pod, Zeroable};
+use rapier3d::math::Vector;
+use std::collections::BTreeMap;
+use std::f32::consts::{PI, TAU};
+
+/// A mesh vertex: position and outward normal in the shape's frame.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub(crate) struct Vertex {
+    pub(crate) position: [f32; 3],
+    pub(crate) normal: [f32; 3],
+}
+
+/// Counter-clockwise triangles over vertices.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Mesh {
+    pub(crate) vertices: Vec<Vertex>,
+    pub(crate) indices: Vec<u32>,
+}
+
+/// Segments around a round shape.
+const ROUND: usize = 20;
+/// Rings from pole to pole of a ball.
+const RINGS: usize = 12;
+
+/// Which mesh a shape is drawn with: the unit meshes first, then one per distinct shape.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) enum MeshKey {
+    UnitBox,
+    UnitBall,
+    UnitCylinder,
+    Capsule { radius: u32, half_height: u32 },
+    Hull(u64),
+    Visual(u64),
+}
+
+/// How to draw one shape: which mesh, stretched how, and how far it reaches from its origin.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Drawn {
+    pub(crate) key: MeshKey,
+    pub(crate) scale: Vector,
+    /// A ball around the shape's origin that holds it (in its own frame, scaled), m.
+    pub(crate) reach: f32,
+}
+
+impl Drawn {
+    pub(crate) fn of(shape: &VisualShape) -> Drawn {
+        match shape {
+            VisualShape::Primitive(p) => Drawn::primitive(p),
+            VisualShape::Mesh(m) => Drawn {
+                key: MeshKey::Visual(hash_mesh(m)),
+                scale: Vector::ONE,
+                reach: m.vertices.iter().map(|v| v.length()).fold(0.0, f32::max),
+            },
+        }
+    }
+
+    pub(crate) fn primitive(p: &Primitive) -> Drawn {
+        match *p {
+            Primitive::Box { half_extents } => Drawn {
+                key: MeshKey::UnitBox,
+                scale: half_extents,
+                reach: half_extents.length(),
+            },
+            Primitive::Sphere { radius } => Drawn {
+                key: MeshKey::UnitBall,
+                scale: Vector::splat(radius),
+                reach: radius,
+            },
+            Primitive::Cylinder {
+                radius,
+                half_height,
+            } => Drawn {
+                key: MeshKey::UnitCylinder,
+                scale: Vector::new(radius, radius, half_height),
+                reach: (radius * radius + half_height * half_height).sqrt(),
+            },
+            Primitive::Capsule {
+                radius,
+                half_height,
+            } => Drawn {
+                key: MeshKey::Capsule {
+                    radius: radius.to_bits(),
+                    half_height: half_height.to_bits(),
+                },
+                scale: Vector::ONE,
+                reach: radius + half_height,
+            },
+            Primitive::ConvexHull { ref points } => Drawn {
+                key: MeshKey::Hull(hash_points(points)),
+                scale: Vector::ONE,
+                reach: points.iter().map(|v| v.length()).fold(0.0, f32::max),
+            },
+        }
+    }
+}
+
+/// FNV-1a over the bits of some numbers.
+fn fnv(words: impl Iterator<Item = u32>) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for w in words {
+        for b in w.to_le_bytes() {
+            h = (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+        }
+    }
+    h
+}
+
+fn hash_points(points: &[Vector]) -> u64 {
+    fnv(points.iter().flat_map(|p| p.to_array().map(f32::to_bits)))
+}
+
+fn hash_mesh(mesh: &VisualMesh) -> u64 {
+    let vertices = mesh
+        .vertices
+        .iter()
+        .flat_map(|p| p.to_array().map(f32::to_bits));
+    fnv(vertices.chain(mesh.triangles.iter().flatten().copied()))
+}
+
+/// Builds the mesh a key names; `shape` is the shape it was found for (for hulls and visual
+/// meshes, whose numbers the key only hashes).
+pub(crate) fn build(key: MeshKey, shape: &VisualShape) -> Mesh {
+    match (key, shape) {
+        (MeshKey::UnitBox, _) => unit_box(),
+        (MeshKey::UnitBall, _) => ball(1.0, 0.0),
+        (MeshKey::UnitCylinder, _) => cylinder(),
+        (
+            MeshKey::Capsule {
+                radius,
+                half_height,
+            },
+            _,
+        ) => ball(f32::from_bits(radius), f32::from_bits(half_height)),
+        (MeshKey::Hull(_), VisualShape::Primitive(Primitive::ConvexHull { points })) => {
+            hull(points)
+        }
+        (MeshKey::Visual(_), VisualShape::Mesh(m)) => faceted(&m.vertices, &m.triangles),
+        _ => Mesh::default(),
+    }
+}
+
+fn unit_box() -> Mesh {
+    let mut mesh = Mesh::default();
+    for axis in 0..3 {
+        for sign in [1.0f32, -1.0] {
+            let mut n = [0.0; 3];
+            n[axis] = sign;
+            let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
+            let base = mesh.vertices.len() as u32;
+            for (a, b) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+                let mut p = [0.0; 3];
+                p[axis] = sign;
+                p[u] = a;
+                p[v] = b;
+                mesh.vertices.push(Vertex {
+                    position: p,
+                    normal: n,
+                });
+            }
+            let quad = if sign > 0.0 {
+                [0, 1, 2, 0, 2, 3]
+            } else {
+                [0, 2, 1, 0, 3, 2]
+            };
+            mesh.indices.extend(quad.map(|i| base + i));
+        }
+    }
+    mesh
+}
+
+/// A ball of `radius` whose two halves are pulled `half_height` apart along z, joined by a
+/// cylinder: a capsule, or a ball when `half_height` is 0.
+fn ball(radius: f32, half_height: f32) -> Mesh {
+    let mut mesh = Mesh::default();
+    // Rings from the top pole to the bottom one; the equator is doubled for a capsule's two halves.
+    let mut rings: Vec<(f32, f32)> = Vec::new(); // (polar angle, z shift)
+    for r in 0..=RINGS / 2 {
+        rings.push((PI * r as f32 / RINGS as f32, half_height));
+    }
+    for r in RINGS / 2..=RINGS {
+        rings.push((PI * r as f32 / RINGS as f32, -half_height));
+    }
+    for &(theta, shift) in &rings {
+        for s in 0..=ROUND {
+            let phi = TAU * s as f32 / ROUND as f32;
+            let n = [
+                theta.sin() * phi.cos(),
+                theta.sin() * phi.sin(),
+                theta.cos(),
+            ];
+            let p = [radius * n[0], radius * n[1], radius * n[2] + shift];
+            mesh.vertices.push(Vertex {
+                position: p,
+                normal: n,
+            });
+        }
+    }
+    let row = (ROUND + 1) as u32;
+    for r in 0..(rings.len() as u32 - 1) {
+        for s in 0..ROUND as u32 {
+            let a = r * row + s;
+            let b = a + row;
+            mesh.indices.extend([a, b, a + 1, a + 1, b, b + 1]);
+        }
+    }
+    mesh
+}
+
+/// A cylinder of radius 1 from z = −1 to 1, with caps.
+fn cylinder() -> Mesh {
+    let mut mesh = Mesh::default();
+    for s in 0..=ROUND {
+        let phi = TAU * s as f32 / ROUND as f32;
+        let (x, y) = (phi.cos(), phi.sin());
+        for z in [1.0, -1.0] {
+            mesh.vertices.push(Vertex {
+                position: [x, y, z],
+                normal: [x, y, 0.0],
+            });
+        }
+    }
+    for s in 0..ROUND as u32 {
+        let (a, b) = (2 * s, 2 * s + 2);
+        mesh.indices.extend([a, a + 1, b, b, a + 1, b + 1]);
+    }
+    for z in [1.0f32, -1.0] {
+        let centre = mesh.vertices.len() as u32;
+        mesh.vertices.push(Vertex {
+            position: [0.0, 0.0, z],
+            normal: [0.0, 0.0, z],
+        });
+        for s in 0..=ROUND {
+            let phi = TAU * s as f32 / ROUND as f32;
+            mesh.vertices.push(Vertex {
+                position: [phi.cos(), phi.sin(), z],
+                normal: [0.0, 0.0, z],
+            });
+        }
+        for s in 0..ROUND as u32 {
+            let (a, b) = (centre + 1 + s, centre + 2 + s);
+            let tri = if z > 0.0 {
+                [centre, a, b]
+            } else {
+                [centre, b, a]
+            };
+            mesh.indices.extend(tri);
+        }
+    }
+    mesh
+}
+
+/// The convex hull of points, with flat faces.
+fn hull(points: &[Vector]) -> Mesh {
+    let (vertices, triangles) = rapier3d::parry::transformation::convex_hull(points);
+    faceted(&vertices, &triangles)
+}
+
+/// Triangles with one normal per face (each face its own three vertices).
+fn faceted(vertices: &[Vector], triangles: &[[u32; 3]]) -> Mesh {
+    let mut mesh = Mesh::default();
+    for tri in triangles {
+        let Some(p) = tri
+            .iter()
+            .map(|&i| vertices.get(i as usize).copied())
+            .collect::<Option<Vec<Vector>>>()
+        else {
+            continue;
+        };
+        let n = (p[1] - p[0]).cross(p[2] - p[0]).normalize_or_zero();
+        let base = mesh.vertices.len() as u32;
+        for q in &p {
+            mesh.vertices.push(Vertex {
+                position: q.to_array(),
+                normal: n.to_array(),
+            });
+        }
+        mesh.indices.extend([base, base + 1, base + 2]);
+    }
+    mesh
+}
+
+/// Whether a point (in the shape's frame) lies inside a primitive: a camera inside a part does
+/// not draw it (a robot's eye inside its head).
+pub(crate) fn contains(p: &Primitive, point: Vector) -> bool {
+    match *p {
+        Primitive::Box { half_extents } => point.abs().cmplt(half_extents).all(),
+        Primitive::Sphere { radius } => point.length() < radius,
+        Primitive::Cylinder {
+            radius,
+            half_height,
+        } => point.z.abs() < half_height && point.truncate().length() < radius,
+        Primitive::Capsule {
+            radius,
+            half_height,
+        } => {
+            let axis = Vector::new(0.0, 0.0, point.z.clamp(-half_height, half_height));
+            (point - axis).length() < radius
+        }
+        Primitive::ConvexHull { .. } => false,
+    }
+}
+
+/// Every mesh made so far, packed in one vertex and one index list, and where each lies.
+#[derive(Default)]
+pub(crate) struct MeshStore {
+    pub(crate) vertices: Vec<Vertex>,
+    pub(crate) indices: Vec<u32>,
+    /// Per mesh: first index, index count, base vertex.
+    pub(crate) ranges: Vec<(u32, u32, i32)>,
+    ids: BTreeMap<MeshKey, u32>,
+    /// Meshes added since the GPU's copy was made.
+    pub(crate) grown: bool,
+}
+
+impl MeshStore {
+    /// The mesh for a key, made from `shape` the first time.
+    pub(crate) fn id(&mut self, key: MeshKey, shape: &VisualShape) -> u32 {
+        if let Some(&id) = self.ids.get(&key) {
+            return id;
+        }
+        let mesh = build(key, shape);
+        let id = self.ranges.len() as u32;
+        self.ranges.push((
+            self.indices.len() as u32,
+            mesh.indices.len() as u32,
+            self.vertices.len() as i32,
+        ));
+        self.vertices.extend(mesh.vertices);
+        self.indices.extend(mesh.indices);
+        self.ids.insert(key, id);
+        self.grown = true;
+        id
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn closed_and_outward(mesh: &Mesh) {
+        let centre: Vector = mesh
+            .vertices
+            .iter()
+            .map(|v| Vector::from(v.position))
+            .sum::<Vector>()
+            / mesh.vertices.len() as f32;
+        for tri in mesh.indices.chunks(3) {
+            let p: Vec<Vector> = tri
+                .iter()
+                .map(|&i| mesh.vertices[i as usize].position.into())
+                .collect();
+            let n = (p[1] - p[0]).cross(p[2] - p[0]);
+            if n.length() < 1e-5 {
+                continue; // a pole's sliver
+            }
+            let out = (p[0] + p[1] + p[2]) / 3.0 - centre;
+            assert!(n.dot(out) > 0.0, "an inward triangle {p:?}");
+        }
+    }
+
+    #[test]
+    fn every_shape_is_wound_counter_clockwise_seen_from_outside() {
+        closed_and_outward(&unit_box());
+        closed_and_outward(&ball(1.0, 0.0));
+        closed_and_outward(&ball(0.1, 0.3));
+        closed_and_outward(&cylinder());
+        let cube: Vec<Vector> = (0..8)
+            .map(|i| Vector::new((i & 1) as f32, ((i >> 1) & 1) as f32, ((i >> 2) & 1) as f32))
+            .collect();
+        let h = hull(&cube);
+        assert_eq!(h.indices.len(), 36);
+        closed_and_outward(&h);
+    }
+
+    #[test]
+    fn a_camera_inside_a_shape_is_found_inside() {
+        let capsule = Primitive::Capsule {
+            radius: 0.25,
+            half_height: 0.25,
+        };
+        assert!(contains(&capsule, Vector::new(0.1, 0.0, 0.4)));
+        assert!(!contains(&capsule, Vector::new(0.3, 0.0, 0.0)));
+        let cube = Primitive::Box {
+            half_extents: Vector::splat(0.1),
+        };
+        assert!(
+            contains(&cube, Vector::splat(0.05)) && !contains(&cube, Vector::new(0.2, 0.0, 0.0))
+        );
+    }
+}

@@ -1,0 +1,281 @@
+//! The renderer on a small real scene: a red box 2 m in front of a camera, apples raw and
+//! cooked, a lidar beside the box.
+
+use behavior_core::{Ability, Predicate};
+use behavior_render::{
+    Camera, CategoryTable, Frame, Lidar, Modality, Pattern, Pixels, Renderer, Scene, View,
+};
+use behavior_sim::{Material, ObjectId, ObjectSpec, Part, Primitive, QueryFilter, World};
+use rapier3d::math::{Pose, Vector};
+
+fn v(x: f32, y: f32, z: f32) -> Vector {
+    Vector::new(x, y, z)
+}
+
+/// A fixed 20 cm red box whose near face is 2 m ahead of the origin.
+fn red_box(world: &mut World) -> ObjectId {
+    let cube = Part::new(Primitive::Box {
+        half_extents: Vector::splat(0.1),
+    });
+    let spec = ObjectSpec::new("box_1", "carton.n.02", vec![cube])
+        .looks([220, 30, 30], Material::Plastic)
+        .at(v(2.1, 0.0, 0.0))
+        .fixed();
+    world.add(spec).unwrap()
+}
+
+fn categories() -> CategoryTable {
+    CategoryTable::new(["carton.n.02", "apple.n.01"])
+}
+
+fn render(
+    world: &World,
+    view: &mut View,
+    highlight: &[ObjectId],
+    modalities: &[Modality],
+) -> Frame {
+    let categories = categories();
+    let scene = Scene {
+        world,
+        categories: &categories,
+        highlight,
+        hidden: &[],
+    };
+    let mut renderer =
+        Renderer::new().expect("a renderer (install mesa-vulkan-drivers libvulkan1)");
+    renderer.render(&scene, view, modalities).unwrap()
+}
+
+fn u8s(frame: &Frame, m: Modality) -> &[u8] {
+    match &frame.get(m).unwrap().pixels {
+        Pixels::U8(p) => p,
+        other => panic!("{m}: {other:?}"),
+    }
+}
+
+fn f32s(frame: &Frame, m: Modality) -> &[f32] {
+    match &frame.get(m).unwrap().pixels {
+        Pixels::F32(p) => p,
+        other => panic!("{m}: {other:?}"),
+    }
+}
+
+#[test]
+fn a_red_box_ahead_is_red_two_metres_away_facing_the_camera_and_labelled() {
+    let mut world = World::default();
+    let id = red_box(&mut world);
+    let mut view = View::new(Camera::eye(Pose::IDENTITY));
+    let frame = render(&world, &mut view, &[id], &Modality::ALL);
+    assert_eq!((frame.width, frame.height), (128, 128));
+    let centre = frame.index(64, 64);
+    let rgb = &u8s(&frame, Modality::Rgb)[3 * centre..3 * centre + 3];
+    assert!(
+        rgb[0] > 100 && rgb[0] > 3 * rgb[1] && rgb[0] > 3 * rgb[2],
+        "{rgb:?}"
+    );
+    let depth = f32s(&frame, Modality::Depth)[centre];
+    assert!((depth - 2.0).abs() < 0.01, "depth {depth}");
+    let normal = &f32s(&frame, Modality::Normal)[3 * centre..3 * centre + 3];
+    assert!(
+        normal[0] < -0.99,
+        "the face looks back at the camera: {normal:?}"
+    );
+    let Pixels::U32(ins) = &frame.get(Modality::InsSeg).unwrap().pixels else {
+        panic!()
+    };
+    assert_eq!(ins[centre], id.0 + 1);
+    let Pixels::U16(seg) = &frame.get(Modality::Seg).unwrap().pixels else {
+        panic!()
+    };
+    assert_eq!(seg[centre], categories().id("carton.n.02"));
+    assert_eq!(u8s(&frame, Modality::Highlight)[centre], 1);
+    // A corner pixel sees nothing.
+    let corner = frame.index(0, 0);
+    assert_eq!(
+        (
+            ins[corner],
+            seg[corner],
+            f32s(&frame, Modality::Depth)[corner]
+        ),
+        (0, 0, 0.0)
+    );
+    // The image spans 2 · 2 m · tan 60° = 6.93 m at 2 m, over 128 pixels: the box 3.7 of them.
+    let wide = (0..128)
+        .filter(|&x| ins[frame.index(x, 64)] == id.0 + 1)
+        .count();
+    let expected = 0.2 / (2.0 * 2.0 * 60f32.to_radians().tan()) * 128.0;
+    assert!(
+        (wide as f32 - expected).abs() <= 1.5,
+        "{wide} pixels wide, expected {expected}"
+    );
+}
+
+#[test]
+fn moving_the_box_one_pixel_width_gives_a_flow_of_one_pixel() {
+    let mut world = World::default();
+    let id = red_box(&mut world);
+    let mut view = View::new(Camera::eye(Pose::IDENTITY));
+    let first = render(
+        &world,
+        &mut view,
+        &[],
+        &[Modality::Flow, Modality::SceneFlow],
+    );
+    assert!(
+        f32s(&first, Modality::Flow).iter().all(|&f| f == 0.0),
+        "nothing moved yet"
+    );
+    // One pixel at 2 m: the image's 2·2·tan(60°) m over 128 pixels; toward −y is rightward.
+    let pixel = 2.0 * 2.0 * 60f32.to_radians().tan() / 128.0;
+    let moved = Pose::from_translation(v(2.1, -pixel, 0.0));
+    world.set_pose(id, moved).unwrap();
+    let frame = render(
+        &world,
+        &mut view,
+        &[],
+        &[Modality::Flow, Modality::SceneFlow, Modality::InsSeg],
+    );
+    let Pixels::U32(ins) = &frame.get(Modality::InsSeg).unwrap().pixels else {
+        panic!()
+    };
+    let flow = f32s(&frame, Modality::Flow);
+    let scene = f32s(&frame, Modality::SceneFlow);
+    let mut seen = 0;
+    for (k, _) in ins.iter().enumerate().filter(|&(_, &i)| i == id.0 + 1) {
+        let (dx, dy) = (flow[2 * k], flow[2 * k + 1]);
+        assert!(
+            (dx - 1.0).abs() < 0.05 && dy.abs() < 0.05,
+            "flow ({dx}, {dy}) at {k}"
+        );
+        assert!(
+            (scene[3 * k + 1] + pixel).abs() < 1e-4,
+            "scene flow {:?}",
+            &scene[3 * k..3 * k + 3]
+        );
+        seen += 1;
+    }
+    // 0.2 m at 2 m is 3.7 pixels of 128 over 120°: a 4 × 4 square, or 3 × 4 moved.
+    assert!(seen >= 12, "{seen} box pixels");
+}
+
+#[test]
+fn lidar_ranges_are_the_distances_of_the_world_rays() {
+    let mut world = World::default();
+    red_box(&mut world);
+    let lidar = Lidar {
+        pose: Pose::IDENTITY,
+        pattern: Pattern::Planar {
+            beams: 181,
+            fov: std::f32::consts::PI,
+        },
+        min_range: 0.05,
+        max_range: 10.0,
+    };
+    let scan = lidar.scan(&world, &QueryFilter::default()).unwrap();
+    assert_eq!((scan.rows, scan.columns, scan.ranges.len()), (1, 181, 181));
+    let (_, _, directions) = lidar.directions();
+    for (range, d) in scan.ranges.iter().zip(&directions) {
+        let ray = world
+            .core()
+            .cast_ray(Vector::ZERO, *d, 10.0, &QueryFilter::default())
+            .unwrap();
+        assert_eq!(*range, ray.map_or(0.0, |h| h.distance));
+    }
+    // The middle beam looks straight at the box's face.
+    assert!((scan.ranges[90] - 2.0).abs() < 1e-4);
+    assert_eq!(
+        scan.points.len(),
+        scan.ranges.iter().filter(|&&r| r > 0.0).count()
+    );
+    let cloud = Lidar {
+        pattern: Pattern::MultiBeam {
+            rows: 16,
+            columns: 360,
+            vertical_fov: 30f32.to_radians(),
+        },
+        ..lidar
+    };
+    let scan = cloud.scan(&world, &QueryFilter::default()).unwrap();
+    assert_eq!((scan.rows, scan.columns), (16, 360));
+    assert!(scan.points.iter().all(|p| (p[0] - 2.0).abs() < 0.21));
+}
+
+/// Two apples side by side, the right one cooked; the mean colour of each one's pixels.
+#[test]
+fn a_cooked_apple_renders_browner_than_a_raw_one() {
+    let mut world = World::default();
+    let apple = |world: &mut World, name: &str, y: f32| {
+        let ball = Part::new(Primitive::Sphere { radius: 0.1 });
+        let spec = ObjectSpec::new(name, "apple.n.01", vec![ball])
+            .looks([200, 35, 30], Material::Food)
+            .ability(Ability::Cookable, &[])
+            .at(v(1.0, y, 0.0))
+            .fixed();
+        world.add(spec).unwrap()
+    };
+    let raw = apple(&mut world, "apple_1", 0.2);
+    let cooked = apple(&mut world, "apple_2", -0.2);
+    world.set_state(cooked, Predicate::Cooked, true).unwrap();
+    let narrow = Camera {
+        vertical_fov: 0.8,
+        ..Camera::eye(Pose::IDENTITY)
+    };
+    let mut view = View::new(narrow);
+    let frame = render(&world, &mut view, &[], &[Modality::Rgb, Modality::InsSeg]);
+    let Pixels::U32(ins) = &frame.get(Modality::InsSeg).unwrap().pixels else {
+        panic!()
+    };
+    let rgb = u8s(&frame, Modality::Rgb);
+    let mean = |id: ObjectId| {
+        let px: Vec<usize> = (0..ins.len()).filter(|&k| ins[k] == id.0 + 1).collect();
+        assert!(px.len() > 50);
+        let sum = px.iter().fold([0f32; 3], |s, &k| {
+            std::array::from_fn(|c| s[c] + f32::from(rgb[3 * k + c]))
+        });
+        sum.map(|c| c / px.len() as f32)
+    };
+    let (r, c) = (mean(raw), mean(cooked));
+    // Brown: less red than the raw apple's red, more green, redder than it is green or blue.
+    assert!(c[0] < r[0] && c[1] > r[1], "raw {r:?}, cooked {c:?}");
+    assert!(c[0] > c[1] && c[1] > c[2], "cooked {c:?} is not brown");
+}
+
+#[test]
+fn two_renders_of_the_same_state_are_identical() {
+    let mut world = World::default();
+    red_box(&mut world);
+    let eye = Camera::looking_at(v(-1.0, 1.0, 1.0), v(2.0, 0.0, 0.0), 96, 64, 1.0);
+    let a = render(&world, &mut View::new(eye), &[], &Modality::ALL);
+    let b = render(&world, &mut View::new(eye), &[], &Modality::ALL);
+    assert_eq!(a, b);
+    assert_eq!((a.width, a.height), (96, 64));
+    assert_eq!(a.get(Modality::Rgb).unwrap().shape, vec![64, 96, 3]);
+}
+
+#[test]
+fn only_the_modalities_asked_for_come_back() {
+    let mut world = World::default();
+    red_box(&mut world);
+    let frame = render(
+        &world,
+        &mut View::new(Camera::eye(Pose::IDENTITY)),
+        &[],
+        &[Modality::Depth],
+    );
+    assert_eq!(frame.images.len(), 1);
+    assert!(frame.get(Modality::Rgb).is_none());
+    let mut bad = Camera::eye(Pose::IDENTITY);
+    bad.width = 0;
+    let categories = categories();
+    let scene = Scene {
+        world: &world,
+        categories: &categories,
+        highlight: &[],
+        hidden: &[],
+    };
+    let err = Renderer::new()
+        .unwrap()
+        .render(&scene, &mut View::new(bad), &[Modality::Rgb])
+        .unwrap_err();
+    assert!(err.to_string().contains("width"), "{err}");
+}

@@ -1,13 +1,15 @@
 //! `behavior bench env`: environment steps per second for both robots, idle and random agents,
-//! physics at 1/300 and 1/120 s, state only, on the original's speed-benchmark activities in a
-//! covering home with clutter; the time split as the original reports it, and memory per env.
+//! physics at 1/300 and 1/120 s, state only; then the BehaviorRobot with its eye camera's RGB,
+//! depth and segmentation at 128² and 512², rendered on whatever adapter there is (lavapipe on a
+//! CPU). On the original's speed-benchmark activities in a covering home with clutter; the time
+//! split as the original reports it (the images are the observation time), and memory per env.
 
+use crate::episode::{physics, robot_kind};
 use crate::prelude::Prelude;
-use crate::run::{physics, robot_kind};
 use crate::sample::first_covering;
 use crate::scene::with_clutter;
 use anyhow::{Context, Result};
-use behavior_env::{Agent, Env, EnvConfig, Instances};
+use behavior_env::{Agent, CameraConfig, Env, EnvConfig, Instances};
 use indicatif::ProgressBar;
 use serde::Serialize;
 use std::path::Path;
@@ -22,12 +24,20 @@ const ACTIVITIES: [&str; 3] = [
 ];
 /// Steps before timing starts, as the original discards its first 900 of 1000.
 const WARMUP: u32 = 100;
+/// The eye camera's sizes in the image configurations: the original's 128², and 512².
+const IMAGE_SIZES: [u32; 2] = [128, 512];
 
 #[derive(clap::Args)]
 pub struct BenchEnvArgs {
     /// Timed steps per configuration.
     #[arg(long, default_value_t = 1000)]
     steps: u32,
+    /// Timed steps per configuration with images (the eye's RGB, depth and segmentation).
+    #[arg(long, default_value_t = 300)]
+    image_steps: u32,
+    /// Only the state-only configurations: no rendering.
+    #[arg(long)]
+    state_only: bool,
     #[arg(long)]
     json: bool,
 }
@@ -40,6 +50,8 @@ struct Row {
     robot: String,
     agent: String,
     physics_dt: String,
+    /// `none`, or the eye camera's image size (RGB, depth and segmentation).
+    images: String,
     steps_per_second: f64,
     /// Mean per step, µs.
     physics_us: f64,
@@ -54,6 +66,7 @@ struct Row {
 #[derive(Serialize)]
 struct Report {
     steps: u32,
+    image_steps: u32,
     rows: Vec<Row>,
     /// Resident memory added per environment (world, robot, metrics, instance), MB: the growth
     /// of the process's resident set over eight environments kept alive, divided by eight.
@@ -79,7 +92,7 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let bar = if args.json {
         ProgressBar::hidden()
     } else {
-        ProgressBar::new(ACTIVITIES.len() as u64 * 8)
+        ProgressBar::new(ACTIVITIES.len() as u64 * 12)
     };
     for name in ACTIVITIES {
         let activity = Arc::new(prelude.activity(name)?);
@@ -115,16 +128,45 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
                         robot: robot.to_string(),
                         agent: agent.to_string(),
                         physics_dt: dt.to_string(),
+                        images: "none".into(),
                         ..row
                     });
                     bar.inc(1);
                 }
             }
         }
+        if args.state_only {
+            continue;
+        }
+        for size in IMAGE_SIZES {
+            for agent in ["idle", "random"] {
+                let mut config = base.clone();
+                config.instances = Instances::Saved(vec![instance.clone()]);
+                config.max_steps = u32::MAX;
+                config.observations.camera = Some(CameraConfig {
+                    width: size,
+                    height: size,
+                    ..CameraConfig::default()
+                });
+                let row = measure(config, agent, args.image_steps)?;
+                rows.push(Row {
+                    activity: name.to_string(),
+                    scene: home.name.clone(),
+                    objects,
+                    robot: "behavior".into(),
+                    agent: agent.to_string(),
+                    physics_dt: "1/300".into(),
+                    images: format!("{size}²"),
+                    ..row
+                });
+                bar.inc(1);
+            }
+        }
     }
     bar.finish_and_clear();
     let report = Report {
         steps: args.steps,
+        image_steps: args.image_steps,
         rows,
         memory_per_env_mb: memory,
     };
@@ -179,6 +221,7 @@ fn measure(config: EnvConfig, agent: &str, steps: u32) -> Result<Row> {
         robot: String::new(),
         agent: String::new(),
         physics_dt: String::new(),
+        images: String::new(),
         steps_per_second: f64::from(t.steps) / t.total.as_secs_f64().max(1e-12),
         physics_us: per(t.physics),
         rules_us: per(t.rules),
@@ -191,12 +234,13 @@ fn measure(config: EnvConfig, agent: &str, steps: u32) -> Result<Row> {
 
 fn print(report: &Report) {
     println!(
-        "{:<27} {:>7} {:<8} {:<6} {:<6} {:>9} {:>9} {:>8} {:>9} {:>7} {:>7}",
+        "{:<27} {:>7} {:<8} {:<6} {:<6} {:<6} {:>9} {:>9} {:>8} {:>9} {:>7} {:>7}",
         "activity",
         "objects",
         "robot",
         "agent",
         "dt",
+        "images",
         "steps/s",
         "physics",
         "rules",
@@ -206,12 +250,13 @@ fn print(report: &Report) {
     );
     for r in &report.rows {
         println!(
-            "{:<27} {:>7} {:<8} {:<6} {:<6} {:>9.0} {:>7.0}µs {:>6.0}µs {:>7.1}µs {:>5.1}µs {:>6.1}%",
+            "{:<27} {:>7} {:<8} {:<6} {:<6} {:<6} {:>9.0} {:>7.0}µs {:>6.0}µs {:>7.1}µs {:>5.0}µs {:>6.1}%",
             r.activity,
             r.objects,
             r.robot,
             r.agent,
             r.physics_dt,
+            r.images,
             r.steps_per_second,
             r.physics_us,
             r.rules_us,
@@ -221,7 +266,7 @@ fn print(report: &Report) {
         );
     }
     println!(
-        "{} timed steps per row after {WARMUP} warm-up steps; memory per env ≈ {:.0} MB",
-        report.steps, report.memory_per_env_mb
+        "{} timed steps per row ({} with images) after {WARMUP} warm-up steps; memory per env ≈ {:.0} MB",
+        report.steps, report.image_steps, report.memory_per_env_mb
     );
 }

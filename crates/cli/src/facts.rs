@@ -35,7 +35,10 @@ pub fn facts(args: FactsArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         SavedInstance::from_json(&text).with_context(|| format!("{}", args.instance.display()))?;
     let activity = match &args.activity {
         Some(file) => prelude.activity(file)?,
-        None => prelude.activity(&official_activity(&prelude, &saved.activity)?)?,
+        None => prelude.activity(&crate::episode::official_activity(
+            &prelude,
+            &saved.activity,
+        )?)?,
     };
     let instance = saved
         .load(&activity, &library)
@@ -54,41 +57,19 @@ pub fn facts(args: FactsArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// The official activity a saved problem name is of, as the data spells it (problem names are
-/// lower case: `filling_a_christmas_stocking_0` is of `filling_a_Christmas_stocking`).
-fn official_activity(prelude: &Prelude, problem: &str) -> Result<String> {
-    let name = official_name(problem);
-    let activities = prelude.data.activities()?;
-    activities
-        .into_iter()
-        .find(|a| a.eq_ignore_ascii_case(name))
-        .with_context(|| {
-            format!(
-                "`{problem}` is not an official activity's problem: give its file with --activity"
-            )
-        })
-}
-
-/// The activity a problem is of: `packing_lunches_0` → `packing_lunches`.
-fn official_name(problem: &str) -> &str {
-    match problem.rsplit_once('_') {
-        Some((name, index)) if !index.is_empty() && index.bytes().all(|b| b.is_ascii_digit()) => {
-            name
-        }
-        _ => problem,
-    }
-}
-
 #[cfg(test)]
 mod tests {
     #[test]
     fn the_official_name_drops_the_problem_index() {
-        assert_eq!(super::official_name("packing_lunches_0"), "packing_lunches");
         assert_eq!(
-            super::official_name("re-shelving_library_books_0"),
+            crate::episode::official_name("packing_lunches_0"),
+            "packing_lunches"
+        );
+        assert_eq!(
+            crate::episode::official_name("re-shelving_library_books_0"),
             "re-shelving_library_books"
         );
-        assert_eq!(super::official_name("mine"), "mine");
-        assert_eq!(super::official_name("mine_"), "mine_");
+        assert_eq!(crate::episode::official_name("mine"), "mine");
+        assert_eq!(crate::episode::official_name("mine_"), "mine_");
     }
 }

@@ -5,10 +5,12 @@
 
 mod bddl;
 mod bench_env;
+mod episode;
 mod facts;
 mod map;
 mod plot;
 mod prelude;
+mod render;
 mod replay;
 mod run;
 mod sample;
@@ -50,6 +52,8 @@ enum Command {
     Facts(facts::FactsArgs),
     /// Run an agent in an activity: a robot in a sampled home, scored by Q and the metrics.
     Run(run::RunArgs),
+    /// What a camera sees: every image modality as PNG and .npy, with a legend of the ids.
+    Render(render::RenderArgs),
     /// Read a recording; with --verify, re-simulate it and check it bit for bit.
     Replay(replay::ReplayArgs),
     /// Benchmarks of the whole system.
@@ -78,6 +82,7 @@ fn main() -> ExitCode {
         Command::SampleAll(args) => sample::sample_all(args, cli.data_dir.as_deref()),
         Command::Facts(args) => facts::facts(args, cli.data_dir.as_deref()),
         Command::Run(args) => run::run(args, cli.data_dir.as_deref()),
+        Command::Render(args) => render::render(args, cli.data_dir.as_deref()),
         Command::Replay(args) => replay::run(args, cli.data_dir.as_deref()),
         Command::Bench(BenchCommand::Env(args)) => bench_env::run(args, cli.data_dir.as_deref()),
     };

@@ -1,47 +1,27 @@
 //! `behavior run`: an agent doing an activity, scored, optionally recorded and plotted.
 
+use crate::episode::{Built, EpisodeArgs};
 use crate::plot::plot_episode;
 use crate::prelude::Prelude;
-use crate::sample::first_covering;
-use crate::scene::{load_scene, with_clutter};
-use anyhow::{Context, Result, bail};
+use anyhow::{Context, Result};
 use behavior_env::record::{CHECKPOINT_EVERY, Recorder};
-use behavior_env::{Agent, Env, EnvConfig, EpisodeMetrics, Instances};
-use behavior_robots::RobotKind;
-use behavior_sampling::SavedInstance;
-use behavior_sim::Substeps;
+use behavior_env::{Agent, EpisodeMetrics};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use std::sync::Arc;
 use std::time::Instant;
 
 #[derive(clap::Args)]
 pub struct RunArgs {
-    /// An official activity name or a problem file of one's own.
-    #[arg(default_value = "bringing_in_wood")]
-    activity: String,
-    /// A named home or a scene file (default: the first named home that covers the activity).
-    #[arg(long)]
-    scene: Option<String>,
-    #[arg(long, default_value_t = 0)]
-    seed: u64,
-    /// The embodiment: behavior (the BehaviorRobot) or fetch.
-    #[arg(long, default_value = "behavior")]
-    robot: String,
+    #[command(flatten)]
+    episode: EpisodeArgs,
     /// The agent: idle (all-zero actions) or random (uniform in [-1, 1], seeded by --seed).
     #[arg(long, default_value = "random")]
     agent: String,
     /// Action steps (1/30 s each) before the episode is truncated.
     #[arg(long, default_value_t = 300)]
     steps: u32,
-    /// Physics time step: 1/300 or 1/120.
-    #[arg(long, default_value = "1/300")]
-    physics_dt: String,
-    /// Start from a saved instance (`behavior sample --out`) instead of sampling one.
-    #[arg(long, value_name = "FILE.json")]
-    instance: Option<PathBuf>,
     /// Record the episode to an MCAP file.
     #[arg(long, value_name = "FILE.mcap")]
     record: Option<PathBuf>,
@@ -51,9 +31,6 @@ pub struct RunArgs {
     /// Draw Q and the efficiency metrics over time.
     #[arg(long, value_name = "FILE.png")]
     plot: Option<PathBuf>,
-    /// Sample in the furniture-only home.
-    #[arg(long)]
-    no_clutter: bool,
     #[arg(long)]
     json: bool,
 }
@@ -75,59 +52,14 @@ struct RunReport {
     steps_per_second: f64,
 }
 
-pub(crate) fn physics(text: &str) -> Result<Substeps> {
-    match text {
-        "1/300" => Ok(Substeps::Hz300),
-        "1/120" => Ok(Substeps::Hz120),
-        other => bail!("--physics-dt must be 1/300 or 1/120, not `{other}`"),
-    }
-}
-
-pub(crate) fn robot_kind(name: &str) -> Result<RobotKind> {
-    RobotKind::from_name(name).with_context(|| {
-        let known: Vec<&str> = RobotKind::ALL.iter().map(|k| k.name()).collect();
-        format!("--robot must be one of {}, not `{name}`", known.join(", "))
-    })
-}
-
 pub fn run(args: RunArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let prelude = Prelude::load(data_dir)?;
-    let library = prelude.library();
-    let source = prelude.source(&args.activity)?;
-    let activity = prelude.load_activity(&source)?;
-    let mut agent = Agent::named(&args.agent, args.seed)
+    let e = &args.episode;
+    let mut agent = Agent::named(&args.agent, e.seed)
         .with_context(|| format!("--agent must be idle or random, not `{}`", args.agent))?;
-    // A saved instance holds its home; otherwise sample in the home asked for.
-    let scenes = match (&args.instance, &args.scene) {
-        (Some(_), _) => Vec::new(),
-        (None, Some(name)) => vec![load_scene(name, &library)?],
-        (None, None) => vec![first_covering(
-            &activity,
-            &library,
-            &prelude.knowledge.taxonomy,
-        )?],
-    };
-    let scenes = scenes
-        .into_iter()
-        .map(|s| with_clutter(s, &library, !args.no_clutter))
-        .collect::<Result<Vec<_>>>()?;
-    let mut config = EnvConfig::new(
-        Arc::new(activity),
-        Arc::new(prelude.knowledge.taxonomy.clone()),
-        scenes,
-    );
-    config.robot = robot_kind(&args.robot)?;
-    config.physics = physics(&args.physics_dt)?;
-    config.max_steps = args.steps.max(1);
-    if let Some(path) = &args.instance {
-        let text = std::fs::read_to_string(path)
-            .with_context(|| format!("cannot read {}", path.display()))?;
-        let saved = SavedInstance::from_json(&text).with_context(|| path.display().to_string())?;
-        config.instances = Instances::Saved(vec![saved]);
-    }
-    let mut env = Env::new(config);
-    env.reset(args.seed)
-        .with_context(|| format!("starting {} (seed {})", args.activity, args.seed))?;
+    let Built { mut env, source } = e.build(&prelude, |config| {
+        config.max_steps = args.steps.max(1);
+    })?;
     let mut recorder = match &args.record {
         Some(path) => Some(Recorder::create(
             path,
@@ -160,14 +92,14 @@ pub fn run(args: RunArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     }
     let metrics = env.metrics().context("no episode")?;
     if let (Some(path), Some(series)) = (&args.plot, env.series()) {
-        plot_episode(series, &args.activity, path)?;
+        plot_episode(series, &e.activity, path)?;
     }
     let start = env.start().context("no episode")?;
     let report = RunReport {
-        activity: args.activity.clone(),
+        activity: e.activity.clone(),
         scene: start.instance.scene.name.clone(),
-        seed: args.seed,
-        robot: args.robot.clone(),
+        seed: e.seed,
+        robot: e.robot.clone(),
         agent: agent.name().to_string(),
         steps: metrics.steps,
         success: metrics.success,

@@ -1,6 +1,7 @@
 //! What an environment is made of: the activity, the homes, where instances come from, the
 //! robot, the time steps, the observations and the reward.
 
+use crate::sensors::CameraConfig;
 use behavior_assets::Scene;
 use behavior_bddl::{Activity, Taxonomy};
 use behavior_robots::{ActionSpace, RobotKind};
@@ -27,19 +28,28 @@ pub enum Instances {
 }
 
 /// Which observations an environment computes (those left out cost nothing).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Observations {
     /// The robot's proprioception (22 numbers for the BehaviorRobot, 49 for Fetch).
     pub proprioception: bool,
     /// The full-observability vector of the activity's objects ([`crate::TASK_OBS_DIM`]).
     pub task_obs: bool,
+    /// Images from the robot's camera (the BehaviorRobot's eye, Fetch's head camera), each
+    /// under its modality's name (`rgb`, `depth`, `normal`, `seg`, `ins_seg`, `highlight`,
+    /// `flow`, `scene_flow`).
+    pub camera: Option<CameraConfig>,
+    /// A lidar's range image, under `lidar` (see [`crate::LidarSensor`]).
+    pub lidar: bool,
 }
 
 impl Default for Observations {
+    /// Proprioception and `task_obs`: the state-only observations, no images.
     fn default() -> Self {
         Observations {
             proprioception: true,
             task_obs: true,
+            camera: None,
+            lidar: false,
         }
     }
 }

@@ -5,8 +5,10 @@ use crate::episode::{AGENT_SYNSET, CheckpointError, Episode, Start, embody};
 use crate::metrics::{EpisodeMetrics, Series, Tracker};
 use crate::observation::{Obs, Sensor, SensorInput, task_obs};
 use crate::score::{Score, Scorer};
+use crate::sensors::{CameraSensor, LidarSensor, categories};
 use crate::timing::{StepTimings, Timed};
 use behavior_assets::Library;
+use behavior_render::RenderError;
 use behavior_robots::{ActionError, Robot, RobotError};
 use behavior_sampling::{LoadError, SampleError, SavedInstance, instantiate};
 use behavior_sim::{BoundWorld, ObjectId, World};
@@ -53,6 +55,18 @@ pub enum EnvError {
     /// The robot could not be added.
     #[error("adding the robot: {0}")]
     Robot(#[from] RobotError),
+    /// The camera could not be made (no graphics adapter, a bad camera size).
+    #[error("the camera: {0}")]
+    Render(#[from] RenderError),
+    /// A sensor failed to observe. After a step the step was taken; only its observation is
+    /// missing.
+    #[error("sensor `{sensor}`: {source}")]
+    Sensor {
+        /// The sensor's name.
+        sensor: String,
+        /// Why.
+        source: Box<dyn std::error::Error + Send + Sync>,
+    },
 }
 
 /// What a step returns (Gymnasium's five values; `info` is [`Info`]).
@@ -105,6 +119,9 @@ pub struct Env {
     scorer: Scorer,
     /// The objects `task_obs` reports, as activity instance indices.
     task_objects: Vec<usize>,
+    /// The on-board sensors the configuration asks for, made at the first reset.
+    onboard: Option<Vec<Box<dyn Sensor>>>,
+    /// Sensors added with [`Env::add_sensor`].
     sensors: Vec<Box<dyn Sensor>>,
     episode: Option<Episode>,
     timings: StepTimings,
@@ -128,6 +145,7 @@ impl Env {
             scorer: Scorer::new(activity),
             config,
             task_objects,
+            onboard: None,
             sensors: Vec::new(),
             episode: None,
             timings: StepTimings::default(),
@@ -157,6 +175,7 @@ impl Env {
     /// Starts an episode from a given initial state (a recording's header does this).
     pub fn reset_to(&mut self, start: Start) -> Result<(Obs, Info), EnvError> {
         self.episode = None;
+        self.make_onboard_sensors()?;
         let library = Library::new(&self.config.taxonomy);
         let loaded = start.instance.load(&self.config.activity, &library)?;
         let mut world = loaded.world;
@@ -200,8 +219,27 @@ impl Env {
             start: Arc::new(start),
             over: false,
         });
-        let obs = self.observe();
+        self.reset_sensors();
+        let obs = self.observe()?;
         Ok((obs, Info { steps: 0, score }))
+    }
+
+    /// The camera and lidar the configuration asks for, once.
+    fn make_onboard_sensors(&mut self) -> Result<(), EnvError> {
+        if self.onboard.is_some() {
+            return Ok(());
+        }
+        let wanted = &self.config.observations;
+        let mut onboard: Vec<Box<dyn Sensor>> = Vec::new();
+        if let Some(camera) = &wanted.camera {
+            let categories = categories(&self.config.taxonomy);
+            onboard.push(Box::new(CameraSensor::new(camera.clone(), categories)?));
+        }
+        if wanted.lidar {
+            onboard.push(Box::new(LidarSensor));
+        }
+        self.onboard = Some(onboard);
+        Ok(())
     }
 
     /// The initial state for a seed, from the configured source.
@@ -268,7 +306,7 @@ impl Env {
             score,
         };
         let scored = Instant::now();
-        let obs = self.observe();
+        let obs = self.observe()?;
         let observed = Instant::now();
         let parts = [physics, rules, scored - stepped, observed - scored];
         self.timings.add(parts, observed - start);
@@ -282,9 +320,9 @@ impl Env {
     }
 
     /// The observation of the episode's world now.
-    fn observe(&mut self) -> Obs {
+    fn observe(&mut self) -> Result<Obs, EnvError> {
         let Some(episode) = &self.episode else {
-            return Obs::default();
+            return Ok(Obs::default());
         };
         let (world, robot) = (&episode.world, &episode.robot);
         let mut obs = Obs::default();
@@ -304,12 +342,15 @@ impl Env {
             robot,
             bindings: &episode.bindings,
         };
-        obs.sensors = self
-            .sensors
-            .iter_mut()
-            .map(|s| (s.name().to_string(), s.observe(&input)))
-            .collect();
-        obs
+        for sensor in self.onboard.iter_mut().flatten().chain(&mut self.sensors) {
+            sensor
+                .observe(&input, &mut obs.sensors)
+                .map_err(|source| EnvError::Sensor {
+                    sensor: sensor.name().to_string(),
+                    source,
+                })?;
+        }
+        Ok(obs)
     }
 
     fn current(&self) -> Option<&Episode> {
@@ -376,6 +417,14 @@ impl Env {
     /// did the first time, bit for bit.
     pub fn restore(&mut self, checkpoint: &Checkpoint) {
         self.episode = Some(checkpoint.0.clone());
+        self.reset_sensors();
+    }
+
+    /// Sensors start over (a camera's next flow is zero): after a reset or a restore.
+    fn reset_sensors(&mut self) {
+        for sensor in self.onboard.iter_mut().flatten().chain(&mut self.sensors) {
+            sensor.reset();
+        }
     }
 
     /// Goes on from a checkpoint's bytes ([`Checkpoint::to_bytes`]) of an episode begun as
@@ -383,6 +432,7 @@ impl Env {
     /// leave the environment as it was.
     pub fn restore_bytes(&mut self, start: Start, bytes: &[u8]) -> Result<(), CheckpointError> {
         self.episode = Some(Episode::from_bytes(bytes, Arc::new(start))?);
+        self.reset_sensors();
         Ok(())
     }
 

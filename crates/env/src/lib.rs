@@ -4,10 +4,11 @@
 //! replayed bit for bit.
 //!
 //! It owns the episode: where initial states come from (sampled, saved, a pool), the robot put
-//! in the place of the activity's `agent.n.01`, observations (proprioception, `task_obs`, and
-//! [`Sensor`]s others add), reward, termination, the metrics and recordings. It knows nothing of
-//! rendering, Python or the command line; it builds on the world (`behavior-sim`), the robots,
-//! the sampler and BDDL's goal evaluation.
+//! in the place of the activity's `agent.n.01`, observations (proprioception, `task_obs`, the
+//! robot's camera and lidar from `behavior-render`, and [`Sensor`]s others add), reward,
+//! termination, the metrics and recordings. It knows nothing of Python or the command line; it
+//! builds on the world (`behavior-sim`), the robots, the sampler, the renderer and BDDL's goal
+//! evaluation.
 //!
 //! ```
 //! use behavior_env::{Agent, Env, EnvConfig, EnvError};
@@ -31,7 +32,8 @@
 //! ```
 //!
 //! Inside: `config.rs` (what an env is made of), `env.rs` (reset and step), `episode.rs` (an
-//! episode's state, the robot replacing the agent), `observation.rs`, `score.rs` (Q and goal
+//! episode's state, the robot replacing the agent), `observation.rs`, `sensors.rs` (the
+//! camera and lidar), `score.rs` (Q and goal
 //! status), `metrics/` (one module per metric, the benchmark's aggregate and human
 //! normalization), `record/` (MCAP recordings and replay), `timing.rs`, `agent.rs` (idle and
 //! random agents).
@@ -46,6 +48,7 @@ pub mod metrics;
 mod observation;
 pub mod record;
 mod score;
+mod sensors;
 mod timing;
 
 pub use agent::Agent;
@@ -57,4 +60,5 @@ pub use observation::{
     Obs, Reading, Sensor, SensorInput, TASK_OBJECT_DIM, TASK_OBJECTS, TASK_OBS_DIM,
 };
 pub use score::Score;
+pub use sensors::{CameraConfig, CameraSensor, LidarSensor, categories};
 pub use timing::StepTimings;

@@ -1,5 +1,5 @@
 //! What the agent perceives: proprioception, the full-observability `task_obs` vector, and
-//! whatever [`Sensor`]s add (cameras, lidar: the next stage's business).
+//! what [`Sensor`]s add (the robot's camera and lidar of `sensors.rs`, or one's own).
 //!
 //! `task_obs` follows iGibson 2.0's full-observability layout (reference §4.2), 456 numbers:
 //!
@@ -16,6 +16,7 @@
 //! original lists only its `URDFObject`s, which floors and the robot are not), at most
 //! [`TASK_OBJECTS`]. A sliced object reports its first half's pose while that half exists.
 
+use behavior_render::Pixels;
 use behavior_robots::Robot;
 use behavior_sim::{ObjectId, World};
 use rapier3d::glamx::EulerRot;
@@ -28,13 +29,15 @@ pub const TASK_OBJECT_DIM: usize = 9;
 /// The length of `task_obs`: 6 + 50 × 9 = 456.
 pub const TASK_OBS_DIM: usize = 6 + TASK_OBJECTS * TASK_OBJECT_DIM;
 
-/// One observation of a sensor: numbers and their shape (row-major), e.g. `[128, 128, 3]`.
-#[derive(Clone, Debug, Default, PartialEq)]
+/// One observation of a sensor: numbers and their shape (row-major), e.g. `[128, 128, 3]` of u8
+/// for an RGB image.
+#[derive(Clone, Debug, PartialEq)]
 pub struct Reading {
     /// Dimensions, outermost first.
     pub shape: Vec<usize>,
-    /// `shape.iter().product()` numbers.
-    pub data: Vec<f32>,
+    /// `shape.iter().product()` numbers, of the type the modality has (u8 colour, f32 depth in
+    /// metres, u16 or u32 ids).
+    pub data: Pixels,
 }
 
 /// What a sensor may look at when it observes.
@@ -48,13 +51,19 @@ pub struct SensorInput<'a> {
     pub bindings: &'a [Option<ObjectId>],
 }
 
-/// A source of observations beyond proprioception and `task_obs`: renderers and lidars
-/// implement it and are handed to [`crate::Env::add_sensor`].
+/// A source of observations beyond proprioception and `task_obs`: cameras and lidars (see
+/// `sensors.rs`), or one's own, handed to [`crate::Env::add_sensor`].
 pub trait Sensor: Send {
-    /// The key its readings have in [`Obs::sensors`].
+    /// Its name, for errors.
     fn name(&self) -> &str;
-    /// Observes the world after a reset or a step.
-    fn observe(&mut self, input: &SensorInput) -> Reading;
+    /// A new episode starts (a camera forgets its last frame, so the first flow is zero).
+    fn reset(&mut self) {}
+    /// Observes the world after a reset or a step, adding its readings, each under its own key.
+    fn observe(
+        &mut self,
+        input: &SensorInput,
+        out: &mut Vec<(String, Reading)>,
+    ) -> Result<(), Box<dyn std::error::Error + Send + Sync>>;
 }
 
 /// An observation.
@@ -64,8 +73,15 @@ pub struct Obs {
     pub proprioception: Vec<f32>,
     /// The full-observability vector of the module docs (empty when not asked for).
     pub task_obs: Vec<f32>,
-    /// Each sensor's reading, in the order the sensors were added.
+    /// The sensors' readings (`rgb`, `depth`, `lidar`, …), in the order the sensors were added.
     pub sensors: Vec<(String, Reading)>,
+}
+
+impl Obs {
+    /// A sensor reading by its key (`rgb`, `depth`, `lidar`, …).
+    pub fn get(&self, key: &str) -> Option<&Reading> {
+        self.sensors.iter().find(|(k, _)| k == key).map(|(_, r)| r)
+    }
 }
 
 fn euler(pose: &Pose) -> [f32; 3] {

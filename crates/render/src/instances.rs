@@ -107,6 +107,9 @@ pub(crate) struct Gatherer<'a> {
 /// One instance before it is grouped by mesh.
 struct Pending {
     mesh: u32,
+    /// How near to the camera it may come, m: instances are drawn nearest first, so that the
+    /// depth test spares the shading of what they hide.
+    near: f32,
     key: Key,
     instance: Instance,
 }
@@ -178,6 +181,7 @@ impl Gatherer<'_> {
             let instance = self.instance(key, &part.pose, drawn.scale, look, ids);
             out.push(Pending {
                 mesh,
+                near: (centre - eye).length() - drawn.reach,
                 key,
                 instance,
             });
@@ -215,22 +219,9 @@ impl Gatherer<'_> {
                 }
                 let ids = [id.0 + 1, u32::from(self.scene.categories.id(category))];
                 let look = look(*color, Material::Paper, Shown::default());
-                let shape = VisualShape::Primitive(shape);
-                let drawn = Drawn::of(&shape);
-                let mesh = self.meshes.id(drawn.key, &shape);
-                for (n, &p) in points.iter().enumerate() {
-                    if !visible(planes, p, drawn.reach) {
-                        continue;
-                    }
-                    let key = Key::Particle(id.0, kind as u8, n as u32);
-                    let pose = Pose::from_translation(p);
-                    let instance = self.instance(key, &pose, drawn.scale, look, ids);
-                    out.push(Pending {
-                        mesh,
-                        key,
-                        instance,
-                    });
-                }
+                let dots = Dots { shape, look, ids };
+                let key = |n| Key::Particle(id.0, kind as u8, n);
+                self.dots(&dots, &points, key, planes, out);
             }
         }
     }
@@ -243,18 +234,36 @@ impl Gatherer<'_> {
         let ids = [0, u32::from(self.scene.categories.id(WATER_CATEGORY))];
         let look = look(WATER, Material::Glass, Shown::default());
         let ball = Primitive::Sphere { radius: 0.009 };
-        let shape = VisualShape::Primitive(&ball);
+        let dots = Dots {
+            shape: &ball,
+            look,
+            ids,
+        };
+        self.dots(&dots, &drops, Key::Drop, planes, out);
+    }
+
+    /// Instances of one small shape at world points, each keyed by its index.
+    fn dots(
+        &mut self,
+        dots: &Dots,
+        at: &[Vector],
+        key: impl Fn(u32) -> Key,
+        planes: &[Vec4; 6],
+        out: &mut Vec<Pending>,
+    ) {
+        let shape = VisualShape::Primitive(dots.shape);
         let drawn = Drawn::of(&shape);
         let mesh = self.meshes.id(drawn.key, &shape);
-        for (n, &p) in drops.iter().enumerate() {
+        for (n, &p) in at.iter().enumerate() {
             if !visible(planes, p, drawn.reach) {
                 continue;
             }
-            let key = Key::Drop(n as u32);
+            let key = key(n as u32);
             let pose = Pose::from_translation(p);
-            let instance = self.instance(key, &pose, drawn.scale, look, ids);
+            let instance = self.instance(key, &pose, drawn.scale, dots.look, dots.ids);
             out.push(Pending {
                 mesh,
+                near: (p - self.camera.pose.translation).length(),
                 key,
                 instance,
             });
@@ -262,9 +271,17 @@ impl Gatherer<'_> {
     }
 }
 
-/// Sorts instances by mesh (stably, so the order is the world's) into draws.
+/// Small things drawn at points (dust, stains, drops): one shape, look and ids for all.
+struct Dots<'a> {
+    shape: &'a Primitive,
+    look: Look,
+    ids: [u32; 2],
+}
+
+/// Sorts instances by mesh, nearest first within a mesh (stably: ties keep the world's order),
+/// into draws.
 fn group(mut pending: Vec<Pending>) -> Batch {
-    pending.sort_by_key(|p| p.mesh);
+    pending.sort_by(|a, b| a.mesh.cmp(&b.mesh).then(a.near.total_cmp(&b.near)));
     let mut batch = Batch::default();
     for p in pending {
         match batch.draws.last_mut() {

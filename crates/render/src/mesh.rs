@@ -24,9 +24,9 @@ pub(crate) struct Mesh {
 }
 
 /// Segments around a round shape.
-const ROUND: usize = 20;
+const ROUND: usize = 16;
 /// Rings from pole to pole of a ball.
-const RINGS: usize = 12;
+const RINGS: usize = 10;
 
 /// Which mesh a shape is drawn with: the unit meshes first, then one per distinct shape.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]

@@ -92,7 +92,7 @@ impl Pipelines {
             bind_group_layouts: &[Some(&layout)],
             immediate_size: 0,
         });
-        let build = |entry: &str, targets: &[Option<wgpu::ColorTargetState>]| {
+        let build = |(vertex, entry): (&str, &str), targets: &[Option<wgpu::ColorTargetState>]| {
             let buffers = [
                 Some(wgpu::VertexBufferLayout {
                     array_stride: std::mem::size_of::<Vertex>() as u64,
@@ -110,7 +110,7 @@ impl Pipelines {
                 layout: Some(&pipeline_layout),
                 vertex: wgpu::VertexState {
                     module: &module,
-                    entry_point: Some("vs_main"),
+                    entry_point: Some(vertex),
                     compilation_options: wgpu::PipelineCompilationOptions::default(),
                     buffers: &buffers,
                 },
@@ -139,10 +139,13 @@ impl Pipelines {
         };
         Pipelines {
             surface: build(
-                "fs_surface",
+                ("vs_surface", "fs_surface"),
                 &[target(COLOR), target(GEOMETRY), target(IDS)],
             ),
-            motion: build("fs_motion", &[target(SCENE_FLOW), target(FLOW)]),
+            motion: build(
+                ("vs_motion", "fs_motion"),
+                &[target(SCENE_FLOW), target(FLOW)],
+            ),
             globals,
             bind_group,
         }

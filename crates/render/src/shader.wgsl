@@ -39,16 +39,24 @@ struct InstanceIn {
     @location(12) ids: vec2<u32>,
 };
 
-struct VertexOut {
+// What the surface pass interpolates: as little as it needs (a CPU rasterizer pays for every
+// number per triangle).
+struct SurfaceVertex {
     @builtin(position) clip: vec4<f32>,
     @location(0) world: vec3<f32>,
     @location(1) normal: vec3<f32>,
     @location(2) color: vec4<f32>,
     @location(3) @interpolate(flat) ids: vec2<u32>,
     @location(4) @interpolate(flat) shine: f32,
-    @location(5) prev_world: vec3<f32>,
-    @location(6) prev_clip: vec4<f32>,
-    @location(7) now_clip: vec4<f32>,
+};
+
+// What the motion pass interpolates.
+struct MotionVertex {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) world: vec3<f32>,
+    @location(1) prev_world: vec3<f32>,
+    @location(2) prev_clip: vec4<f32>,
+    @location(3) now_clip: vec4<f32>,
 };
 
 fn affine(r0: vec4<f32>, r1: vec4<f32>, r2: vec4<f32>, p: vec3<f32>) -> vec3<f32> {
@@ -57,19 +65,28 @@ fn affine(r0: vec4<f32>, r1: vec4<f32>, r2: vec4<f32>, p: vec3<f32>) -> vec3<f32
 }
 
 @vertex
-fn vs_main(v: VertexIn, i: InstanceIn) -> VertexOut {
-    var out: VertexOut;
+fn vs_surface(v: VertexIn, i: InstanceIn) -> SurfaceVertex {
+    var out: SurfaceVertex;
+    let world = affine(i.m0, i.m1, i.m2, v.position);
+    out.world = world;
+    out.normal = vec3<f32>(dot(i.n0.xyz, v.normal), dot(i.n1.xyz, v.normal), dot(i.n2.xyz, v.normal));
+    out.clip = g.view_proj * vec4<f32>(world, 1.0);
+    out.color = i.color;
+    out.ids = i.ids;
+    out.shine = i.n0.w;
+    return out;
+}
+
+@vertex
+fn vs_motion(v: VertexIn, i: InstanceIn) -> MotionVertex {
+    var out: MotionVertex;
     let world = affine(i.m0, i.m1, i.m2, v.position);
     let prev = affine(i.p0, i.p1, i.p2, v.position);
     out.world = world;
     out.prev_world = prev;
-    out.normal = vec3<f32>(dot(i.n0.xyz, v.normal), dot(i.n1.xyz, v.normal), dot(i.n2.xyz, v.normal));
     out.clip = g.view_proj * vec4<f32>(world, 1.0);
     out.now_clip = out.clip;
     out.prev_clip = g.prev_view_proj * vec4<f32>(prev, 1.0);
-    out.color = i.color;
-    out.ids = i.ids;
-    out.shine = i.n0.w;
     return out;
 }
 
@@ -80,7 +97,7 @@ struct SurfaceOut {
 };
 
 @fragment
-fn fs_surface(in: VertexOut) -> SurfaceOut {
+fn fs_surface(in: SurfaceVertex) -> SurfaceOut {
     var n = normalize(in.normal);
     let to_eye = normalize(g.eye.xyz - in.world);
     // Two-sided: the inside of an open box is lit as its outside.
@@ -114,7 +131,7 @@ fn to_pixel(clip: vec4<f32>) -> vec2<f32> {
 }
 
 @fragment
-fn fs_motion(in: VertexOut) -> MotionOut {
+fn fs_motion(in: MotionVertex) -> MotionOut {
     var out: MotionOut;
     out.scene = vec4<f32>(in.world - in.prev_world, 0.0);
     out.flow = to_pixel(in.now_clip) - to_pixel(in.prev_clip);

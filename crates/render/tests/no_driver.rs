@@ -16,5 +16,8 @@ fn a_missing_vulkan_driver_names_the_packages_to_install() {
     };
     assert!(matches!(err, RenderError::NoAdapter { .. }), "{err:?}");
     let message = err.to_string();
-    assert!(message.contains("mesa-vulkan-drivers libvulkan1"), "{message}");
+    assert!(
+        message.contains("mesa-vulkan-drivers libvulkan1"),
+        "{message}"
+    );
 }

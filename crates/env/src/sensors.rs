@@ -1,0 +1,170 @@
+//! The on-board sensors an [`crate::EnvConfig`] asks for: the robot's camera (the BehaviorRobot's
+//! eye, Fetch's head camera) drawn by `behavior-render`, and a lidar.
+//!
+//! The camera highlights the activity's objects (its `highlight` mask) and labels pixels from one
+//! category table for every activity: the taxonomy's synsets plus the homes' structural ones
+//! ([`categories`]), so the same category has the same id in every home.
+
+use crate::observation::{Reading, Sensor, SensorInput};
+use behavior_bddl::Taxonomy;
+use behavior_render::{
+    Camera, CategoryTable, Lidar, Modality, Pattern, Pixels, RenderError, Renderer, Scene, View,
+};
+use behavior_robots::RobotKind;
+use behavior_sim::QueryFilter;
+use rapier3d::math::Pose;
+
+/// Categories of the homes' structure, beside the taxonomy's.
+const STRUCTURE: [&str; 6] = [
+    "wall.n.01",
+    "floor.n.01",
+    "ceiling.n.01",
+    "door.n.01",
+    "window.n.01",
+    "agent.n.01",
+];
+
+/// The semantic segmentation's category table for a taxonomy: the same for every activity and
+/// home of one BDDL version.
+pub fn categories(taxonomy: &Taxonomy) -> CategoryTable {
+    let names = taxonomy.ids().map(|id| taxonomy.name(id).to_string());
+    CategoryTable::new(names.chain(STRUCTURE.map(String::from)))
+}
+
+/// What the robot's camera delivers.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CameraConfig {
+    /// The images, each under its modality's name in [`crate::Obs::sensors`].
+    pub modalities: Vec<Modality>,
+    /// Pixels.
+    pub width: u32,
+    /// Pixels.
+    pub height: u32,
+    /// rad.
+    pub vertical_fov: f32,
+}
+
+impl Default for CameraConfig {
+    /// The original's onboard-sensing camera: 128², 120° vertically, RGB, depth and semantic
+    /// segmentation.
+    fn default() -> Self {
+        CameraConfig {
+            modalities: vec![Modality::Rgb, Modality::Depth, Modality::Seg],
+            width: behavior_render::EYE_SIZE,
+            height: behavior_render::EYE_SIZE,
+            vertical_fov: behavior_render::EYE_FOV,
+        }
+    }
+}
+
+/// The robot's camera as a [`Sensor`].
+pub struct CameraSensor {
+    renderer: Renderer,
+    view: View,
+    config: CameraConfig,
+    categories: CategoryTable,
+}
+
+impl CameraSensor {
+    /// A camera that renders `config`'s images, its ids from `categories`.
+    pub fn new(
+        config: CameraConfig,
+        categories: CategoryTable,
+    ) -> Result<CameraSensor, RenderError> {
+        let camera = Camera {
+            pose: Pose::IDENTITY,
+            width: config.width,
+            height: config.height,
+            vertical_fov: config.vertical_fov,
+        };
+        camera.check()?;
+        Ok(CameraSensor {
+            renderer: Renderer::new()?,
+            view: View::new(camera),
+            config,
+            categories,
+        })
+    }
+}
+
+impl Sensor for CameraSensor {
+    fn name(&self) -> &str {
+        "camera"
+    }
+
+    fn reset(&mut self) {
+        self.view.forget();
+    }
+
+    fn observe(
+        &mut self,
+        input: &SensorInput,
+        out: &mut Vec<(String, Reading)>,
+    ) -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
+        self.view.camera.pose = input.robot.camera_pose(input.world);
+        let highlight: Vec<_> = input.bindings.iter().flatten().copied().collect();
+        let scene = Scene {
+            world: input.world,
+            categories: &self.categories,
+            highlight: &highlight,
+            hidden: &[],
+        };
+        let frame = self
+            .renderer
+            .render(&scene, &mut self.view, &self.config.modalities)?;
+        out.extend(frame.images.into_iter().map(|image| {
+            let reading = Reading {
+                shape: image.shape,
+                data: image.pixels,
+            };
+            (image.modality.name().to_string(), reading)
+        }));
+        Ok(())
+    }
+}
+
+/// A lidar on the robot: Fetch's base laser (220 beams over 220°, 0.05–25 m), or for the
+/// BehaviorRobot, which has none in the original, a 16 × 360 multi-beam scan (30° vertically,
+/// 0.05–25 m) from its eye. Its reading `lidar` is the range image (`[rows, columns]`, m, 0 for no
+/// return); it does not see the robot itself.
+pub struct LidarSensor;
+
+impl LidarSensor {
+    fn lidar(input: &SensorInput) -> Lidar {
+        let robot = input.robot;
+        match robot.kind() {
+            RobotKind::Fetch => Lidar::fetch_base(robot.base_pose(input.world)),
+            RobotKind::Behavior => Lidar {
+                pose: robot.camera_pose(input.world),
+                pattern: Pattern::MultiBeam {
+                    rows: 16,
+                    columns: 360,
+                    vertical_fov: 30f32.to_radians(),
+                },
+                min_range: 0.05,
+                max_range: 25.0,
+            },
+        }
+    }
+}
+
+impl Sensor for LidarSensor {
+    fn name(&self) -> &str {
+        "lidar"
+    }
+
+    fn observe(
+        &mut self,
+        input: &SensorInput,
+        out: &mut Vec<(String, Reading)>,
+    ) -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
+        let filter = QueryFilter::excluding(&input.robot.objects());
+        let scan = Self::lidar(input).scan(input.world, &filter)?;
+        let reading = Reading {
+            shape: vec![scan.rows, scan.columns],
+            data: Pixels::F32(scan.ranges),
+        };
+        out.push(("lidar".to_string(), reading));
+        Ok(())
+    }
+}

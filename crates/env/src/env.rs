@@ -220,7 +220,8 @@ impl Env {
             over: false,
         });
         self.reset_sensors();
-        let obs = self.observe()?;
+        // A reset whose first observation fails leaves no episode, as any failed reset.
+        let obs = self.observe().inspect_err(|_| self.episode = None)?;
         Ok((obs, Info { steps: 0, score }))
     }
 

@@ -160,8 +160,7 @@ impl Gatherer<'_> {
 
     fn object(&mut self, id: ObjectId, planes: &[Vec4; 6], out: &mut Vec<Pending>) {
         let world = self.scene.world;
-        let category = world.object(id).category.clone();
-        let ids = self.ids(id, &category);
+        let ids = self.ids(id, &world.object(id).category);
         let shown = Shown::of(world, id);
         let eye = self.camera.pose.translation;
         for (k, part) in world.core().visual_parts(id).iter().enumerate() {

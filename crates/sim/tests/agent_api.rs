@@ -197,39 +197,10 @@ fn velocities_forces_torques_and_impulses_act_as_newton_says() {
     assert!(nan.is_err(), "a NaN force is refused");
 }
 
-/// A post with a three-link arm whose revolute joints turn about y (so gravity loads them), each
-/// link a 0.3 m bar along x, on multibody joints.
-fn arm(world: &mut World) -> ObjectId {
-    let mut spec = ObjectSpec::new(
-        "arm",
-        "robot.n.01",
-        vec![Part::at(cuboid(0.05, 0.05, 0.5), v(0.0, 0.0, 0.5))],
-    )
-    .fixed();
-    for k in 0..3 {
-        let x0 = 0.3 * k as f32;
-        spec = spec.link(LinkSpec {
-            name: format!("link_{k}"),
-            parts: vec![Part::at(cuboid(0.15, 0.02, 0.02), v(x0 + 0.15, 0.0, 1.0))],
-            parent: if k == 0 { None } else { Some(k - 1) },
-            joint: JointSpec {
-                kind: JointKind::Revolute,
-                model: JointModel::Multibody,
-                anchor: v(x0, 0.0, 1.0),
-                axis: v(0.0, 1.0, 0.0),
-                limits: Some([-2.5, 2.5]),
-                damping: 0.0,
-            },
-            density: 500.0,
-        });
-    }
-    world.add(spec).unwrap()
-}
-
 #[test]
 fn a_three_link_multibody_arm_reaches_its_joint_targets_and_reports_its_state() {
     let mut world = World::default();
-    let arm = arm(&mut world);
+    let arm = multibody_arm(&mut world, 0.0, 0.0);
     let targets = [0.5, -0.3, 0.4];
     for (k, &target) in targets.iter().enumerate() {
         world
@@ -748,7 +719,7 @@ fn worlds_step_in_threads_and_a_reader_shares_one_while_another_steps() {
 fn snapshots_of_an_arm_holding_a_box_restore_bit_identically() {
     let mut world = World::default();
     floor(&mut world);
-    let arm = arm(&mut world);
+    let arm = multibody_arm(&mut world, 0.0, 0.0);
     let held = cube(&mut world, "held", 0.9, 0.0, 0.03);
     world
         .set_pose(

@@ -3,7 +3,7 @@
 
 mod common;
 
-use behavior_sim::{ObjectSpec, Part, Primitive, World};
+use behavior_sim::World;
 use common::*;
 
 /// 48 boxes, balls and cylinders dropped in a column onto an open bin, so they collide, stack,
@@ -13,25 +13,7 @@ fn falling_pile() -> World {
     two_room_floor(&mut world);
     open_box(&mut world, 0.5, 0.5);
     for i in 0..48 {
-        let primitive = match i % 3 {
-            0 => cuboid(0.04, 0.03, 0.02),
-            1 => Primitive::Sphere { radius: 0.035 },
-            _ => Primitive::Cylinder {
-                radius: 0.03,
-                half_height: 0.04,
-            },
-        };
-        let (dx, dy) = (
-            (i % 4) as f32 * 0.03 - 0.045,
-            ((i / 4) % 3) as f32 * 0.03 - 0.03,
-        );
-        let spec = ObjectSpec::new(
-            &format!("thing_{i}"),
-            "thing.n.01",
-            vec![Part::new(primitive)],
-        )
-        .at(v(0.5 + dx, 0.5 + dy, 0.6 + 0.09 * i as f32));
-        world.add(spec).unwrap();
+        world.add(column_thing(i, 0.6, 0.09)).unwrap();
     }
     world
 }

@@ -6,40 +6,10 @@ mod common;
 
 use behavior_core::Predicate;
 use behavior_sim::{
-    AttachmentId, AttachmentKind, AttachmentSpec, BodyRef, Drive, JointKind, JointModel, JointSpec,
-    LinkSpec, ObjectId, ObjectSpec, Part, Primitive, QueryFilter, WORLD_FORMAT_VERSION, World,
-    WorldBytesError,
+    AttachmentId, AttachmentKind, AttachmentSpec, BodyRef, Drive, ObjectId, QueryFilter,
+    WORLD_FORMAT_VERSION, World, WorldBytesError,
 };
 use common::*;
-
-/// A post with a three-link arm on multibody revolute joints about y (gravity loads them).
-fn arm(world: &mut World, x: f32, y: f32) -> ObjectId {
-    let mut spec = ObjectSpec::new(
-        "arm",
-        "robot.n.01",
-        vec![Part::at(cuboid(0.05, 0.05, 0.5), v(0.0, 0.0, 0.5))],
-    )
-    .at(v(x, y, 0.0))
-    .fixed();
-    for k in 0..3 {
-        let x0 = 0.3 * k as f32;
-        spec = spec.link(LinkSpec {
-            name: format!("link_{k}"),
-            parts: vec![Part::at(cuboid(0.15, 0.02, 0.02), v(x0 + 0.15, 0.0, 1.0))],
-            parent: if k == 0 { None } else { Some(k - 1) },
-            joint: JointSpec {
-                kind: JointKind::Revolute,
-                model: JointModel::Multibody,
-                anchor: v(x0, 0.0, 1.0),
-                axis: v(0.0, 1.0, 0.0),
-                limits: Some([-2.5, 2.5]),
-                damping: 0.0,
-            },
-            density: 500.0,
-        });
-    }
-    world.add(spec).unwrap()
-}
 
 /// Everything that moves at once: 30 boxes, balls and cylinders falling onto a bin and each
 /// other (two of them glued by an attachment), a three-link multibody arm driven toward targets,
@@ -52,25 +22,7 @@ fn busy_scene() -> World {
     open_box(&mut world, 0.5, 0.5);
     let mut things = Vec::new();
     for i in 0..30 {
-        let primitive = match i % 3 {
-            0 => cuboid(0.04, 0.03, 0.02),
-            1 => Primitive::Sphere { radius: 0.035 },
-            _ => Primitive::Cylinder {
-                radius: 0.03,
-                half_height: 0.04,
-            },
-        };
-        let (dx, dy) = (
-            (i % 4) as f32 * 0.03 - 0.045,
-            ((i / 4) % 3) as f32 * 0.03 - 0.03,
-        );
-        let spec = ObjectSpec::new(
-            &format!("thing_{i}"),
-            "thing.n.01",
-            vec![Part::new(primitive)],
-        )
-        .at(v(0.5 + dx, 0.5 + dy, 0.5 + 0.07 * i as f32));
-        things.push(world.add(spec).unwrap());
+        things.push(world.add(column_thing(i, 0.5, 0.07)).unwrap());
     }
     let glued_at = world.pose(things[0]).translation;
     world
@@ -83,7 +35,7 @@ fn busy_scene() -> World {
             max_force: 1000.0,
         })
         .unwrap();
-    let arm = arm(&mut world, -2.0, 2.0);
+    let arm = multibody_arm(&mut world, -2.0, 2.0);
     for (k, target) in [0.5, -0.3, 0.4].into_iter().enumerate() {
         world
             .core_mut()

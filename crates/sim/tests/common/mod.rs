@@ -3,7 +3,9 @@
 #![allow(dead_code)]
 
 use behavior_core::RoomType;
-use behavior_sim::{ObjectId, ObjectSpec, Part, Primitive, Room, World};
+use behavior_sim::{
+    JointKind, JointModel, JointSpec, LinkSpec, ObjectId, ObjectSpec, Part, Primitive, Room, World,
+};
 use rapier3d::math::Vector;
 
 pub fn v(x: f32, y: f32, z: f32) -> Vector {
@@ -142,7 +144,7 @@ pub fn settle(world: &mut World, seconds: f32) {
 }
 
 use behavior_core::{Ability, ParamValue};
-use behavior_sim::{JointKind, JointSpec, LinkSpec, PointKind};
+use behavior_sim::PointKind;
 
 pub fn num(x: f32) -> ParamValue {
     ParamValue::Number(f64::from(x))
@@ -329,4 +331,57 @@ pub fn microwave(world: &mut World, x: f32, y: f32) -> ObjectId {
             ],
         );
     world.add(spec).unwrap()
+}
+
+/// A post at (x, y) with a three-link arm whose revolute joints turn about y (so gravity loads
+/// them), each link a 0.3 m bar along x, on multibody joints.
+pub fn multibody_arm(world: &mut World, x: f32, y: f32) -> ObjectId {
+    let mut spec = ObjectSpec::new(
+        "arm",
+        "robot.n.01",
+        vec![Part::at(cuboid(0.05, 0.05, 0.5), v(0.0, 0.0, 0.5))],
+    )
+    .at(v(x, y, 0.0))
+    .fixed();
+    for k in 0..3 {
+        let x0 = 0.3 * k as f32;
+        spec = spec.link(LinkSpec {
+            name: format!("link_{k}"),
+            parts: vec![Part::at(cuboid(0.15, 0.02, 0.02), v(x0 + 0.15, 0.0, 1.0))],
+            parent: if k == 0 { None } else { Some(k - 1) },
+            joint: JointSpec {
+                kind: JointKind::Revolute,
+                model: JointModel::Multibody,
+                anchor: v(x0, 0.0, 1.0),
+                axis: v(0.0, 1.0, 0.0),
+                limits: Some([-2.5, 2.5]),
+                damping: 0.0,
+            },
+            density: 500.0,
+        });
+    }
+    world.add(spec).unwrap()
+}
+
+/// The `i`-th of a column of boxes, balls and cylinders over (0.5, 0.5) — the open box's place —
+/// at `base + gap · i` high, a little off the column's axis so that they collide and tumble.
+pub fn column_thing(i: usize, base: f32, gap: f32) -> ObjectSpec {
+    let primitive = match i % 3 {
+        0 => cuboid(0.04, 0.03, 0.02),
+        1 => Primitive::Sphere { radius: 0.035 },
+        _ => Primitive::Cylinder {
+            radius: 0.03,
+            half_height: 0.04,
+        },
+    };
+    let (dx, dy) = (
+        (i % 4) as f32 * 0.03 - 0.045,
+        ((i / 4) % 3) as f32 * 0.03 - 0.03,
+    );
+    ObjectSpec::new(
+        &format!("thing_{i}"),
+        "thing.n.01",
+        vec![Part::new(primitive)],
+    )
+    .at(v(0.5 + dx, 0.5 + dy, base + gap * i as f32))
 }

@@ -35,6 +35,9 @@ pub struct BenchEnvArgs {
     /// Timed steps per configuration with images (the eye's RGB, depth and segmentation).
     #[arg(long, default_value_t = 300)]
     image_steps: u32,
+    /// Only these activities (repeat the flag for several); default: the three of the original.
+    #[arg(long = "activity", value_name = "NAME")]
+    activities: Vec<String>,
     /// Only the state-only configurations: no rendering.
     #[arg(long)]
     state_only: bool,
@@ -89,12 +92,17 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let taxonomy = Arc::new(prelude.knowledge.taxonomy.clone());
     let mut rows = Vec::new();
     let mut memory = 0.0f64;
+    let names: Vec<&str> = if args.activities.is_empty() {
+        ACTIVITIES.to_vec()
+    } else {
+        args.activities.iter().map(String::as_str).collect()
+    };
     let bar = if args.json {
         ProgressBar::hidden()
     } else {
-        ProgressBar::new(ACTIVITIES.len() as u64 * 12)
+        ProgressBar::new(names.len() as u64 * 12)
     };
-    for name in ACTIVITIES {
+    for name in names {
         let activity = Arc::new(prelude.activity(name)?);
         let home = first_covering(&activity, &library, &prelude.knowledge.taxonomy)?;
         let home = with_clutter(home, &library, true)?;

@@ -15,6 +15,7 @@ mod replay;
 mod run;
 mod sample;
 mod scene;
+mod video;
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;

@@ -9,8 +9,7 @@ use behavior_env::{Agent, Env, categories};
 use behavior_render::{
     Camera, CategoryTable, Frame, Modality, Pixels, Renderer, Scene, View, save_npy, save_png,
 };
-use behavior_sim::{BodyKind, World};
-use rapier3d::math::Vector;
+use behavior_sim::World;
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -67,34 +66,6 @@ struct Report {
     legend: Legend,
 }
 
-/// A camera above the home's middle, looking straight down, that takes in every fixed object
-/// (walls, floors, furniture).
-fn overview(world: &World, size: u32) -> Result<Camera> {
-    let fov = 60f32.to_radians();
-    let boxes = world
-        .objects()
-        .filter(|(_, o)| o.is_present() && o.body_kind == BodyKind::Fixed)
-        .map(|(id, _)| world.aabb(id));
-    let (lo, hi) = boxes.fold(
-        (Vector::splat(f32::MAX), Vector::splat(f32::MIN)),
-        |(lo, hi), b| (lo.min(b.mins), hi.max(b.maxs)),
-    );
-    if lo.x > hi.x {
-        bail!("the home has no fixed objects to frame");
-    }
-    let centre = (lo + hi) * 0.5;
-    let half = 0.5 * (hi.x - lo.x).max(hi.y - lo.y);
-    let height = hi.z + 1.05 * half / (0.5 * fov).tan();
-    let from = Vector::new(centre.x, centre.y, height);
-    Ok(Camera::looking_at(
-        from,
-        Vector::new(centre.x, centre.y, 0.0),
-        size,
-        size,
-        fov,
-    ))
-}
-
 fn camera(args: &RenderArgs, env: &Env) -> Result<Camera> {
     let (world, robot) = (
         env.world().context("no episode")?,
@@ -107,12 +78,13 @@ fn camera(args: &RenderArgs, env: &Env) -> Result<Camera> {
             height: args.size,
             vertical_fov: behavior_render::EYE_FOV,
         }),
-        "overview" => overview(world, args.size),
+        "overview" => Ok(Camera::overview(world, args.size, args.size)?),
         other => bail!("--camera must be eye or overview, not `{other}`"),
     }
 }
 
-fn render_now(
+/// Draws `env`'s world from `view`, the activity's objects highlighted.
+pub fn draw(
     env: &Env,
     view: &mut View,
     renderer: &mut Renderer,
@@ -154,13 +126,13 @@ pub fn render(args: RenderArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         if k + 1 == args.steps {
             // The frame before the last step, so that the flow shows that step's motion.
             view.camera = camera(&args, &env)?;
-            render_now(&env, &mut view, &mut renderer, &table, &modalities)?;
+            draw(&env, &mut view, &mut renderer, &table, &modalities)?;
         }
         agent.act(dim, &mut action);
         env.step(&action)?;
     }
     view.camera = camera(&args, &env)?;
-    let frame = render_now(&env, &mut view, &mut renderer, &table, &modalities)?;
+    let frame = draw(&env, &mut view, &mut renderer, &table, &modalities)?;
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("cannot make {}", args.out.display()))?;
     let mut files = Vec::new();

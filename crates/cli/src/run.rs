@@ -3,9 +3,10 @@
 use crate::episode::{Built, EpisodeArgs};
 use crate::plot::plot_episode;
 use crate::prelude::Prelude;
+use crate::video::Video;
 use anyhow::{Context, Result};
 use behavior_env::record::{CHECKPOINT_EVERY, Recorder};
-use behavior_env::{Agent, EpisodeMetrics};
+use behavior_env::{Agent, EpisodeMetrics, categories};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -31,6 +32,13 @@ pub struct RunArgs {
     /// Draw Q and the efficiency metrics over time.
     #[arg(long, value_name = "FILE.png")]
     plot: Option<PathBuf>,
+    /// A video of the episode: the robot's eye and an overview of the home side by side, 10
+    /// frames per simulated second, as an animated GIF.
+    #[arg(long, value_name = "FILE.gif")]
+    video: Option<PathBuf>,
+    /// The video's pictures' width and height, pixels.
+    #[arg(long, default_value_t = 256)]
+    video_size: u32,
     #[arg(long)]
     json: bool,
 }
@@ -50,6 +58,9 @@ struct RunReport {
     metrics: EpisodeMetrics,
     wall_s: f64,
     steps_per_second: f64,
+    /// Frames in the `--video` file, when one was asked for.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    video_frames: Option<u32>,
 }
 
 pub fn run(args: RunArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
@@ -69,6 +80,15 @@ pub fn run(args: RunArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         )?),
         None => None,
     };
+    let mut video = match &args.video {
+        Some(path) => {
+            let table = categories(&prelude.knowledge.taxonomy);
+            let mut video = Video::create(path, &env, args.video_size, table)?;
+            video.capture(&env, 0, env.score().map_or(0.0, |s| s.q), false)?;
+            Some(video)
+        }
+        None => None,
+    };
     let bar = progress(args.steps, args.json);
     let dim = env.robot().map_or(0, |r| r.action_dim());
     let mut action = Vec::with_capacity(dim);
@@ -79,9 +99,13 @@ pub fn run(args: RunArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         if let Some(r) = &mut recorder {
             r.record(&env, &action)?;
         }
+        let last = step.terminated || step.truncated;
+        if let Some(v) = &mut video {
+            v.capture(&env, step.info.steps, step.info.score.q, last)?;
+        }
         bar.set_message(format!("Q {:.3}", step.info.score.q));
         bar.inc(1);
-        if step.terminated || step.truncated {
+        if last {
             break;
         }
     }
@@ -90,6 +114,7 @@ pub fn run(args: RunArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     if let Some(r) = recorder {
         r.finish()?;
     }
+    let frames = video.map(Video::finish).transpose()?;
     let metrics = env.metrics().context("no episode")?;
     if let (Some(path), Some(series)) = (&args.plot, env.series()) {
         plot_episode(series, &e.activity, path)?;
@@ -108,6 +133,7 @@ pub fn run(args: RunArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         steps_per_second: f64::from(metrics.steps) / wall_s.max(1e-9),
         metrics,
         wall_s,
+        video_frames: frames,
     };
     if args.json {
         println!("{}", serde_json::to_string_pretty(&report)?);
@@ -151,5 +177,8 @@ fn print_report(r: &RunReport, args: &RunArgs) {
     }
     if let Some(path) = &args.plot {
         println!("  plotted to {}", path.display());
+    }
+    if let (Some(path), Some(frames)) = (&args.video, r.video_frames) {
+        println!("  video of {frames} frames in {}", path.display());
     }
 }

@@ -1,7 +1,7 @@
 //! What an environment is made of: the activity, the homes, where instances come from, the
 //! robot, the time steps, the observations and the reward.
 
-use crate::sensors::CameraConfig;
+use crate::sensors::{CameraConfig, FixedCamera};
 use behavior_assets::Scene;
 use behavior_bddl::{Activity, Taxonomy};
 use behavior_robots::{ActionSpace, RobotKind};
@@ -38,6 +38,8 @@ pub struct Observations {
     /// under its modality's name (`rgb`, `depth`, `normal`, `seg`, `ins_seg`, `highlight`,
     /// `flow`, `scene_flow`).
     pub camera: Option<CameraConfig>,
+    /// Cameras fixed in the home, each reading under `NAME/MODALITY` (`overview/rgb`).
+    pub fixed_cameras: Vec<FixedCamera>,
     /// A lidar's range image, under `lidar` (see [`crate::LidarSensor`]).
     pub lidar: bool,
 }
@@ -49,6 +51,7 @@ impl Default for Observations {
             proprioception: true,
             task_obs: true,
             camera: None,
+            fixed_cameras: Vec::new(),
             lidar: false,
         }
     }

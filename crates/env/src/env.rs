@@ -232,9 +232,11 @@ impl Env {
         }
         let wanted = &self.config.observations;
         let mut onboard: Vec<Box<dyn Sensor>> = Vec::new();
-        if let Some(camera) = &wanted.camera {
+        if wanted.camera.is_some() || !wanted.fixed_cameras.is_empty() {
             let categories = categories(&self.config.taxonomy);
-            onboard.push(Box::new(CameraSensor::new(camera.clone(), categories)?));
+            let cameras =
+                CameraSensor::new(wanted.camera.clone(), &wanted.fixed_cameras, categories)?;
+            onboard.push(Box::new(cameras));
         }
         if wanted.lidar {
             onboard.push(Box::new(LidarSensor));

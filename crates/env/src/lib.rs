@@ -60,5 +60,5 @@ pub use observation::{
     Obs, Reading, Sensor, SensorInput, TASK_OBJECT_DIM, TASK_OBJECTS, TASK_OBS_DIM,
 };
 pub use score::Score;
-pub use sensors::{CameraConfig, CameraSensor, LidarSensor, categories};
+pub use sensors::{CameraConfig, CameraSensor, FixedCamera, LidarSensor, Placement, categories};
 pub use timing::StepTimings;

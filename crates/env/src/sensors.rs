@@ -1,5 +1,6 @@
-//! The on-board sensors an [`crate::EnvConfig`] asks for: the robot's camera (the BehaviorRobot's
-//! eye, Fetch's head camera) drawn by `behavior-render`, and a lidar.
+//! The sensors an [`crate::EnvConfig`] asks for: the robot's camera (the BehaviorRobot's eye,
+//! Fetch's head camera) and fixed cameras in the home (an overview for people, or at a pose),
+//! drawn by `behavior-render`, and a lidar.
 //!
 //! The camera highlights the activity's objects (its `highlight` mask) and labels pixels from one
 //! category table for every activity: the taxonomy's synsets plus the homes' structural ones
@@ -57,31 +58,114 @@ impl Default for CameraConfig {
     }
 }
 
-/// The robot's camera as a [`Sensor`].
-pub struct CameraSensor {
-    renderer: Renderer,
-    view: View,
-    config: CameraConfig,
-    categories: CategoryTable,
+/// Where an extra camera stands.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Placement {
+    /// Above the home, looking down on all of it ([`Camera::overview`]): for people watching an
+    /// episode. Placed anew at each reset, as homes differ.
+    Overview,
+    /// Fixed in the world at this pose (camera frame: x forward, y left, z up).
+    At(Pose),
 }
 
-impl CameraSensor {
-    /// A camera that renders `config`'s images, its ids from `categories`.
-    pub fn new(
-        config: CameraConfig,
-        categories: CategoryTable,
-    ) -> Result<CameraSensor, RenderError> {
+/// A camera beside the robot's, fixed in the home.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FixedCamera {
+    /// Its readings are under `NAME/MODALITY` (`overview/rgb`).
+    pub name: String,
+    /// Where it stands.
+    pub placement: Placement,
+    /// What it delivers.
+    pub config: CameraConfig,
+}
+
+/// Where one of a [`CameraSensor`]'s cameras is.
+#[derive(Clone, Copy, Debug)]
+enum Mount {
+    Robot,
+    Overview,
+    At(Pose),
+}
+
+/// One camera: where it is, what it delivers, what it saw last.
+struct Rig {
+    /// Prepended to its readings' keys (empty for the robot's camera).
+    prefix: String,
+    mount: Mount,
+    config: CameraConfig,
+    view: View,
+    /// Whether an overview was placed in this episode's home.
+    placed: bool,
+}
+
+impl Rig {
+    fn new(prefix: String, mount: Mount, config: CameraConfig) -> Result<Rig, RenderError> {
         let camera = Camera {
-            pose: Pose::IDENTITY,
+            pose: match mount {
+                Mount::At(pose) => pose,
+                Mount::Robot | Mount::Overview => Pose::IDENTITY,
+            },
             width: config.width,
             height: config.height,
             vertical_fov: config.vertical_fov,
         };
         camera.check()?;
+        Ok(Rig {
+            prefix,
+            mount,
+            config,
+            view: View::new(camera),
+            placed: false,
+        })
+    }
+
+    /// Moves the camera to where its mount is now.
+    fn place(&mut self, input: &SensorInput) -> Result<(), RenderError> {
+        let camera = &mut self.view.camera;
+        match self.mount {
+            Mount::Robot => camera.pose = input.robot.camera_pose(input.world),
+            Mount::Overview if !self.placed => {
+                *camera = Camera::overview(input.world, camera.width, camera.height)?;
+                camera.vertical_fov = self.config.vertical_fov;
+            }
+            Mount::Overview | Mount::At(_) => {}
+        }
+        self.placed = true;
+        Ok(())
+    }
+}
+
+/// The cameras of an [`crate::EnvConfig`] as one [`Sensor`]: the robot's and the fixed ones,
+/// drawn by one renderer.
+pub struct CameraSensor {
+    renderer: Renderer,
+    rigs: Vec<Rig>,
+    categories: CategoryTable,
+}
+
+impl CameraSensor {
+    /// The robot's camera (`robot`, its readings under the modalities' names) and `fixed`
+    /// cameras, rendering their ids from `categories`.
+    pub fn new(
+        robot: Option<CameraConfig>,
+        fixed: &[FixedCamera],
+        categories: CategoryTable,
+    ) -> Result<CameraSensor, RenderError> {
+        let mut rigs = Vec::new();
+        if let Some(config) = robot {
+            rigs.push(Rig::new(String::new(), Mount::Robot, config)?);
+        }
+        for camera in fixed {
+            let mount = match camera.placement {
+                Placement::Overview => Mount::Overview,
+                Placement::At(pose) => Mount::At(pose),
+            };
+            let prefix = format!("{}/", camera.name);
+            rigs.push(Rig::new(prefix, mount, camera.config.clone())?);
+        }
         Ok(CameraSensor {
             renderer: Renderer::new()?,
-            view: View::new(camera),
-            config,
+            rigs,
             categories,
         })
     }
@@ -93,7 +177,10 @@ impl Sensor for CameraSensor {
     }
 
     fn reset(&mut self) {
-        self.view.forget();
+        for rig in &mut self.rigs {
+            rig.view.forget();
+            rig.placed = false;
+        }
     }
 
     fn observe(
@@ -101,7 +188,6 @@ impl Sensor for CameraSensor {
         input: &SensorInput,
         out: &mut Vec<(String, Reading)>,
     ) -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
-        self.view.camera.pose = input.robot.camera_pose(input.world);
         let highlight: Vec<_> = input.bindings.iter().flatten().copied().collect();
         let scene = Scene {
             world: input.world,
@@ -109,16 +195,19 @@ impl Sensor for CameraSensor {
             highlight: &highlight,
             hidden: &[],
         };
-        let frame = self
-            .renderer
-            .render(&scene, &mut self.view, &self.config.modalities)?;
-        out.extend(frame.images.into_iter().map(|image| {
-            let reading = Reading {
-                shape: image.shape,
-                data: image.pixels,
-            };
-            (image.modality.name().to_string(), reading)
-        }));
+        for rig in &mut self.rigs {
+            rig.place(input)?;
+            let frame = self
+                .renderer
+                .render(&scene, &mut rig.view, &rig.config.modalities)?;
+            out.extend(frame.images.into_iter().map(|image| {
+                let reading = Reading {
+                    shape: image.shape,
+                    data: image.pixels,
+                };
+                (format!("{}{}", rig.prefix, image.modality.name()), reading)
+            }));
+        }
         Ok(())
     }
 }

@@ -2,7 +2,7 @@
 
 mod common;
 
-use behavior_env::{CameraConfig, Env, Obs, Reading, categories};
+use behavior_env::{CameraConfig, Env, FixedCamera, Obs, Placement, Reading, categories};
 use behavior_render::{Modality, Pixels};
 use common::*;
 
@@ -107,4 +107,117 @@ fn fetch_s_head_camera_and_base_laser_follow_it_as_it_turns() {
 /// The first observation of the same episode again.
 fn first_again(env: &mut Env) -> Obs {
     env.reset(0).unwrap().0
+}
+
+#[test]
+fn fixed_cameras_stand_still_and_the_overview_takes_in_the_home() {
+    let mut config = config("re-shelving_library_books");
+    let modalities = vec![Modality::Rgb, Modality::Depth, Modality::InsSeg];
+    let eye = CameraConfig {
+        modalities: modalities.clone(),
+        ..CameraConfig::default()
+    };
+    config.observations.camera = Some(eye.clone());
+    // Where the eye is at the start of this episode.
+    let mut probe = Env::new(config.clone());
+    probe.reset(0).unwrap();
+    let start = probe.robot().unwrap().camera_pose(probe.world().unwrap());
+    config.observations.fixed_cameras = vec![
+        FixedCamera {
+            name: "still".into(),
+            placement: Placement::At(start),
+            config: eye,
+        },
+        FixedCamera {
+            name: "overview".into(),
+            placement: Placement::Overview,
+            config: CameraConfig {
+                modalities,
+                width: 96,
+                height: 64,
+                vertical_fov: 60f32.to_radians(),
+            },
+        },
+    ];
+    let mut env = Env::new(config);
+    let (first, _) = env.reset(0).unwrap();
+    // Standing where the eye stands, the fixed camera sees what the eye sees.
+    assert_eq!(get(&first, "still/rgb"), get(&first, "rgb"));
+    assert_eq!(get(&first, "overview/rgb").shape, vec![64, 96, 3]);
+    let Pixels::U32(ins) = &get(&first, "overview/ins_seg").data else {
+        panic!("ins_seg is u32")
+    };
+    let world = env.world().unwrap();
+    let seen: std::collections::BTreeSet<u32> = ins.iter().copied().filter(|&i| i > 0).collect();
+    let floors = seen
+        .iter()
+        .filter(|&&i| world.object(behavior_sim::ObjectId(i - 1)).category == "floor.n.01")
+        .count();
+    assert!(
+        seen.len() >= 20 && floors >= 1,
+        "the overview sees {} objects, {floors} floors",
+        seen.len()
+    );
+    // The robot turns for a third of a second: its eye's view changes, the fixed one's hardly.
+    let mut action = vec![0.0; env.robot().unwrap().action_dim()];
+    action[5] = 1.0;
+    let mut last = first.clone();
+    for _ in 0..10 {
+        last = env.step(&action).unwrap().obs;
+    }
+    let same = |key: &str| {
+        let (Pixels::F32(a), Pixels::F32(b)) = (&get(&first, key).data, &get(&last, key).data)
+        else {
+            panic!("depth is f32")
+        };
+        a.iter().zip(b).filter(|(x, y)| x == y).count() as f64 / a.len() as f64
+    };
+    assert!(
+        same("still/depth") > 0.9,
+        "the fixed camera's depth: {:.3} unchanged",
+        same("still/depth")
+    );
+    assert!(
+        same("depth") < 0.5,
+        "the eye's depth: {:.3} unchanged",
+        same("depth")
+    );
+}
+
+#[test]
+fn occlusion_culling_leaves_the_eye_s_images_as_they_are_in_furnished_homes() {
+    use behavior_render::{Camera, Renderer, Scene, View};
+    let mut culled_somewhere = 0;
+    let mut renderer = Renderer::new().unwrap();
+    for name in [
+        "bringing_in_wood",
+        "re-shelving_library_books",
+        "laying_tile_floors",
+    ] {
+        let mut env = Env::new(config(name));
+        env.reset(0).unwrap();
+        let world = env.world().unwrap();
+        let camera = Camera::eye(env.robot().unwrap().camera_pose(world));
+        let table = categories(&common::taxonomy());
+        let scene = Scene {
+            world,
+            categories: &table,
+            highlight: &[],
+            hidden: &[],
+        };
+        let mut frames = Vec::new();
+        for cull in [true, false] {
+            renderer.set_occlusion_culling(cull);
+            let mut view = View::new(camera);
+            frames.push(renderer.render(&scene, &mut view, &Modality::ALL).unwrap());
+            if cull {
+                culled_somewhere += renderer.stats().culled;
+            }
+        }
+        assert_eq!(
+            frames[0], frames[1],
+            "{name}: culling changed the eye's images"
+        );
+    }
+    assert!(culled_somewhere > 0, "nothing was culled in three homes");
 }

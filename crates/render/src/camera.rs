@@ -5,6 +5,7 @@
 //! image and +z up. Pixels are counted from the top-left corner, x to the right, y down.
 
 use crate::error::RenderError;
+use behavior_sim::{BodyKind, World};
 use rapier3d::glamx::{Mat4, Vec4};
 use rapier3d::math::{Pose, Vector};
 use serde::{Deserialize, Serialize};
@@ -69,6 +70,41 @@ impl Camera {
             height,
             vertical_fov,
         }
+    }
+
+    /// A camera for people: above the middle of the world's fixed objects (a home's walls,
+    /// floors and furniture), looking straight down with a 60° field of view, far enough up to
+    /// take them all in. Fails for a world with no fixed objects.
+    pub fn overview(world: &World, width: u32, height: u32) -> Result<Camera, RenderError> {
+        let fov = 60f32.to_radians();
+        let (lo, hi) = world
+            .objects()
+            .filter(|(_, o)| o.is_present() && o.body_kind == BodyKind::Fixed)
+            .map(|(id, _)| world.aabb(id))
+            .fold(
+                (Vector::splat(f32::MAX), Vector::splat(f32::MIN)),
+                |(lo, hi), b| (lo.min(b.mins), hi.max(b.maxs)),
+            );
+        if lo.x > hi.x {
+            return Err(RenderError::BadCamera(
+                "an overview needs fixed objects to frame; the world has none".into(),
+            ));
+        }
+        let centre = (lo + hi) * 0.5;
+        // Looking down, the image's height spans the world's x and its width the world's y: the
+        // half-height that takes in both.
+        let aspect = width as f32 / height.max(1) as f32;
+        let half = 0.5 * (hi.x - lo.x).max((hi.y - lo.y) / aspect);
+        let from = Vector::new(centre.x, centre.y, hi.z + 1.05 * half / (0.5 * fov).tan());
+        let camera = Camera::looking_at(
+            from,
+            Vector::new(centre.x, centre.y, 0.0),
+            width,
+            height,
+            fov,
+        );
+        camera.check()?;
+        Ok(camera)
     }
 
     /// Checks that it can be drawn from: a finite pose, a size of 1–8192 pixels each way, a

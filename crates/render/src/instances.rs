@@ -5,12 +5,12 @@ use crate::appearance::{DUST, Look, STAIN, Shown, WATER, look};
 use crate::camera::Camera;
 use crate::categories::{CategoryTable, DUST_CATEGORY, STAIN_CATEGORY, WATER_CATEGORY};
 use crate::mesh::{Drawn, MeshStore, contains};
+use crate::occlusion::Occlusion;
 use behavior_core::Predicate;
 use behavior_sim::{Material, ObjectId, Primitive, VisualShape, World};
 use bytemuck::{Pod, Zeroable};
 use rapier3d::glamx::{Mat3, Mat4, Vec4};
 use rapier3d::math::{Pose, Vector};
-use std::collections::BTreeMap;
 
 /// What is drawn and how it is labelled.
 pub struct Scene<'a> {
@@ -43,11 +43,21 @@ pub(crate) enum Key {
     Drop(u32),
 }
 
+/// Every part's transform in one frame, sorted by key.
+pub(crate) type Models = Vec<(Key, [[f32; 4]; 3])>;
+
 /// The transforms of one frame, for the next frame's flow.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct History {
     pub(crate) view_projection: Mat4,
-    pub(crate) models: BTreeMap<Key, [[f32; 4]; 3]>,
+    pub(crate) models: Models,
+}
+
+impl History {
+    fn model(&self, key: Key) -> Option<[[f32; 4]; 3]> {
+        let k = self.models.binary_search_by_key(&key, |(k, _)| *k).ok()?;
+        Some(self.models[k].1)
+    }
 }
 
 /// One frame's instances, grouped: `draws` holds (mesh, first instance, count).
@@ -55,7 +65,10 @@ pub(crate) struct History {
 pub(crate) struct Batch {
     pub(crate) instances: Vec<Instance>,
     pub(crate) draws: Vec<(u32, u32, u32)>,
-    pub(crate) models: BTreeMap<Key, [[f32; 4]; 3]>,
+    /// Every part's transform, drawn or not, for the next frame's flow.
+    pub(crate) models: Models,
+    /// Instances left out as hidden behind others.
+    pub(crate) culled: usize,
 }
 
 /// Rows of the affine transform `pose · scale`.
@@ -102,31 +115,71 @@ pub(crate) struct Gatherer<'a> {
     pub(crate) camera: &'a Camera,
     pub(crate) meshes: &'a mut MeshStore,
     pub(crate) previous: Option<&'a History>,
+    /// Whether to leave out what big boxes hide (see `occlusion.rs`).
+    pub(crate) cull: bool,
 }
 
 /// One instance before it is grouped by mesh.
 struct Pending {
     mesh: u32,
+    /// A ball that holds it: centre and radius, m.
+    centre: Vector,
+    reach: f32,
     /// How near to the camera it may come, m: instances are drawn nearest first, so that the
     /// depth test spares the shading of what they hide.
     near: f32,
-    key: Key,
+    /// A big box (a wall, a floor): drawn after everything else, which mostly stands in front
+    /// of it, so that its hidden pixels are not shaded.
+    backdrop: bool,
     instance: Instance,
+}
+
+/// What one gathering pass collects.
+#[derive(Default)]
+struct Gathered {
+    pending: Vec<Pending>,
+    /// Big opaque boxes that are drawn: pose and half extents.
+    occluders: Vec<(Pose, Vector)>,
+    models: Models,
 }
 
 impl Gatherer<'_> {
     pub(crate) fn gather(mut self) -> Batch {
         let planes = frustum(&self.camera.view_projection());
-        let mut pending = Vec::new();
+        // Room for a frame like the last one, so that the lists do not grow part by part.
+        let parts = self.previous.map_or(0, |h| h.models.len());
+        let mut out = Gathered {
+            pending: Vec::with_capacity(parts),
+            occluders: Vec::with_capacity(parts / 4),
+            models: Vec::with_capacity(parts),
+        };
         for (id, object) in self.scene.world.objects() {
             if !object.is_present() || self.scene.hidden.contains(&id) {
                 continue;
             }
-            self.object(id, &planes, &mut pending);
+            self.object(id, &planes, &mut out);
         }
-        self.particles(&planes, &mut pending);
-        self.drops(&planes, &mut pending);
-        group(pending)
+        self.particles(&planes, &mut out);
+        self.drops(&planes, &mut out);
+        let before = out.pending.len();
+        if self.cull {
+            let mut occlusion = Occlusion::new(self.camera);
+            // Nearest first, so that a wall behind another costs only the test that skips it.
+            let eye = self.camera.pose.translation;
+            out.occluders
+                .sort_by(|a, b| distance(a, eye).total_cmp(&distance(b, eye)));
+            for (pose, half_extents) in &out.occluders {
+                if !occlusion.hides(pose.translation, half_extents.length()) {
+                    occlusion.add_box(pose, *half_extents);
+                }
+            }
+            out.pending.retain(|p| !occlusion.hides(p.centre, p.reach));
+        }
+        let culled = before - out.pending.len();
+        Batch {
+            culled,
+            ..group(out.pending, out.models)
+        }
     }
 
     fn ids(&self, id: ObjectId, category: &str) -> [u32; 2] {
@@ -144,10 +197,7 @@ impl Gatherer<'_> {
         ids: [u32; 2],
     ) -> Instance {
         let model = rows(pose, scale);
-        let previous = self
-            .previous
-            .and_then(|h| h.models.get(&key).copied())
-            .unwrap_or(model);
+        let previous = self.previous.and_then(|h| h.model(key)).unwrap_or(model);
         let [r, g, b] = look.albedo;
         Instance {
             model,
@@ -158,37 +208,47 @@ impl Gatherer<'_> {
         }
     }
 
-    fn object(&mut self, id: ObjectId, planes: &[Vec4; 6], out: &mut Vec<Pending>) {
+    fn object(&mut self, id: ObjectId, planes: &[Vec4; 6], out: &mut Gathered) {
         let world = self.scene.world;
         let ids = self.ids(id, &world.object(id).category);
         let shown = Shown::of(world, id);
         let eye = self.camera.pose.translation;
         for (k, part) in world.core().visual_parts(id).iter().enumerate() {
             let drawn = Drawn::of(&part.shape);
+            let key = Key::Part(id.0, k as u32);
+            out.models.push((key, rows(&part.pose, drawn.scale)));
             let centre = part.pose.translation;
             if !visible(planes, centre, drawn.reach) {
                 continue;
             }
-            if let VisualShape::Primitive(p) = part.shape
-                && contains(p, part.pose.inverse_transform_point(eye))
-            {
-                continue;
+            let mut backdrop = false;
+            if let VisualShape::Primitive(p) = part.shape {
+                if contains(p, part.pose.inverse_transform_point(eye)) {
+                    continue;
+                }
+                if let Primitive::Box { half_extents } = *p
+                    && Occlusion::worth(&part.pose, half_extents)
+                {
+                    out.occluders.push((part.pose, half_extents));
+                    backdrop = true;
+                }
             }
             let mesh = self.meshes.id(drawn.key, &part.shape);
             let look = look(part.visual.color, part.visual.material, shown);
-            let key = Key::Part(id.0, k as u32);
             let instance = self.instance(key, &part.pose, drawn.scale, look, ids);
-            out.push(Pending {
+            out.pending.push(Pending {
                 mesh,
+                centre,
+                reach: drawn.reach,
                 near: (centre - eye).length() - drawn.reach,
-                key,
+                backdrop,
                 instance,
             });
         }
     }
 
     /// Dust as small grey balls, stains as thin dark discs lying flat.
-    fn particles(&mut self, planes: &[Vec4; 6], out: &mut Vec<Pending>) {
+    fn particles(&mut self, planes: &[Vec4; 6], out: &mut Gathered) {
         let world = self.scene.world;
         let kinds = [
             (
@@ -225,7 +285,7 @@ impl Gatherer<'_> {
         }
     }
 
-    fn drops(&mut self, planes: &[Vec4; 6], out: &mut Vec<Pending>) {
+    fn drops(&mut self, planes: &[Vec4; 6], out: &mut Gathered) {
         let drops = self.scene.world.drops();
         if drops.is_empty() {
             return;
@@ -248,26 +308,34 @@ impl Gatherer<'_> {
         at: &[Vector],
         key: impl Fn(u32) -> Key,
         planes: &[Vec4; 6],
-        out: &mut Vec<Pending>,
+        out: &mut Gathered,
     ) {
         let shape = VisualShape::Primitive(dots.shape);
         let drawn = Drawn::of(&shape);
         let mesh = self.meshes.id(drawn.key, &shape);
         for (n, &p) in at.iter().enumerate() {
+            let key = key(n as u32);
+            let pose = Pose::from_translation(p);
+            out.models.push((key, rows(&pose, drawn.scale)));
             if !visible(planes, p, drawn.reach) {
                 continue;
             }
-            let key = key(n as u32);
-            let pose = Pose::from_translation(p);
             let instance = self.instance(key, &pose, drawn.scale, dots.look, dots.ids);
-            out.push(Pending {
+            out.pending.push(Pending {
                 mesh,
+                centre: p,
+                reach: drawn.reach,
                 near: (p - self.camera.pose.translation).length(),
-                key,
+                backdrop: false,
                 instance,
             });
         }
     }
+}
+
+/// How far an occluder's centre is from `eye`, m.
+fn distance(occluder: &(Pose, Vector), eye: Vector) -> f32 {
+    (occluder.0.translation - eye).length()
 }
 
 /// Small things drawn at points (dust, stains, drops): one shape, look and ids for all.
@@ -277,18 +345,29 @@ struct Dots<'a> {
     ids: [u32; 2],
 }
 
-/// Sorts instances by mesh, nearest first within a mesh (stably: ties keep the world's order),
-/// into draws.
-fn group(mut pending: Vec<Pending>) -> Batch {
-    pending.sort_by(|a, b| a.mesh.cmp(&b.mesh).then(a.near.total_cmp(&b.near)));
-    let mut batch = Batch::default();
-    for p in pending {
+/// Sorts instances into draws: backdrops last, then by mesh, nearest first within a mesh
+/// (stably: ties keep the world's order).
+fn group(pending: Vec<Pending>, mut models: Models) -> Batch {
+    // Gathered in key order already (objects, then particles, then drops), so this only checks.
+    models.sort_by_key(|(k, _)| *k);
+    let mut order: Vec<(bool, u32, f32, usize)> = pending
+        .iter()
+        .enumerate()
+        .map(|(k, p)| (p.backdrop, p.mesh, p.near, k))
+        .collect();
+    order.sort_by(|a, b| (a.0, a.1).cmp(&(b.0, b.1)).then(a.2.total_cmp(&b.2)));
+    let mut batch = Batch {
+        models,
+        ..Batch::default()
+    };
+    let mut last = None;
+    for (backdrop, mesh, _, k) in order {
         match batch.draws.last_mut() {
-            Some((mesh, _, count)) if *mesh == p.mesh => *count += 1,
-            _ => batch.draws.push((p.mesh, batch.instances.len() as u32, 1)),
+            Some((_, _, count)) if last == Some((backdrop, mesh)) => *count += 1,
+            _ => batch.draws.push((mesh, batch.instances.len() as u32, 1)),
         }
-        batch.models.insert(p.key, p.instance.model);
-        batch.instances.push(p.instance);
+        last = Some((backdrop, mesh));
+        batch.instances.push(pending[k].instance);
     }
     batch
 }

@@ -100,19 +100,31 @@ impl Drawn {
     }
 }
 
-/// FNV-1a over the bits of some numbers.
-fn fnv(words: impl Iterator<Item = u32>) -> u64 {
-    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for w in words {
-        for b in w.to_le_bytes() {
-            h = (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
-        }
+/// A 64-bit hash of some numbers' bits, quick enough to run on every part every frame: four
+/// lanes of xor-and-multiply that do not wait on each other, folded at the end. (Byte-wise
+/// FNV-1a, used before, took a third of a frame's gathering in a furnished home.)
+fn hash_words(words: impl Iterator<Item = u32>) -> u64 {
+    const K: u64 = 0x9e37_79b9_7f4a_7c15;
+    let mut lanes: [u64; 4] = [
+        0x243f_6a88_85a3_08d3,
+        0x1319_8a2e_0370_7344,
+        0xa409_3822_299f_31d0,
+        0x082e_fa98_ec4e_6c89,
+    ];
+    let mut count = 0u64;
+    for (k, w) in words.enumerate() {
+        let lane = &mut lanes[k & 3];
+        *lane = (*lane ^ u64::from(w)).wrapping_mul(K);
+        count += 1;
     }
-    h
+    let h = lanes
+        .into_iter()
+        .fold(count, |h, l| (h ^ l ^ (l >> 32)).wrapping_mul(K));
+    h ^ (h >> 29)
 }
 
 fn hash_points(points: &[Vector]) -> u64 {
-    fnv(points.iter().flat_map(|p| p.to_array().map(f32::to_bits)))
+    hash_words(points.iter().flat_map(|p| p.to_array().map(f32::to_bits)))
 }
 
 fn hash_mesh(mesh: &VisualMesh) -> u64 {
@@ -120,7 +132,7 @@ fn hash_mesh(mesh: &VisualMesh) -> u64 {
         .vertices
         .iter()
         .flat_map(|p| p.to_array().map(f32::to_bits));
-    fnv(vertices.chain(mesh.triangles.iter().flatten().copied()))
+    hash_words(vertices.chain(mesh.triangles.iter().flatten().copied()))
 }
 
 /// Builds the mesh a key names; `shape` is the shape it was found for (for hulls and visual

@@ -8,7 +8,7 @@ use crate::instances::{Batch, Gatherer, History, Instance, Scene};
 use crate::mesh::{MeshStore, Vertex};
 use crate::modality::{Frame, Modality};
 use crate::pipeline::{Globals, Pipelines};
-use crate::targets::{Source, Targets, decode};
+use crate::targets::{Source, Targets};
 use rapier3d::math::Vector;
 use wgpu::util::DeviceExt;
 
@@ -44,10 +44,32 @@ pub struct Renderer {
     meshes: MeshStore,
     mesh_buffers: Option<(wgpu::Buffer, wgpu::Buffer)>,
     instances: Option<(wgpu::Buffer, usize)>,
-    targets: Option<Targets>,
+    /// Render targets, one set per image size drawn lately (a robot's eye and an overview of
+    /// another size take turns without remaking them).
+    targets: Vec<Targets>,
+    /// Whether to leave out what big boxes hide.
+    cull: bool,
+    stats: FrameStats,
 }
 
-/// The light's direction: from above, a little from the side.
+/// What the last frame drew.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FrameStats {
+    /// Instances sent to the GPU (a part, particle or drop each).
+    pub instances: usize,
+    /// Instances in the view left out as hidden behind big boxes.
+    pub culled: usize,
+    /// Triangles sent to the GPU.
+    pub triangles: u64,
+    /// Draw calls per pass.
+    pub draws: usize,
+}
+
+/// Image sizes whose targets a renderer keeps.
+const KEPT_SIZES: usize = 4;
+
+/// The light's direction in the world (the shader gets it in the camera's frame): from above, a
+/// little from the side.
 const LIGHT: Vector = Vector::new(0.3, 0.2, 0.93);
 
 impl Renderer {
@@ -62,7 +84,9 @@ impl Renderer {
             meshes: MeshStore::default(),
             mesh_buffers: None,
             instances: None,
-            targets: None,
+            targets: Vec::new(),
+            cull: true,
+            stats: FrameStats::default(),
         })
     }
 
@@ -71,6 +95,17 @@ impl Renderer {
     pub fn adapter(&self) -> String {
         let a = &self.gpu.adapter;
         format!("{} ({:?})", a.name, a.backend)
+    }
+
+    /// Turns occlusion culling on (the default) or off. Culling is conservative, so images are
+    /// the same either way, only slower without it; turning it off is for checking that.
+    pub fn set_occlusion_culling(&mut self, on: bool) {
+        self.cull = on;
+    }
+
+    /// What the last frame drew.
+    pub fn stats(&self) -> FrameStats {
+        self.stats
     }
 
     /// Draws `scene` from `view`'s camera and reads back the modalities asked for (each once, in
@@ -88,8 +123,22 @@ impl Renderer {
             camera: &camera,
             meshes: &mut self.meshes,
             previous: view.previous.as_ref(),
+            cull: self.cull,
         }
         .gather();
+        self.stats = FrameStats {
+            instances: batch.instances.len(),
+            culled: batch.culled,
+            triangles: batch
+                .draws
+                .iter()
+                .map(|&(mesh, _, count)| {
+                    let indices = self.meshes.ranges.get(mesh as usize).map_or(0, |r| r.1);
+                    u64::from(indices / 3) * u64::from(count)
+                })
+                .sum(),
+            draws: batch.draws.len(),
+        };
         self.upload(&batch, &camera, view.previous.as_ref());
         let mut wanted: Vec<Modality> = Modality::ALL
             .into_iter()
@@ -156,7 +205,9 @@ impl Renderer {
             view_projection: view_projection.to_cols_array_2d(),
             previous_view_projection: previous.to_cols_array_2d(),
             view: camera.view().to_cols_array_2d(),
-            light: LIGHT.normalize().extend(0.0).to_array(),
+            light: (camera.pose.rotation.inverse() * LIGHT.normalize())
+                .extend(0.0)
+                .to_array(),
             eye: eye.extend(1.0).to_array(),
             size: [camera.width as f32, camera.height as f32, 0.0, 0.0],
         };
@@ -172,11 +223,19 @@ impl Renderer {
         wanted: &[Modality],
     ) -> Result<Frame, RenderError> {
         let size = (camera.width, camera.height);
-        if self.targets.as_ref().is_none_or(|t| t.size() != size) {
-            self.targets = Some(Targets::new(&self.gpu.device, size.0, size.1));
-        }
+        let kept = match self.targets.iter().position(|t| t.size() == size) {
+            Some(k) => k,
+            None => {
+                if self.targets.len() == KEPT_SIZES {
+                    self.targets.remove(0);
+                }
+                self.targets
+                    .push(Targets::new(&self.gpu.device, size.0, size.1));
+                self.targets.len() - 1
+            }
+        };
         let (Some(targets), Some((vertices, indices)), Some((instances, _))) =
-            (&self.targets, &self.mesh_buffers, &self.instances)
+            (self.targets.get(kept), &self.mesh_buffers, &self.instances)
         else {
             return Err(RenderError::Gpu("buffers missing".into()));
         };
@@ -241,18 +300,18 @@ impl Renderer {
             .device
             .poll(wgpu::PollType::wait_indefinitely())
             .map_err(|e| RenderError::Gpu(e.to_string()))?;
-        let mut read = Vec::with_capacity(sources.len());
+        let mut images = Vec::with_capacity(wanted.len());
         for &s in &sources {
-            read.push((s, targets.get(s).bytes(size).map_err(RenderError::Gpu)?));
+            let from_here: Vec<Modality> = wanted
+                .iter()
+                .copied()
+                .filter(|&m| Source::of(m) == s)
+                .collect();
+            let decoded = targets.get(s).decode(&from_here, size);
+            images.extend(decoded.map_err(RenderError::Gpu)?);
         }
-        let images = wanted
-            .iter()
-            .map(|&m| {
-                let source = Source::of(m);
-                let bytes = read.iter().find(|(s, _)| *s == source).map(|(_, b)| b);
-                decode(m, bytes.map_or(&[][..], Vec::as_slice), size)
-            })
-            .collect();
+        // In `wanted`'s order, which is `Modality::ALL`'s.
+        images.sort_by_key(|i| wanted.iter().position(|&m| m == i.modality));
         Ok(Frame {
             width: size.0,
             height: size.1,

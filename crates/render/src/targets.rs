@@ -104,22 +104,30 @@ impl Target {
         self.readback.map_async(wgpu::MapMode::Read, .., |_| {});
     }
 
-    /// The texels' bytes without the row padding; the buffer must be mapped.
-    pub(crate) fn bytes(&self, (w, h): (u32, u32)) -> Result<Vec<u8>, String> {
+    /// Decodes `modalities` (all read from this target) from the mapped readback buffer,
+    /// straight from its rows, then unmaps it.
+    pub(crate) fn decode(
+        &self,
+        modalities: &[Modality],
+        (w, h): (u32, u32),
+    ) -> Result<Vec<Image>, String> {
         let row = (w * self.texel) as usize;
-        let mut out = Vec::with_capacity(row * h as usize);
-        {
+        let images = {
             let mapped = self
                 .readback
                 .get_mapped_range(..)
                 .map_err(|e| e.to_string())?;
-            for y in 0..h as usize {
-                let start = y * self.padded_row as usize;
-                out.extend_from_slice(&mapped[start..start + row]);
-            }
-        }
+            let rows = mapped
+                .chunks(self.padded_row as usize)
+                .take(h as usize)
+                .map(|r| &r[..row]);
+            modalities
+                .iter()
+                .map(|&m| decode(m, rows.clone(), (w, h)))
+                .collect()
+        };
         self.readback.unmap();
-        Ok(out)
+        Ok(images)
     }
 }
 
@@ -189,58 +197,71 @@ impl Source {
     }
 }
 
-fn floats(bytes: &[u8]) -> Vec<f32> {
-    bytes
-        .chunks_exact(4)
-        .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+/// `from` of the 4 bytes at `offset` of each texel of `size` bytes.
+fn word<'a, T>(
+    rows: impl Iterator<Item = &'a [u8]>,
+    size: usize,
+    offset: usize,
+    from: impl Fn([u8; 4]) -> T,
+) -> Vec<T> {
+    let mut out = Vec::new();
+    for row in rows {
+        out.reserve(row.len() / size);
+        for t in row.chunks_exact(size) {
+            if let Ok(bytes) = t[offset..offset + 4].try_into() {
+                out.push(from(bytes));
+            }
+        }
+    }
+    out
+}
+
+/// The first three 4-byte floats of each texel of `size` bytes.
+fn three_floats<'a>(rows: impl Iterator<Item = &'a [u8]> + Clone, size: usize) -> Vec<f32> {
+    let [x, y, z] = [0, 4, 8].map(|offset| word(rows.clone(), size, offset, f32::from_le_bytes));
+    x.iter()
+        .zip(&y)
+        .zip(&z)
+        .flat_map(|((&x, &y), &z)| [x, y, z])
         .collect()
 }
 
-fn words(bytes: &[u8]) -> Vec<u32> {
-    bytes
-        .chunks_exact(4)
-        .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]))
-        .collect()
-}
-
-/// Channels `pick` of every texel of `channels` each.
-fn every<T: Copy>(values: &[T], channels: usize, pick: &[usize]) -> Vec<T> {
-    values
-        .chunks_exact(channels)
-        .flat_map(|texel| pick.iter().map(move |&c| texel[c]))
-        .collect()
-}
-
-/// Decodes one modality from the bytes of its target.
-pub(crate) fn decode(modality: Modality, bytes: &[u8], (w, h): (u32, u32)) -> Image {
+/// Decodes one modality from the rows of its target (padding cut off).
+fn decode<'a>(
+    modality: Modality,
+    rows: impl Iterator<Item = &'a [u8]> + Clone,
+    (w, h): (u32, u32),
+) -> Image {
     let (w, h) = (w as usize, h as usize);
     let (shape, pixels) = match modality {
-        Modality::Rgb => (vec![h, w, 3], Pixels::U8(every(bytes, 4, &[0, 1, 2]))),
-        Modality::Depth => (vec![h, w], Pixels::F32(every(&floats(bytes), 4, &[3]))),
-        Modality::Normal => (
-            vec![h, w, 3],
-            Pixels::F32(every(&floats(bytes), 4, &[0, 1, 2])),
+        Modality::Rgb => {
+            let mut rgb = Vec::with_capacity(w * h * 3);
+            for row in rows {
+                for t in row.chunks_exact(4) {
+                    rgb.extend_from_slice(&t[..3]);
+                }
+            }
+            (vec![h, w, 3], Pixels::U8(rgb))
+        }
+        Modality::Depth => (
+            vec![h, w],
+            Pixels::F32(word(rows, 16, 12, f32::from_le_bytes)),
         ),
-        Modality::InsSeg => (vec![h, w], Pixels::U32(every(&words(bytes), 2, &[0]))),
+        Modality::Normal => (vec![h, w, 3], Pixels::F32(three_floats(rows, 16))),
+        Modality::InsSeg => (
+            vec![h, w],
+            Pixels::U32(word(rows, 8, 0, u32::from_le_bytes)),
+        ),
         Modality::Seg => {
-            let ids = every(&words(bytes), 2, &[1]);
-            (
-                vec![h, w],
-                Pixels::U16(ids.iter().map(|&c| (c & 0xffff) as u16).collect()),
-            )
+            let seg = word(rows, 8, 4, |b| u16::from_le_bytes([b[0], b[1]]));
+            (vec![h, w], Pixels::U16(seg))
         }
-        Modality::Highlight => {
-            let ids = every(&words(bytes), 2, &[1]);
-            (
-                vec![h, w],
-                Pixels::U8(ids.iter().map(|&c| ((c >> 16) & 1) as u8).collect()),
-            )
-        }
-        Modality::Flow => (vec![h, w, 2], Pixels::F32(floats(bytes))),
-        Modality::SceneFlow => (
-            vec![h, w, 3],
-            Pixels::F32(every(&floats(bytes), 4, &[0, 1, 2])),
+        Modality::Highlight => (vec![h, w], Pixels::U8(word(rows, 8, 4, |b| b[2] & 1))),
+        Modality::Flow => (
+            vec![h, w, 2],
+            Pixels::F32(word(rows, 4, 0, f32::from_le_bytes)),
         ),
+        Modality::SceneFlow => (vec![h, w, 3], Pixels::F32(three_floats(rows, 16))),
     };
     Image {
         modality,

@@ -279,3 +279,70 @@ fn only_the_modalities_asked_for_come_back() {
         .unwrap_err();
     assert!(err.to_string().contains("width"), "{err}");
 }
+
+/// A fixed grey box (a wall, a crate) of `half` extents at `at`.
+fn slab(world: &mut World, name: &str, at: Vector, half: Vector) -> ObjectId {
+    let part = Part::new(Primitive::Box { half_extents: half });
+    let spec = ObjectSpec::new(name, "carton.n.02", vec![part])
+        .looks([150, 150, 150], Material::Plastic)
+        .at(at)
+        .fixed();
+    world.add(spec).unwrap()
+}
+
+#[test]
+fn what_walls_hide_is_left_out_without_changing_a_pixel() {
+    // A wall 3 m ahead with a 0.6 m doorway in its middle; crates behind it, one seen through
+    // the doorway, one beside the camera.
+    let mut world = World::default();
+    slab(&mut world, "wall_left", v(3.0, 2.3, 1.0), v(0.05, 2.0, 2.0));
+    slab(
+        &mut world,
+        "wall_right",
+        v(3.0, -2.3, 1.0),
+        v(0.05, 2.0, 2.0),
+    );
+    let mut behind = Vec::new();
+    for (k, y) in [-2.5f32, -1.5, 1.5, 2.5].into_iter().enumerate() {
+        behind.push(red_box_at(&mut world, k, v(5.0, y, 0.5)));
+    }
+    let through_door = red_box_at(&mut world, 9, v(6.0, 0.0, 0.3));
+    let mut view = View::new(Camera::eye(Pose::IDENTITY));
+    let categories = categories();
+    let scene = Scene {
+        world: &world,
+        categories: &categories,
+        highlight: &[],
+        hidden: &[],
+    };
+    let mut renderer = Renderer::new().unwrap();
+    let culled = renderer.render(&scene, &mut view, &Modality::ALL).unwrap();
+    let stats = renderer.stats();
+    renderer.set_occlusion_culling(false);
+    let mut again = View::new(Camera::eye(Pose::IDENTITY));
+    let everything = renderer.render(&scene, &mut again, &Modality::ALL).unwrap();
+    assert_eq!(culled, everything, "culling changed the images");
+    assert_eq!(renderer.stats().culled, 0);
+    assert_eq!(
+        (stats.culled, stats.instances, renderer.stats().instances),
+        (4, 3, 7),
+        "the four crates behind the wall are left out, the one in the doorway is not"
+    );
+    let Pixels::U32(ins) = &everything.get(Modality::InsSeg).unwrap().pixels else {
+        panic!()
+    };
+    assert!(ins.contains(&(through_door.0 + 1)));
+    assert!(behind.iter().all(|id| !ins.contains(&(id.0 + 1))));
+}
+
+/// A 20 cm red crate at `at`.
+fn red_box_at(world: &mut World, k: usize, at: Vector) -> ObjectId {
+    let cube = Part::new(Primitive::Box {
+        half_extents: Vector::splat(0.1),
+    });
+    let spec = ObjectSpec::new(&format!("crate_{k}"), "carton.n.02", vec![cube])
+        .looks([220, 30, 30], Material::Plastic)
+        .at(at)
+        .fixed();
+    world.add(spec).unwrap()
+}

@@ -182,6 +182,14 @@ impl Gatherer<'_> {
         }
     }
 
+    /// About how many pixels a ball at `centre` of `radius` spans in radius on the image.
+    fn pixels(&self, centre: Vector, radius: f32) -> f32 {
+        let camera = self.camera;
+        let distance = (centre - camera.pose.translation).length().max(radius);
+        let focal = camera.height as f32 / (2.0 * (0.5 * camera.vertical_fov).tan());
+        radius / distance * focal
+    }
+
     fn ids(&self, id: ObjectId, category: &str) -> [u32; 2] {
         let highlighted = u32::from(self.scene.highlight.contains(&id));
         let category = u32::from(self.scene.categories.id(category));
@@ -233,7 +241,8 @@ impl Gatherer<'_> {
                     backdrop = true;
                 }
             }
-            let mesh = self.meshes.id(drawn.key, &part.shape);
+            let pixels = self.pixels(centre, drawn.reach);
+            let mesh = self.meshes.id(drawn.key.sized(pixels), &part.shape);
             let look = look(part.visual.color, part.visual.material, shown);
             let instance = self.instance(key, &part.pose, drawn.scale, look, ids);
             out.pending.push(Pending {
@@ -312,7 +321,6 @@ impl Gatherer<'_> {
     ) {
         let shape = VisualShape::Primitive(dots.shape);
         let drawn = Drawn::of(&shape);
-        let mesh = self.meshes.id(drawn.key, &shape);
         for (n, &p) in at.iter().enumerate() {
             let key = key(n as u32);
             let pose = Pose::from_translation(p);
@@ -320,6 +328,9 @@ impl Gatherer<'_> {
             if !visible(planes, p, drawn.reach) {
                 continue;
             }
+            let mesh = self
+                .meshes
+                .id(drawn.key.sized(self.pixels(p, drawn.reach)), &shape);
             let instance = self.instance(key, &pose, drawn.scale, dots.look, dots.ids);
             out.pending.push(Pending {
                 mesh,

@@ -23,20 +23,65 @@ pub(crate) struct Mesh {
     pub(crate) indices: Vec<u32>,
 }
 
-/// Segments around a round shape.
-const ROUND: usize = 16;
-/// Rings from pole to pole of a ball.
-const RINGS: usize = 10;
+/// How finely a round shape (ball, cylinder, capsule) is cut into triangles.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) enum Detail {
+    /// 16 segments around, 10 rings from pole to pole: 352 triangles a ball.
+    Fine,
+    /// 8 around, 6 rings: 112 a ball, for shapes a few pixels across.
+    Coarse,
+}
+
+impl Detail {
+    /// Segments around, and rings from pole to pole (even).
+    fn cuts(self) -> (usize, usize) {
+        match self {
+            Detail::Fine => (16, 10),
+            Detail::Coarse => (8, 6),
+        }
+    }
+}
 
 /// Which mesh a shape is drawn with: the unit meshes first, then one per distinct shape.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 pub(crate) enum MeshKey {
     UnitBox,
-    UnitBall,
-    UnitCylinder,
-    Capsule { radius: u32, half_height: u32 },
+    UnitBall(Detail),
+    UnitCylinder(Detail),
+    Capsule {
+        radius: u32,
+        half_height: u32,
+        detail: Detail,
+    },
     Hull(u64),
     Visual(u64),
+}
+
+/// Round shapes smaller than this radius on the image, pixels, are drawn with
+/// [`Detail::Coarse`].
+const COARSE_BELOW_PIXELS: f32 = 8.0;
+
+impl MeshKey {
+    /// This key, or its coarse version for a round shape `pixels` in radius on the image.
+    pub(crate) fn sized(self, pixels: f32) -> MeshKey {
+        if pixels >= COARSE_BELOW_PIXELS {
+            return self;
+        }
+        match self {
+            MeshKey::UnitBall(_) => MeshKey::UnitBall(Detail::Coarse),
+            MeshKey::UnitCylinder(_) => MeshKey::UnitCylinder(Detail::Coarse),
+            MeshKey::Capsule {
+                radius,
+                half_height,
+                ..
+            } => MeshKey::Capsule {
+                radius,
+                half_height,
+                detail: Detail::Coarse,
+            },
+            other => other,
+        }
+    }
 }
 
 /// How to draw one shape: which mesh, stretched how, and how far it reaches from its origin.
@@ -68,7 +113,7 @@ impl Drawn {
                 reach: half_extents.length(),
             },
             Primitive::Sphere { radius } => Drawn {
-                key: MeshKey::UnitBall,
+                key: MeshKey::UnitBall(Detail::Fine),
                 scale: Vector::splat(radius),
                 reach: radius,
             },
@@ -76,7 +121,7 @@ impl Drawn {
                 radius,
                 half_height,
             } => Drawn {
-                key: MeshKey::UnitCylinder,
+                key: MeshKey::UnitCylinder(Detail::Fine),
                 scale: Vector::new(radius, radius, half_height),
                 reach: (radius * radius + half_height * half_height).sqrt(),
             },
@@ -87,6 +132,7 @@ impl Drawn {
                 key: MeshKey::Capsule {
                     radius: radius.to_bits(),
                     half_height: half_height.to_bits(),
+                    detail: Detail::Fine,
                 },
                 scale: Vector::ONE,
                 reach: radius + half_height,
@@ -140,15 +186,16 @@ fn hash_mesh(mesh: &VisualMesh) -> u64 {
 pub(crate) fn build(key: MeshKey, shape: &VisualShape) -> Mesh {
     match (key, shape) {
         (MeshKey::UnitBox, _) => unit_box(),
-        (MeshKey::UnitBall, _) => ball(1.0, 0.0),
-        (MeshKey::UnitCylinder, _) => cylinder(),
+        (MeshKey::UnitBall(detail), _) => ball(1.0, 0.0, detail),
+        (MeshKey::UnitCylinder(detail), _) => cylinder(detail),
         (
             MeshKey::Capsule {
                 radius,
                 half_height,
+                detail,
             },
             _,
-        ) => ball(f32::from_bits(radius), f32::from_bits(half_height)),
+        ) => ball(f32::from_bits(radius), f32::from_bits(half_height), detail),
         (MeshKey::Hull(_), VisualShape::Primitive(Primitive::ConvexHull { points })) => {
             hull(points)
         }
@@ -188,19 +235,20 @@ fn unit_box() -> Mesh {
 
 /// A ball of `radius` whose two halves are pulled `half_height` apart along z, joined by a
 /// cylinder: a capsule, or a ball when `half_height` is 0.
-fn ball(radius: f32, half_height: f32) -> Mesh {
+fn ball(radius: f32, half_height: f32, detail: Detail) -> Mesh {
+    let (round, rings_count) = detail.cuts();
     let mut mesh = Mesh::default();
     // Rings from the top pole to the bottom one; the equator is doubled for a capsule's two halves.
     let mut rings: Vec<(f32, f32)> = Vec::new(); // (polar angle, z shift)
-    for r in 0..=RINGS / 2 {
-        rings.push((PI * r as f32 / RINGS as f32, half_height));
+    for r in 0..=rings_count / 2 {
+        rings.push((PI * r as f32 / rings_count as f32, half_height));
     }
-    for r in RINGS / 2..=RINGS {
-        rings.push((PI * r as f32 / RINGS as f32, -half_height));
+    for r in rings_count / 2..=rings_count {
+        rings.push((PI * r as f32 / rings_count as f32, -half_height));
     }
     for &(theta, shift) in &rings {
-        for s in 0..=ROUND {
-            let phi = TAU * s as f32 / ROUND as f32;
+        for s in 0..=round {
+            let phi = TAU * s as f32 / round as f32;
             let n = [
                 theta.sin() * phi.cos(),
                 theta.sin() * phi.sin(),
@@ -213,9 +261,9 @@ fn ball(radius: f32, half_height: f32) -> Mesh {
             });
         }
     }
-    let row = (ROUND + 1) as u32;
+    let row = (round + 1) as u32;
     for r in 0..(rings.len() as u32 - 1) {
-        for s in 0..ROUND as u32 {
+        for s in 0..round as u32 {
             let a = r * row + s;
             let b = a + row;
             mesh.indices.extend([a, b, a + 1, a + 1, b, b + 1]);
@@ -225,10 +273,11 @@ fn ball(radius: f32, half_height: f32) -> Mesh {
 }
 
 /// A cylinder of radius 1 from z = −1 to 1, with caps.
-fn cylinder() -> Mesh {
+fn cylinder(detail: Detail) -> Mesh {
+    let (round, _) = detail.cuts();
     let mut mesh = Mesh::default();
-    for s in 0..=ROUND {
-        let phi = TAU * s as f32 / ROUND as f32;
+    for s in 0..=round {
+        let phi = TAU * s as f32 / round as f32;
         let (x, y) = (phi.cos(), phi.sin());
         for z in [1.0, -1.0] {
             mesh.vertices.push(Vertex {
@@ -237,7 +286,7 @@ fn cylinder() -> Mesh {
             });
         }
     }
-    for s in 0..ROUND as u32 {
+    for s in 0..round as u32 {
         let (a, b) = (2 * s, 2 * s + 2);
         mesh.indices.extend([a, a + 1, b, b, a + 1, b + 1]);
     }
@@ -247,14 +296,14 @@ fn cylinder() -> Mesh {
             position: [0.0, 0.0, z],
             normal: [0.0, 0.0, z],
         });
-        for s in 0..=ROUND {
-            let phi = TAU * s as f32 / ROUND as f32;
+        for s in 0..=round {
+            let phi = TAU * s as f32 / round as f32;
             mesh.vertices.push(Vertex {
                 position: [phi.cos(), phi.sin(), z],
                 normal: [0.0, 0.0, z],
             });
         }
-        for s in 0..ROUND as u32 {
+        for s in 0..round as u32 {
             let (a, b) = (centre + 1 + s, centre + 2 + s);
             let tri = if z > 0.0 {
                 [centre, a, b]
@@ -379,15 +428,31 @@ mod tests {
     #[test]
     fn every_shape_is_wound_counter_clockwise_seen_from_outside() {
         closed_and_outward(&unit_box());
-        closed_and_outward(&ball(1.0, 0.0));
-        closed_and_outward(&ball(0.1, 0.3));
-        closed_and_outward(&cylinder());
+        for detail in [Detail::Fine, Detail::Coarse] {
+            closed_and_outward(&ball(1.0, 0.0, detail));
+            closed_and_outward(&ball(0.1, 0.3, detail));
+            closed_and_outward(&cylinder(detail));
+        }
         let cube: Vec<Vector> = (0..8)
             .map(|i| Vector::new((i & 1) as f32, ((i >> 1) & 1) as f32, ((i >> 2) & 1) as f32))
             .collect();
         let h = hull(&cube);
         assert_eq!(h.indices.len(), 36);
         closed_and_outward(&h);
+    }
+
+    #[test]
+    fn round_shapes_a_few_pixels_across_get_the_coarse_mesh() {
+        let ball_key = Drawn::primitive(&Primitive::Sphere { radius: 0.05 }).key;
+        assert_eq!(ball_key.sized(20.0), MeshKey::UnitBall(Detail::Fine));
+        assert_eq!(ball_key.sized(3.0), MeshKey::UnitBall(Detail::Coarse));
+        let triangles = |d| ball(1.0, 0.0, d).indices.len() / 3;
+        assert_eq!(
+            (triangles(Detail::Fine), triangles(Detail::Coarse)),
+            (352, 112)
+        );
+        // Boxes and hulls have one mesh only.
+        assert_eq!(MeshKey::UnitBox.sized(1.0), MeshKey::UnitBox);
     }
 
     #[test]

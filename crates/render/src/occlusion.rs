@@ -17,7 +17,7 @@ use crate::camera::{Camera, NEAR};
 use rapier3d::math::{Pose, Vector};
 
 /// Cells across and down the image.
-const GRID: usize = 32;
+const GRID: usize = 24;
 /// A box nearer to the camera than this is not an occluder (the GPU clips what lies closer
 /// than [`NEAR`], and a camera inside a box does not draw it), m.
 const CLEARANCE: f32 = 0.1;
@@ -29,6 +29,9 @@ const MIN_HALF_EXTENT: f32 = 0.2;
 /// its depth (the GPU's depth buffer rounds), m.
 const MARGIN: f32 = 0.01;
 const MARGIN_PER_METRE: f32 = 0.002;
+
+/// A corner whose ray has not been cast yet.
+const UNCAST: f32 = -1.0;
 
 /// The hidden-beyond depth of each cell of one frame.
 pub(crate) struct Occlusion {
@@ -99,25 +102,31 @@ impl Occlusion {
         if outside.length() < CLEARANCE {
             return;
         }
-        let Some(span) = self.span_of_box(pose, half_extents) else {
+        let Some((span, nearest)) = self.span_of_box(pose, half_extents) else {
             return;
         };
         let columns = span.x.1 - span.x.0 + 1;
         let [ray, across, down] = [self.ray, self.across, self.down].map(|v| to_box.rotation * v);
+        // Corner entries are cast when a cell needs them: one already hidden nearer than any
+        // point of this box does not.
         self.corners.clear();
-        for j in span.y.0..=span.y.1 {
-            let row = ray + down * j as f32;
-            for i in span.x.0..=span.x.1 {
-                let entry = enter(origin, row + across * i as f32, half_extents);
-                self.corners.push(entry.unwrap_or(f32::NAN));
-            }
-        }
+        self.corners
+            .resize(columns * (span.y.1 - span.y.0 + 1), UNCAST);
         for j in span.y.0..span.y.1 {
             for i in span.x.0..span.x.1 {
-                let at = |di: usize, dj: usize| {
-                    self.corners[(j + dj - span.y.0) * columns + (i + di - span.x.0)]
-                };
-                let entries = [at(0, 0), at(1, 0), at(0, 1), at(1, 1)];
+                if self.beyond[j * GRID + i] <= nearest {
+                    continue;
+                }
+                let mut entries = [0.0; 4];
+                for (k, (di, dj)) in [(0, 0), (1, 0), (0, 1), (1, 1)].into_iter().enumerate() {
+                    let (ci, cj) = (i + di, j + dj);
+                    let slot = &mut self.corners[(cj - span.y.0) * columns + (ci - span.x.0)];
+                    if *slot == UNCAST {
+                        let direction = ray + across * ci as f32 + down * cj as f32;
+                        *slot = enter(origin, direction, half_extents).unwrap_or(f32::NAN);
+                    }
+                    entries[k] = *slot;
+                }
                 // A corner whose ray misses the box (NaN) leaves the cell as it was.
                 if entries.iter().any(|d| d.is_nan()) {
                     continue;
@@ -148,13 +157,14 @@ impl Occlusion {
         })
     }
 
-    /// The grid corners around a box's image: of its part in front of the near plane, when it
-    /// reaches behind it.
-    fn span_of_box(&self, pose: &Pose, half_extents: Vector) -> Option<Span> {
+    /// The grid corners around a box's image (of its part in front of the near plane, when it
+    /// reaches behind it), and the least depth of any of its points.
+    fn span_of_box(&self, pose: &Pose, half_extents: Vector) -> Option<(Span, f32)> {
         let corners = cube_corners(Vector::ZERO, half_extents)
             .map(|p| self.view.transform_point(pose.transform_point(p)));
-        if corners.iter().all(|p| p.x > NEAR) {
-            return self.span_of(&corners);
+        let nearest = corners.iter().map(|p| p.x).fold(f32::INFINITY, f32::min);
+        if nearest > NEAR {
+            return Some((self.span_of(&corners)?, nearest));
         }
         // Clip: the corners in front, and where the edges cross the plane just in front of the
         // near one (corner indices differ in one bit along an edge).
@@ -173,7 +183,7 @@ impl Occlusion {
         if kept.is_empty() {
             return None;
         }
-        self.span_of(&kept)
+        Some((self.span_of(&kept)?, nearest))
     }
 
     /// The grid corners around the image of points in the camera's frame; `None` when it misses

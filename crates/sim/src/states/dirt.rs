@@ -134,12 +134,13 @@ impl Dirt {
 
     /// Particles of an object in world coordinates.
     pub(crate) fn positions(&self, core: &Core, id: ObjectId, kind: Predicate) -> Vec<Vector> {
+        let points = &self.set(id, kind).points;
+        if points.is_empty() {
+            // Most objects hold none; their frames need not be worked out.
+            return Vec::new();
+        }
         let frames = Frames::of(core, id);
-        self.set(id, kind)
-            .points
-            .iter()
-            .map(|p| frames.place(p))
-            .collect()
+        points.iter().map(|p| frames.place(p)).collect()
     }
 
     /// An object's particles of one kind, as kept (for saving).

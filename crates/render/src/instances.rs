@@ -163,23 +163,28 @@ impl Gatherer<'_> {
         self.drops(&planes, &mut out);
         let before = out.pending.len();
         if self.cull {
-            let mut occlusion = Occlusion::new(self.camera);
-            // Nearest first, so that a wall behind another costs only the test that skips it.
-            let eye = self.camera.pose.translation;
-            out.occluders
-                .sort_by(|a, b| distance(a, eye).total_cmp(&distance(b, eye)));
-            for (pose, half_extents) in &out.occluders {
-                if !occlusion.hides(pose.translation, half_extents.length()) {
-                    occlusion.add_box(pose, *half_extents);
-                }
-            }
-            out.pending.retain(|p| !occlusion.hides(p.centre, p.reach));
+            self.cull_hidden(&mut out);
         }
         let culled = before - out.pending.len();
         Batch {
             culled,
             ..group(out.pending, out.models)
         }
+    }
+
+    /// Leaves out what the gathered occluders hide (see `occlusion.rs`).
+    fn cull_hidden(&self, out: &mut Gathered) {
+        let mut occlusion = Occlusion::new(self.camera);
+        // Nearest first, so that a wall behind another costs only the test that skips it.
+        let eye = self.camera.pose.translation;
+        out.occluders
+            .sort_by(|a, b| distance(a, eye).total_cmp(&distance(b, eye)));
+        for (pose, half_extents) in &out.occluders {
+            if !occlusion.hides(pose.translation, half_extents.length()) {
+                occlusion.add_box(pose, *half_extents);
+            }
+        }
+        out.pending.retain(|p| !occlusion.hides(p.centre, p.reach));
     }
 
     /// About how many pixels a ball at `centre` of `radius` spans in radius on the image.

@@ -1,5 +1,5 @@
-//! Occlusion culling on the CPU: big boxes (walls, floors, panels of furniture) hide what lies
-//! wholly behind them, and what they hide is not sent to the GPU.
+//! Occlusion culling on the CPU: big upright boxes (walls, doors, the sides of furniture) hide
+//! what lies wholly behind them, and what they hide is not sent to the GPU.
 //!
 //! From a robot's eye in one room of a home, most of the home is in the 120° frustum but behind
 //! walls; drawing it costs a CPU rasterizer (lavapipe) most of a frame. The test is conservative,

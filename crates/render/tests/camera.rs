@@ -292,8 +292,8 @@ fn slab(world: &mut World, name: &str, at: Vector, half: Vector) -> ObjectId {
 
 #[test]
 fn what_walls_hide_is_left_out_without_changing_a_pixel() {
-    // A wall 3 m ahead with a 0.6 m doorway in its middle; crates behind it, one seen through
-    // the doorway, one beside the camera.
+    // A wall 3 m ahead with a 0.6 m doorway in its middle; four crates behind it, and one
+    // farther on, seen through the doorway.
     let mut world = World::default();
     slab(&mut world, "wall_left", v(3.0, 2.3, 1.0), v(0.05, 2.0, 2.0));
     slab(

@@ -15,6 +15,9 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+/// The overview camera's vertical field of view, rad (60°).
+pub const OVERVIEW_FOV: f32 = std::f32::consts::FRAC_PI_3;
+
 #[derive(clap::Args)]
 pub struct RenderArgs {
     #[command(flatten)]
@@ -78,7 +81,7 @@ fn camera(args: &RenderArgs, env: &Env) -> Result<Camera> {
             height: args.size,
             vertical_fov: behavior_render::EYE_FOV,
         }),
-        "overview" => Ok(Camera::overview(world, args.size, args.size)?),
+        "overview" => Ok(Camera::overview(world, args.size, args.size, OVERVIEW_FOV)?),
         other => bail!("--camera must be eye or overview, not `{other}`"),
     }
 }

@@ -7,7 +7,7 @@
 //! a run that fails leaves whatever was at that path before.
 
 use crate::map::text;
-use crate::render::draw;
+use crate::render::{OVERVIEW_FOV, draw};
 use anyhow::{Context, Result, bail};
 use behavior_env::Env;
 use behavior_render::{Camera, CategoryTable, Modality, Pixels, Renderer, View};
@@ -66,7 +66,7 @@ impl Video {
             height: size,
             ..Camera::eye(robot.camera_pose(world))
         });
-        let overview = View::new(Camera::overview(world, size, size)?);
+        let overview = View::new(Camera::overview(world, size, size, OVERVIEW_FOV)?);
         let partial = path.with_extension("gif.part");
         let cannot = || format!("cannot write {}", partial.display());
         let file = File::create(&partial).with_context(cannot)?;
@@ -105,10 +105,11 @@ impl Video {
                 &self.categories,
                 &[Modality::Rgb],
             )?;
-            let Some(Pixels::U8(rgb)) = frame.get(Modality::Rgb).map(|i| &i.pixels) else {
+            let rgb = frame.images.into_iter().find(|i| i.modality == Modality::Rgb);
+            let Some(Pixels::U8(rgb)) = rgb.map(|i| i.pixels) else {
                 bail!("the renderer returned no colour image");
             };
-            let image = RgbImage::from_raw(size, size, rgb.clone())
+            let image = RgbImage::from_raw(size, size, rgb)
                 .context("the colour image has the wrong size")?;
             image::imageops::replace(&mut picture, &image, i64::from(k as u32 * size), 0);
         }

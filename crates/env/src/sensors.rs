@@ -61,8 +61,9 @@ impl Default for CameraConfig {
 /// Where an extra camera stands.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Placement {
-    /// Above the home, looking down on all of it ([`Camera::overview`]): for people watching an
-    /// episode. Placed anew at each reset, as homes differ.
+    /// Above the home, looking down on all of it with the config's field of view
+    /// ([`Camera::overview`]): for people watching an episode. Placed anew at each reset, as
+    /// homes differ.
     Overview,
     /// Fixed in the world at this pose (camera frame: x forward, y left, z up).
     At(Pose),
@@ -79,19 +80,12 @@ pub struct FixedCamera {
     pub config: CameraConfig,
 }
 
-/// Where one of a [`CameraSensor`]'s cameras is.
-#[derive(Clone, Copy, Debug)]
-enum Mount {
-    Robot,
-    Overview,
-    At(Pose),
-}
-
 /// One camera: where it is, what it delivers, what it saw last.
 struct Rig {
     /// Prepended to its readings' keys (empty for the robot's camera).
     prefix: String,
-    mount: Mount,
+    /// Where it stands: on the robot when `None`.
+    placement: Option<Placement>,
     config: CameraConfig,
     view: View,
     /// Whether an overview was placed in this episode's home.
@@ -99,11 +93,15 @@ struct Rig {
 }
 
 impl Rig {
-    fn new(prefix: String, mount: Mount, config: CameraConfig) -> Result<Rig, RenderError> {
+    fn new(
+        prefix: String,
+        placement: Option<Placement>,
+        config: CameraConfig,
+    ) -> Result<Rig, RenderError> {
         let camera = Camera {
-            pose: match mount {
-                Mount::At(pose) => pose,
-                Mount::Robot | Mount::Overview => Pose::IDENTITY,
+            pose: match placement {
+                Some(Placement::At(pose)) => pose,
+                None | Some(Placement::Overview) => Pose::IDENTITY,
             },
             width: config.width,
             height: config.height,
@@ -112,23 +110,24 @@ impl Rig {
         camera.check()?;
         Ok(Rig {
             prefix,
-            mount,
+            placement,
             config,
             view: View::new(camera),
             placed: false,
         })
     }
 
-    /// Moves the camera to where its mount is now.
+    /// Moves the camera to where it stands now (the robot moves; an overview is placed once per
+    /// home).
     fn place(&mut self, input: &SensorInput) -> Result<(), RenderError> {
         let camera = &mut self.view.camera;
-        match self.mount {
-            Mount::Robot => camera.pose = input.robot.camera_pose(input.world),
-            Mount::Overview if !self.placed => {
-                *camera = Camera::overview(input.world, camera.width, camera.height)?;
-                camera.vertical_fov = self.config.vertical_fov;
+        match self.placement {
+            None => camera.pose = input.robot.camera_pose(input.world),
+            Some(Placement::Overview) if !self.placed => {
+                let (w, h, fov) = (camera.width, camera.height, camera.vertical_fov);
+                *camera = Camera::overview(input.world, w, h, fov)?;
             }
-            Mount::Overview | Mount::At(_) => {}
+            Some(Placement::Overview | Placement::At(_)) => {}
         }
         self.placed = true;
         Ok(())
@@ -153,15 +152,15 @@ impl CameraSensor {
     ) -> Result<CameraSensor, RenderError> {
         let mut rigs = Vec::new();
         if let Some(config) = robot {
-            rigs.push(Rig::new(String::new(), Mount::Robot, config)?);
+            rigs.push(Rig::new(String::new(), None, config)?);
         }
         for camera in fixed {
-            let mount = match camera.placement {
-                Placement::Overview => Mount::Overview,
-                Placement::At(pose) => Mount::At(pose),
-            };
             let prefix = format!("{}/", camera.name);
-            rigs.push(Rig::new(prefix, mount, camera.config.clone())?);
+            rigs.push(Rig::new(
+                prefix,
+                Some(camera.placement),
+                camera.config.clone(),
+            )?);
         }
         Ok(CameraSensor {
             renderer: Renderer::new()?,

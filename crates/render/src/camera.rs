@@ -73,10 +73,15 @@ impl Camera {
     }
 
     /// A camera for people: above the middle of the world's fixed objects (a home's walls,
-    /// floors and furniture), looking straight down with a 60° field of view, far enough up to
-    /// take them all in. Fails for a world with no fixed objects.
-    pub fn overview(world: &World, width: u32, height: u32) -> Result<Camera, RenderError> {
-        let fov = 60f32.to_radians();
+    /// floors and furniture), looking straight down with `vertical_fov`, far enough up to take
+    /// them all in. Fails for a world with no fixed objects.
+    pub fn overview(
+        world: &World,
+        width: u32,
+        height: u32,
+        vertical_fov: f32,
+    ) -> Result<Camera, RenderError> {
+        let fov = vertical_fov;
         let (lo, hi) = world
             .objects()
             .filter(|(_, o)| o.is_present() && o.body_kind == BodyKind::Fixed)

@@ -25,7 +25,6 @@ pub(crate) struct Globals {
     pub(crate) previous_view_projection: [[f32; 4]; 4],
     pub(crate) view: [[f32; 4]; 4],
     pub(crate) light: [f32; 4],
-    pub(crate) eye: [f32; 4],
     pub(crate) size: [f32; 4],
 }
 

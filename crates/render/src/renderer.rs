@@ -200,7 +200,6 @@ impl Renderer {
         }
         let view_projection = camera.view_projection();
         let previous = previous.map_or(view_projection, |h| h.view_projection);
-        let eye = camera.pose.translation;
         let globals = Globals {
             view_projection: view_projection.to_cols_array_2d(),
             previous_view_projection: previous.to_cols_array_2d(),
@@ -208,7 +207,6 @@ impl Renderer {
             light: (camera.pose.rotation.inverse() * LIGHT.normalize())
                 .extend(0.0)
                 .to_array(),
-            eye: eye.extend(1.0).to_array(),
             size: [camera.width as f32, camera.height as f32, 0.0, 0.0],
         };
         self.gpu

@@ -9,8 +9,6 @@ struct Globals {
     view: mat4x4<f32>,
     // Toward the light, camera frame.
     light: vec4<f32>,
-    // The camera's position, world frame.
-    eye: vec4<f32>,
     // Image width and height in pixels.
     size: vec4<f32>,
 };

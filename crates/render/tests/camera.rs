@@ -28,6 +28,16 @@ fn categories() -> CategoryTable {
     CategoryTable::new(["carton.n.02", "apple.n.01"])
 }
 
+/// `world` labelled by `categories`, nothing highlighted or hidden.
+fn scene<'a>(world: &'a World, categories: &'a CategoryTable) -> Scene<'a> {
+    Scene {
+        world,
+        categories,
+        highlight: &[],
+        hidden: &[],
+    }
+}
+
 fn render(
     world: &World,
     view: &mut View,
@@ -36,10 +46,8 @@ fn render(
 ) -> Frame {
     let categories = categories();
     let scene = Scene {
-        world,
-        categories: &categories,
         highlight,
-        hidden: &[],
+        ..scene(world, &categories)
     };
     let mut renderer =
         Renderer::new().expect("a renderer (install mesa-vulkan-drivers libvulkan1)");
@@ -267,12 +275,7 @@ fn only_the_modalities_asked_for_come_back() {
     let mut bad = Camera::eye(Pose::IDENTITY);
     bad.width = 0;
     let categories = categories();
-    let scene = Scene {
-        world: &world,
-        categories: &categories,
-        highlight: &[],
-        hidden: &[],
-    };
+    let scene = scene(&world, &categories);
     let err = Renderer::new()
         .unwrap()
         .render(&scene, &mut View::new(bad), &[Modality::Rgb])
@@ -309,12 +312,7 @@ fn what_walls_hide_is_left_out_without_changing_a_pixel() {
     let through_door = red_box_at(&mut world, 9, v(6.0, 0.0, 0.3));
     let mut view = View::new(Camera::eye(Pose::IDENTITY));
     let categories = categories();
-    let scene = Scene {
-        world: &world,
-        categories: &categories,
-        highlight: &[],
-        hidden: &[],
-    };
+    let scene = scene(&world, &categories);
     let mut renderer = Renderer::new().unwrap();
     let culled = renderer.render(&scene, &mut view, &Modality::ALL).unwrap();
     let stats = renderer.stats();

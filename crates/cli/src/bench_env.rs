@@ -24,7 +24,7 @@ const ACTIVITIES: [&str; 3] = [
 ];
 /// Steps before timing starts, as the original discards its first 900 of 1000.
 const WARMUP: u32 = 100;
-/// The eye camera's sizes in the image configurations: the original's 128², and 512².
+/// The eye camera's default sizes in the image configurations: the original's 128², and 512².
 const IMAGE_SIZES: [u32; 2] = [128, 512];
 
 #[derive(clap::Args)]
@@ -39,8 +39,14 @@ pub struct BenchEnvArgs {
     #[arg(long = "activity", value_name = "NAME")]
     activities: Vec<String>,
     /// Only the state-only configurations: no rendering.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "images_only")]
     state_only: bool,
+    /// Only the configurations with images.
+    #[arg(long)]
+    images_only: bool,
+    /// The eye camera's image sizes, square (repeat the flag for several); default: 128 and 512.
+    #[arg(long = "image-size", value_name = "N", value_parser = clap::value_parser!(u32).range(1..=4096))]
+    image_sizes: Vec<u32>,
     #[arg(long)]
     json: bool,
 }
@@ -97,10 +103,21 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     } else {
         args.activities.iter().map(String::as_str).collect()
     };
+    let sizes = if args.image_sizes.is_empty() {
+        IMAGE_SIZES.to_vec()
+    } else {
+        args.image_sizes.clone()
+    };
     let bar = if args.json {
         ProgressBar::hidden()
     } else {
-        ProgressBar::new(names.len() as u64 * 12)
+        let state = if args.images_only { 0 } else { 8 };
+        let images = if args.state_only {
+            0
+        } else {
+            2 * sizes.len() as u64
+        };
+        ProgressBar::new(names.len() as u64 * (state + images))
     };
     for name in names {
         let activity = Arc::new(prelude.activity(name)?);
@@ -120,7 +137,12 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
                 .count()
         });
         drop(sampler);
-        for robot in ["behavior", "fetch"] {
+        let robots: &[&str] = if args.images_only {
+            &[]
+        } else {
+            &["behavior", "fetch"]
+        };
+        for &robot in robots {
             for agent in ["idle", "random"] {
                 for dt in ["1/300", "1/120"] {
                     let mut config = base.clone();
@@ -146,7 +168,7 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         if args.state_only {
             continue;
         }
-        for size in IMAGE_SIZES {
+        for &size in &sizes {
             for agent in ["idle", "random"] {
                 let mut config = base.clone();
                 config.instances = Instances::Saved(vec![instance.clone()]);

@@ -105,7 +105,10 @@ impl Video {
                 &self.categories,
                 &[Modality::Rgb],
             )?;
-            let rgb = frame.images.into_iter().find(|i| i.modality == Modality::Rgb);
+            let rgb = frame
+                .images
+                .into_iter()
+                .find(|i| i.modality == Modality::Rgb);
             let Some(Pixels::U8(rgb)) = rgb.map(|i| i.pixels) else {
                 bail!("the renderer returned no colour image");
             };

@@ -1,5 +1,5 @@
 //! What one frame draws: an instance per visible part (and per dust or stain particle and water
-//! drop), with its transform, last frame's transform, look and ids, grouped by mesh.
+//! drop), with its mesh, transform, last frame's transform, look and ids, in drawing order.
 
 use crate::appearance::{DUST, Look, STAIN, Shown, WATER, look};
 use crate::camera::Camera;
@@ -8,7 +8,6 @@ use crate::mesh::{Drawn, MeshStore, contains};
 use crate::occlusion::Occlusion;
 use behavior_core::Predicate;
 use behavior_sim::{Material, ObjectId, Primitive, VisualShape, World};
-use bytemuck::{Pod, Zeroable};
 use rapier3d::glamx::{Mat3, Mat4, Vec4};
 use rapier3d::math::{Pose, Vector};
 
@@ -24,15 +23,22 @@ pub struct Scene<'a> {
     pub hidden: &'a [ObjectId],
 }
 
-/// One drawn shape as the GPU reads it (see `shader.wgsl`'s `InstanceIn`).
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+/// One drawn shape: a mesh of the store placed in the world (see `frame_geometry.rs`).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct Instance {
-    model: [[f32; 4]; 3],
-    normal: [[f32; 4]; 3],
-    previous: [[f32; 4]; 3],
-    color: [f32; 4],
-    ids: [u32; 2],
+    pub(crate) mesh: u32,
+    /// Rows of the affine transform from the mesh's frame to the world.
+    pub(crate) model: [[f32; 4]; 3],
+    /// Rows of the normal matrix.
+    pub(crate) normal: [[f32; 3]; 3],
+    /// Rows of last frame's transform (the same where there was none).
+    pub(crate) previous: [[f32; 4]; 3],
+    /// Linear albedo, and emission in w.
+    pub(crate) color: [f32; 4],
+    /// Shininess of the specular highlight.
+    pub(crate) shine: f32,
+    /// Instance id, and category id | highlight << 16.
+    pub(crate) ids: [u32; 2],
 }
 
 /// Which drawn thing an instance is, to find its transform in the previous frame.
@@ -60,11 +66,10 @@ impl History {
     }
 }
 
-/// One frame's instances, grouped: `draws` holds (mesh, first instance, count).
+/// One frame's instances in drawing order.
 #[derive(Default)]
 pub(crate) struct Batch {
     pub(crate) instances: Vec<Instance>,
-    pub(crate) draws: Vec<(u32, u32, u32)>,
     /// Every part's transform, drawn or not, for the next frame's flow.
     pub(crate) models: Models,
     /// Instances left out as hidden behind others.
@@ -85,15 +90,10 @@ fn rows(pose: &Pose, scale: Vector) -> [[f32; 4]; 3] {
 }
 
 /// Rows of the normal matrix of `pose · scale` (its inverse transpose: rotation · 1/scale).
-fn normal_rows(pose: &Pose, scale: Vector, shine: f32) -> [[f32; 4]; 3] {
+fn normal_rows(pose: &Pose, scale: Vector) -> [[f32; 3]; 3] {
     let inverse = Vector::ONE / scale.max(Vector::splat(1e-6));
     let r = (Mat3::from_quat(pose.rotation) * Mat3::from_diagonal(inverse)).transpose();
-    [
-        r.x_axis.extend(shine),
-        r.y_axis.extend(0.0),
-        r.z_axis.extend(0.0),
-    ]
-    .map(|v| v.to_array())
+    [r.x_axis, r.y_axis, r.z_axis].map(|v| v.to_array())
 }
 
 /// The six planes of a camera's view, as (normal, offset) with the inside positive.
@@ -119,9 +119,8 @@ pub(crate) struct Gatherer<'a> {
     pub(crate) cull: bool,
 }
 
-/// One instance before it is grouped by mesh.
+/// One instance before it is put in drawing order.
 struct Pending {
-    mesh: u32,
     /// A ball that holds it: centre and radius, m.
     centre: Vector,
     reach: f32,
@@ -168,7 +167,7 @@ impl Gatherer<'_> {
         let culled = before - out.pending.len();
         Batch {
             culled,
-            ..group(out.pending, out.models)
+            ..in_drawing_order(out.pending, out.models)
         }
     }
 
@@ -203,20 +202,23 @@ impl Gatherer<'_> {
 
     fn instance(
         &self,
+        mesh: u32,
         key: Key,
-        pose: &Pose,
-        scale: Vector,
+        placed: (&Pose, Vector),
         look: Look,
         ids: [u32; 2],
     ) -> Instance {
+        let (pose, scale) = placed;
         let model = rows(pose, scale);
         let previous = self.previous.and_then(|h| h.model(key)).unwrap_or(model);
         let [r, g, b] = look.albedo;
         Instance {
+            mesh,
             model,
-            normal: normal_rows(pose, scale, look.shine),
+            normal: normal_rows(pose, scale),
             previous,
             color: [r, g, b, look.emission],
+            shine: look.shine,
             ids,
         }
     }
@@ -249,9 +251,8 @@ impl Gatherer<'_> {
             let pixels = self.pixels(centre, drawn.reach);
             let mesh = self.meshes.id(drawn.key.sized(pixels), &part.shape);
             let look = look(part.visual.color, part.visual.material, shown);
-            let instance = self.instance(key, &part.pose, drawn.scale, look, ids);
+            let instance = self.instance(mesh, key, (&part.pose, drawn.scale), look, ids);
             out.pending.push(Pending {
-                mesh,
                 centre,
                 reach: drawn.reach,
                 near: (centre - eye).length() - drawn.reach,
@@ -336,9 +337,8 @@ impl Gatherer<'_> {
             let mesh = self
                 .meshes
                 .id(drawn.key.sized(self.pixels(p, drawn.reach)), &shape);
-            let instance = self.instance(key, &pose, drawn.scale, dots.look, dots.ids);
+            let instance = self.instance(mesh, key, (&pose, drawn.scale), dots.look, dots.ids);
             out.pending.push(Pending {
-                mesh,
                 centre: p,
                 reach: drawn.reach,
                 near: (p - self.camera.pose.translation).length(),
@@ -361,31 +361,22 @@ struct Dots<'a> {
     ids: [u32; 2],
 }
 
-/// Sorts instances into draws: backdrops last, then by mesh, nearest first within a mesh
-/// (stably: ties keep the world's order).
-fn group(pending: Vec<Pending>, mut models: Models) -> Batch {
+/// Puts instances in drawing order: nearest first, so that the depth test spares the shading of
+/// what they hide, and backdrops last (stably: ties keep the world's order).
+fn in_drawing_order(pending: Vec<Pending>, mut models: Models) -> Batch {
     // Gathered in key order already (objects, then particles, then drops), so this only checks.
     models.sort_by_key(|(k, _)| *k);
-    let mut order: Vec<(bool, u32, f32, usize)> = pending
+    let mut order: Vec<(bool, f32, usize)> = pending
         .iter()
         .enumerate()
-        .map(|(k, p)| (p.backdrop, p.mesh, p.near, k))
+        .map(|(k, p)| (p.backdrop, p.near, k))
         .collect();
-    order.sort_by(|a, b| (a.0, a.1).cmp(&(b.0, b.1)).then(a.2.total_cmp(&b.2)));
-    let mut batch = Batch {
+    order.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    Batch {
+        instances: order.iter().map(|&(_, _, k)| pending[k].instance).collect(),
         models,
-        ..Batch::default()
-    };
-    let mut last = None;
-    for (backdrop, mesh, _, k) in order {
-        match batch.draws.last_mut() {
-            Some((_, _, count)) if last == Some((backdrop, mesh)) => *count += 1,
-            _ => batch.draws.push((mesh, batch.instances.len() as u32, 1)),
-        }
-        last = Some((backdrop, mesh));
-        batch.instances.push(pending[k].instance);
+        culled: 0,
     }
-    batch
 }
 
 #[cfg(test)]

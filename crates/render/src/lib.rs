@@ -26,6 +26,7 @@ mod camera;
 mod categories;
 mod error;
 mod export;
+mod frame_geometry;
 mod gpu;
 mod instances;
 mod lidar;

@@ -3,14 +3,12 @@
 //! hull and per imported visual mesh (found again by a hash of their numbers).
 
 use behavior_sim::{Primitive, VisualMesh, VisualShape};
-use bytemuck::{Pod, Zeroable};
 use rapier3d::math::Vector;
 use std::collections::BTreeMap;
 use std::f32::consts::{PI, TAU};
 
 /// A mesh vertex: position and outward normal in the shape's frame.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct Vertex {
     pub(crate) position: [f32; 3],
     pub(crate) normal: [f32; 3],
@@ -55,6 +53,15 @@ pub(crate) enum MeshKey {
     },
     Hull(u64),
     Visual(u64),
+}
+
+impl MeshKey {
+    /// Whether the mesh is a closed surface, seen only from outside (every primitive), so that
+    /// triangles facing away from the camera are hidden behind others and need not be drawn.
+    /// Imported visual meshes may be open (a bowl), so both their sides are drawn.
+    pub(crate) fn closed(self) -> bool {
+        !matches!(self, MeshKey::Visual(_))
+    }
 }
 
 /// Round shapes smaller than this radius on the image, pixels, are drawn with
@@ -367,16 +374,33 @@ pub(crate) fn contains(p: &Primitive, point: Vector) -> bool {
     }
 }
 
+/// Where one mesh lies in the store's lists.
+#[derive(Clone, Copy, Debug)]
+struct MeshRange {
+    first_vertex: usize,
+    vertex_count: usize,
+    first_index: usize,
+    index_count: usize,
+    closed: bool,
+}
+
+/// One mesh of the store.
+pub(crate) struct StoredMesh<'a> {
+    pub(crate) vertices: &'a [Vertex],
+    /// Counter-clockwise triangles, as indices into `vertices`.
+    pub(crate) indices: &'a [u32],
+    /// See [`MeshKey::closed`].
+    pub(crate) closed: bool,
+}
+
 /// Every mesh made so far, packed in one vertex and one index list, and where each lies.
 #[derive(Default)]
 pub(crate) struct MeshStore {
-    pub(crate) vertices: Vec<Vertex>,
-    pub(crate) indices: Vec<u32>,
-    /// Per mesh: first index, index count, base vertex.
-    pub(crate) ranges: Vec<(u32, u32, i32)>,
+    vertices: Vec<Vertex>,
+    /// Indices into each mesh's own vertices.
+    indices: Vec<u32>,
+    ranges: Vec<MeshRange>,
     ids: BTreeMap<MeshKey, u32>,
-    /// Meshes added since the GPU's copy was made.
-    pub(crate) grown: bool,
 }
 
 impl MeshStore {
@@ -387,16 +411,33 @@ impl MeshStore {
         }
         let mesh = build(key, shape);
         let id = self.ranges.len() as u32;
-        self.ranges.push((
-            self.indices.len() as u32,
-            mesh.indices.len() as u32,
-            self.vertices.len() as i32,
-        ));
+        self.ranges.push(MeshRange {
+            first_vertex: self.vertices.len(),
+            vertex_count: mesh.vertices.len(),
+            first_index: self.indices.len(),
+            index_count: mesh.indices.len(),
+            closed: key.closed(),
+        });
         self.vertices.extend(mesh.vertices);
         self.indices.extend(mesh.indices);
         self.ids.insert(key, id);
-        self.grown = true;
         id
+    }
+
+    /// A mesh by its id (empty for an unknown id).
+    pub(crate) fn mesh(&self, id: u32) -> StoredMesh<'_> {
+        let Some(r) = self.ranges.get(id as usize) else {
+            return StoredMesh {
+                vertices: &[],
+                indices: &[],
+                closed: false,
+            };
+        };
+        StoredMesh {
+            vertices: &self.vertices[r.first_vertex..r.first_vertex + r.vertex_count],
+            indices: &self.indices[r.first_index..r.first_index + r.index_count],
+            closed: r.closed,
+        }
     }
 }
 

@@ -54,11 +54,6 @@ impl Modality {
             Modality::SceneFlow => "scene_flow",
         }
     }
-
-    /// Whether it needs the motion pass (the previous frame's poses).
-    pub(crate) fn moving(self) -> bool {
-        matches!(self, Modality::Flow | Modality::SceneFlow)
-    }
 }
 
 impl fmt::Display for Modality {

@@ -1,13 +1,17 @@
-//! The two render pipelines (surface and motion), their shared layout and the per-frame globals.
+//! The render pipelines, one per pass and set of targets written, made when first needed; their
+//! shared layout and the per-frame globals.
 
-use crate::instances::Instance;
-use crate::mesh::Vertex;
+use crate::frame_geometry::FrameVertex;
+use crate::targets::{Pass, Source};
 use bytemuck::{Pod, Zeroable};
+use std::collections::BTreeMap;
 
 /// Colour as drawn: sRGB bytes.
 pub(crate) const COLOR: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
-/// Camera-frame normal and depth.
+/// Camera-frame normal, and depth in w.
 pub(crate) const GEOMETRY: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Float;
+/// Depth along the camera's axis, m.
+pub(crate) const CAMERA_DEPTH: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
 /// Instance id, category id and highlight bit.
 pub(crate) const IDS: wgpu::TextureFormat = wgpu::TextureFormat::Rg32Uint;
 /// Scene flow.
@@ -28,30 +32,20 @@ pub(crate) struct Globals {
     pub(crate) size: [f32; 4],
 }
 
-/// Pipelines and the globals' binding.
+/// The shader, the globals' binding, and the pipelines made so far.
 pub(crate) struct Pipelines {
-    pub(crate) surface: wgpu::RenderPipeline,
-    pub(crate) motion: wgpu::RenderPipeline,
+    module: wgpu::ShaderModule,
+    layout: wgpu::PipelineLayout,
     pub(crate) globals: wgpu::Buffer,
     pub(crate) bind_group: wgpu::BindGroup,
+    /// By pass and the targets written (a bit per [`Source::location`]).
+    made: BTreeMap<(Pass, u8), wgpu::RenderPipeline>,
 }
 
-const VERTEX_ATTRIBUTES: [wgpu::VertexAttribute; 2] =
-    wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
-const INSTANCE_ATTRIBUTES: [wgpu::VertexAttribute; 11] = wgpu::vertex_attr_array![
-    2 => Float32x4, 3 => Float32x4, 4 => Float32x4,
-    5 => Float32x4, 6 => Float32x4, 7 => Float32x4,
-    8 => Float32x4, 9 => Float32x4, 10 => Float32x4,
-    11 => Float32x4, 12 => Uint32x2
+/// `FrameVertex`'s fields in order.
+const VERTEX_ATTRIBUTES: [wgpu::VertexAttribute; 6] = wgpu::vertex_attr_array![
+    0 => Float32x3, 1 => Float32x3, 2 => Float32x3, 3 => Float32, 4 => Float32x4, 5 => Uint32x2
 ];
-
-fn target(format: wgpu::TextureFormat) -> Option<wgpu::ColorTargetState> {
-    Some(wgpu::ColorTargetState {
-        format,
-        blend: None,
-        write_mask: wgpu::ColorWrites::ALL,
-    })
-}
 
 impl Pipelines {
     pub(crate) fn new(device: &wgpu::Device) -> Pipelines {
@@ -65,7 +59,7 @@ impl Pipelines {
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        let bind_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("globals"),
             entries: &[wgpu::BindGroupLayoutEntry {
                 binding: 0,
@@ -80,73 +74,110 @@ impl Pipelines {
         });
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("globals"),
-            layout: &layout,
+            layout: &bind_layout,
             entries: &[wgpu::BindGroupEntry {
                 binding: 0,
                 resource: globals.as_entire_binding(),
             }],
         });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("behavior-render"),
-            bind_group_layouts: &[Some(&layout)],
+            bind_group_layouts: &[Some(&bind_layout)],
             immediate_size: 0,
         });
-        let build = |(vertex, entry): (&str, &str), targets: &[Option<wgpu::ColorTargetState>]| {
-            let buffers = [
-                Some(wgpu::VertexBufferLayout {
-                    array_stride: std::mem::size_of::<Vertex>() as u64,
-                    step_mode: wgpu::VertexStepMode::Vertex,
-                    attributes: &VERTEX_ATTRIBUTES,
-                }),
-                Some(wgpu::VertexBufferLayout {
-                    array_stride: std::mem::size_of::<Instance>() as u64,
-                    step_mode: wgpu::VertexStepMode::Instance,
-                    attributes: &INSTANCE_ATTRIBUTES,
-                }),
-            ];
-            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some(entry),
-                layout: Some(&pipeline_layout),
-                vertex: wgpu::VertexState {
-                    module: &module,
-                    entry_point: Some(vertex),
-                    compilation_options: wgpu::PipelineCompilationOptions::default(),
-                    buffers: &buffers,
-                },
-                primitive: wgpu::PrimitiveState {
-                    // Two-sided: open containers are seen from inside.
-                    cull_mode: None,
-                    ..wgpu::PrimitiveState::default()
-                },
-                depth_stencil: Some(wgpu::DepthStencilState {
-                    format: DEPTH,
-                    depth_write_enabled: Some(true),
-                    depth_compare: Some(wgpu::CompareFunction::Less),
-                    stencil: wgpu::StencilState::default(),
-                    bias: wgpu::DepthBiasState::default(),
-                }),
-                multisample: wgpu::MultisampleState::default(),
-                fragment: Some(wgpu::FragmentState {
-                    module: &module,
-                    entry_point: Some(entry),
-                    compilation_options: wgpu::PipelineCompilationOptions::default(),
-                    targets,
-                }),
-                multiview_mask: None,
-                cache: None,
-            })
-        };
         Pipelines {
-            surface: build(
-                ("vs_surface", "fs_surface"),
-                &[target(COLOR), target(GEOMETRY), target(IDS)],
-            ),
-            motion: build(
-                ("vs_motion", "fs_motion"),
-                &[target(SCENE_FLOW), target(FLOW)],
-            ),
+            module,
+            layout,
             globals,
             bind_group,
+            made: BTreeMap::new(),
         }
     }
+
+    /// The pipeline of `pass` writing `sources` (all of that pass), made the first time: the
+    /// shader's other outputs have no target, and a CPU rasterizer spends nothing on them.
+    pub(crate) fn get(
+        &mut self,
+        device: &wgpu::Device,
+        pass: Pass,
+        sources: &[Source],
+    ) -> wgpu::RenderPipeline {
+        let mask = sources
+            .iter()
+            .fold(0u8, |mask, s| mask | (1 << s.location()));
+        self.made
+            .entry((pass, mask))
+            .or_insert_with(|| build(device, &self.module, &self.layout, pass, sources))
+            .clone()
+    }
+}
+
+/// The colour targets of `pass`, by location, `None` where `sources` does not write.
+pub(crate) fn slots<T>(
+    pass: Pass,
+    sources: &[Source],
+    mut each: impl FnMut(Source) -> T,
+) -> Vec<Option<T>> {
+    let all: Vec<Source> = Source::ALL
+        .into_iter()
+        .filter(|s| s.pass() == pass)
+        .collect();
+    all.iter()
+        .map(|&s| sources.contains(&s).then(|| each(s)))
+        .collect()
+}
+
+fn build(
+    device: &wgpu::Device,
+    module: &wgpu::ShaderModule,
+    layout: &wgpu::PipelineLayout,
+    pass: Pass,
+    sources: &[Source],
+) -> wgpu::RenderPipeline {
+    let (vertex, fragment) = match pass {
+        Pass::Surface => ("vs_surface", "fs_surface"),
+        Pass::Motion => ("vs_motion", "fs_motion"),
+    };
+    let targets = slots(pass, sources, |s| wgpu::ColorTargetState {
+        format: s.format(),
+        blend: None,
+        write_mask: wgpu::ColorWrites::ALL,
+    });
+    let buffers = [Some(wgpu::VertexBufferLayout {
+        array_stride: std::mem::size_of::<FrameVertex>() as u64,
+        step_mode: wgpu::VertexStepMode::Vertex,
+        attributes: &VERTEX_ATTRIBUTES,
+    })];
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(fragment),
+        layout: Some(layout),
+        vertex: wgpu::VertexState {
+            module,
+            entry_point: Some(vertex),
+            compilation_options: wgpu::PipelineCompilationOptions::default(),
+            buffers: &buffers,
+        },
+        primitive: wgpu::PrimitiveState {
+            // Both sides: open meshes are seen from inside; closed shapes' far sides are left
+            // out before drawing (see `frame_geometry.rs`).
+            cull_mode: None,
+            ..wgpu::PrimitiveState::default()
+        },
+        depth_stencil: Some(wgpu::DepthStencilState {
+            format: DEPTH,
+            depth_write_enabled: Some(true),
+            depth_compare: Some(wgpu::CompareFunction::Less),
+            stencil: wgpu::StencilState::default(),
+            bias: wgpu::DepthBiasState::default(),
+        }),
+        multisample: wgpu::MultisampleState::default(),
+        fragment: Some(wgpu::FragmentState {
+            module,
+            entry_point: Some(fragment),
+            compilation_options: wgpu::PipelineCompilationOptions::default(),
+            targets: &targets,
+        }),
+        multiview_mask: None,
+        cache: None,
+    })
 }

@@ -3,14 +3,14 @@
 
 use crate::camera::Camera;
 use crate::error::RenderError;
+use crate::frame_geometry::{FrameGeometry, FrameVertex};
 use crate::gpu::Gpu;
-use crate::instances::{Batch, Gatherer, History, Instance, Scene};
-use crate::mesh::{MeshStore, Vertex};
+use crate::instances::{Gatherer, History, Scene};
+use crate::mesh::MeshStore;
 use crate::modality::{Frame, Modality};
-use crate::pipeline::{Globals, Pipelines};
-use crate::targets::{Source, Targets};
+use crate::pipeline::{Globals, Pipelines, slots};
+use crate::targets::{Pass, Source, Target, Targets};
 use rapier3d::math::Vector;
-use wgpu::util::DeviceExt;
 
 /// A camera and what it saw last, for the flow modalities: keep one per camera and render
 /// through it every step.
@@ -42,8 +42,10 @@ pub struct Renderer {
     gpu: Gpu,
     pipelines: Pipelines,
     meshes: MeshStore,
-    mesh_buffers: Option<(wgpu::Buffer, wgpu::Buffer)>,
-    instances: Option<(wgpu::Buffer, usize)>,
+    /// The frame's vertices and indices, kept to be refilled.
+    geometry: FrameGeometry,
+    /// Their GPU copies, grown as frames need.
+    buffers: Option<Buffers>,
     /// Render targets, one set per image size drawn lately (a robot's eye and an overview of
     /// another size take turns without remaking them).
     targets: Vec<Targets>,
@@ -52,17 +54,23 @@ pub struct Renderer {
     stats: FrameStats,
 }
 
+/// The GPU's vertex and index buffers, and how many of each they hold.
+struct Buffers {
+    vertices: wgpu::Buffer,
+    vertex_capacity: usize,
+    indices: wgpu::Buffer,
+    index_capacity: usize,
+}
+
 /// What the last frame drew.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct FrameStats {
-    /// Instances sent to the GPU (a part, particle or drop each).
+    /// Instances drawn (a part, particle or drop each).
     pub instances: usize,
     /// Instances in the view left out as hidden behind big boxes.
     pub culled: usize,
     /// Triangles sent to the GPU.
     pub triangles: u64,
-    /// Draw calls per pass.
-    pub draws: usize,
 }
 
 /// Image sizes whose targets a renderer keeps.
@@ -82,8 +90,8 @@ impl Renderer {
             gpu,
             pipelines,
             meshes: MeshStore::default(),
-            mesh_buffers: None,
-            instances: None,
+            geometry: FrameGeometry::default(),
+            buffers: None,
             targets: Vec::new(),
             cull: true,
             stats: FrameStats::default(),
@@ -126,26 +134,27 @@ impl Renderer {
             cull: self.cull,
         }
         .gather();
+        let motion = modalities
+            .iter()
+            .any(|&m| Source::of(m, modalities).pass() == Pass::Motion);
+        self.geometry.fill(
+            &batch.instances,
+            &self.meshes,
+            camera.pose.translation,
+            motion,
+        );
         self.stats = FrameStats {
             instances: batch.instances.len(),
             culled: batch.culled,
-            triangles: batch
-                .draws
-                .iter()
-                .map(|&(mesh, _, count)| {
-                    let indices = self.meshes.ranges.get(mesh as usize).map_or(0, |r| r.1);
-                    u64::from(indices / 3) * u64::from(count)
-                })
-                .sum(),
-            draws: batch.draws.len(),
+            triangles: self.geometry.triangles(),
         };
-        self.upload(&batch, &camera, view.previous.as_ref());
+        self.upload(&camera, view.previous.as_ref());
         let mut wanted: Vec<Modality> = Modality::ALL
             .into_iter()
             .filter(|m| modalities.contains(m))
             .collect();
         wanted.dedup();
-        let frame = self.draw(&batch, &camera, &wanted)?;
+        let frame = self.draw(&camera, &wanted)?;
         view.previous = Some(History {
             view_projection: camera.view_projection(),
             models: batch.models,
@@ -153,50 +162,41 @@ impl Renderer {
         Ok(frame)
     }
 
-    /// Sends meshes (when new ones were made), instances and globals to the GPU.
-    fn upload(&mut self, batch: &Batch, camera: &Camera, previous: Option<&History>) {
+    /// Sends the frame's vertices, indices and globals to the GPU.
+    fn upload(&mut self, camera: &Camera, previous: Option<&History>) {
         let device = &self.gpu.device;
-        if self.meshes.grown || self.mesh_buffers.is_none() {
-            let vertices = if self.meshes.vertices.is_empty() {
-                vec![Vertex::default()]
-            } else {
-                self.meshes.vertices.clone()
+        let (vertices, indices) = (&self.geometry.vertices, &self.geometry.indices);
+        let fits =
+            |b: &Buffers| b.vertex_capacity >= vertices.len() && b.index_capacity >= indices.len();
+        if !self.buffers.as_ref().is_some_and(fits) {
+            let buffer = |label, count: usize, size: usize, usage| {
+                device.create_buffer(&wgpu::BufferDescriptor {
+                    label: Some(label),
+                    size: (count * size) as u64,
+                    usage: usage | wgpu::BufferUsages::COPY_DST,
+                    mapped_at_creation: false,
+                })
             };
-            let indices = if self.meshes.indices.is_empty() {
-                vec![0u32]
-            } else {
-                self.meshes.indices.clone()
-            };
-            let v = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: Some("vertices"),
-                contents: bytemuck::cast_slice(&vertices),
-                usage: wgpu::BufferUsages::VERTEX,
+            let vertex_capacity = vertices.len().next_power_of_two().max(4096);
+            let index_capacity = indices.len().next_power_of_two().max(8192);
+            self.buffers = Some(Buffers {
+                vertices: buffer(
+                    "vertices",
+                    vertex_capacity,
+                    std::mem::size_of::<FrameVertex>(),
+                    wgpu::BufferUsages::VERTEX,
+                ),
+                vertex_capacity,
+                indices: buffer("indices", index_capacity, 4, wgpu::BufferUsages::INDEX),
+                index_capacity,
             });
-            let i = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: Some("indices"),
-                contents: bytemuck::cast_slice(&indices),
-                usage: wgpu::BufferUsages::INDEX,
-            });
-            self.mesh_buffers = Some((v, i));
-            self.meshes.grown = false;
         }
-        let needed = batch.instances.len().max(1);
-        if self.instances.as_ref().is_none_or(|(_, cap)| *cap < needed) {
-            let capacity = needed.next_power_of_two().max(256);
-            let buffer = device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some("instances"),
-                size: (capacity * std::mem::size_of::<Instance>()) as u64,
-                usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
-                mapped_at_creation: false,
-            });
-            self.instances = Some((buffer, capacity));
-        }
-        if let Some((buffer, _)) = &self.instances
-            && !batch.instances.is_empty()
+        if let Some(b) = &self.buffers
+            && !indices.is_empty()
         {
-            self.gpu
-                .queue
-                .write_buffer(buffer, 0, bytemuck::cast_slice(&batch.instances));
+            let queue = &self.gpu.queue;
+            queue.write_buffer(&b.vertices, 0, bytemuck::cast_slice(vertices));
+            queue.write_buffer(&b.indices, 0, bytemuck::cast_slice(indices));
         }
         let view_projection = camera.view_projection();
         let previous = previous.map_or(view_projection, |h| h.view_projection);
@@ -214,12 +214,7 @@ impl Renderer {
             .write_buffer(&self.pipelines.globals, 0, bytemuck::bytes_of(&globals));
     }
 
-    fn draw(
-        &mut self,
-        batch: &Batch,
-        camera: &Camera,
-        wanted: &[Modality],
-    ) -> Result<Frame, RenderError> {
+    fn draw(&mut self, camera: &Camera, wanted: &[Modality]) -> Result<Frame, RenderError> {
         let size = (camera.width, camera.height);
         let kept = match self.targets.iter().position(|t| t.size() == size) {
             Some(k) => k,
@@ -232,9 +227,7 @@ impl Renderer {
                 self.targets.len() - 1
             }
         };
-        let (Some(targets), Some((vertices, indices)), Some((instances, _))) =
-            (self.targets.get(kept), &self.mesh_buffers, &self.instances)
-        else {
+        let (Some(targets), Some(buffers)) = (self.targets.get(kept), &self.buffers) else {
             return Err(RenderError::Gpu("buffers missing".into()));
         };
         let mut encoder = self
@@ -243,69 +236,51 @@ impl Renderer {
             .create_command_encoder(&wgpu::CommandEncoderDescriptor {
                 label: Some("frame"),
             });
-        let still = wanted.iter().any(|m| !m.moving());
-        let moving = wanted.iter().any(|m| m.moving());
-        let geometry = Geometry {
-            vertices,
-            indices,
-            instances,
-            batch,
-            ranges: &self.meshes.ranges,
-            pipelines: &self.pipelines,
-        };
-        if still {
-            let attachments = [
-                attachment(
-                    &targets.color.view,
-                    wgpu::Color {
-                        r: 0.05,
-                        g: 0.05,
-                        b: 0.06,
-                        a: 1.0,
-                    },
-                ),
-                attachment(&targets.geometry.view, wgpu::Color::TRANSPARENT),
-                attachment(&targets.ids.view, wgpu::Color::TRANSPARENT),
-            ];
-            geometry.pass(
-                &mut encoder,
-                &attachments,
-                &targets.depth,
-                &self.pipelines.surface,
-            );
-        }
-        if moving {
-            let attachments = [
-                attachment(&targets.scene_flow.view, wgpu::Color::TRANSPARENT),
-                attachment(&targets.flow.view, wgpu::Color::TRANSPARENT),
-            ];
-            geometry.pass(
-                &mut encoder,
-                &attachments,
-                &targets.depth,
-                &self.pipelines.motion,
-            );
-        }
         let sources = Source::all_of(wanted);
-        for &s in &sources {
-            targets.get(s).copy(&mut encoder, size);
+        for pass in [Pass::Surface, Pass::Motion] {
+            let drawn: Vec<Source> = sources
+                .iter()
+                .copied()
+                .filter(|s| s.pass() == pass)
+                .collect();
+            if drawn.is_empty() {
+                continue;
+            }
+            let attachments = slots(pass, &drawn, |s| {
+                targets.get(s).map(|t| attachment(&t.view, s.clear()))
+            });
+            let attachments: Vec<_> = attachments.into_iter().map(Option::flatten).collect();
+            let pipeline = self.pipelines.get(&self.gpu.device, pass, &drawn);
+            let geometry = Geometry {
+                buffers,
+                indices: self.geometry.indices.len() as u32,
+                bind_group: &self.pipelines.bind_group,
+            };
+            geometry.pass(&mut encoder, &attachments, &targets.depth, &pipeline);
+        }
+        let read: Vec<(Source, &Target)> = sources
+            .iter()
+            .filter_map(|&s| Some((s, targets.get(s)?)))
+            .collect();
+        for (_, target) in &read {
+            target.copy(&mut encoder, size);
         }
         self.gpu.queue.submit([encoder.finish()]);
-        for &s in &sources {
-            targets.get(s).request();
+        for (_, target) in &read {
+            target.request();
         }
         self.gpu
             .device
             .poll(wgpu::PollType::wait_indefinitely())
             .map_err(|e| RenderError::Gpu(e.to_string()))?;
         let mut images = Vec::with_capacity(wanted.len());
-        for &s in &sources {
+        for (s, target) in &read {
             let from_here: Vec<Modality> = wanted
                 .iter()
                 .copied()
-                .filter(|&m| Source::of(m) == s)
+                .filter(|&m| Source::of(m, wanted) == *s)
                 .collect();
-            let decoded = targets.get(s).decode(&from_here, size);
+            let decoded = target.decode(&from_here, size);
             images.extend(decoded.map_err(RenderError::Gpu)?);
         }
         // In `wanted`'s order, which is `Modality::ALL`'s.
@@ -318,11 +293,8 @@ impl Renderer {
     }
 }
 
-fn attachment(
-    view: &wgpu::TextureView,
-    clear: wgpu::Color,
-) -> Option<wgpu::RenderPassColorAttachment<'_>> {
-    Some(wgpu::RenderPassColorAttachment {
+fn attachment(view: &wgpu::TextureView, clear: wgpu::Color) -> wgpu::RenderPassColorAttachment<'_> {
+    wgpu::RenderPassColorAttachment {
         view,
         depth_slice: None,
         resolve_target: None,
@@ -330,18 +302,15 @@ fn attachment(
             load: wgpu::LoadOp::Clear(clear),
             store: wgpu::StoreOp::Store,
         },
-    })
+    }
 }
 
 /// What a pass draws.
 struct Geometry<'a> {
-    vertices: &'a wgpu::Buffer,
-    indices: &'a wgpu::Buffer,
-    instances: &'a wgpu::Buffer,
-    batch: &'a Batch,
-    /// Per mesh: first index, index count, base vertex.
-    ranges: &'a [(u32, u32, i32)],
-    pipelines: &'a Pipelines,
+    buffers: &'a Buffers,
+    /// How many indices of the buffer this frame uses.
+    indices: u32,
+    bind_group: &'a wgpu::BindGroup,
 }
 
 impl Geometry<'_> {
@@ -367,16 +336,13 @@ impl Geometry<'_> {
             occlusion_query_set: None,
             multiview_mask: None,
         });
-        pass.set_pipeline(pipeline);
-        pass.set_bind_group(0, &self.pipelines.bind_group, &[]);
-        pass.set_vertex_buffer(0, self.vertices.slice(..));
-        pass.set_vertex_buffer(1, self.instances.slice(..));
-        pass.set_index_buffer(self.indices.slice(..), wgpu::IndexFormat::Uint32);
-        for &(mesh, first, count) in &self.batch.draws {
-            let Some(&(start, n, base)) = self.ranges.get(mesh as usize) else {
-                continue;
-            };
-            pass.draw_indexed(start..start + n, base, first..first + count);
+        if self.indices == 0 {
+            return;
         }
+        pass.set_pipeline(pipeline);
+        pass.set_bind_group(0, self.bind_group, &[]);
+        pass.set_vertex_buffer(0, self.buffers.vertices.slice(..));
+        pass.set_index_buffer(self.buffers.indices.slice(..), wgpu::IndexFormat::Uint32);
+        pass.draw_indexed(0..self.indices, 0, 0..1);
     }
 }

@@ -1,6 +1,8 @@
-// The world drawn from one camera. Two passes share the vertex stage:
-// - `fs_surface`: lit colour, camera-frame normal + depth, instance and category ids;
-// - `fs_motion`: optical flow (pixels) and scene flow (m) since the previous frame.
+// The world drawn from one camera, in two passes:
+// - `fs_surface`: lit colour, camera-frame normal with depth (or depth alone), instance and
+//   category ids;
+// - `fs_motion`: scene flow (m) and optical flow (pixels) since the previous frame.
+// A pipeline gives targets only to the outputs the modalities asked for need (`pipeline.rs`).
 
 struct Globals {
     view_proj: mat4x4<f32>,
@@ -15,26 +17,17 @@ struct Globals {
 
 @group(0) @binding(0) var<uniform> g: Globals;
 
+// A vertex placed in the world by the CPU (see `frame_geometry.rs`).
 struct VertexIn {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
-};
-
-// Affine transforms as three rows; the normal matrix as three rows (w of the first: shine).
-struct InstanceIn {
-    @location(2) m0: vec4<f32>,
-    @location(3) m1: vec4<f32>,
-    @location(4) m2: vec4<f32>,
-    @location(5) n0: vec4<f32>,
-    @location(6) n1: vec4<f32>,
-    @location(7) n2: vec4<f32>,
-    @location(8) p0: vec4<f32>,
-    @location(9) p1: vec4<f32>,
-    @location(10) p2: vec4<f32>,
+    // Where this point was last frame.
+    @location(2) previous: vec3<f32>,
+    @location(3) shine: f32,
     // Linear albedo, and emission in w.
-    @location(11) color: vec4<f32>,
+    @location(4) color: vec4<f32>,
     // Instance id, and category id | highlight << 16.
-    @location(12) ids: vec2<u32>,
+    @location(5) ids: vec2<u32>,
 };
 
 // What the surface pass interpolates: as little as it needs (a CPU rasterizer pays for every
@@ -57,42 +50,35 @@ struct MotionVertex {
     @location(3) now_clip: vec4<f32>,
 };
 
-fn affine(r0: vec4<f32>, r1: vec4<f32>, r2: vec4<f32>, p: vec3<f32>) -> vec3<f32> {
-    let q = vec4<f32>(p, 1.0);
-    return vec3<f32>(dot(r0, q), dot(r1, q), dot(r2, q));
-}
-
 @vertex
-fn vs_surface(v: VertexIn, i: InstanceIn) -> SurfaceVertex {
+fn vs_surface(v: VertexIn) -> SurfaceVertex {
     var out: SurfaceVertex;
-    let world = affine(i.m0, i.m1, i.m2, v.position);
-    out.camera = (g.view * vec4<f32>(world, 1.0)).xyz;
-    let normal = vec3<f32>(dot(i.n0.xyz, v.normal), dot(i.n1.xyz, v.normal), dot(i.n2.xyz, v.normal));
-    out.normal = (g.view * vec4<f32>(normal, 0.0)).xyz;
-    out.clip = g.view_proj * vec4<f32>(world, 1.0);
-    out.color = i.color;
-    out.ids = i.ids;
-    out.shine = i.n0.w;
+    let world = vec4<f32>(v.position, 1.0);
+    out.camera = (g.view * world).xyz;
+    out.normal = (g.view * vec4<f32>(v.normal, 0.0)).xyz;
+    out.clip = g.view_proj * world;
+    out.color = v.color;
+    out.ids = v.ids;
+    out.shine = v.shine;
     return out;
 }
 
 @vertex
-fn vs_motion(v: VertexIn, i: InstanceIn) -> MotionVertex {
+fn vs_motion(v: VertexIn) -> MotionVertex {
     var out: MotionVertex;
-    let world = affine(i.m0, i.m1, i.m2, v.position);
-    let prev = affine(i.p0, i.p1, i.p2, v.position);
-    out.world = world;
-    out.prev_world = prev;
-    out.clip = g.view_proj * vec4<f32>(world, 1.0);
+    out.world = v.position;
+    out.prev_world = v.previous;
+    out.clip = g.view_proj * vec4<f32>(v.position, 1.0);
     out.now_clip = out.clip;
-    out.prev_clip = g.prev_view_proj * vec4<f32>(prev, 1.0);
+    out.prev_clip = g.prev_view_proj * vec4<f32>(v.previous, 1.0);
     return out;
 }
 
 struct SurfaceOut {
     @location(0) color: vec4<f32>,
     @location(1) geometry: vec4<f32>,
-    @location(2) ids: vec2<u32>,
+    @location(2) depth: f32,
+    @location(3) ids: vec2<u32>,
 };
 
 @fragment
@@ -117,6 +103,7 @@ fn fs_surface(in: SurfaceVertex) -> SurfaceOut {
     var out: SurfaceOut;
     out.color = vec4<f32>(min(lit, vec3<f32>(1.0)), 1.0);
     out.geometry = vec4<f32>(n, in.camera.x);
+    out.depth = in.camera.x;
     out.ids = in.ids;
     return out;
 }

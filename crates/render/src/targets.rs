@@ -2,7 +2,7 @@
 //! their bytes into a [`Frame`]'s arrays.
 
 use crate::modality::{Image, Modality, Pixels};
-use crate::pipeline::{COLOR, DEPTH, FLOW, GEOMETRY, IDS, SCENE_FLOW};
+use crate::pipeline::{CAMERA_DEPTH, COLOR, DEPTH, FLOW, GEOMETRY, IDS, SCENE_FLOW};
 
 /// A texture and the buffer it is copied into for reading.
 pub(crate) struct Target {
@@ -15,15 +15,11 @@ pub(crate) struct Target {
     padded_row: u32,
 }
 
-/// Every target of one image size.
+/// Every target of one image size, by [`Source`], and the depth test's buffer.
 pub(crate) struct Targets {
     pub(crate) width: u32,
     pub(crate) height: u32,
-    pub(crate) color: Target,
-    pub(crate) geometry: Target,
-    pub(crate) ids: Target,
-    pub(crate) scene_flow: Target,
-    pub(crate) flow: Target,
+    targets: [Target; 6],
     pub(crate) depth: wgpu::TextureView,
 }
 
@@ -49,14 +45,10 @@ fn texture(
 }
 
 impl Target {
-    fn new(
-        device: &wgpu::Device,
-        size: (u32, u32),
-        format: wgpu::TextureFormat,
-        texel: u32,
-    ) -> Target {
-        let texture = texture(device, size, format);
+    fn new(device: &wgpu::Device, size: (u32, u32), source: Source) -> Target {
+        let texture = texture(device, size, source.format());
         let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
+        let texel = source.texel();
         let align = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
         let padded_row = (size.0 * texel).div_ceil(align) * align;
         let readback = device.create_buffer(&wgpu::BufferDescriptor {
@@ -123,7 +115,7 @@ impl Target {
                 .map(|r| &r[..row]);
             modalities
                 .iter()
-                .map(|&m| decode(m, rows.clone(), (w, h)))
+                .map(|&m| decode(m, self.texel, rows.clone(), (w, h)))
                 .collect()
         };
         self.readback.unmap();
@@ -139,11 +131,7 @@ impl Targets {
         Targets {
             width,
             height,
-            color: Target::new(device, size, COLOR, 4),
-            geometry: Target::new(device, size, GEOMETRY, 16),
-            ids: Target::new(device, size, IDS, 8),
-            scene_flow: Target::new(device, size, SCENE_FLOW, 16),
-            flow: Target::new(device, size, FLOW, 8),
+            targets: Source::ALL.map(|s| Target::new(device, size, s)),
             depth,
         }
     }
@@ -152,116 +140,186 @@ impl Targets {
         (self.width, self.height)
     }
 
-    pub(crate) fn get(&self, source: Source) -> &Target {
-        match source {
-            Source::Color => &self.color,
-            Source::Geometry => &self.geometry,
-            Source::Ids => &self.ids,
-            Source::SceneFlow => &self.scene_flow,
-            Source::Flow => &self.flow,
-        }
+    pub(crate) fn get(&self, source: Source) -> Option<&Target> {
+        self.targets.get(source as usize)
     }
 }
 
-/// Which target a modality is read from.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// Which pass draws a target.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) enum Pass {
+    /// Colour, normals, depth and ids (`fs_surface`).
+    Surface,
+    /// Scene and optical flow (`fs_motion`).
+    Motion,
+}
+
+/// A target modalities are read from: one output of a pass. A pass writes only the targets
+/// the modalities asked for need, since every byte a pixel writes costs a CPU rasterizer time.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 pub(crate) enum Source {
     Color,
+    /// Normal and depth, when normals are asked for.
     Geometry,
+    /// Depth alone, when they are not. (Colour, a separate normal and depth, and ids together
+    /// would pass the 32 bytes a pixel that portable adapters allow.)
+    Depth,
     Ids,
     SceneFlow,
     Flow,
 }
 
 impl Source {
-    pub(crate) fn of(modality: Modality) -> Source {
+    /// In `shader.wgsl`'s order of outputs, pass by pass.
+    pub(crate) const ALL: [Source; 6] = [
+        Source::Color,
+        Source::Geometry,
+        Source::Depth,
+        Source::Ids,
+        Source::SceneFlow,
+        Source::Flow,
+    ];
+
+    /// Where `modality` is read from in a frame that asks for `wanted`.
+    pub(crate) fn of(modality: Modality, wanted: &[Modality]) -> Source {
         match modality {
             Modality::Rgb => Source::Color,
-            Modality::Depth | Modality::Normal => Source::Geometry,
+            Modality::Normal => Source::Geometry,
+            Modality::Depth if wanted.contains(&Modality::Normal) => Source::Geometry,
+            Modality::Depth => Source::Depth,
             Modality::Seg | Modality::InsSeg | Modality::Highlight => Source::Ids,
             Modality::SceneFlow => Source::SceneFlow,
             Modality::Flow => Source::Flow,
         }
     }
 
-    /// The targets some modalities are read from, each once.
-    pub(crate) fn all_of(modalities: &[Modality]) -> Vec<Source> {
-        let mut out: Vec<Source> = Vec::new();
-        for &m in modalities {
-            let s = Source::of(m);
-            if !out.contains(&s) {
-                out.push(s);
-            }
+    /// The targets the modalities `wanted` are read from, each once, in [`Source::ALL`]'s
+    /// order.
+    pub(crate) fn all_of(wanted: &[Modality]) -> Vec<Source> {
+        Source::ALL
+            .into_iter()
+            .filter(|&s| wanted.iter().any(|&m| Source::of(m, wanted) == s))
+            .collect()
+    }
+
+    pub(crate) fn pass(self) -> Pass {
+        match self {
+            Source::Color | Source::Geometry | Source::Depth | Source::Ids => Pass::Surface,
+            Source::SceneFlow | Source::Flow => Pass::Motion,
         }
-        out
+    }
+
+    /// The fragment output (`@location`) of its pass it is drawn from.
+    pub(crate) fn location(self) -> usize {
+        match self {
+            Source::Color | Source::SceneFlow => 0,
+            Source::Geometry | Source::Flow => 1,
+            Source::Depth => 2,
+            Source::Ids => 3,
+        }
+    }
+
+    pub(crate) fn format(self) -> wgpu::TextureFormat {
+        match self {
+            Source::Color => COLOR,
+            Source::Geometry => GEOMETRY,
+            Source::Depth => CAMERA_DEPTH,
+            Source::Ids => IDS,
+            Source::SceneFlow => SCENE_FLOW,
+            Source::Flow => FLOW,
+        }
+    }
+
+    /// Bytes per texel.
+    fn texel(self) -> u32 {
+        match self {
+            Source::Color | Source::Depth => 4,
+            Source::Ids | Source::Flow => 8,
+            Source::Geometry | Source::SceneFlow => 16,
+        }
+    }
+
+    /// What a pixel holds where nothing is drawn.
+    pub(crate) fn clear(self) -> wgpu::Color {
+        match self {
+            Source::Color => wgpu::Color {
+                r: 0.05,
+                g: 0.05,
+                b: 0.06,
+                a: 1.0,
+            },
+            _ => wgpu::Color::TRANSPARENT,
+        }
     }
 }
 
-/// `from` of the 4 bytes at `offset` of each texel of `size` bytes.
-fn word<'a, T>(
+/// The texels of some rows, each mapped by `from`.
+fn texels<'a, const N: usize, T>(
     rows: impl Iterator<Item = &'a [u8]>,
-    size: usize,
-    offset: usize,
-    from: impl Fn([u8; 4]) -> T,
+    capacity: usize,
+    from: impl Fn(&[u8; N]) -> T,
 ) -> Vec<T> {
-    let mut out = Vec::new();
+    let mut out = Vec::with_capacity(capacity);
     for row in rows {
-        out.reserve(row.len() / size);
-        for t in row.chunks_exact(size) {
-            if let Ok(bytes) = t[offset..offset + 4].try_into() {
-                out.push(from(bytes));
-            }
-        }
+        out.extend(row.as_chunks::<N>().0.iter().map(&from));
     }
     out
 }
 
-/// The first three 4-byte floats of each texel of `size` bytes.
-fn three_floats<'a>(rows: impl Iterator<Item = &'a [u8]> + Clone, size: usize) -> Vec<f32> {
-    let [x, y, z] = [0, 4, 8].map(|offset| word(rows.clone(), size, offset, f32::from_le_bytes));
-    x.iter()
-        .zip(&y)
-        .zip(&z)
-        .flat_map(|((&x, &y), &z)| [x, y, z])
-        .collect()
+fn f32_at<const N: usize>(texel: &[u8; N], offset: usize) -> f32 {
+    f32::from_le_bytes([
+        texel[offset],
+        texel[offset + 1],
+        texel[offset + 2],
+        texel[offset + 3],
+    ])
 }
 
-/// Decodes one modality from the rows of its target (padding cut off).
+/// Decodes one modality from the rows of its target (padding cut off), whose texels are
+/// `texel` bytes (depth is read from the depth target or the geometry's fourth float).
 fn decode<'a>(
     modality: Modality,
-    rows: impl Iterator<Item = &'a [u8]> + Clone,
+    texel: u32,
+    rows: impl Iterator<Item = &'a [u8]>,
     (w, h): (u32, u32),
 ) -> Image {
     let (w, h) = (w as usize, h as usize);
+    let n = w * h;
     let (shape, pixels) = match modality {
         Modality::Rgb => {
-            let mut rgb = Vec::with_capacity(w * h * 3);
-            for row in rows {
-                for t in row.chunks_exact(4) {
-                    rgb.extend_from_slice(&t[..3]);
-                }
-            }
-            (vec![h, w, 3], Pixels::U8(rgb))
+            let rgb = texels(rows, n, |t: &[u8; 4]| [t[0], t[1], t[2]]);
+            (vec![h, w, 3], Pixels::U8(rgb.into_flattened()))
         }
+        Modality::Depth if texel == 16 => (
+            vec![h, w],
+            Pixels::F32(texels(rows, n, |t: &[u8; 16]| f32_at(t, 12))),
+        ),
         Modality::Depth => (
             vec![h, w],
-            Pixels::F32(word(rows, 16, 12, f32::from_le_bytes)),
+            Pixels::F32(texels(rows, n, |t: &[u8; 4]| f32_at(t, 0))),
         ),
-        Modality::Normal => (vec![h, w, 3], Pixels::F32(three_floats(rows, 16))),
-        Modality::InsSeg => (
-            vec![h, w],
-            Pixels::U32(word(rows, 8, 0, u32::from_le_bytes)),
-        ),
+        Modality::Normal | Modality::SceneFlow => {
+            let xyz = texels(rows, n, |t: &[u8; 16]| [0, 4, 8].map(|o| f32_at(t, o)));
+            (vec![h, w, 3], Pixels::F32(xyz.into_flattened()))
+        }
+        Modality::InsSeg => {
+            let ids = texels(rows, n, |t: &[u8; 8]| {
+                u32::from_le_bytes([t[0], t[1], t[2], t[3]])
+            });
+            (vec![h, w], Pixels::U32(ids))
+        }
         Modality::Seg => {
-            let seg = word(rows, 8, 4, |b| u16::from_le_bytes([b[0], b[1]]));
+            let seg = texels(rows, n, |t: &[u8; 8]| u16::from_le_bytes([t[4], t[5]]));
             (vec![h, w], Pixels::U16(seg))
         }
-        Modality::Highlight => (vec![h, w], Pixels::U8(word(rows, 8, 4, |b| b[2] & 1))),
-        Modality::Flow => (
-            vec![h, w, 2],
-            Pixels::F32(word(rows, 4, 0, f32::from_le_bytes)),
+        Modality::Highlight => (
+            vec![h, w],
+            Pixels::U8(texels(rows, n, |t: &[u8; 8]| t[6] & 1)),
         ),
-        Modality::SceneFlow => (vec![h, w, 3], Pixels::F32(three_floats(rows, 16))),
+        Modality::Flow => {
+            let xy = texels(rows, n, |t: &[u8; 8]| [f32_at(t, 0), f32_at(t, 4)]);
+            (vec![h, w, 2], Pixels::F32(xy.into_flattened()))
+        }
     };
     Image {
         modality,

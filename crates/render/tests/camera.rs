@@ -283,6 +283,28 @@ fn only_the_modalities_asked_for_come_back() {
     assert!(err.to_string().contains("width"), "{err}");
 }
 
+/// Each frame writes only the targets its modalities need (depth alone, or with the normals);
+/// every modality must come out the same whatever it is asked with.
+#[test]
+fn a_modality_asked_for_alone_equals_it_asked_for_with_all_the_others() {
+    let mut world = World::default();
+    red_box(&mut world);
+    red_box_at(&mut world, 1, v(3.0, 0.6, 0.4));
+    let eye = Camera::looking_at(v(-1.0, 1.0, 1.0), v(2.0, 0.0, 0.0), 64, 48, 1.2);
+    let all = render(&world, &mut View::new(eye), &[], &Modality::ALL);
+    for m in Modality::ALL {
+        for with in [vec![m], vec![m, Modality::Rgb], vec![m, Modality::Depth]] {
+            let frame = render(&world, &mut View::new(eye), &[], &with);
+            assert_eq!(frame.get(m), all.get(m), "{m} asked with {with:?}");
+        }
+    }
+    let depth = all.get(Modality::Depth).unwrap();
+    let Pixels::F32(d) = &depth.pixels else {
+        panic!("depth is f32")
+    };
+    assert!(d.iter().any(|&x| x > 1.0), "no box seen");
+}
+
 /// A fixed grey box (a wall, a crate) of `half` extents at `at`.
 fn slab(world: &mut World, name: &str, at: Vector, half: Vector) -> ObjectId {
     let part = Part::new(Primitive::Box { half_extents: half });

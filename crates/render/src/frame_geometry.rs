@@ -1,0 +1,112 @@
+//! A frame's triangles in the world: every drawn instance's mesh placed by the CPU into one
+//! vertex list and one index list, drawn by a single call, without the triangles of closed
+//! shapes that face away from the camera.
+//!
+//! Why here and not on the GPU: on lavapipe every triangle costs about a thousand instructions
+//! of setup and rasterization, and every draw call or instance its own pass through the vertex
+//! stage, while placing a vertex or testing a triangle's side here costs tens. Half of a closed
+//! shape's triangles face away, and the pipeline cannot cull them itself because open meshes
+//! (a bowl) are seen from both sides in the same draw. A GPU would not mind either way.
+
+use crate::instances::Instance;
+use crate::mesh::MeshStore;
+use bytemuck::{Pod, Zeroable};
+use rapier3d::glamx::{Affine3A, Mat3A, Vec3A};
+use rapier3d::math::Vector;
+
+/// A vertex as the shader reads it (`shader.wgsl`'s `VertexIn`), in the world's frame.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub(crate) struct FrameVertex {
+    pub(crate) position: [f32; 3],
+    /// Not of unit length (the shader normalises per pixel).
+    pub(crate) normal: [f32; 3],
+    /// Where this point was last frame (for the flow modalities).
+    pub(crate) previous: [f32; 3],
+    pub(crate) shine: f32,
+    /// Linear albedo, and emission in w.
+    pub(crate) color: [f32; 4],
+    /// Instance id, and category id | highlight << 16.
+    pub(crate) ids: [u32; 2],
+}
+
+/// The lists, kept between frames so that a frame like the last allocates nothing.
+#[derive(Default)]
+pub(crate) struct FrameGeometry {
+    pub(crate) vertices: Vec<FrameVertex>,
+    pub(crate) indices: Vec<u32>,
+}
+
+/// The affine transform whose rows are `rows`.
+fn affine(rows: &[[f32; 4]; 3]) -> Affine3A {
+    let [x, y, z] = rows;
+    Affine3A::from_cols(
+        Vec3A::new(x[0], y[0], z[0]),
+        Vec3A::new(x[1], y[1], z[1]),
+        Vec3A::new(x[2], y[2], z[2]),
+        Vec3A::new(x[3], y[3], z[3]),
+    )
+}
+
+/// Whether the counter-clockwise `triangle` of `vertices` shows its front to `eye`.
+fn faces(vertices: &[FrameVertex], triangle: &[u32], eye: Vector) -> bool {
+    let corner = |k: usize| {
+        let i = triangle[k] as usize;
+        vertices
+            .get(i)
+            .map_or(Vector::ZERO, |v| Vector::from_array(v.position))
+    };
+    let (a, b, c) = (corner(0), corner(1), corner(2));
+    (b - a).cross(c - a).dot(eye - a) > 0.0
+}
+
+impl FrameGeometry {
+    /// Replaces the lists with `instances` placed, in their order, seen from `eye`; with
+    /// where each vertex was last frame if `motion`.
+    pub(crate) fn fill(
+        &mut self,
+        instances: &[Instance],
+        meshes: &MeshStore,
+        eye: Vector,
+        motion: bool,
+    ) {
+        self.vertices.clear();
+        self.indices.clear();
+        for instance in instances {
+            let mesh = meshes.mesh(instance.mesh);
+            let base = self.vertices.len();
+            let model = affine(&instance.model);
+            let previous = affine(&instance.previous);
+            let [x, y, z] = instance.normal;
+            let normal = Mat3A::from_cols_array_2d(&[x, y, z]).transpose();
+            self.vertices.extend(mesh.vertices.iter().map(|v| {
+                let p = Vec3A::from_array(v.position);
+                let position = model.transform_point3a(p).to_array();
+                FrameVertex {
+                    position,
+                    normal: (normal * Vec3A::from_array(v.normal)).to_array(),
+                    previous: if motion {
+                        previous.transform_point3a(p).to_array()
+                    } else {
+                        position
+                    },
+                    shine: instance.shine,
+                    color: instance.color,
+                    ids: instance.ids,
+                }
+            }));
+            let placed = &self.vertices[base..];
+            for triangle in mesh.indices.chunks_exact(3) {
+                if mesh.closed && !faces(placed, triangle, eye) {
+                    continue;
+                }
+                self.indices
+                    .extend(triangle.iter().map(|&i| base as u32 + i));
+            }
+        }
+    }
+
+    pub(crate) fn triangles(&self) -> u64 {
+        self.indices.len() as u64 / 3
+    }
+}

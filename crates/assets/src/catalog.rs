@@ -138,8 +138,8 @@ pub const CATALOG: &[Archetype] = &[
     Archetype { synset: "pool.n.01", shape: Shape::OpenContainer, min: [1.2, 1.2, 0.3], max: [2.0, 2.0, 0.8], density: 900.0, material: Material::Plastic, color: [60, 170, 230] }, // swimming pool / hot tub: a large open basin
     Archetype { synset: "pop.n.02", shape: Shape::Cylinder, min: [0.066, 0.066, 0.12], max: [0.066, 0.066, 0.16], density: 1000.0, material: Material::Metal, color: [200, 40, 60] }, // soda pop, a can
     Archetype { synset: "pork.n.01", shape: Shape::Block, min: [0.12, 0.08, 0.03], max: [0.25, 0.15, 0.08], density: 1050.0, material: Material::Food, color: [235, 150, 150] },
-    Archetype { synset: "pot_plant.n.01", shape: Shape::Cylinder, min: [0.15, 0.15, 0.25], max: [0.35, 0.35, 0.8], density: 500.0, material: Material::Ceramic, color: [50, 150, 60] },
-    Archetype { synset: "printer.n.03", shape: Shape::Block, min: [0.35, 0.3, 0.15], max: [0.5, 0.42, 0.3], density: 500.0, material: Material::Plastic, color: [220, 220, 225] },
+    Archetype { synset: "pot_plant.n.01", shape: Shape::Cylinder, min: [0.15, 0.15, 0.25], max: [0.35, 0.35, 0.8], density: 120.0, material: Material::Ceramic, color: [50, 150, 60] }, // a houseplant in its pot, 0.5–9 kg
+    Archetype { synset: "printer.n.03", shape: Shape::Block, min: [0.35, 0.3, 0.15], max: [0.5, 0.42, 0.3], density: 150.0, material: Material::Plastic, color: [220, 220, 225] }, // hollow casing: a desktop printer weighs 5–10 kg
     Archetype { synset: "pumpkin.n.02", shape: Shape::Ball, min: [0.2, 0.2, 0.17], max: [0.35, 0.35, 0.3], density: 700.0, material: Material::Food, color: [240, 130, 20] },
     Archetype { synset: "radish.n.01", shape: Shape::Ball, min: [0.025, 0.025, 0.025], max: [0.04, 0.04, 0.04], density: 950.0, material: Material::Food, color: [210, 40, 80] },
     Archetype { synset: "rag.n.01", shape: Shape::Slab, min: [0.2, 0.2, 0.005], max: [0.35, 0.35, 0.02], density: 300.0, material: Material::Cloth, color: [180, 160, 140] },
@@ -190,7 +190,7 @@ pub const CATALOG: &[Archetype] = &[
     Archetype { synset: "tray.n.01", shape: Shape::Slab, min: [0.3, 0.22, 0.02], max: [0.5, 0.35, 0.04], density: 800.0, material: Material::Plastic, color: [160, 120, 80] },
     Archetype { synset: "umbrella.n.01", shape: Shape::Rod, min: [0.6, 0.05, 0.05], max: [1.0, 0.08, 0.08], density: 500.0, material: Material::Cloth, color: [40, 40, 110] },
     Archetype { synset: "underwear.n.01", shape: Shape::Slab, min: [0.12, 0.1, 0.01], max: [0.25, 0.2, 0.03], density: 300.0, material: Material::Cloth, color: [240, 200, 210] }, // folded
-    Archetype { synset: "vacuum.n.04", shape: Shape::Block, min: [0.3, 0.25, 0.3], max: [0.4, 0.35, 1.1], density: 400.0, material: Material::Plastic, color: [180, 40, 60] }, // vacuum cleaner
+    Archetype { synset: "vacuum.n.04", shape: Shape::Block, min: [0.3, 0.25, 0.3], max: [0.4, 0.35, 1.1], density: 60.0, material: Material::Plastic, color: [180, 40, 60] }, // vacuum cleaner: mostly air in its box, 2–9 kg as upright ones weigh
     Archetype { synset: "vegetable_oil.n.01", shape: Shape::Cylinder, min: [0.06, 0.06, 0.22], max: [0.09, 0.09, 0.32], density: 950.0, material: Material::Plastic, color: [230, 200, 60] }, // bottle of oil
     Archetype { synset: "vehicle.n.01", shape: Shape::LiddedContainer, min: [3.6, 1.6, 1.4], max: [4.2, 1.8, 1.5], density: 1000.0, material: Material::Metal, color: [60, 90, 160] }, // a car-sized vehicle; openable, so a lidded box
     Archetype { synset: "vessel.n.03", shape: Shape::Cylinder, min: [0.07, 0.07, 0.1], max: [0.12, 0.12, 0.2], density: 1000.0, material: Material::Plastic, color: [200, 180, 80] }, // a container for liquid (car-wax tin/bottle)

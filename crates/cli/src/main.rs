@@ -5,6 +5,7 @@
 
 mod bddl;
 mod bench_env;
+mod bench_plan;
 mod episode;
 mod facts;
 mod map;
@@ -15,6 +16,7 @@ mod replay;
 mod run;
 mod sample;
 mod scene;
+mod solve;
 mod video;
 
 use clap::{Parser, Subcommand};
@@ -55,6 +57,11 @@ enum Command {
     Run(run::RunArgs),
     /// What a camera sees: every image modality as PNG and .npy, with a legend of the ids.
     Render(render::RenderArgs),
+    /// The task planner doing an activity with action primitives: the plan as it runs, then
+    /// success, Q and the metrics.
+    Solve(solve::SolveArgs),
+    /// The task planner on every activity in its first covering home: a summary table.
+    SolveAll(solve::SolveAllArgs),
     /// Read a recording; with --verify, re-simulate it and check it bit for bit.
     Replay(replay::ReplayArgs),
     /// Benchmarks of the whole system.
@@ -66,6 +73,9 @@ enum Command {
 enum BenchCommand {
     /// Environment steps per second: both robots, idle and random agents, 1/300 and 1/120 s.
     Env(bench_env::BenchEnvArgs),
+    /// The base planner in furnished homes: a place to stand near each activity object, and a
+    /// path there.
+    Plan(bench_plan::BenchPlanArgs),
 }
 
 fn main() -> ExitCode {
@@ -84,8 +94,11 @@ fn main() -> ExitCode {
         Command::Facts(args) => facts::facts(args, cli.data_dir.as_deref()),
         Command::Run(args) => run::run(args, cli.data_dir.as_deref()),
         Command::Render(args) => render::render(args, cli.data_dir.as_deref()),
+        Command::Solve(args) => solve::solve(args, cli.data_dir.as_deref()),
+        Command::SolveAll(args) => solve::solve_all(args, cli.data_dir.as_deref()),
         Command::Replay(args) => replay::run(args, cli.data_dir.as_deref()),
         Command::Bench(BenchCommand::Env(args)) => bench_env::run(args, cli.data_dir.as_deref()),
+        Command::Bench(BenchCommand::Plan(args)) => bench_plan::run(args, cli.data_dir.as_deref()),
     };
     match result {
         Ok(code) => code,

@@ -65,6 +65,18 @@ impl Prelude {
     }
 
     /// Every official activity, by name, in the manifest's order.
+    /// `chosen` if it names any activity, else every official one's name.
+    pub fn activity_names(&self, chosen: &[String]) -> Result<Vec<String>> {
+        if !chosen.is_empty() {
+            return Ok(chosen.to_vec());
+        }
+        Ok(self
+            .official_activities()?
+            .into_iter()
+            .map(|(n, _)| n)
+            .collect())
+    }
+
     pub fn official_activities(&self) -> Result<Vec<(String, Activity)>> {
         self.data
             .activities()?
@@ -83,4 +95,13 @@ pub fn named_homes(library: &Library) -> Result<Vec<Scene>> {
         .iter()
         .map(|(n, s)| generate(n, *s, library))
         .collect::<Result<_, _>>()?)
+}
+
+/// A progress bar over `len` items, hidden when the output is JSON.
+pub(crate) fn counting_bar(len: usize, hidden: bool) -> indicatif::ProgressBar {
+    if hidden {
+        indicatif::ProgressBar::hidden()
+    } else {
+        indicatif::ProgressBar::new(len as u64)
+    }
 }

@@ -4,7 +4,8 @@
 use crate::prelude::Prelude;
 use anyhow::{Context, Result};
 use behavior_bddl::Source;
-use behavior_env::record::{read, replay};
+use behavior_env::record::{read, replay_with};
+use behavior_planning::replay_edit;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -61,7 +62,8 @@ pub fn run(args: ReplayArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
             .with_context(|| format!("the definition in {}", args.file.display()))?;
         let taxonomy = Arc::new(prelude.knowledge.taxonomy.clone());
         let config = recording.config(Arc::new(activity), taxonomy)?;
-        let report = replay(&recording, config)?;
+        // Recorded primitives are done again by the planner's code that did them.
+        let report = replay_with(&recording, config, &mut replay_edit)?;
         out.frames = report.frames as usize;
         out.checkpoints = report.checkpoints as usize;
         out.identical = Some(report.identical);

@@ -93,6 +93,21 @@ pub struct Info {
     pub score: Score,
 }
 
+/// What code that acts on the world between steps (a symbolic action primitive) may touch,
+/// through [`Env::edit`].
+pub struct Edit<'a> {
+    /// The episode's world.
+    pub world: &'a mut World,
+    /// The robot in it.
+    pub robot: &'a mut Robot,
+    /// The object of each activity instance.
+    pub bindings: &'a [Option<ObjectId>],
+    /// The seed the episode was reset with, for edits that draw random numbers.
+    pub seed: u64,
+    /// Steps taken in the episode.
+    pub steps: u32,
+}
+
 /// A saved episode state; [`Env::restore`] continues from it bit-identically.
 #[derive(Clone)]
 pub struct Checkpoint(Episode);
@@ -442,5 +457,26 @@ impl Env {
     /// The robot, for code that drives it between steps (a planner's primitives).
     pub fn robot_mut(&mut self) -> Option<&mut Robot> {
         self.episode.as_mut().map(|e| &mut e.robot)
+    }
+
+    /// Lets `f` change the world and the robot between two steps, outside physics and actions
+    /// (a symbolic primitive teleports, attaches, sets states). The score, metrics and
+    /// observation see the change at the next step, as the original's primitives are followed
+    /// by one step. A recording must say what was done ([`crate::record::Recorder::record_edit`])
+    /// for a replay to do it again.
+    pub fn edit<R>(&mut self, f: impl FnOnce(Edit<'_>) -> R) -> Result<R, EnvError> {
+        let episode = self.episode.as_mut().ok_or(EnvError::NotReset)?;
+        if episode.over {
+            return Err(EnvError::EpisodeOver {
+                steps: episode.steps,
+            });
+        }
+        Ok(f(Edit {
+            world: &mut episode.world,
+            robot: &mut episode.robot,
+            bindings: &episode.bindings,
+            seed: episode.start.seed,
+            steps: episode.steps,
+        }))
     }
 }

@@ -7,8 +7,11 @@ use crate::fetch_body::{
     WHEEL_RADIUS, WHEEL_SEPARATION, blocking_parts, link_centre, link_mass, link_spec, pad_face,
 };
 use crate::fetch_proprioception::FetchProprioception;
-use crate::grasp::{GraspRules, Release};
+use crate::grasp::{
+    GraspRules, Release, centre_on, ignore_between, overlooked, restore_overlooked,
+};
 use crate::ik::{IkError, IkSolver, rotation_error};
+use crate::magic::MagicError;
 use crate::motion::Blocker;
 use crate::proprioception::LocalPose;
 use crate::relative;
@@ -741,6 +744,90 @@ fn blocked(blocker: &Blocker, from: &Config, to: &Config) -> bool {
                 blocker.blocked(&shape, pa, pb)
             })
     })
+}
+
+/// Symbolic moves (see `magic.rs`).
+impl Fetch {
+    /// Puts the base at `pose` (only its yaw counts), every link where the joints put it and
+    /// what the gripper holds with it, all at rest.
+    pub(crate) fn teleport(&mut self, world: &mut World, pose: Pose) -> Result<(), MagicError> {
+        if !pose_ok(&pose) {
+            return Err(MagicError::BadPose);
+        }
+        let (yaw, _, _) = pose.rotation.normalize().to_euler(EulerRot::ZYX);
+        let base = Pose::from_parts(pose.translation, Rotation::from_rotation_z(yaw));
+        let gripper = self.parts.gripper();
+        let before = world.pose(gripper);
+        let config = Config { base, ..self.now };
+        let poses = config.joints.link_poses();
+        for (k, link) in FetchLink::ALL.into_iter().enumerate() {
+            world.set_pose(self.parts.link(link), base * poses[k])?;
+        }
+        if let Some(grasp) = self.grasp {
+            let held = grasp.body.object;
+            let relative = before.inv_mul(&world.pose(held));
+            world.set_pose(held, world.pose(gripper) * relative)?;
+        }
+        self.now = config;
+        self.from = config;
+        self.drive = (0.0, 0.0);
+        self.wheel_rates = [0.0; 2];
+        self.moving = false;
+        self.press_with_gripper(world);
+        Ok(())
+    }
+
+    /// Puts `object` between the fingers, attaches it as the assisted grasp does and closes.
+    pub(crate) fn grasp_now(
+        &mut self,
+        world: &mut World,
+        object: ObjectId,
+    ) -> Result<(), MagicError> {
+        if let Some(grasp) = self.grasp {
+            return Err(MagicError::HandFull(grasp.body.object));
+        }
+        let body = BodyRef::from(object);
+        let kind = self
+            .rules
+            .holdable(world, body)
+            .filter(|_| !self.parts.all().contains(&object))
+            .ok_or(MagicError::NotHoldable(object))?;
+        let gripper = self.parts.gripper();
+        let centre = world.pose(gripper).transform_point(GRIPPER_CENTRE);
+        centre_on(world, object, centre)?;
+        let spec = AttachmentSpec {
+            holder: BodyRef::from(gripper),
+            held: body,
+            at: centre,
+            kind,
+            max_force: self.rules.max_force(kind),
+        };
+        let attachment = world.core_mut().attach(spec)?;
+        for part in [gripper, self.parts.base()] {
+            ignore_between(world, part, body, true);
+        }
+        let own = self.parts.all();
+        self.releases
+            .extend(overlooked(world, body, &own, world.steps()));
+        self.gripper = -1.0;
+        self.grasp = Some(FetchGrasp { body, attachment });
+        Ok(())
+    }
+
+    /// Detaches what the gripper holds and opens it.
+    pub(crate) fn release_now(&mut self, world: &mut World) -> Option<ObjectId> {
+        self.gripper = 1.0;
+        let grasp = self.grasp.take()?;
+        world.core_mut().detach(grasp.attachment);
+        restore_overlooked(world, &mut self.releases, grasp.body, &self.parts.all());
+        self.releases.push(Release {
+            body: grasp.body,
+            parts: vec![self.parts.gripper(), self.parts.base()],
+            since: world.steps(),
+        });
+        self.drive_fingers(world, FINGER_OPEN);
+        Some(grasp.body.object)
+    }
 }
 
 #[cfg(test)]

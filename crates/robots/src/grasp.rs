@@ -235,15 +235,90 @@ impl Release {
         self.parts.retain(|&part| {
             let clear = !world.aabb(body.object).intersects(&world.aabb(part));
             if clear {
-                let links = world.object(part).links.len();
-                let parts = std::iter::once(BodyRef::from(part))
-                    .chain((0..links).map(|l| BodyRef::link(part, l)));
-                for p in parts.collect::<Vec<_>>() {
-                    let _ = world.core_mut().ignore_contacts(p, body, false);
-                }
+                ignore_between(world, part, body, false);
             }
             !clear
         });
         self.parts.is_empty()
     }
+}
+
+/// For a grasp made at once (`magic.rs`): contacts between the held body and every other
+/// object whose box its box overlaps where it was put, turned off while held, so that a
+/// carton put in the hand beside a shelf does not break its grasp against it. `None` when it
+/// overlaps nothing.
+pub(crate) fn overlooked(
+    world: &mut World,
+    body: BodyRef,
+    own: &[ObjectId],
+    since: u64,
+) -> Option<Release> {
+    let held = world.aabb(body.object);
+    let parts: Vec<ObjectId> = world
+        .objects()
+        .filter(|(id, o)| *id != body.object && o.is_present() && !own.contains(id))
+        .map(|(id, _)| id)
+        .filter(|&id| world.aabb(id).intersects(&held))
+        .collect();
+    for &part in &parts {
+        ignore_between(world, part, body, true);
+    }
+    (!parts.is_empty()).then_some(Release { body, parts, since })
+}
+
+/// When a body held by a grasp made at once is let go at once: its contacts with what it was
+/// put beside come back now (it is about to be placed clear of everything), those with the
+/// robot as after any release.
+pub(crate) fn restore_overlooked(
+    world: &mut World,
+    releases: &mut Vec<Release>,
+    body: BodyRef,
+    own: &[ObjectId],
+) {
+    releases.retain(|r| {
+        if r.body != body || r.parts.iter().all(|p| own.contains(p)) {
+            return true;
+        }
+        for &part in &r.parts {
+            ignore_between(world, part, body, false);
+        }
+        false
+    });
+}
+
+/// An object's body and its links' bodies.
+fn object_bodies(world: &World, id: ObjectId) -> Vec<BodyRef> {
+    let links = world.object(id).links.len();
+    std::iter::once(BodyRef::from(id))
+        .chain((0..links).map(|l| BodyRef::link(id, l)))
+        .collect()
+}
+
+/// Turns contacts off (or back on) between every body of `part` and `held` — with all of
+/// `held`'s object, links included, when `held` is an object's root (a carton with its lid).
+pub(crate) fn ignore_between(world: &mut World, part: ObjectId, held: BodyRef, ignore: bool) {
+    let helds = match held.link {
+        None => object_bodies(world, held.object),
+        Some(_) => vec![held],
+    };
+    for p in object_bodies(world, part) {
+        for &h in &helds {
+            let _ = world.core_mut().ignore_contacts(p, h, ignore);
+        }
+    }
+}
+
+/// Moves an object, as it is turned, so that its box's centre lands on `centre` (an object put
+/// in a hand at once).
+pub(crate) fn centre_on(
+    world: &mut World,
+    object: ObjectId,
+    centre: Vector,
+) -> Result<(), behavior_sim::WorldError> {
+    let pose = world.pose(object);
+    let shift = centre - world.aabb(object).center();
+    world.set_pose(
+        object,
+        rapier3d::math::Pose::from_parts(pose.translation + shift, pose.rotation),
+    )
 }

@@ -87,6 +87,7 @@ mod follow;
 mod grasp;
 mod hand;
 mod ik;
+mod magic;
 mod motion;
 mod proprioception;
 mod relative;
@@ -113,6 +114,7 @@ pub use hand::{
     FINGER_CLOSED, FINGER_SPEED, FINGERS, HAND_FRICTION, HAND_MASS, Side, THUMB_CLOSED,
 };
 pub use ik::{IK_JOINTS, IkError, IkSolver};
+pub use magic::MagicError;
 pub use proprioception::{LocalPose, Proprioception};
 pub use relative::{EYE_FOV, REACH_DISTANCE};
 pub use robot::{BehaviorRobot, RobotError, RobotParts};

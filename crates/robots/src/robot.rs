@@ -3,8 +3,12 @@
 use crate::action::{Action, ActionError};
 use crate::body::{body_spec, eye_rest, hand_rest};
 use crate::follow::{Follower, HAND_LIMITS, rotation_error, servo, settled};
-use crate::grasp::{Grasp, GraspRules, Grasper, Release, must_release};
+use crate::grasp::{
+    Grasp, GraspRules, Grasper, Release, centre_on, ignore_between, must_release, overlooked,
+    restore_overlooked,
+};
 use crate::hand::{FINGERS, Fingers, HandPoints, Side, hand_spec};
+use crate::magic::MagicError;
 use crate::motion::{Blocker, Targets};
 use crate::proprioception::{LocalPose, Proprioception};
 use crate::relative;
@@ -436,5 +440,105 @@ impl BehaviorRobot {
                 _ => {}
             }
         }
+    }
+}
+
+/// Symbolic moves (see `magic.rs`).
+impl BehaviorRobot {
+    /// Puts the body at `pose`, the hands at their targets about it and what they hold with
+    /// them, all at rest and the hands parked.
+    pub(crate) fn teleport(&mut self, world: &mut World, pose: Pose) -> Result<(), MagicError> {
+        if !pose_ok(&pose) {
+            return Err(MagicError::BadPose);
+        }
+        let pose = Pose::from_parts(pose.translation, pose.rotation.normalize());
+        for id in self.parked.iter_mut().filter_map(Option::take) {
+            world.core_mut().detach(id);
+        }
+        // Where each hand is now, to carry what it holds along.
+        let before = Side::BOTH.map(|s| self.hand_pose(world, s));
+        world.set_pose(self.parts.body, pose)?;
+        self.targets.body = pose;
+        self.step_from = pose;
+        self.body_moving = false;
+        for side in Side::BOTH {
+            let i = side.index();
+            let target = self.targets.hand_in_world(side);
+            world.set_pose(self.parts.hand(side), target)?;
+            self.hands[i] = Follower::at(target);
+            if let Some(grasp) = self.grasps[i] {
+                let held = grasp.body.object;
+                let relative = before[i].inv_mul(&world.pose(held));
+                world.set_pose(held, target * relative)?;
+            }
+            self.park(world, side);
+        }
+        self.press_with_hands(world);
+        Ok(())
+    }
+
+    /// Puts `object` just under the palm of an empty hand, attaches it as a grasp does and
+    /// presses the trigger.
+    pub(crate) fn grasp_now(
+        &mut self,
+        world: &mut World,
+        side: Side,
+        object: ObjectId,
+    ) -> Result<(), MagicError> {
+        let i = side.index();
+        if let Some(grasp) = self.grasps[i] {
+            return Err(MagicError::HandFull(grasp.body.object));
+        }
+        let body = BodyRef::from(object);
+        let own = self.parts.all();
+        let other = self.holding(side.other()).map(|b| b.object);
+        let kind = self
+            .rules
+            .holdable(world, body)
+            .filter(|_| !own.contains(&object) && other != Some(object))
+            .ok_or(MagicError::NotHoldable(object))?;
+        let hand = self.parts.hand(side);
+        let palm = world.pose(hand);
+        // The palm faces its −z: the object's box goes just below it, touching.
+        let aabb = world.aabb(object);
+        let half = (aabb.maxs - aabb.mins) * 0.5;
+        let below = palm.rotation * rapier3d::math::Vector::NEG_Z;
+        let reach = (below * half).abs().element_sum() + 0.01;
+        centre_on(world, object, palm.translation + below * reach)?;
+        let spec = AttachmentSpec {
+            holder: BodyRef::from(hand),
+            held: body,
+            at: palm.translation,
+            kind,
+            max_force: self.rules.max_force(kind),
+        };
+        let attachment = world.core_mut().attach(spec)?;
+        for part in [hand, self.parts.body] {
+            ignore_between(world, part, body, true);
+        }
+        self.releases
+            .extend(overlooked(world, body, &own, world.steps()));
+        self.targets.triggers[i] = 1.0;
+        self.grasps[i] = Some(Grasp {
+            body,
+            attachment,
+            fingers: self.fingers[i].angles,
+        });
+        Ok(())
+    }
+
+    /// Detaches what a hand holds and opens it.
+    pub(crate) fn release_now(&mut self, world: &mut World, side: Side) -> Option<ObjectId> {
+        let i = side.index();
+        self.targets.triggers[i] = 0.0;
+        let grasp = self.grasps[i].take()?;
+        world.core_mut().detach(grasp.attachment);
+        restore_overlooked(world, &mut self.releases, grasp.body, &self.parts.all());
+        self.releases.push(Release {
+            body: grasp.body,
+            parts: vec![self.parts.hand(side), self.parts.body],
+            since: world.steps(),
+        });
+        Some(grasp.body.object)
     }
 }

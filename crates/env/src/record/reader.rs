@@ -61,6 +61,9 @@ pub struct Recording {
     pub checkpoints: Vec<(u32, String)>,
     /// The full states saved with the checkpoints: (step, episode checkpoint bytes).
     pub states: Vec<(u32, Vec<u8>)>,
+    /// The edits of the world between steps, in order: (the step after which each was made,
+    /// what was done).
+    pub edits: Vec<(u32, serde_json::Value)>,
     /// Where and why reading stopped early, for a damaged or cut file; the frames before it
     /// are usable.
     pub damage: Option<String>,
@@ -82,6 +85,12 @@ struct PosesMsg {
 struct ScoreMsg {
     step: u32,
     q: f64,
+}
+
+#[derive(Deserialize)]
+struct EditMsg {
+    step: u32,
+    edit: serde_json::Value,
 }
 
 #[derive(Deserialize)]
@@ -139,6 +148,7 @@ struct Reading {
     frames: Vec<Frame>,
     checkpoints: Vec<(u32, String)>,
     states: Vec<(u32, Vec<u8>)>,
+    edits: Vec<(u32, serde_json::Value)>,
     damage: Option<String>,
 }
 
@@ -190,6 +200,13 @@ impl Reading {
                 let m: CheckpointMsg = serde_json::from_slice(data).map_err(bad)?;
                 self.checkpoints.push((m.step, m.digest));
             }
+            "/edit" => {
+                let m: EditMsg = serde_json::from_slice(data).map_err(bad)?;
+                if m.step != self.last_step() {
+                    return Err(format!("edit after step {} out of order", m.step));
+                }
+                self.edits.push((m.step, m.edit));
+            }
             _ => {}
         }
         Ok(())
@@ -212,6 +229,7 @@ impl Reading {
             frames: self.frames,
             checkpoints: self.checkpoints,
             states: self.states,
+            edits: self.edits,
             damage: self.damage,
         })
     }

@@ -35,6 +35,17 @@ pub enum ReplayError {
         /// Why.
         source: crate::CheckpointError,
     },
+    /// The recording edits the world between steps and the replay was given no editor that
+    /// does it, or the editor could not.
+    #[error("the world was edited after step {step} ({edit}): {why}")]
+    Edit {
+        /// The step after which the edit was made.
+        step: u32,
+        /// What the recording says was done.
+        edit: String,
+        /// Why it was not done again.
+        why: String,
+    },
     /// The environment refused the start or a step.
     #[error("replaying step {step}: {source}")]
     Env {
@@ -90,9 +101,25 @@ impl Recording {
     }
 }
 
+/// Does a recorded edit of the world again ([`crate::Env::edit`], [`super::Recorder::record_edit`]):
+/// whoever made the edits knows what their words mean. An error says why it could not.
+pub type Editor<'a> = dyn FnMut(&mut Env, &serde_json::Value) -> Result<(), String> + 'a;
+
 /// Replays a recording in `config` (see [`Recording::config`]), comparing the state digest at
-/// every checkpoint.
+/// every checkpoint. A recording with edits of the world between steps needs
+/// [`replay_with`] and an editor.
 pub fn replay(recording: &Recording, config: EnvConfig) -> Result<ReplayReport, ReplayError> {
+    replay_with(recording, config, &mut |_, _| {
+        Err("this replay has no editor: replay with the code that made the edits".to_string())
+    })
+}
+
+/// [`replay`], doing every recorded edit again with `editor` after the step it followed.
+pub fn replay_with(
+    recording: &Recording,
+    config: EnvConfig,
+    editor: &mut Editor<'_>,
+) -> Result<ReplayReport, ReplayError> {
     let mut env = Env::new(config);
     let start = Start {
         seed: recording.header.seed,
@@ -121,7 +148,15 @@ pub fn replay(recording: &Recording, config: EnvConfig) -> Result<ReplayReport, 
         }
     };
     check(&env, &mut report);
+    let mut edits = recording.edits.iter().peekable();
     for frame in &recording.frames {
+        while let Some((step, edit)) = edits.next_if(|(s, _)| *s < frame.step) {
+            editor(&mut env, edit).map_err(|why| ReplayError::Edit {
+                step: *step,
+                edit: edit.to_string(),
+                why,
+            })?;
+        }
         env.step(&frame.action).map_err(|source| ReplayError::Env {
             step: frame.step,
             source,
@@ -172,6 +207,15 @@ fn resimulate(
     start: Start,
     step: u32,
 ) -> Result<(), ReplayError> {
+    if let Some((at, edit)) = recording.edits.iter().find(|(s, _)| *s < step) {
+        return Err(ReplayError::Edit {
+            step: *at,
+            edit: edit.to_string(),
+            why:
+                "resuming re-simulates without an editor: resume at a checkpoint with a saved state"
+                    .to_string(),
+        });
+    }
     env.reset_to(start)
         .map_err(|source| ReplayError::Env { step: 0, source })?;
     for frame in recording.frames.iter().take_while(|f| f.step <= step) {

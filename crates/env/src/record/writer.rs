@@ -36,20 +36,24 @@ pub enum RecordError {
 }
 
 /// The topics, in the order their channels are added.
-const TOPICS: [&str; 6] = [
+const TOPICS: [&str; 7] = [
     "/header",
     "/action",
     "/poses",
     "/score",
     "/checkpoint",
+    "/edit",
     "/state",
 ];
+
+/// The index in [`TOPICS`] of `/state`, the one channel without a JSON schema.
+const STATE: usize = 6;
 
 /// An episode being recorded.
 pub struct Recorder {
     writer: Writer<File>,
     path: PathBuf,
-    channels: [u16; 6],
+    channels: [u16; 7],
     sequence: u32,
     checkpoint_every: u32,
 }
@@ -80,8 +84,8 @@ impl Recorder {
             .chunk_size(Some(CHUNK_BYTES))
             .profile("behavior");
         let mut writer = options.create(file).map_err(mcap)?;
-        let mut channels = [0; 6];
-        for (k, topic) in TOPICS.iter().enumerate().take(5) {
+        let mut channels = [0; 7];
+        for (k, topic) in TOPICS.iter().enumerate().take(STATE) {
             let schema = writer
                 .add_schema(topic, "jsonschema", schema_of(topic).as_bytes())
                 .map_err(mcap)?;
@@ -90,8 +94,8 @@ impl Recorder {
                 .map_err(mcap)?;
         }
         // The episode's bytes: no schema, the encoding names the format.
-        channels[5] = writer
-            .add_channel(0, TOPICS[5], STATE_ENCODING, &BTreeMap::new())
+        channels[STATE] = writer
+            .add_channel(0, TOPICS[STATE], STATE_ENCODING, &BTreeMap::new())
             .map_err(mcap)?;
         let config = env.config();
         let header = Header {
@@ -127,6 +131,14 @@ impl Recorder {
         let step = env.steps();
         self.write(1, step, &json!({ "step": step, "values": action }))?;
         self.write_state(env)
+    }
+
+    /// Records that the world was edited between steps ([`Env::edit`]) after the step `env`
+    /// has taken last: `edit` says what was done, in the words of whoever did it (a symbolic
+    /// primitive's name and object), for a replay's editor to do it again.
+    pub fn record_edit(&mut self, env: &Env, edit: &impl Serialize) -> Result<(), RecordError> {
+        let step = env.steps();
+        self.write(5, step, &json!({ "step": step, "edit": edit }))
     }
 
     /// Closes the file with MCAP's summary and index.
@@ -165,7 +177,7 @@ impl Recorder {
             let digest = state_digest(world, robot, step);
             self.write(4, step, &json!({ "step": step, "digest": digest }))?;
             if let Some(checkpoint) = env.checkpoint() {
-                self.write_bytes(5, step, &checkpoint.to_bytes())?;
+                self.write_bytes(STATE, step, &checkpoint.to_bytes())?;
             }
             self.writer.flush().map_err(|source| RecordError::Mcap {
                 path: self.path.clone(),
@@ -221,6 +233,8 @@ fn schema_of(topic: &str) -> String {
         "/score" => json!({ "type": "object", "properties": {
             "step": step, "q": number, "success": { "type": "boolean" },
             "conjuncts": { "type": "array", "items": { "type": "boolean" } } } }),
+        "/edit" => json!({ "type": "object", "properties": {
+            "step": step, "edit": { "description": "what was done between this step and the next" } } }),
         _ => json!({ "type": "object", "properties": {
             "step": step, "digest": { "type": "string", "description": "SHA-256, hex" } } }),
     };

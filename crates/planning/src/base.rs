@@ -1,0 +1,208 @@
+//! The robot's base in (x, y, yaw) on the floor: its footprint, how it moves between two
+//! configurations (the original's: turn toward the next point, drive straight to it, turn to its
+//! heading), and collision checks through the world's overlap queries, without stepping.
+
+use crate::rrt::Space;
+use behavior_core::rng::{SimRng, uniform};
+use behavior_sim::{Primitive, QueryFilter, World};
+use rapier3d::math::{Pose, Rotation, Vector};
+use serde::{Deserialize, Serialize};
+use std::f32::consts::PI;
+
+/// Where the base stands: position on the floor, m, and heading, rad.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct BaseConfig {
+    pub x: f32,
+    pub y: f32,
+    pub yaw: f32,
+}
+
+impl BaseConfig {
+    pub fn new(x: f32, y: f32, yaw: f32) -> BaseConfig {
+        BaseConfig { x, y, yaw }
+    }
+
+    /// The base's frame: on the floor at (x, y), turned by yaw about z.
+    pub fn pose(&self) -> Pose {
+        Pose::from_parts(
+            Vector::new(self.x, self.y, 0.0),
+            Rotation::from_rotation_z(self.yaw),
+        )
+    }
+
+    fn is_finite(&self) -> bool {
+        self.x.is_finite() && self.y.is_finite() && self.yaw.is_finite()
+    }
+}
+
+/// The shapes that move with the base, each placed in the base's frame (on the floor under its
+/// origin): the BehaviorRobot's body capsule 0.7 m up, say, and the hands where they are.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Footprint {
+    pub shapes: Vec<(Primitive, Pose)>,
+}
+
+/// How far a heading may turn per step, relative to the resolution in metres: 1 rad counts as
+/// 1 m, so a 0.05 resolution turns 0.05 rad (about 3°) per step.
+const TURN_WEIGHT: f32 = 1.0;
+
+/// Room around the start and goal that samples may use, m (the original's ±1 m box).
+const MARGIN: f32 = 1.0;
+
+/// The base of a robot in a world, planned between two configurations.
+pub struct BaseSpace<'w> {
+    world: &'w World,
+    footprint: Footprint,
+    /// What collisions ignore: the robot itself and what it holds.
+    filter: QueryFilter,
+    /// Samples fall in `[min, max]` on x and y.
+    min: [f32; 2],
+    max: [f32; 2],
+    resolution: f32,
+}
+
+/// The signed turn from `from` to `to`, in (−π, π].
+fn turn(from: f32, to: f32) -> f32 {
+    let d = (to - from).rem_euclid(2.0 * PI);
+    if d > PI { d - 2.0 * PI } else { d }
+}
+
+impl<'w> BaseSpace<'w> {
+    /// The space between `start` and `goal` (samples within their box widened by 1 m), checked
+    /// at 0.05 (m or rad, the original's resolution).
+    pub fn new(
+        world: &'w World,
+        footprint: Footprint,
+        filter: QueryFilter,
+        start: &BaseConfig,
+        goal: &BaseConfig,
+    ) -> BaseSpace<'w> {
+        BaseSpace {
+            world,
+            footprint,
+            filter,
+            min: [start.x.min(goal.x) - MARGIN, start.y.min(goal.y) - MARGIN],
+            max: [start.x.max(goal.x) + MARGIN, start.y.max(goal.y) + MARGIN],
+            resolution: 0.05,
+        }
+    }
+
+    /// Samples within `[min, max]` on x and y instead (the whole home, say: the July 2021
+    /// version sampled the traversable map, so that a path may leave the box around its ends).
+    pub fn with_bounds(self, min: [f32; 2], max: [f32; 2]) -> BaseSpace<'w> {
+        BaseSpace { min, max, ..self }
+    }
+
+    /// The heading of the drive from `a` to `b`, or `a`'s own if they stand at one point.
+    fn heading(a: &BaseConfig, b: &BaseConfig) -> f32 {
+        let (dx, dy) = (b.x - a.x, b.y - a.y);
+        if dx.hypot(dy) < 1e-6 {
+            a.yaw
+        } else {
+            dy.atan2(dx)
+        }
+    }
+}
+
+/// How many even steps of at most `resolution` cover `length`.
+fn even_steps(length: f32, resolution: f32) -> usize {
+    (length / resolution).ceil().max(0.0) as usize
+}
+
+impl Space for BaseSpace<'_> {
+    type Config = BaseConfig;
+
+    fn distance(&self, a: &BaseConfig, b: &BaseConfig) -> f32 {
+        let heading = BaseSpace::heading(a, b);
+        let drive = (b.x - a.x).hypot(b.y - a.y);
+        drive + TURN_WEIGHT * (turn(a.yaw, heading).abs() + turn(heading, b.yaw).abs())
+    }
+
+    fn sample(&self, rng: &mut SimRng) -> BaseConfig {
+        BaseConfig {
+            x: uniform(rng, self.min[0], self.max[0]),
+            y: uniform(rng, self.min[1], self.max[1]),
+            yaw: uniform(rng, -PI, PI),
+        }
+    }
+
+    fn steps(&self, a: &BaseConfig, b: &BaseConfig, resolution: f32) -> Vec<BaseConfig> {
+        let heading = BaseSpace::heading(a, b);
+        let mut out = Vec::new();
+        let first = turn(a.yaw, heading);
+        let n = even_steps(TURN_WEIGHT * first.abs(), resolution);
+        out.extend((1..=n).map(|k| BaseConfig {
+            yaw: a.yaw + first * k as f32 / n as f32,
+            ..*a
+        }));
+        let drive = (b.x - a.x).hypot(b.y - a.y);
+        let n = even_steps(drive, resolution);
+        out.extend((1..=n).map(|k| {
+            let t = k as f32 / n as f32;
+            BaseConfig::new(a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, heading)
+        }));
+        let last = turn(heading, b.yaw);
+        let n = even_steps(TURN_WEIGHT * last.abs(), resolution);
+        out.extend((1..=n).map(|k| BaseConfig {
+            x: b.x,
+            y: b.y,
+            yaw: heading + last * k as f32 / n as f32,
+        }));
+        // End exactly at `b` (its yaw unwrapped as given), whatever the rounding.
+        match out.last_mut() {
+            Some(end) => *end = *b,
+            None if a != b => out.push(*b),
+            None => {}
+        }
+        out
+    }
+
+    fn free(&self, c: &BaseConfig) -> bool {
+        if !c.is_finite() {
+            return false;
+        }
+        let base = c.pose();
+        let core = self.world.core();
+        self.footprint.shapes.iter().all(|(shape, offset)| {
+            core.overlaps(shape, base * *offset, &self.filter)
+                .is_ok_and(|hits| hits.is_empty())
+        })
+    }
+
+    fn resolution(&self) -> f32 {
+        self.resolution
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_turn_takes_the_short_way_round() {
+        assert!((turn(3.0, -3.0) - (2.0 * PI - 6.0)).abs() < 1e-5);
+        assert!((turn(-3.0, 3.0) + (2.0 * PI - 6.0)).abs() < 1e-5);
+        assert_eq!(turn(0.5, 0.5), 0.0);
+    }
+
+    #[test]
+    fn a_move_turns_drives_and_turns_in_steps_no_longer_than_the_resolution() {
+        let world = World::default();
+        let (a, b) = (
+            BaseConfig::new(0.0, 0.0, 0.0),
+            BaseConfig::new(0.0, 1.0, PI),
+        );
+        let space = BaseSpace::new(&world, Footprint::default(), QueryFilter::default(), &a, &b);
+        let steps = space.steps(&a, &b, 0.05);
+        assert_eq!(*steps.last().unwrap(), b);
+        let mut previous = a;
+        for s in &steps {
+            let moved =
+                (s.x - previous.x).hypot(s.y - previous.y) + turn(previous.yaw, s.yaw).abs();
+            assert!(moved <= 0.05 + 1e-5, "{previous:?} → {s:?}");
+            previous = *s;
+        }
+        // A quarter turn to face +y, one metre, a quarter turn: about 31 + 20 + 31 steps.
+        assert!((80..=85).contains(&steps.len()), "{} steps", steps.len());
+    }
+}

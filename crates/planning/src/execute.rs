@@ -1,0 +1,150 @@
+//! Running primitives in an environment: each is done between two steps ([`Env::edit`]) and
+//! followed by one step of a still action, as the original's primitive environment does, so
+//! that reward, done and observation come from that step. What a recording needs to replay
+//! them is written as they run.
+
+use crate::primitive::{Call, Failure, Primitive, WAIT_STEPS};
+use crate::symbolic;
+use behavior_env::record::Recorder;
+use behavior_env::{Env, EnvError, Step};
+use serde::{Deserialize, Serialize};
+
+/// How primitives act: setting outcomes, or moving the robot through its controllers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Mode {
+    /// Check, then set the outcome (the paper's partially simulated primitives).
+    Symbolic,
+    /// Plan and execute with physics (the fully simulated ones).
+    Physical,
+}
+
+impl Mode {
+    /// Its name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Mode::Symbolic => "symbolic",
+            Mode::Physical => "physical",
+        }
+    }
+
+    /// The mode of a name.
+    pub fn from_name(name: &str) -> Option<Mode> {
+        [Mode::Symbolic, Mode::Physical]
+            .into_iter()
+            .find(|m| m.name() == name)
+    }
+}
+
+/// Why running a primitive stopped the episode's run (as opposed to the primitive failing,
+/// which is an outcome).
+#[derive(Debug, thiserror::Error)]
+pub enum RunError {
+    /// The environment refused (no episode, or it is over).
+    #[error(transparent)]
+    Env(#[from] EnvError),
+    /// The recording could not be written.
+    #[error(transparent)]
+    Record(#[from] behavior_env::record::RecordError),
+}
+
+/// What one primitive did.
+#[derive(Debug)]
+pub struct Outcome {
+    /// Done, or why not.
+    pub result: Result<(), Failure>,
+    /// The last step it took (a wait takes [`WAIT_STEPS`], any other one).
+    pub step: Step,
+}
+
+/// How a recording describes a primitive: its name, the object's name and the hand.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct RecordedCall {
+    /// [`Primitive::name`].
+    pub primitive: String,
+    /// The world object's name.
+    pub object: String,
+    /// The hand.
+    pub hand: usize,
+}
+
+/// Runs one primitive in `mode` and the steps after it, recording both if asked.
+pub fn run(
+    env: &mut Env,
+    call: Call,
+    mode: Mode,
+    mut recorder: Option<&mut Recorder>,
+) -> Result<Outcome, RunError> {
+    let result = match (mode, call.primitive) {
+        (_, Primitive::Wait) => Ok(()),
+        (Mode::Physical, _) => Err(Failure::Unavailable(
+            "physical primitives are not built yet",
+        )),
+        (Mode::Symbolic, _) => env.edit(|edit| symbolic::apply(edit, &call))?,
+    };
+    if result.is_ok()
+        && call.primitive != Primitive::Wait
+        && let Some(r) = recorder.as_deref_mut()
+    {
+        r.record_edit(env, &describe(env, &call))?;
+    }
+    let steps = if call.primitive == Primitive::Wait {
+        WAIT_STEPS
+    } else {
+        1
+    };
+    let still = vec![0.0; env.robot().map_or(0, |r| r.action_dim())];
+    let mut last = None;
+    for _ in 0..steps {
+        let step = env.step(&still)?;
+        if let Some(r) = recorder.as_deref_mut() {
+            r.record(env, &still)?;
+        }
+        let over = step.terminated || step.truncated;
+        last = Some(step);
+        if over {
+            break;
+        }
+    }
+    let step = last.ok_or(EnvError::NotReset)?;
+    Ok(Outcome { result, step })
+}
+
+/// The call as a recording says it.
+fn describe(env: &Env, call: &Call) -> RecordedCall {
+    let object = env
+        .world()
+        .map(|w| w.object(call.object).name.clone())
+        .unwrap_or_default();
+    RecordedCall {
+        primitive: call.primitive.name().to_string(),
+        object,
+        hand: call.hand,
+    }
+}
+
+/// Does a recorded symbolic primitive again, for [`behavior_env::record::replay_with`]: an
+/// edit it cannot read, or a primitive that now fails, is an error that says so.
+pub fn replay_edit(env: &mut Env, edit: &serde_json::Value) -> Result<(), String> {
+    let recorded: RecordedCall =
+        serde_json::from_value(edit.clone()).map_err(|e| format!("not a primitive: {e}"))?;
+    let primitive = Primitive::from_name(&recorded.primitive)
+        .ok_or_else(|| format!("unknown primitive `{}`", recorded.primitive))?;
+    let object = env
+        .world()
+        .and_then(|w| w.object_named(&recorded.object))
+        .ok_or_else(|| format!("no object `{}` in the world", recorded.object))?;
+    let call = Call {
+        primitive,
+        object,
+        hand: recorded.hand,
+    };
+    env.edit(|edit| symbolic::apply(edit, &call))
+        .map_err(|e| e.to_string())?
+        .map_err(|e| {
+            format!(
+                "{} on {} failed on replay: {e}",
+                recorded.primitive, recorded.object
+            )
+        })
+}

@@ -1,0 +1,132 @@
+//! Where the base may stand to act on an object — NAVIGATE_TO's pose search (reference §5) — and
+//! the robot's footprint, read from the world.
+
+use crate::base::{BaseConfig, Footprint};
+use behavior_core::rng::{SimRng, uniform};
+use behavior_robots::Robot;
+use behavior_sim::{ObjectId, QueryFilter, VisualShape, World};
+use rapier3d::math::{Pose, Vector};
+use std::f32::consts::PI;
+
+/// The distances from the object tried, nearest first, m.
+pub const STAND_DISTANCES: [f32; 4] = [0.6, 1.2, 1.8, 2.4];
+/// Random headings tried per distance.
+pub const STAND_HEADINGS: usize = 20;
+/// How clear of everything the robot must stand, m.
+pub const STAND_CLEARANCE: f32 = 0.01;
+
+/// The robot as it stands now: its base's configuration on the floor, and the shapes of its
+/// parts (base, hands or arm) and of what it holds, in the base's floor frame, which move with
+/// it. (The original's check ignores held objects; a carton carried into a wall breaks the
+/// grasp, so ours keeps them clear too.)
+pub struct Standing {
+    pub config: BaseConfig,
+    pub footprint: Footprint,
+    /// The eye in the base's floor frame.
+    pub eye: Pose,
+    /// What the robot's checks ignore: itself and what it holds.
+    pub filter: QueryFilter,
+}
+
+impl Standing {
+    pub fn of(world: &World, robot: &Robot) -> Standing {
+        let base = robot.base_pose(world);
+        let forward = base.rotation * Vector::X;
+        let config = BaseConfig::new(
+            base.translation.x,
+            base.translation.y,
+            forward.y.atan2(forward.x),
+        );
+        let floor = config.pose().inverse();
+        let core = world.core();
+        let mut shapes = Vec::new();
+        let held = (0..robot.hands()).filter_map(|h| robot.held(h));
+        for id in robot.objects().into_iter().chain(held) {
+            for part in core.visual_parts(id) {
+                if let VisualShape::Primitive(p) = part.shape {
+                    shapes.push((p.clone(), floor * part.pose));
+                }
+            }
+        }
+        let mut ignored = robot.objects();
+        ignored.extend((0..robot.hands()).filter_map(|h| robot.held(h)));
+        Standing {
+            config,
+            footprint: Footprint { shapes },
+            eye: floor * robot.camera_pose(world),
+            filter: QueryFilter::excluding(&ignored),
+        }
+    }
+
+    /// Whether every part would stand at least [`STAND_CLEARANCE`] from everything at `c`.
+    pub fn clear_at(&self, world: &World, c: &BaseConfig) -> bool {
+        let base = c.pose();
+        self.footprint.shapes.iter().all(|(shape, offset)| {
+            world
+                .core()
+                .nearest(shape, base * *offset, STAND_CLEARANCE, &self.filter)
+                .is_ok_and(|near| near.is_none())
+        })
+    }
+
+    /// Whether the eye at `c` sees `object`'s centre before anything else.
+    pub fn sees(&self, world: &World, c: &BaseConfig, object: ObjectId) -> bool {
+        let eye = (c.pose() * self.eye).translation;
+        let centre: Vector = world.core().aabb(object).center();
+        let to = centre - eye;
+        let distance = to.length();
+        if distance < 1e-4 {
+            return false;
+        }
+        world
+            .core()
+            .cast_ray(eye, to / distance, distance + 0.05, &self.filter)
+            .ok()
+            .flatten()
+            .is_some_and(|hit| hit.body.is_some_and(|b| b.object == object))
+    }
+
+    /// A place to stand facing `object`: at each of [`STAND_DISTANCES`] from its centre in turn,
+    /// [`STAND_HEADINGS`] random headings, the first that is clear and sees it.
+    pub fn near(&self, world: &World, object: ObjectId, rng: &mut SimRng) -> Option<BaseConfig> {
+        self.search(world, object, rng, |c| self.sees(world, c, object))
+    }
+
+    /// As [`Standing::near`], but the first clear place within `reach` of the object's box,
+    /// seen or not: for what no clear place sees (a sink's centre lies under its counter's top).
+    pub fn within(
+        &self,
+        world: &World,
+        object: ObjectId,
+        reach: f32,
+        rng: &mut SimRng,
+    ) -> Option<BaseConfig> {
+        let b = world.core().aabb(object);
+        self.search(world, object, rng, |c| {
+            let at = Vector::new(c.x, c.y, b.center().z);
+            (at.clamp(b.mins, b.maxs) - at).length() <= reach
+        })
+    }
+
+    /// The search of [`Standing::near`], with `fits` in place of the view check.
+    fn search(
+        &self,
+        world: &World,
+        object: ObjectId,
+        rng: &mut SimRng,
+        fits: impl Fn(&BaseConfig) -> bool,
+    ) -> Option<BaseConfig> {
+        let centre: Vector = world.core().aabb(object).center();
+        for d in STAND_DISTANCES {
+            for _ in 0..STAND_HEADINGS {
+                let psi = uniform(rng, -PI, PI);
+                let yaw = psi - PI;
+                let c = BaseConfig::new(centre.x + d * psi.cos(), centre.y + d * psi.sin(), yaw);
+                if self.clear_at(world, &c) && fits(&c) {
+                    return Some(c);
+                }
+            }
+        }
+        None
+    }
+}

@@ -1,0 +1,389 @@
+//! Symbolic ("magic") primitives: the feasibility checks of reference §5, then the outcome set
+//! at once — the robot teleported, the object put in the hand, placed by the world's sampler,
+//! joints opened, states set.
+
+use crate::base::BaseConfig;
+use crate::navigate::Standing;
+use crate::primitive::{Call, Failure, Primitive};
+use behavior_core::rng::{SimRng, seeded, uniform};
+use behavior_core::{Ability, FLOOR_SYNSET, Predicate};
+use behavior_env::Edit;
+use behavior_robots::{MagicError, REACH_DISTANCE, Robot};
+use behavior_sim::{ObjectId, PointKind, Relation, World};
+use rapier3d::math::{Pose, Rotation, Vector};
+
+/// Random points tried in a room for standing on its floor (the original's 60).
+pub const FLOOR_STAND_TRIES: usize = 60;
+/// Placements tried on a heat or cold source to land near one of its elements (as
+/// OmniGibson's PLACE_NEAR_HEATING_ELEMENT).
+pub const ELEMENT_TRIES: usize = 10;
+
+/// Checks a primitive's preconditions in the world as it is, without changing anything (the
+/// action mask). What only doing it can tell — a place to stand, a pose for the placement — is
+/// not checked.
+pub fn check(world: &World, robot: &Robot, call: &Call) -> Result<(), Failure> {
+    let object = world.object(call.object);
+    if !object.is_present() {
+        return Err(Failure::Unable {
+            what: "is gone (sliced, or taken out of the world)",
+        });
+    }
+    if call.primitive.uses_hand() && call.hand >= robot.hands() {
+        return Err(Failure::NoHand(call.hand));
+    }
+    let held = robot.held(call.hand);
+    let reach = || {
+        if within_reach(world, robot, call.object) {
+            Ok(())
+        } else {
+            Err(Failure::Unreachable)
+        }
+    };
+    let has = |id: ObjectId, ability| world.object(id).has(ability);
+    let tool = |ability, what| match held {
+        None => Err(Failure::HandEmpty),
+        Some(h) if has(h, ability) => Ok(h),
+        Some(_) => Err(Failure::WrongTool { what }),
+    };
+    match call.primitive {
+        Primitive::NavigateTo | Primitive::Wait => Ok(()),
+        Primitive::Grasp => {
+            if let Some(h) = held {
+                return Err(Failure::HandFull(world.object(h).name.clone()));
+            }
+            graspable(world, robot, call.object)?;
+            reach()?;
+            match closed_container(world, call.object) {
+                Some(c) => Err(Failure::ContainerClosed(world.object(c).name.clone())),
+                None => Ok(()),
+            }
+        }
+        p @ (Primitive::PlaceOnTop
+        | Primitive::PlaceInside
+        | Primitive::PlaceNextTo
+        | Primitive::PlaceUnder
+        | Primitive::PlaceOnFloor) => {
+            let h = held.ok_or(Failure::HandEmpty)?;
+            if h == call.object {
+                return Err(Failure::SameObject);
+            }
+            let floor = object.category == FLOOR_SYNSET;
+            if (p == Primitive::PlaceOnFloor) != floor {
+                let what = if floor {
+                    "is a floor"
+                } else {
+                    "is not a floor"
+                };
+                return Err(Failure::Unable { what });
+            }
+            if p == Primitive::PlaceInside && is_closed(world, call.object) {
+                return Err(Failure::ContainerClosed(object.name.clone()));
+            }
+            if floor { Ok(()) } else { reach() }
+        }
+        Primitive::Open | Primitive::Close => {
+            let switch = Switch {
+                ability: Ability::Openable,
+                predicate: Predicate::Open,
+                lacks: "is not openable",
+                states: ("open", "closed"),
+            };
+            switch.check(world, call.object, call.primitive == Primitive::Open)?;
+            reach()
+        }
+        Primitive::ToggleOn | Primitive::ToggleOff => {
+            let switch = Switch {
+                ability: Ability::Toggleable,
+                predicate: Predicate::ToggledOn,
+                lacks: "is not toggleable",
+                states: ("on", "off"),
+            };
+            switch.check(world, call.object, call.primitive == Primitive::ToggleOn)?;
+            reach()
+        }
+        Primitive::Slice => {
+            tool(Ability::Slicer, "is not a slicer")?;
+            if !object.has(Ability::Sliceable) {
+                return Err(Failure::Unable {
+                    what: "is not sliceable",
+                });
+            }
+            reach()
+        }
+        Primitive::Wipe => {
+            let t = tool(Ability::CleaningTool, "is not a cleaning tool")?;
+            let dusty = world.state(call.object, Predicate::Dusty);
+            let stained = world.state(call.object, Predicate::Stained);
+            if !dusty && !stained {
+                return Err(Failure::Already("clean"));
+            }
+            if !dusty && !world.state(t, Predicate::Soaked) {
+                return Err(Failure::WrongTool {
+                    what: "is not soaked (stains need water)",
+                });
+            }
+            reach()
+        }
+        Primitive::Soak => {
+            tool(Ability::Soakable, "does not soak")?;
+            if !object.has(Ability::WaterSource) {
+                return Err(Failure::Unable {
+                    what: "is not a water source",
+                });
+            }
+            if object.has(Ability::Toggleable) && !world.state(call.object, Predicate::ToggledOn) {
+                return Err(Failure::WaterOff);
+            }
+            reach()
+        }
+    }
+}
+
+/// A state a primitive turns on or off (`open`, `toggled_on`), and how its checks say so.
+struct Switch {
+    ability: Ability,
+    predicate: Predicate,
+    /// Why an object without the ability cannot be switched.
+    lacks: &'static str,
+    /// The state's words when on and off.
+    states: (&'static str, &'static str),
+}
+
+impl Switch {
+    /// Whether `object` can be switched to `on`: it has the ability and is not so already.
+    fn check(&self, world: &World, object: ObjectId, on: bool) -> Result<(), Failure> {
+        if !world.object(object).has(self.ability) {
+            return Err(Failure::Unable { what: self.lacks });
+        }
+        match (on, world.state(object, self.predicate)) {
+            (true, true) => Err(Failure::Already(self.states.0)),
+            (false, false) => Err(Failure::Already(self.states.1)),
+            _ => Ok(()),
+        }
+    }
+}
+
+/// Checks a primitive, then sets its outcome. On failure nothing changed.
+pub fn apply(edit: Edit<'_>, call: &Call) -> Result<(), Failure> {
+    check(edit.world, edit.robot, call)?;
+    let mut rng = seeded(call_seed(edit.seed, edit.steps, call));
+    let (world, robot) = (edit.world, edit.robot);
+    let object = call.object;
+    match call.primitive {
+        Primitive::NavigateTo => navigate(world, robot, object, &mut rng),
+        Primitive::Grasp => match robot.grasp_now(world, call.hand, object) {
+            Err(MagicError::NotHoldable(_)) => Err(Failure::NotGraspable(
+                "too heavy for the grasp rules, or held by the other hand",
+            )),
+            other => Ok(other?),
+        },
+        Primitive::Open | Primitive::ToggleOn => set(world, object, call.primitive, true),
+        Primitive::Close | Primitive::ToggleOff => set(world, object, call.primitive, false),
+        Primitive::Slice => Ok(world.set_state(object, Predicate::Sliced, true)?),
+        Primitive::Wipe => {
+            let tool_soaked = robot
+                .held(call.hand)
+                .is_some_and(|t| world.state(t, Predicate::Soaked));
+            if world.state(object, Predicate::Dusty) {
+                world.set_state(object, Predicate::Dusty, false)?;
+            }
+            if tool_soaked && world.state(object, Predicate::Stained) {
+                world.set_state(object, Predicate::Stained, false)?;
+            }
+            Ok(())
+        }
+        Primitive::Soak => {
+            let held = robot.held(call.hand).ok_or(Failure::HandEmpty)?;
+            Ok(world.set_state(held, Predicate::Soaked, true)?)
+        }
+        Primitive::Wait => Ok(()),
+        p @ (Primitive::PlaceOnTop
+        | Primitive::PlaceInside
+        | Primitive::PlaceNextTo
+        | Primitive::PlaceUnder
+        | Primitive::PlaceOnFloor) => {
+            let relation = p.relation().ok_or(Failure::Unavailable("placement"))?;
+            place(world, robot, call, relation, &mut rng)
+        }
+    }
+}
+
+/// A call's own random numbers: the same episode, step and call draw the same.
+fn call_seed(seed: u64, steps: u32, call: &Call) -> u64 {
+    let primitive = Primitive::ALL
+        .iter()
+        .position(|p| *p == call.primitive)
+        .unwrap_or(0);
+    let mix = (u64::from(steps) << 32)
+        ^ (u64::from(call.object.0) << 8)
+        ^ ((primitive as u64) << 2)
+        ^ call.hand as u64;
+    seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ mix
+}
+
+fn set(
+    world: &mut World,
+    object: ObjectId,
+    primitive: Primitive,
+    value: bool,
+) -> Result<(), Failure> {
+    let predicate = match primitive {
+        Primitive::Open | Primitive::Close => Predicate::Open,
+        _ => Predicate::ToggledOn,
+    };
+    Ok(world.set_state(object, predicate, value)?)
+}
+
+/// Whether a hand may hold the object: movable and not the robot's (the grasp rules' mass
+/// limit is checked as it grasps). The original also refuses a box over 0.2³ m³, sized for its
+/// own models; ours are sized as real objects, and that check would refuse a quarter of the
+/// activities' cartons, backpacks, brooms and boards, so we leave it to the mass limit.
+fn graspable(world: &World, robot: &Robot, object: ObjectId) -> Result<(), Failure> {
+    if world.object(object).is_fixed() {
+        return Err(Failure::NotGraspable("it is fixed"));
+    }
+    if robot.objects().contains(&object) {
+        return Err(Failure::NotGraspable("it is the robot's"));
+    }
+    Ok(())
+}
+
+/// Whether the object's box comes within [`REACH_DISTANCE`] of the robot's base: the
+/// primitives' reach. The `in reach` predicate measures to the centre; a primitive acts on the
+/// near side of a bed or a pool.
+pub fn within_reach(world: &World, robot: &Robot, object: ObjectId) -> bool {
+    let at = robot.base_pose(world).translation;
+    let b = world.aabb(object);
+    let nearest = at.clamp(b.mins, b.maxs);
+    (nearest - at).length() <= REACH_DISTANCE
+}
+
+/// Whether an openable object is closed.
+fn is_closed(world: &World, object: ObjectId) -> bool {
+    world.object(object).has(Ability::Openable) && !world.state(object, Predicate::Open)
+}
+
+/// A closed openable object the object is inside, if any.
+pub(crate) fn closed_container(world: &World, object: ObjectId) -> Option<ObjectId> {
+    world
+        .objects()
+        .filter(|(id, o)| *id != object && o.is_present() && o.has(Ability::Openable))
+        .map(|(id, _)| id)
+        .find(|&c| !world.state(c, Predicate::Open) && world.core().inside(object, c))
+}
+
+/// NAVIGATE_TO: a place to stand facing the object (§5's search), or for a floor a clear
+/// point of its room; the robot teleported there. Where no clear place sees the object (a
+/// sink's centre lies below its counter's top), the first clear place within reach of its box.
+fn navigate(
+    world: &mut World,
+    robot: &mut Robot,
+    object: ObjectId,
+    rng: &mut SimRng,
+) -> Result<(), Failure> {
+    let standing = Standing::of(world, robot);
+    let found = if world.object(object).category == FLOOR_SYNSET {
+        stand_in_room(world, &standing, object, rng)
+    } else {
+        standing
+            .near(world, object, rng)
+            .or_else(|| standing.within(world, object, REACH_DISTANCE, rng))
+    };
+    let config = found.ok_or(Failure::NoPlaceToStand)?;
+    let z = robot.base_pose(world).translation.z;
+    let pose = Pose::from_parts(
+        Vector::new(config.x, config.y, z),
+        Rotation::from_rotation_z(config.yaw),
+    );
+    Ok(robot.teleport(world, pose)?)
+}
+
+/// A clear place in the room whose floor is `floor`, facing a random way.
+fn stand_in_room(
+    world: &World,
+    standing: &Standing,
+    floor: ObjectId,
+    rng: &mut SimRng,
+) -> Option<BaseConfig> {
+    let room = world.rooms().iter().find(|r| r.floor == Some(floor))?;
+    (0..FLOOR_STAND_TRIES).find_map(|_| {
+        let x = uniform(rng, room.min[0], room.max[0]);
+        let y = uniform(rng, room.min[1], room.max[1]);
+        let c = BaseConfig::new(
+            x,
+            y,
+            uniform(rng, -std::f32::consts::PI, std::f32::consts::PI),
+        );
+        standing.clear_at(world, &c).then_some(c)
+    })
+}
+
+/// PLACE_*: lets go of what the hand holds and places it by the world's sampler; on failure
+/// the world and the robot are as before.
+fn place(
+    world: &mut World,
+    robot: &mut Robot,
+    call: &Call,
+    relation: Relation,
+    rng: &mut SimRng,
+) -> Result<(), Failure> {
+    let before = (world.snapshot(), robot.clone());
+    let held = robot
+        .release_now(world, call.hand)
+        .ok_or(Failure::HandEmpty)?;
+    let tries = if relation == Relation::OnTop && has_elements(world, call.object) {
+        ELEMENT_TRIES
+    } else {
+        1
+    };
+    let mut outcome = Ok(());
+    for _ in 0..tries {
+        outcome = world
+            .place_turning(held, &[(relation, call.object)], rng)
+            .map(|_| ());
+        if outcome.is_err() || near_element(world, held, call.object) {
+            break;
+        }
+    }
+    if let Err(e) = outcome {
+        world.restore(&before.0);
+        *robot = before.1;
+        return Err(e.into());
+    }
+    Ok(())
+}
+
+/// Whether a heat or cold source heats from elements (a stove), not from inside (an oven).
+fn has_elements(world: &World, object: ObjectId) -> bool {
+    let o = world.object(object);
+    (o.has(Ability::HeatSource) || o.has(Ability::ColdSource))
+        && o.points
+            .iter()
+            .any(|(k, _)| *k == PointKind::HeatingElement)
+}
+
+/// Whether `object`'s centre lies within the source's reach of one of its elements (or the
+/// source has none).
+fn near_element(world: &World, object: ObjectId, source: ObjectId) -> bool {
+    let s = world.object(source);
+    let Some(ability) = [Ability::HeatSource, Ability::ColdSource]
+        .into_iter()
+        .find(|&a| s.has(a))
+    else {
+        return true;
+    };
+    let reach = s.param(
+        ability,
+        "distance_threshold",
+        behavior_sim::DEFAULT_DISTANCE_THRESHOLD,
+    );
+    let pose = world.pose(source);
+    let centre = world.aabb(object).center();
+    let mut elements = s
+        .points
+        .iter()
+        .filter(|(k, _)| *k == PointKind::HeatingElement)
+        .peekable();
+    elements.peek().is_none()
+        || elements.any(|(_, p)| (centre - pose.transform_point(*p)).length() <= reach)
+}

@@ -1,0 +1,603 @@
+//! The task planner agent: from the goal's options and the facts as they are, it picks the
+//! option nearest to holding, the next literal of it to make true, and the primitives that
+//! make it so (a symbolic model of what each primitive needs and does); runs them, looks at
+//! the facts again, and re-plans. A literal that fails [`Limits::tries`] times is given up,
+//! with the reason, and options needing it are passed over.
+//!
+//! Which literal goes next: first those that change an object by a process it must be taken to
+//! (cooked, frozen, soaked, cleaned), then placements — an object before what goes on, in,
+//! under or next to it, since moving a container leaves its contents behind — and last slicing
+//! (the halves stay where the whole was put) and the doors and switches (`open`,
+//! `toggled_on`), so that a fridge closes after it is filled.
+//! The BehaviorRobot carries objects in its right hand and tools (slicer, cleaning tool) in its
+//! left; Fetch, with one gripper, puts one down to take the other.
+
+use crate::execute::{Mode, RunError, run};
+use crate::primitive::{Call, Failure, Primitive};
+use crate::symbolic::{closed_container, within_reach};
+use behavior_bddl::{GroundGoal, Literal, Predicate, PredicateOracle};
+use behavior_core::{Ability, FLOOR_SYNSET};
+use behavior_env::Env;
+use behavior_env::record::Recorder;
+use behavior_sim::{BoundWorld, ObjectId, World};
+use serde::Serialize;
+
+/// How far the planner goes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Limits {
+    /// Primitives run at most (waits included).
+    pub primitives: usize,
+    /// Goal options considered (smallest first).
+    pub options: usize,
+    /// Attempts at one literal before it is given up.
+    pub tries: u32,
+    /// Waits for one process (cooking, freezing) at most.
+    pub waits: u32,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits {
+            primitives: 400,
+            options: 64,
+            tries: 3,
+            waits: 120,
+        }
+    }
+}
+
+/// One primitive as it ran.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Executed {
+    /// [`Primitive::name`].
+    pub name: &'static str,
+    /// The object's name.
+    pub object: String,
+    /// The hand.
+    pub hand: usize,
+    /// Whether it succeeded.
+    pub ok: bool,
+    /// Why not.
+    pub reason: Option<String>,
+}
+
+/// A literal the planner gave up on, and why.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct GivenUp {
+    /// The literal, as BDDL writes it.
+    pub literal: String,
+    /// The last failure.
+    pub reason: String,
+}
+
+/// How a solve went.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Solution {
+    /// The goal held at the end.
+    pub success: bool,
+    /// Q at the end.
+    pub q_final: f64,
+    /// What ran, in order.
+    pub primitives: Vec<Executed>,
+    /// Literals given up.
+    pub given_up: Vec<GivenUp>,
+    /// Why it stopped.
+    pub stopped: String,
+}
+
+/// Navigations to one object before it is given up as out of reach (the 2.0.x primitives').
+const NAVIGATE_ATTEMPTS: usize = 10;
+
+/// The right hand carries, the left holds tools (Fetch: its one gripper for both).
+const CARRY: usize = 1;
+const TOOL: usize = 0;
+
+/// The planner at work on one episode.
+pub struct Solver<'a> {
+    env: &'a mut Env,
+    mode: Mode,
+    limits: Limits,
+    recorder: Option<&'a mut Recorder>,
+    observer: &'a mut dyn FnMut(&Executed),
+    log: Vec<Executed>,
+    tries: Vec<(Literal, u32)>,
+    given_up: Vec<(Literal, String)>,
+    /// How often each literal was made true.
+    made: Vec<(Literal, u32)>,
+    /// The option (index) followed.
+    following: Option<usize>,
+}
+
+/// Why a step of a recipe failed: a primitive's failure, or something the planner lacks.
+type Reason = String;
+
+impl<'a> Solver<'a> {
+    /// A planner for the episode `env` has just reset; `observer` sees every primitive as it
+    /// ends, and `recorder`, if given, records the episode.
+    pub fn new(
+        env: &'a mut Env,
+        mode: Mode,
+        limits: Limits,
+        recorder: Option<&'a mut Recorder>,
+        observer: &'a mut dyn FnMut(&Executed),
+    ) -> Solver<'a> {
+        Solver {
+            env,
+            mode,
+            limits,
+            recorder,
+            observer,
+            log: Vec::new(),
+            tries: Vec::new(),
+            given_up: Vec::new(),
+            made: Vec::new(),
+            following: None,
+        }
+    }
+
+    /// Plans and runs until the goal holds, the episode ends, the budget is spent or no
+    /// option is left.
+    pub fn solve(mut self) -> Result<Solution, RunError> {
+        let activity = self.env.config().activity.clone();
+        let goal = GroundGoal::new(&activity).assuming_false(|a| a.object == Some(a.subject));
+        let options: Vec<Vec<Literal>> = behavior_bddl::options::options(&goal)
+            .take(self.limits.options)
+            .collect();
+        let stopped = loop {
+            if self.env.score().is_some_and(|s| s.success) {
+                break "the goal holds".to_string();
+            }
+            if self.env.is_over() {
+                break "the episode is over (step limit)".to_string();
+            }
+            if self.log.len() >= self.limits.primitives {
+                break format!("{} primitives run", self.log.len());
+            }
+            let Some(literal) = self.next_literal(&options) else {
+                break "every option needs a literal given up".to_string();
+            };
+            let result = self.achieve(literal);
+            if !self.holds(&literal) {
+                let reason = result
+                    .err()
+                    .unwrap_or_else(|| "done, but it does not hold".into());
+                self.failed(literal, reason);
+            } else if self.made(literal) > self.limits.tries {
+                let reason = "made true again and again, undone by what came after".to_string();
+                self.given_up.push((literal, reason));
+            }
+        };
+        Ok(Solution {
+            success: self.env.score().is_some_and(|s| s.success),
+            q_final: self.env.score().map_or(0.0, |s| s.q),
+            primitives: self.log,
+            given_up: self
+                .given_up
+                .iter()
+                .map(|(l, reason)| GivenUp {
+                    literal: activity.show_literal(*l),
+                    reason: reason.clone(),
+                })
+                .collect(),
+            stopped,
+        })
+    }
+
+    /// Counts a literal made true; how many times it was.
+    fn made(&mut self, literal: Literal) -> u32 {
+        match self.made.iter_mut().find(|(l, _)| *l == literal) {
+            Some((_, n)) => {
+                *n += 1;
+                *n
+            }
+            None => {
+                self.made.push((literal, 1));
+                1
+            }
+        }
+    }
+
+    fn failed(&mut self, literal: Literal, reason: Reason) {
+        let count = match self.tries.iter_mut().find(|(l, _)| *l == literal) {
+            Some((_, n)) => {
+                *n += 1;
+                *n
+            }
+            None => {
+                self.tries.push((literal, 1));
+                1
+            }
+        };
+        if count >= self.limits.tries {
+            self.given_up.push((literal, reason));
+        }
+    }
+
+    fn world(&self) -> &World {
+        self.env.world().expect("the solver runs in an episode")
+    }
+
+    fn holds(&self, literal: &Literal) -> bool {
+        let (Some(world), Some(bindings)) = (self.env.world(), self.env.bindings()) else {
+            return false;
+        };
+        BoundWorld { world, bindings }.holds(literal.atom) == literal.positive
+    }
+
+    /// The next literal to make true: of the option with fewest unmet literals and none given
+    /// up — the one followed so far while no other has fewer, so that two options that undo
+    /// each other's literals are not taken in turn — the first by the order in the module docs.
+    fn next_literal(&mut self, options: &[Vec<Literal>]) -> Option<Literal> {
+        let given_up = |l: &Literal| self.given_up.iter().any(|(g, _)| g == l);
+        let unmet: Vec<Option<Vec<Literal>>> = options
+            .iter()
+            .map(|o| {
+                (!o.iter().any(given_up))
+                    .then(|| o.iter().filter(|l| !self.holds(l)).copied().collect())
+            })
+            .collect();
+        let best = (0..options.len())
+            .filter(|&k| unmet[k].is_some())
+            .min_by_key(|&k| unmet[k].as_ref().map_or(usize::MAX, Vec::len))?;
+        let fewest = unmet[best].as_ref().map_or(0, Vec::len);
+        let chosen = match self.following {
+            Some(k) if unmet[k].as_ref().is_some_and(|u| u.len() <= fewest) => k,
+            _ => best,
+        };
+        self.following = Some(chosen);
+        let unmet = unmet[chosen].as_deref().unwrap_or_default();
+        let placed_first = |l: &Literal| {
+            l.atom.object.is_some_and(|target| {
+                unmet
+                    .iter()
+                    .any(|o| o.positive && o.atom.object.is_some() && o.atom.subject == target)
+            })
+        };
+        unmet
+            .iter()
+            .min_by_key(|l| (phase(l), placed_first(l)))
+            .copied()
+    }
+
+    fn object(&self, instance: behavior_bddl::InstanceId) -> Result<ObjectId, Reason> {
+        self.env
+            .bindings()
+            .and_then(|b| b.get(instance.0 as usize).copied().flatten())
+            .ok_or_else(|| format!("instance {} is bound to no object", instance.0))
+    }
+
+    /// Runs the primitives that should make `literal` hold.
+    fn achieve(&mut self, literal: Literal) -> Result<(), Reason> {
+        let x = self.object(literal.atom.subject)?;
+        let target = literal.atom.object.map(|t| self.object(t)).transpose()?;
+        let p = literal.atom.predicate;
+        match (p, target, literal.positive) {
+            (_, Some(y), true) => self.place(x, p, y),
+            (_, Some(_), false) => {
+                self.hold(x, CARRY)?;
+                self.put_down(CARRY)
+            }
+            (Predicate::Cooked | Predicate::Burnt, None, true) => {
+                self.process(x, Ability::HeatSource, literal)
+            }
+            (Predicate::Frozen, None, true) => self.process(x, Ability::ColdSource, literal),
+            (Predicate::Frozen, None, false) => self.wait_until(literal),
+            (Predicate::Soaked, None, true) => {
+                self.hold(x, CARRY)?;
+                self.soak(CARRY)
+            }
+            (Predicate::Dusty | Predicate::Stained, None, false) => self.clean(x, p),
+            (Predicate::Sliced, None, true) => {
+                let knife = self
+                    .find(Ability::Slicer, x)
+                    .ok_or("no slicer in the home")?;
+                self.hold(knife, self.tool_hand())?;
+                self.approach(x)?;
+                self.call(Primitive::Slice, x, self.tool_hand())
+            }
+            (Predicate::Open, None, v) => {
+                self.approach(x)?;
+                self.call(if v { Primitive::Open } else { Primitive::Close }, x, CARRY)
+            }
+            (Predicate::ToggledOn, None, v) => {
+                self.approach(x)?;
+                self.call(
+                    if v {
+                        Primitive::ToggleOn
+                    } else {
+                        Primitive::ToggleOff
+                    },
+                    x,
+                    CARRY,
+                )
+            }
+            _ => Err(format!(
+                "no primitive makes {}{} true",
+                if literal.positive { "" } else { "not " },
+                p.name()
+            )),
+        }
+    }
+
+    fn tool_hand(&self) -> usize {
+        if self.env.robot().map_or(1, |r| r.hands()) > 1 {
+            TOOL
+        } else {
+            0
+        }
+    }
+
+    fn carry_hand(&self) -> usize {
+        if self.env.robot().map_or(1, |r| r.hands()) > 1 {
+            CARRY
+        } else {
+            0
+        }
+    }
+
+    /// Runs one primitive; its failure is the recipe's.
+    fn call(&mut self, primitive: Primitive, object: ObjectId, hand: usize) -> Result<(), Reason> {
+        let hand = if primitive.uses_hand() && hand == CARRY {
+            self.carry_hand()
+        } else {
+            hand
+        };
+        let call = Call {
+            primitive,
+            object,
+            hand,
+        };
+        let outcome = run(self.env, call, self.mode, self.recorder.as_deref_mut())
+            .map_err(|e| e.to_string())?;
+        let executed = Executed {
+            name: primitive.name(),
+            object: self.world().object(object).name.clone(),
+            hand,
+            ok: outcome.result.is_ok(),
+            reason: outcome.result.as_ref().err().map(Failure::to_string),
+        };
+        (self.observer)(&executed);
+        self.log.push(executed);
+        outcome.result.map_err(|e| {
+            format!(
+                "{} {}: {e}",
+                primitive.name(),
+                self.world().object(object).name
+            )
+        })
+    }
+
+    /// Stands where `x` is in reach, if it is not: next to it, or next to what holds it, up to
+    /// [`NAVIGATE_ATTEMPTS`] times (the 2.0.x primitives' `navigate_if_needed`).
+    fn approach(&mut self, x: ObjectId) -> Result<(), Reason> {
+        let mut last = String::new();
+        for _ in 0..NAVIGATE_ATTEMPTS {
+            let robot = self.env.robot().ok_or("no robot")?;
+            if within_reach(self.world(), robot, x) {
+                return Ok(());
+            }
+            let result = match self.call(Primitive::NavigateTo, x, CARRY) {
+                Err(first) => match self.holder(x) {
+                    Some(c) => self.call(Primitive::NavigateTo, c, CARRY),
+                    None => Err(first),
+                },
+                ok => ok,
+            };
+            if let Err(why) = result {
+                last = why;
+            }
+        }
+        Err(format!(
+            "{last} (not in reach after {NAVIGATE_ATTEMPTS} navigations)"
+        ))
+    }
+
+    /// What `x` is in or on, if anything.
+    fn holder(&self, x: ObjectId) -> Option<ObjectId> {
+        let world = self.world();
+        let core = world.core();
+        world.objects().map(|(id, _)| id).find(|&c| {
+            c != x && world.object(c).is_present() && (core.inside(x, c) || core.ontop(x, c))
+        })
+    }
+
+    /// Gets `x` into `hand`: puts down what the hand holds, goes to it, opens its container.
+    fn hold(&mut self, x: ObjectId, hand: usize) -> Result<(), Reason> {
+        let hand = if hand == CARRY {
+            self.carry_hand()
+        } else {
+            hand
+        };
+        let robot = self.env.robot().ok_or("no robot")?;
+        if robot.held(hand) == Some(x) {
+            return Ok(());
+        }
+        if let Some(other) = (0..robot.hands()).find(|&h| robot.held(h) == Some(x)) {
+            self.put_down(other)?;
+        }
+        if self.env.robot().and_then(|r| r.held(hand)).is_some() {
+            self.put_down(hand)?;
+        }
+        if let Some(c) = closed_container(self.world(), x) {
+            self.approach(c)?;
+            self.call(Primitive::Open, c, hand)?;
+        }
+        self.approach(x)?;
+        self.call(Primitive::Grasp, x, hand)
+    }
+
+    /// Puts what `hand` holds on the floor of the room the robot is in (or is nearest).
+    fn put_down(&mut self, hand: usize) -> Result<(), Reason> {
+        let world = self.world();
+        let at = self
+            .env
+            .robot()
+            .ok_or("no robot")?
+            .base_pose(world)
+            .translation;
+        let gap = |r: &&behavior_sim::Room| {
+            let dx = (r.min[0] - at.x).max(at.x - r.max[0]).max(0.0);
+            let dy = (r.min[1] - at.y).max(at.y - r.max[1]).max(0.0);
+            dx.hypot(dy)
+        };
+        let floor = world
+            .rooms()
+            .iter()
+            .filter(|r| r.floor.is_some())
+            .min_by(|a, b| gap(a).total_cmp(&gap(b)))
+            .and_then(|r| r.floor)
+            .ok_or("the home has no floors")?;
+        self.call(Primitive::PlaceOnFloor, floor, hand)
+    }
+
+    /// A placement: `x` carried to `y` and put on, in, under or next to it.
+    fn place(&mut self, x: ObjectId, p: Predicate, y: ObjectId) -> Result<(), Reason> {
+        let primitive = match p {
+            Predicate::OnTop | Predicate::Touching => Primitive::PlaceOnTop,
+            Predicate::Inside => Primitive::PlaceInside,
+            Predicate::NextTo => Primitive::PlaceNextTo,
+            Predicate::Under => Primitive::PlaceUnder,
+            Predicate::OnFloor => Primitive::PlaceOnFloor,
+            other => return Err(format!("{} is not a placement", other.name())),
+        };
+        self.hold(x, CARRY)?;
+        if primitive == Primitive::PlaceInside
+            && self.world().object(y).has(Ability::Openable)
+            && !self.world().state(y, Predicate::Open)
+        {
+            self.approach(y)?;
+            self.call(Primitive::Open, y, CARRY)?;
+        }
+        if primitive == Primitive::PlaceOnFloor {
+            self.call(Primitive::NavigateTo, y, CARRY)?;
+        } else {
+            self.approach(y)?;
+        }
+        self.call(primitive, y, CARRY)
+    }
+
+    /// Cooking or freezing: `x` taken to a source of `ability`, put on or in it as the source
+    /// needs, the source closed and switched on as it needs, then time let pass.
+    fn process(&mut self, x: ObjectId, ability: Ability, literal: Literal) -> Result<(), Reason> {
+        let source = self
+            .find(ability, x)
+            .ok_or_else(|| format!("no {} in the home", ability.name()))?;
+        let (inside, on, closed) = {
+            let s = self.world().object(source);
+            (
+                s.flag(ability, "requires_inside", false),
+                s.flag(ability, "requires_toggled_on", false),
+                s.flag(ability, "requires_closed", false),
+            )
+        };
+        if inside {
+            self.place(x, Predicate::Inside, source)?;
+        } else {
+            self.place(x, Predicate::OnTop, source)?;
+        }
+        if closed && self.world().state(source, Predicate::Open) {
+            self.call(Primitive::Close, source, CARRY)?;
+        }
+        if on && !self.world().state(source, Predicate::ToggledOn) {
+            self.call(Primitive::ToggleOn, source, CARRY)?;
+        }
+        self.wait_until(literal)
+    }
+
+    fn wait_until(&mut self, literal: Literal) -> Result<(), Reason> {
+        for _ in 0..self.limits.waits {
+            if self.holds(&literal) || self.env.is_over() {
+                return Ok(());
+            }
+            let anything = self
+                .env
+                .bindings()
+                .and_then(|b| b.iter().flatten().next().copied());
+            self.call(Primitive::Wait, anything.ok_or("no objects")?, CARRY)?;
+        }
+        Err(format!("still not so after {} waits", self.limits.waits))
+    }
+
+    /// Soaks what `hand` holds at a water source, switched on first.
+    fn soak(&mut self, hand: usize) -> Result<(), Reason> {
+        let held = self
+            .env
+            .robot()
+            .and_then(|r| r.held(hand))
+            .ok_or("the hand is empty")?;
+        let water = self
+            .find(Ability::WaterSource, held)
+            .ok_or("no water source in the home")?;
+        self.approach(water)?;
+        if self.world().object(water).has(Ability::Toggleable)
+            && !self.world().state(water, Predicate::ToggledOn)
+        {
+            self.call(Primitive::ToggleOn, water, hand)?;
+        }
+        self.call(Primitive::Soak, water, hand)
+    }
+
+    /// Dust or stains off `y` with a cleaning tool, soaked first for stains.
+    fn clean(&mut self, y: ObjectId, dirt: Predicate) -> Result<(), Reason> {
+        let soaks = dirt == Predicate::Stained;
+        let tool = self
+            .find_with(Ability::CleaningTool, y, |o| {
+                !soaks || o.has(Ability::Soakable)
+            })
+            .ok_or("no cleaning tool in the home that does this")?;
+        let hand = self.tool_hand();
+        self.hold(tool, hand)?;
+        if dirt == Predicate::Stained && !self.world().state(tool, Predicate::Soaked) {
+            self.soak(hand)?;
+        }
+        self.approach(y)?;
+        self.call(Primitive::Wipe, y, hand)
+    }
+}
+
+impl Solver<'_> {
+    /// An object with `ability` to use on `near`: one of the activity's if any, else the
+    /// home's nearest.
+    fn find(&self, ability: Ability, near: ObjectId) -> Option<ObjectId> {
+        self.find_with(ability, near, |_| true)
+    }
+
+    /// [`Solver::find`] among the objects `also` accepts.
+    fn find_with(
+        &self,
+        ability: Ability,
+        near: ObjectId,
+        also: impl Fn(&behavior_sim::Object) -> bool,
+    ) -> Option<ObjectId> {
+        let world = self.world();
+        let bound = self.env.bindings().unwrap_or_default();
+        let robot: Vec<ObjectId> = self.env.robot().map(|r| r.objects()).unwrap_or_default();
+        let at = world.aabb(near).center();
+        world
+            .objects()
+            .filter(|(id, o)| {
+                *id != near
+                    && o.is_present()
+                    && o.has(ability)
+                    && also(o)
+                    && !robot.contains(id)
+                    && o.category != FLOOR_SYNSET
+            })
+            .map(|(id, _)| {
+                let distance = (world.aabb(id).center() - at).length();
+                (!bound.contains(&Some(id)), distance, id)
+            })
+            .min_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)).then(a.2.cmp(&b.2)))
+            .map(|(_, _, id)| id)
+    }
+}
+
+/// Processes first, placements next, then slicing (the halves stay where the whole was put)
+/// and doors and switches last.
+fn phase(l: &Literal) -> u8 {
+    match l.atom.predicate {
+        _ if l.atom.object.is_some() => 1,
+        Predicate::Open | Predicate::ToggledOn | Predicate::Sliced => 2,
+        _ => 0,
+    }
+}

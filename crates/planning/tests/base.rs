@@ -1,0 +1,175 @@
+//! Planning the base through a small world of walls.
+
+use behavior_planning::{BaseConfig, BaseSpace, Footprint, PlanError, PlanParams, Space, plan};
+use behavior_sim::{Material, ObjectSpec, Part, Primitive, QueryFilter, World};
+use rapier3d::math::{Pose, Vector};
+
+/// A fixed wall: a box of `half` extents centred at (x, y), 2 m tall.
+fn wall(world: &mut World, name: &str, (x, y): (f32, f32), (hx, hy): (f32, f32)) {
+    let part = Part::new(Primitive::Box {
+        half_extents: Vector::new(hx, hy, 1.0),
+    });
+    let spec = ObjectSpec::new(name, "wall.n.01", vec![part])
+        .looks([200, 200, 200], Material::Stone)
+        .at(Vector::new(x, y, 1.0))
+        .fixed();
+    world.add(spec).unwrap();
+}
+
+/// The BehaviorRobot's body: an upright capsule of radius 0.25 spanning 0.2–1.2 m.
+fn body() -> Footprint {
+    Footprint {
+        shapes: vec![(
+            Primitive::Capsule {
+                radius: 0.25,
+                half_height: 0.25,
+            },
+            Pose::from_translation(Vector::new(0.0, 0.0, 0.7)),
+        )],
+    }
+}
+
+fn space<'w>(world: &'w World, start: &BaseConfig, goal: &BaseConfig) -> BaseSpace<'w> {
+    BaseSpace::new(world, body(), QueryFilter::default(), start, goal)
+}
+
+/// A wall across x = 1 with a 0.8 m doorway at y ∈ [0.2, 1.0].
+fn doorway() -> World {
+    let mut world = World::default();
+    wall(&mut world, "wall_south", (1.0, -1.9), (0.05, 2.1));
+    wall(&mut world, "wall_north", (1.0, 2.5), (0.05, 1.5));
+    world
+}
+
+/// Every configuration of `path` free, and every move between two of them free when checked
+/// ten times more finely than the planner did.
+fn assert_collision_free(space: &BaseSpace, path: &[BaseConfig]) {
+    for w in path.windows(2) {
+        for c in space.steps(&w[0], &w[1], 0.005) {
+            assert!(
+                space.free(&c),
+                "{c:?} collides (between {:?} and {:?})",
+                w[0],
+                w[1]
+            );
+        }
+    }
+}
+
+#[test]
+fn an_open_floor_takes_the_direct_path() {
+    let world = World::default();
+    let (start, goal) = (
+        BaseConfig::new(0.0, 0.0, 0.0),
+        BaseConfig::new(2.0, 1.0, 1.5),
+    );
+    let planned = plan(
+        &space(&world, &start, &goal),
+        &start,
+        &goal,
+        &PlanParams::default(),
+    )
+    .unwrap();
+    assert_eq!(planned.run, 0);
+    assert_eq!(planned.path.first(), Some(&start));
+    assert_eq!(planned.path.last(), Some(&goal));
+}
+
+#[test]
+fn a_wall_is_passed_through_its_doorway() {
+    let world = doorway();
+    let (start, goal) = (
+        BaseConfig::new(0.0, 0.0, 0.0),
+        BaseConfig::new(2.0, 0.0, 0.0),
+    );
+    let space = space(&world, &start, &goal);
+    assert!(
+        !space.free(&BaseConfig::new(1.0, 0.0, 0.0)),
+        "the wall is not in the way"
+    );
+    let planned = plan(&space, &start, &goal, &PlanParams::default()).unwrap();
+    assert!(planned.run >= 1, "the direct path went through the wall");
+    assert_eq!(planned.path.first(), Some(&start));
+    assert_eq!(planned.path.last(), Some(&goal));
+    assert_collision_free(&space, &planned.path);
+    let crossing = planned
+        .path
+        .windows(2)
+        .find(|w| w[0].x < 1.0 && w[1].x >= 1.0)
+        .expect("the path never crosses x = 1");
+    assert!(
+        (0.2..=1.0).contains(&crossing[1].y),
+        "crossed the wall at y = {}",
+        crossing[1].y
+    );
+}
+
+#[test]
+fn the_same_seed_gives_the_same_path_and_another_seed_may_not() {
+    let world = doorway();
+    let (start, goal) = (
+        BaseConfig::new(0.0, 0.0, 0.0),
+        BaseConfig::new(2.0, 0.0, 0.0),
+    );
+    let space = space(&world, &start, &goal);
+    let run = |seed| {
+        plan(
+            &space,
+            &start,
+            &goal,
+            &PlanParams {
+                seed,
+                ..PlanParams::default()
+            },
+        )
+        .unwrap()
+        .path
+    };
+    assert_eq!(run(3), run(3));
+    let paths: Vec<_> = (0..4).map(run).collect();
+    assert!(
+        paths.windows(2).any(|w| w[0] != w[1]),
+        "four seeds gave one path"
+    );
+}
+
+#[test]
+fn a_goal_inside_a_wall_or_walled_in_is_refused_with_the_reason() {
+    let world = doorway();
+    let start = BaseConfig::new(0.0, 0.0, 0.0);
+    let inside = BaseConfig::new(1.0, -1.0, 0.0);
+    let err = plan(
+        &space(&world, &start, &inside),
+        &start,
+        &inside,
+        &PlanParams::default(),
+    );
+    assert_eq!(err, Err(PlanError::GoalInCollision));
+    let err = plan(
+        &space(&world, &inside, &start),
+        &inside,
+        &start,
+        &PlanParams::default(),
+    );
+    assert_eq!(err, Err(PlanError::StartInCollision));
+
+    let mut world = World::default();
+    wall(&mut world, "w", (2.0, 0.0), (0.05, 1.0));
+    wall(&mut world, "e", (4.0, 0.0), (0.05, 1.0));
+    wall(&mut world, "s", (3.0, -1.0), (1.0, 0.05));
+    wall(&mut world, "n", (3.0, 1.0), (1.0, 0.05));
+    let goal = BaseConfig::new(3.0, 0.0, 0.0);
+    let err = plan(
+        &space(&world, &start, &goal),
+        &start,
+        &goal,
+        &PlanParams::default(),
+    );
+    assert_eq!(
+        err,
+        Err(PlanError::NoPath {
+            restarts: 2,
+            iterations: 20
+        })
+    );
+}

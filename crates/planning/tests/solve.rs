@@ -1,0 +1,94 @@
+//! The task planner end to end: activities solved with symbolic primitives, and their
+//! recordings replayed bit for bit with the primitives done again.
+
+#[path = "../../env/tests/common/mod.rs"]
+mod common;
+
+use behavior_env::record::{CHECKPOINT_EVERY, Recorder, read, replay, replay_with};
+use behavior_planning::{Limits, Mode, Solution, Solver, replay_edit};
+
+fn solve(
+    activity: &str,
+    seed: u64,
+    recorder: Option<&mut Recorder>,
+) -> (Solution, behavior_env::Env) {
+    let mut env = common::env(activity);
+    env.reset(seed).unwrap();
+    let solution = Solver::new(
+        &mut env,
+        Mode::Symbolic,
+        Limits::default(),
+        recorder,
+        &mut |_| {},
+    )
+    .solve()
+    .unwrap();
+    (solution, env)
+}
+
+#[test]
+fn three_activities_are_solved_with_symbolic_primitives() {
+    // Placing (one room to another), packing into a closed fridge, and cooking by waiting.
+    for activity in [
+        "bringing_in_wood",
+        "putting_leftovers_away",
+        "preserving_food",
+    ] {
+        let (solution, env) = solve(activity, 0, None);
+        assert!(
+            solution.success,
+            "{activity}: Q = {}, stopped: {}, given up: {:?}",
+            solution.q_final, solution.stopped, solution.given_up
+        );
+        assert_eq!(solution.q_final, 1.0);
+        assert!(env.score().unwrap().success);
+        assert!(solution.primitives.iter().any(|p| p.ok));
+    }
+}
+
+#[test]
+fn a_recorded_solution_replays_bit_for_bit() {
+    let dir = std::env::temp_dir().join(format!("behavior-solve-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("solution.mcap");
+    let activity = "putting_leftovers_away";
+    let mut env = common::env(activity);
+    env.reset(2).unwrap();
+    let mut recorder = Recorder::create(&path, &env, "", 5).unwrap();
+    let solution = Solver::new(
+        &mut env,
+        Mode::Symbolic,
+        Limits::default(),
+        Some(&mut recorder),
+        &mut |_| {},
+    )
+    .solve()
+    .unwrap();
+    recorder.finish().unwrap();
+    assert!(solution.success, "{:?}", solution.given_up);
+    let recording = read(&path).unwrap();
+    let edits = solution
+        .primitives
+        .iter()
+        .filter(|p| p.ok && p.name != "wait")
+        .count();
+    assert_eq!(
+        recording.edits.len(),
+        edits,
+        "every successful primitive is recorded"
+    );
+    let config = || common::config(activity);
+    let report = replay_with(&recording, config(), &mut replay_edit).unwrap();
+    assert!(
+        report.identical,
+        "differs from step {:?}",
+        report.first_difference
+    );
+    assert!(report.checkpoints > 1);
+    assert_eq!(report.q_final, 1.0);
+    // Without the planner's editor the replay says why it cannot go on.
+    let err = replay(&recording, config()).unwrap_err();
+    assert!(err.to_string().contains("edited"), "{err}");
+    let _ = CHECKPOINT_EVERY;
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -199,6 +199,19 @@ pub fn sample(args: SampleArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     })
 }
 
+/// Every named home that covers the activity, in order.
+pub(crate) fn all_covering(
+    activity: &Activity,
+    library: &Library,
+    taxonomy: &Taxonomy,
+) -> Result<Vec<Scene>> {
+    let homes = named_homes(library)?;
+    Ok(covering(&homes, activity, taxonomy)
+        .into_iter()
+        .cloned()
+        .collect())
+}
+
 /// The first named home that covers the activity.
 pub(crate) fn first_covering(
     activity: &Activity,

@@ -53,6 +53,8 @@ pub enum RunError {
 pub struct Outcome {
     /// Done, or why not.
     pub result: Result<(), Failure>,
+    /// How long the primitive itself took (its check and outcome; not the steps after it), s.
+    pub seconds: f64,
     /// The last step it took (a wait takes [`WAIT_STEPS`], any other one).
     pub step: Step,
 }
@@ -75,6 +77,7 @@ pub fn run(
     mode: Mode,
     mut recorder: Option<&mut Recorder>,
 ) -> Result<Outcome, RunError> {
+    let began = std::time::Instant::now();
     let result = match (mode, call.primitive) {
         (_, Primitive::Wait) => Ok(()),
         (Mode::Physical, _) => Err(Failure::Unavailable(
@@ -82,6 +85,7 @@ pub fn run(
         )),
         (Mode::Symbolic, _) => env.edit(|edit| symbolic::apply(edit, &call))?,
     };
+    let seconds = began.elapsed().as_secs_f64();
     if result.is_ok()
         && call.primitive != Primitive::Wait
         && let Some(r) = recorder.as_deref_mut()
@@ -107,7 +111,11 @@ pub fn run(
         }
     }
     let step = last.ok_or(EnvError::NotReset)?;
-    Ok(Outcome { result, step })
+    Ok(Outcome {
+        result,
+        seconds,
+        step,
+    })
 }
 
 /// The call as a recording says it.

@@ -92,7 +92,8 @@ impl Standing {
         self.search(world, object, rng, |c| self.sees(world, c, object))
     }
 
-    /// As [`Standing::near`], but the first clear place within `reach` of the object's box,
+    /// As [`Standing::near`], but the first clear place within `reach` of the object's box
+    /// (across the floor),
     /// seen or not: for what no clear place sees (a sink's centre lies under its counter's top).
     pub fn within(
         &self,
@@ -103,8 +104,9 @@ impl Standing {
     ) -> Option<BaseConfig> {
         let b = world.core().aabb(object);
         self.search(world, object, rng, |c| {
-            let at = Vector::new(c.x, c.y, b.center().z);
-            (at.clamp(b.mins, b.maxs) - at).length() <= reach
+            let dx = (b.mins.x - c.x).max(c.x - b.maxs.x).max(0.0);
+            let dy = (b.mins.y - c.y).max(c.y - b.maxs.y).max(0.0);
+            dx.hypot(dy) <= reach
         })
     }
 

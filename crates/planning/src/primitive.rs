@@ -126,7 +126,8 @@ pub struct Call {
 /// Why a primitive failed. Nothing changed, but where it says otherwise.
 #[derive(Debug, thiserror::Error)]
 pub enum Failure {
-    /// The object is farther than the robot reaches (its box 2 m from the base).
+    /// The object is farther than the robot reaches (its box 2 m from the base, across the
+    /// floor).
     #[error("out of reach")]
     Unreachable,
     /// No place to stand within 2.4 m that is clear and sees the object.

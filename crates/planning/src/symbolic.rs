@@ -248,14 +248,16 @@ fn graspable(world: &World, robot: &Robot, object: ObjectId) -> Result<(), Failu
     Ok(())
 }
 
-/// Whether the object's box comes within [`REACH_DISTANCE`] of the robot's base: the
-/// primitives' reach. The `in reach` predicate measures to the centre; a primitive acts on the
-/// near side of a bed or a pool.
+/// Whether the object's box comes within [`REACH_DISTANCE`] of the robot's base, measured
+/// across the floor: the primitives' reach. The `in reach` predicate measures to the centre in
+/// 3-D from the base's origin, which is a BehaviorRobot's body centre but Fetch's point on
+/// the floor; a primitive acts on the near side of a bed or a pool, and on a high shelf.
 pub fn within_reach(world: &World, robot: &Robot, object: ObjectId) -> bool {
     let at = robot.base_pose(world).translation;
     let b = world.aabb(object);
-    let nearest = at.clamp(b.mins, b.maxs);
-    (nearest - at).length() <= REACH_DISTANCE
+    let dx = (b.mins.x - at.x).max(at.x - b.maxs.x).max(0.0);
+    let dy = (b.mins.y - at.y).max(at.y - b.maxs.y).max(0.0);
+    dx.hypot(dy) <= REACH_DISTANCE
 }
 
 /// Whether an openable object is closed.

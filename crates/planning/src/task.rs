@@ -27,7 +27,8 @@ use serde::Serialize;
 pub struct Limits {
     /// Primitives run at most (waits included).
     pub primitives: usize,
-    /// Goal options considered (smallest first).
+    /// Goal options considered (smallest first, leaving out those that put an object in two
+    /// places at once).
     pub options: usize,
     /// Attempts at one literal before it is given up.
     pub tries: u32,
@@ -59,6 +60,8 @@ pub struct Executed {
     pub ok: bool,
     /// Why not.
     pub reason: Option<String>,
+    /// How long the primitive itself took, ms (its check and outcome, not the step after).
+    pub ms: f64,
 }
 
 /// A literal the planner gave up on, and why.
@@ -141,6 +144,8 @@ impl<'a> Solver<'a> {
         let activity = self.env.config().activity.clone();
         let goal = GroundGoal::new(&activity).assuming_false(|a| a.object == Some(a.subject));
         let options: Vec<Vec<Literal>> = behavior_bddl::options::options(&goal)
+            .take(OPTIONS_SCANNED)
+            .filter(|o| !in_two_places(o))
             .take(self.limits.options)
             .collect();
         let stopped = loop {
@@ -355,6 +360,7 @@ impl<'a> Solver<'a> {
             hand,
             ok: outcome.result.is_ok(),
             reason: outcome.result.as_ref().err().map(Failure::to_string),
+            ms: outcome.seconds * 1000.0,
         };
         (self.observer)(&executed);
         self.log.push(executed);
@@ -520,6 +526,11 @@ impl<'a> Solver<'a> {
 
     /// Soaks what `hand` holds at a water source, switched on first.
     fn soak(&mut self, hand: usize) -> Result<(), Reason> {
+        let hand = if hand == CARRY {
+            self.carry_hand()
+        } else {
+            hand
+        };
         let held = self
             .env
             .robot()
@@ -590,6 +601,26 @@ impl Solver<'_> {
             .min_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)).then(a.2.cmp(&b.2)))
             .map(|(_, _, id)| id)
     }
+}
+
+/// Options looked at, at most, for [`Limits::options`] that are not in two places at once
+/// (a goal of `forn` over many objects has millions).
+const OPTIONS_SCANNED: usize = 10_000;
+
+/// Whether an option asks an object to be on two things, or in two things, at once: no
+/// placement makes both hold (three candles on each of two tables, where an option may ask for
+/// one candle on both).
+fn in_two_places(option: &[Literal]) -> bool {
+    option.iter().enumerate().any(|(k, a)| {
+        a.positive
+            && matches!(a.atom.predicate, Predicate::OnTop | Predicate::Inside)
+            && option[k + 1..].iter().any(|b| {
+                b.positive
+                    && b.atom.predicate == a.atom.predicate
+                    && b.atom.subject == a.atom.subject
+                    && b.atom.object != a.atom.object
+            })
+    })
 }
 
 /// Processes first, placements next, then slicing (the halves stay where the whole was put)

@@ -803,7 +803,7 @@ impl Fetch {
             max_force: self.rules.max_force(kind),
         };
         let attachment = world.core_mut().attach(spec)?;
-        for part in [gripper, self.parts.base()] {
+        for part in self.parts.all() {
             ignore_between(world, part, body, true);
         }
         let own = self.parts.all();
@@ -822,7 +822,7 @@ impl Fetch {
         restore_overlooked(world, &mut self.releases, grasp.body, &self.parts.all());
         self.releases.push(Release {
             body: grasp.body,
-            parts: vec![self.parts.gripper(), self.parts.base()],
+            parts: self.parts.all().to_vec(),
             since: world.steps(),
         });
         self.drive_fingers(world, FINGER_OPEN);

@@ -109,6 +109,8 @@ pub struct Solver<'a> {
     made: Vec<(Literal, u32)>,
     /// The option (index) followed.
     following: Option<usize>,
+    /// An error that ends the solve (the recording could not be written).
+    fatal: Option<RunError>,
 }
 
 /// Why a step of a recipe failed: a primitive's failure, or something the planner lacks.
@@ -135,12 +137,16 @@ impl<'a> Solver<'a> {
             given_up: Vec::new(),
             made: Vec::new(),
             following: None,
+            fatal: None,
         }
     }
 
     /// Plans and runs until the goal holds, the episode ends, the budget is spent or no
     /// option is left.
     pub fn solve(mut self) -> Result<Solution, RunError> {
+        if self.env.world().is_none() {
+            return Err(RunError::Env(behavior_env::EnvError::NotReset));
+        }
         let activity = self.env.config().activity.clone();
         let goal = GroundGoal::new(&activity).assuming_false(|a| a.object == Some(a.subject));
         let options: Vec<Vec<Literal>> = behavior_bddl::options::options(&goal)
@@ -162,6 +168,9 @@ impl<'a> Solver<'a> {
                 break "every option needs a literal given up".to_string();
             };
             let result = self.achieve(literal);
+            if let Some(fatal) = self.fatal.take() {
+                return Err(fatal);
+            }
             if !self.holds(&literal) {
                 let reason = result
                     .err()
@@ -218,8 +227,11 @@ impl<'a> Solver<'a> {
         }
     }
 
+    /// The episode's world: [`Solver::solve`] runs only once the environment is reset.
     fn world(&self) -> &World {
-        self.env.world().expect("the solver runs in an episode")
+        self.env
+            .world()
+            .expect("solve checked that an episode runs")
     }
 
     fn holds(&self, literal: &Literal) -> bool {
@@ -352,8 +364,18 @@ impl<'a> Solver<'a> {
             object,
             hand,
         };
-        let outcome = run(self.env, call, self.mode, self.recorder.as_deref_mut())
-            .map_err(|e| e.to_string())?;
+        let outcome = match run(self.env, call, self.mode, self.recorder.as_deref_mut()) {
+            Ok(outcome) => outcome,
+            Err(e) => {
+                let reason = e.to_string();
+                // A recording that cannot be written ends the solve; an episode that ended
+                // just ends this recipe.
+                if matches!(e, RunError::Record(_)) {
+                    self.fatal = Some(e);
+                }
+                return Err(reason);
+            }
+        };
         let executed = Executed {
             name: primitive.name(),
             object: self.world().object(object).name.clone(),

@@ -92,3 +92,24 @@ fn a_recorded_solution_replays_bit_for_bit() {
     let _ = CHECKPOINT_EVERY;
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn solving_before_a_reset_is_an_error() {
+    let mut env = common::env("bringing_in_wood");
+    let err = Solver::new(
+        &mut env,
+        Mode::Symbolic,
+        Limits::default(),
+        None,
+        &mut |_| {},
+    )
+    .solve()
+    .unwrap_err();
+    assert!(
+        matches!(
+            err,
+            behavior_planning::RunError::Env(behavior_env::EnvError::NotReset)
+        ),
+        "{err}"
+    );
+}

@@ -14,6 +14,7 @@
 //! It owns the search and the spaces. It knows nothing of activities, episodes or rendering, and
 //! does not drive robots: a caller executes the path.
 
+mod action_space;
 mod base;
 mod error;
 mod execute;
@@ -23,6 +24,7 @@ mod rrt;
 mod symbolic;
 mod task;
 
+pub use action_space::{PrimitiveSet, PrimitiveSpace};
 pub use base::{BaseConfig, BaseSpace, Footprint};
 pub use error::PlanError;
 pub use execute::{Mode, Outcome, RecordedCall, RunError, replay_edit, run};

@@ -9,7 +9,10 @@ use crate::scene::with_clutter;
 use anyhow::Result;
 use behavior_core::rng::seeded;
 use behavior_env::{Env, EnvConfig};
-use behavior_planning::{BaseSpace, PlanError, PlanParams, Standing, plan};
+use behavior_planning::{
+    BaseSpace, Call, PlanError, PlanParams, Primitive, Standing, drive_to, plan,
+};
+use behavior_sim::ObjectId;
 use serde::Serialize;
 use std::path::Path;
 use std::process::ExitCode;
@@ -44,6 +47,10 @@ pub struct BenchPlanArgs {
     /// The embodiment: behavior or fetch.
     #[arg(long, default_value = "behavior")]
     robot: String,
+    /// Also drive to every object with physics (physical NAVIGATE_TO: its own stand search,
+    /// plan, and the path driven by the robot's actions), each from the episode's start.
+    #[arg(long)]
+    drive: bool,
     #[arg(long)]
     json: bool,
 }
@@ -64,6 +71,16 @@ struct Attempt {
     waypoints: Option<usize>,
 }
 
+/// One physical NAVIGATE_TO from the episode's start.
+#[derive(Serialize)]
+struct Drive {
+    object: String,
+    /// `ok`, or why it failed.
+    outcome: String,
+    /// Steps driven.
+    steps: u32,
+}
+
 #[derive(Serialize)]
 struct ActivityReport {
     activity: String,
@@ -71,6 +88,8 @@ struct ActivityReport {
     /// The episode's seed (`None`: no instance in [`SEEDS`] tries).
     seed: Option<u64>,
     attempts: Vec<Attempt>,
+    /// With `--drive`.
+    drives: Vec<Drive>,
 }
 
 /// Seeds tried per activity.
@@ -88,6 +107,9 @@ struct Report {
     planned: usize,
     median_plan_ms: f64,
     max_plan_ms: f64,
+    /// With `--drive`: drives tried, and those that ended where they were going.
+    drives: usize,
+    reached: usize,
 }
 
 pub fn run(args: BenchPlanArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
@@ -123,6 +145,10 @@ pub fn run(args: BenchPlanArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
                 Some(_) => attempts(&env, &params, args.home_bounds)?,
                 None => Vec::new(),
             },
+            drives: match seed {
+                Some(_) if args.drive => drives(&mut env)?,
+                _ => Vec::new(),
+            },
         });
         bar.inc(1);
     }
@@ -145,6 +171,12 @@ pub fn run(args: BenchPlanArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         planned,
         median_plan_ms: median(&times),
         max_plan_ms: times.iter().copied().fold(0.0, f64::max),
+        drives: activities.iter().map(|a| a.drives.len()).sum(),
+        reached: activities
+            .iter()
+            .flat_map(|a| &a.drives)
+            .filter(|d| d.outcome == "ok")
+            .count(),
         activities,
     };
     if args.json {
@@ -222,6 +254,49 @@ fn attempts(env: &Env, params: &PlanParams, home_bounds: bool) -> Result<Vec<Att
     Ok(out)
 }
 
+/// For each of the activity's objects but the agent and floors, a physical NAVIGATE_TO from the
+/// episode's start (the episode put back after each).
+fn drives(env: &mut Env) -> Result<Vec<Drive>> {
+    let (Some(start), Some(bindings), Some(robot)) =
+        (env.checkpoint(), env.bindings(), env.robot())
+    else {
+        anyhow::bail!("no episode");
+    };
+    let base = robot.base();
+    let objects: Vec<ObjectId> = bindings
+        .iter()
+        .flatten()
+        .copied()
+        .filter(|&id| id != base)
+        .collect();
+    let mut out = Vec::new();
+    for object in objects {
+        let name = env
+            .world()
+            .map(|w| w.object(object))
+            .filter(|o| o.category != "floor.n.01");
+        let Some(name) = name.map(|o| o.name.clone()) else {
+            continue;
+        };
+        let call = Call {
+            primitive: Primitive::NavigateTo,
+            object,
+            hand: 0,
+        };
+        let outcome = match drive_to(env, &call, None)? {
+            Ok(_) => "ok".to_string(),
+            Err(e) => e.to_string(),
+        };
+        out.push(Drive {
+            object: name,
+            outcome,
+            steps: env.steps(),
+        });
+        env.restore(&start);
+    }
+    Ok(out)
+}
+
 /// The extent of the home's floors on x and y.
 fn floors(world: &behavior_sim::World) -> ([f32; 2], [f32; 2]) {
     let (mut min, mut max) = ([f32::INFINITY; 2], [f32::NEG_INFINITY; 2]);
@@ -281,4 +356,10 @@ fn print(report: &Report) {
         report.restarts,
         report.iterations
     );
+    if report.drives > 0 {
+        println!(
+            "driven with physics: {} of {} reached where they were going",
+            report.reached, report.drives
+        );
+    }
 }

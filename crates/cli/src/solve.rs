@@ -74,14 +74,8 @@ struct Report {
 }
 
 fn mode(name: &str) -> Result<Mode> {
-    let mode = Mode::from_name(name)
-        .with_context(|| format!("--mode must be symbolic or physical, not `{name}`"))?;
-    if mode == Mode::Physical {
-        bail!(
-            "--mode physical: primitives run with physics are not built yet (issue 13 goes on); use --mode symbolic"
-        );
-    }
-    Ok(mode)
+    Mode::from_name(name)
+        .with_context(|| format!("--mode must be symbolic or physical, not `{name}`"))
 }
 
 pub fn solve(args: SolveArgs, data_dir: Option<&Path>) -> Result<ExitCode> {

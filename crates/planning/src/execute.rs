@@ -4,7 +4,7 @@
 //! them is written as they run.
 
 use crate::primitive::{Call, Failure, Primitive, WAIT_STEPS};
-use crate::symbolic;
+use crate::{physical, symbolic};
 use behavior_env::record::Recorder;
 use behavior_env::{Env, EnvError, Step};
 use serde::{Deserialize, Serialize};
@@ -80,13 +80,20 @@ pub fn run(
     let began = std::time::Instant::now();
     let result = match (mode, call.primitive) {
         (_, Primitive::Wait) => Ok(()),
-        (Mode::Physical, _) => Err(Failure::Unavailable(
-            "physical primitives are not built yet",
-        )),
+        (Mode::Physical, Primitive::NavigateTo) => {
+            physical::drive_to(env, &call, recorder.as_deref_mut())?.map(|_| ())
+        }
+        // Kinematic in the original's motion-planning mode too.
+        (Mode::Physical, p) if p.is_switch() => env.edit(|edit| symbolic::apply(edit, &call))?,
         (Mode::Symbolic, _) => env.edit(|edit| symbolic::apply(edit, &call))?,
+        (Mode::Physical, _) => Err(Failure::Unavailable(
+            "physical grasp, place, slice, wipe and soak are not built yet",
+        )),
     };
     let seconds = began.elapsed().as_secs_f64();
+    let edited = mode == Mode::Symbolic || call.primitive.is_switch();
     if result.is_ok()
+        && edited
         && call.primitive != Primitive::Wait
         && let Some(r) = recorder.as_deref_mut()
     {

@@ -19,6 +19,7 @@ mod base;
 mod error;
 mod execute;
 mod navigate;
+mod physical;
 mod primitive;
 mod rrt;
 mod symbolic;
@@ -29,6 +30,9 @@ pub use base::{BaseConfig, BaseSpace, Footprint};
 pub use error::PlanError;
 pub use execute::{Mode, Outcome, RecordedCall, RunError, replay_edit, run};
 pub use navigate::{STAND_CLEARANCE, STAND_DISTANCES, STAND_HEADINGS, Standing};
+pub use physical::{
+    BasePath, POSITION_TOLERANCE, STEPS_PER_WAYPOINT, YAW_TOLERANCE, base_config, drive_to,
+};
 pub use primitive::{Call, Failure, Primitive, WAIT_STEPS};
 pub use rrt::{Path, PlanParams, Planned, Space, plan};
 pub use symbolic::{ELEMENT_TRIES, FLOOR_STAND_TRIES, apply, check, within_reach};

@@ -2,6 +2,7 @@
 //! the robot's footprint, read from the world.
 
 use crate::base::{BaseConfig, Footprint};
+use behavior_core::FLOOR_SYNSET;
 use behavior_core::rng::{SimRng, uniform};
 use behavior_robots::Robot;
 use behavior_sim::{ObjectId, QueryFilter, VisualShape, World};
@@ -24,7 +25,7 @@ pub struct Standing {
     pub footprint: Footprint,
     /// The eye in the base's floor frame.
     pub eye: Pose,
-    /// What the robot's checks ignore: itself and what it holds.
+    /// What the robot's checks ignore: itself, what it holds and the floors it stands on.
     pub filter: QueryFilter,
 }
 
@@ -50,6 +51,9 @@ impl Standing {
         }
         let mut ignored = robot.objects();
         ignored.extend((0..robot.hands()).filter_map(|h| robot.held(h)));
+        // The base stands on the floors (Fetch's wheels touch them): they are no obstacle.
+        let floors = world.objects().filter(|(_, o)| o.category == FLOOR_SYNSET);
+        ignored.extend(floors.map(|(id, _)| id));
         Standing {
             config,
             footprint: Footprint { shapes },

@@ -103,6 +103,15 @@ impl Primitive {
         }
     }
 
+    /// Whether it only switches a state of the object (`open`, `close`, `toggle_on`,
+    /// `toggle_off`).
+    pub fn is_switch(self) -> bool {
+        matches!(
+            self,
+            Primitive::Open | Primitive::Close | Primitive::ToggleOn | Primitive::ToggleOff
+        )
+    }
+
     /// Whether it uses a hand (holding, or acting with what it holds).
     pub fn uses_hand(self) -> bool {
         self == Primitive::Grasp
@@ -133,6 +142,14 @@ pub enum Failure {
     /// No place to stand within 2.4 m that is clear and sees the object.
     #[error("no place to stand that is clear and sees it")]
     NoPlaceToStand,
+    /// Executing a plan, the robot did not reach a configuration of it (something stopped it).
+    #[error("blocked at {at:?} on the way to {toward:?}")]
+    Blocked {
+        /// Where the base stopped.
+        at: crate::BaseConfig,
+        /// Where it was going.
+        toward: crate::BaseConfig,
+    },
     /// The motion planner found no collision-free path.
     #[error("no collision-free path: {0}")]
     NoPath(#[from] crate::PlanError),

@@ -209,7 +209,7 @@ pub fn apply(edit: Edit<'_>, call: &Call) -> Result<(), Failure> {
 }
 
 /// A call's own random numbers: the same episode, step and call draw the same.
-fn call_seed(seed: u64, steps: u32, call: &Call) -> u64 {
+pub(crate) fn call_seed(seed: u64, steps: u32, call: &Call) -> u64 {
     let primitive = Primitive::ALL
         .iter()
         .position(|p| *p == call.primitive)
@@ -284,20 +284,30 @@ fn navigate(
     rng: &mut SimRng,
 ) -> Result<(), Failure> {
     let standing = Standing::of(world, robot);
-    let found = if world.object(object).category == FLOOR_SYNSET {
-        stand_in_room(world, &standing, object, rng)
-    } else {
-        standing
-            .near(world, object, rng)
-            .or_else(|| standing.within(world, object, REACH_DISTANCE, rng))
-    };
-    let config = found.ok_or(Failure::NoPlaceToStand)?;
+    let config = stand_for(world, &standing, object, rng).ok_or(Failure::NoPlaceToStand)?;
     let z = robot.base_pose(world).translation.z;
     let pose = Pose::from_parts(
         Vector::new(config.x, config.y, z),
         Rotation::from_rotation_z(config.yaw),
     );
     Ok(robot.teleport(world, pose)?)
+}
+
+/// Where NAVIGATE_TO stands for `object`: facing it and seeing it, else clear within reach of
+/// it; for a floor, a clear place in its room.
+pub(crate) fn stand_for(
+    world: &World,
+    standing: &Standing,
+    object: ObjectId,
+    rng: &mut SimRng,
+) -> Option<BaseConfig> {
+    if world.object(object).category == FLOOR_SYNSET {
+        stand_in_room(world, standing, object, rng)
+    } else {
+        standing
+            .near(world, object, rng)
+            .or_else(|| standing.within(world, object, REACH_DISTANCE, rng))
+    }
 }
 
 /// A clear place in the room whose floor is `floor`, facing a random way.

@@ -1,0 +1,171 @@
+//! Physical primitives (the paper's fully simulated ones): a plan made with the motion
+//! planner, then executed as the robot's own actions, one step of physics each, so that what
+//! the robot meets on its way stops it. Built so far: NAVIGATE_TO for both robots. OPEN and
+//! CLOSE are kinematic in the original's motion-planning mode too, and are done as in
+//! symbolic mode; the rest are not built yet.
+
+use crate::base::{BaseConfig, BaseSpace};
+use crate::execute::RunError;
+use crate::navigate::Standing;
+use crate::primitive::{Call, Failure};
+use crate::rrt::{PlanParams, Space, plan};
+use crate::symbolic::{call_seed, stand_for};
+use behavior_core::rng::seeded;
+use behavior_env::Env;
+use behavior_env::record::Recorder;
+use behavior_robots::{
+    ACTION_SCALE, ActionSpace, FetchAction, MAX_ANGULAR_SPEED, MAX_LINEAR_SPEED, Robot,
+};
+use behavior_sim::STEP_SECONDS;
+use std::f32::consts::PI;
+
+/// Steps the robot has to reach each configuration of the densified path before the
+/// execution is given up as blocked.
+pub const STEPS_PER_WAYPOINT: u32 = 10;
+/// How close to a configuration counts as there, m and rad.
+pub const POSITION_TOLERANCE: f32 = 0.01;
+/// See [`POSITION_TOLERANCE`].
+pub const YAW_TOLERANCE: f32 = 0.02;
+
+/// A robot's base path as planned and as executed.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct BasePath {
+    /// The configurations the plan passes through, densified at the space's resolution.
+    pub planned: Vec<BaseConfig>,
+    /// Where the base was after each step of the execution.
+    pub executed: Vec<BaseConfig>,
+}
+
+/// NAVIGATE_TO with physics: a place to stand (the symbolic search), a base path there
+/// (RRT-Connect in [`BaseSpace`]), then the path driven step by step, each recorded if a
+/// recorder is given. The outer error ends the
+/// run (the episode refused a step, or the recording failed); the inner one is the primitive's.
+pub fn drive_to(
+    env: &mut Env,
+    call: &Call,
+    mut recorder: Option<&mut Recorder>,
+) -> Result<Result<BasePath, Failure>, RunError> {
+    let planned = match plan_base(env, call) {
+        Ok(path) => path,
+        Err(failure) => return Ok(Err(failure)),
+    };
+    let mut path = BasePath {
+        planned,
+        executed: Vec::new(),
+    };
+    for target in path.planned.clone() {
+        let mut reached = false;
+        for _ in 0..STEPS_PER_WAYPOINT {
+            let Some(action) = drive_toward(env, &target) else {
+                reached = true;
+                break;
+            };
+            env.step(&action)?;
+            if let Some(r) = recorder.as_deref_mut() {
+                r.record(env, &action)?;
+            }
+            path.executed.push(base_config(env));
+            if env.is_over() {
+                return Ok(Err(Failure::Unavailable("the episode ended on the way")));
+            }
+        }
+        if !reached && drive_toward(env, &target).is_some() {
+            return Ok(Err(Failure::Blocked {
+                at: base_config(env),
+                toward: target,
+            }));
+        }
+    }
+    Ok(Ok(path))
+}
+
+/// The densified base path to where the robot will stand for `call.object`.
+fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
+    let (world, robot) = match (env.world(), env.robot()) {
+        (Some(w), Some(r)) => (w, r),
+        _ => return Err(Failure::Unavailable("no episode")),
+    };
+    if !matches!(robot.space(), ActionSpace::Full) {
+        return Err(Failure::Unavailable(
+            "physical primitives drive the full action space",
+        ));
+    }
+    let seed = call_seed(env.start().map_or(0, |s| s.seed), env.steps(), call);
+    let standing = Standing::of(world, robot);
+    let goal = stand_for(world, &standing, call.object, &mut seeded(seed))
+        .ok_or(Failure::NoPlaceToStand)?;
+    let start = standing.config;
+    let space = BaseSpace::new(world, standing.footprint, standing.filter, &start, &goal);
+    let params = PlanParams {
+        seed,
+        ..PlanParams::default()
+    };
+    let planned = plan(&space, &start, &goal, &params)?;
+    let mut dense = Vec::new();
+    for pair in planned.path.windows(2) {
+        dense.extend(space.steps(&pair[0], &pair[1], space.resolution()));
+    }
+    Ok(dense)
+}
+
+/// The base's configuration on the floor now.
+pub fn base_config(env: &Env) -> BaseConfig {
+    let (Some(world), Some(robot)) = (env.world(), env.robot()) else {
+        return BaseConfig::new(0.0, 0.0, 0.0);
+    };
+    let pose = robot.base_pose(world);
+    let forward = pose.rotation * rapier3d::math::Vector::X;
+    BaseConfig::new(
+        pose.translation.x,
+        pose.translation.y,
+        forward.y.atan2(forward.x),
+    )
+}
+
+/// The action that takes the base one step toward `target`, or `None` when it is there.
+fn drive_toward(env: &Env, target: &BaseConfig) -> Option<Vec<f32>> {
+    let robot = env.robot()?;
+    let now = base_config(env);
+    let (dx, dy) = (target.x - now.x, target.y - now.y);
+    let dyaw = wrap(target.yaw - now.yaw);
+    if dx.hypot(dy) <= POSITION_TOLERANCE && dyaw.abs() <= YAW_TOLERANCE {
+        return None;
+    }
+    let mut action = vec![0.0; robot.action_dim()];
+    let (c, s) = (now.yaw.cos(), now.yaw.sin());
+    // The offset in the base's own frame: forward and to the left.
+    let (forward, left) = (c * dx + s * dy, -s * dx + c * dy);
+    match robot {
+        Robot::Behavior(..) => {
+            action[0] = (forward / ACTION_SCALE).clamp(-1.0, 1.0);
+            action[1] = (left / ACTION_SCALE).clamp(-1.0, 1.0);
+            action[5] = (dyaw / ACTION_SCALE).clamp(-1.0, 1.0);
+        }
+        Robot::Fetch(..) => {
+            // A unicycle: turn toward the point first, drive when facing it, then turn to the
+            // target's heading.
+            let distance = forward.hypot(left);
+            let turn = if distance > POSITION_TOLERANCE {
+                wrap(left.atan2(forward))
+            } else {
+                dyaw
+            };
+            let drive = if distance > POSITION_TOLERANCE && turn.abs() < 0.05 {
+                forward
+            } else {
+                0.0
+            };
+            action[FetchAction::LINEAR] =
+                (drive / (MAX_LINEAR_SPEED * STEP_SECONDS)).clamp(-1.0, 1.0);
+            action[FetchAction::ANGULAR] =
+                (turn / (MAX_ANGULAR_SPEED * STEP_SECONDS)).clamp(-1.0, 1.0);
+        }
+    }
+    Some(action)
+}
+
+/// An angle in (−π, π].
+fn wrap(a: f32) -> f32 {
+    let w = (a + PI).rem_euclid(2.0 * PI) - PI;
+    if w <= -PI { w + 2.0 * PI } else { w }
+}

@@ -1,5 +1,5 @@
-//! Running primitives in an environment: each is done between two steps ([`Env::edit`]) and
-//! followed by one step of a still action, as the original's primitive environment does, so
+//! Running primitives in an environment: each is done between two steps ([`Env::edit`]; a
+//! physical one by steps of its own) and followed by one step of a still action, as the original's primitive environment does, so
 //! that reward, done and observation come from that step. What a recording needs to replay
 //! them is written as they run.
 
@@ -53,7 +53,8 @@ pub enum RunError {
 pub struct Outcome {
     /// Done, or why not.
     pub result: Result<(), Failure>,
-    /// How long the primitive itself took (its check and outcome; not the steps after it), s.
+    /// How long the primitive itself took, s: its check and outcome (in physical mode its plan
+    /// and the steps that execute it), not the still step after it.
     pub seconds: f64,
     /// The last step it took (a wait takes [`WAIT_STEPS`], any other one).
     pub step: Step,

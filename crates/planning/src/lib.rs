@@ -1,18 +1,24 @@
-//! Motion planning for BEHAVIOR's robots (issue 13, first part).
+//! Action primitives, the task planner agent that solves activities with them, and motion
+//! planning for BEHAVIOR's robots (issue 13).
 //!
-//! [`plan`] finds a collision-free path between two configurations of any [`Space`] the way the
-//! original does (reference §5, pybullet-planning's `birrt`): the direct path if it is free, else
-//! bidirectional RRT (RRT-Connect) with restarts, then shortcut smoothing; every returned path is
-//! checked again at half the space's resolution before it is handed out. [`BaseSpace`] is the
-//! robot's base in (x, y, yaw): a footprint of shapes swept by the original's base motion (turn
-//! toward the next point, drive straight, turn to the goal's heading) and checked with the
-//! world's overlap queries, without stepping physics.
+//! - **Primitives** ([`Primitive`], [`Call`]): the paper's six and what the activities need
+//!   beyond them. In symbolic mode ([`check`], [`apply`]) the original's feasibility checks, then
+//!   the outcome set at once; a refusal is a [`Failure`] that says why and changes nothing.
+//!   [`run`] does one in an episode between two steps ([`behavior_env::Env::edit`]), followed by
+//!   one still step, recording it for [`replay_edit`] to do again. In physical mode
+//!   ([`drive_to`]) navigation is planned and driven by the robot's own actions.
+//! - **The action space** ([`PrimitiveSpace`]): the original's `Discrete(n × K)` with a mask.
+//! - **The task planner** ([`Solver`]): goal options, the next literal, the primitives that make
+//!   it true, re-planning from the facts after each.
+//! - **Motion planning**: [`plan`] finds a collision-free path between two configurations of any
+//!   [`Space`] the way the original does (reference §5, pybullet-planning's `birrt`): the direct
+//!   path if free, else RRT-Connect with restarts, then shortcut smoothing, re-checked at half
+//!   the space's resolution. [`BaseSpace`] is the base in (x, y, yaw), swept by the original's
+//!   base motion and checked with the world's overlap queries without stepping; [`Standing`]
+//!   finds where the base may stand to act on an object (NAVIGATE_TO's pose search).
 //!
-//! [`Standing`] reads a robot's footprint, eye and what its checks ignore from the world, and
-//! finds where its base may stand to act on an object (NAVIGATE_TO's pose search, §5).
-//!
-//! It owns the search and the spaces. It knows nothing of activities, episodes or rendering, and
-//! does not drive robots: a caller executes the path.
+//! It builds on the episode (`behavior-env`), the robots and the world; it knows nothing of
+//! Python, the command line or rendering.
 
 mod action_space;
 mod base;

@@ -6,9 +6,10 @@ use crate::score::Score;
 use behavior_bddl::Activity;
 use behavior_robots::{Robot, RobotError, RobotKind};
 use behavior_sampling::SavedInstance;
-use behavior_sim::{ObjectId, World};
+use behavior_sim::{ObjectId, QueryFilter, VisualShape, World};
 use rapier3d::glamx::EulerRot;
 use rapier3d::math::Vector;
+use std::f32::consts::{FRAC_PI_2, PI};
 use std::sync::Arc;
 
 /// The synset of the activity's stand-in for the agent, which the robot replaces.
@@ -71,8 +72,70 @@ pub(crate) fn embody(
     if let Some(id) = agent {
         world.core_mut().retire(id);
     }
-    let robot = Robot::add(kind, space, world, Robot::standing_pose(kind, at, yaw))?;
+    let mut robot = Robot::add(kind, space, world, Robot::standing_pose(kind, at, yaw))?;
+    clear_start(world, &mut robot, at, yaw);
     Ok((robot, agent))
+}
+
+/// Quarter turns tried at each place, in order.
+const START_TURNS: [f32; 4] = [0.0, FRAC_PI_2, -FRAC_PI_2, PI];
+/// How far from the stand-in's place a robot that would overlap a wall there is moved at most,
+/// in rings of [`START_STEP`], m.
+const START_SHIFT: f32 = 0.5;
+/// See [`START_SHIFT`].
+const START_STEP: f32 = 0.1;
+
+/// A robot put where the stand-in stood may overlap a wall or furniture there — Fetch's base is
+/// wider than the stand-in and its arm reaches forward — and a kinematic body that starts inside
+/// a wall never gets out. It is then turned by quarter turns and moved out in rings of 0.1 m
+/// (8 directions each), up to 0.5 m, to the first pose clear of fixed things; if none is, it
+/// stays where it was put.
+fn clear_start(world: &mut World, robot: &mut Robot, at: Vector, yaw: f32) {
+    if !hits_fixed(world, robot) {
+        return;
+    }
+    let kind = robot.kind();
+    let rings = (START_SHIFT / START_STEP).round() as usize;
+    let places = (0..=rings).flat_map(|ring| {
+        let r = ring as f32 * START_STEP;
+        let directions = if ring == 0 { 1 } else { 8 };
+        (0..directions).map(move |k| {
+            let a = k as f32 * PI / 4.0;
+            at + Vector::new(r * a.cos(), r * a.sin(), 0.0)
+        })
+    });
+    let candidates: Vec<_> = places
+        .flat_map(|p| START_TURNS.map(|t| Robot::standing_pose(kind, p, yaw + t)))
+        .collect();
+    for pose in candidates.iter().skip(1) {
+        // Poses from a finite place and yaw: the robot takes them.
+        if robot.teleport(world, *pose).is_ok() && !hits_fixed(world, robot) {
+            return;
+        }
+    }
+    let _ = robot.teleport(world, candidates[0]);
+}
+
+/// Whether a part of the robot overlaps a fixed object other than a floor.
+fn hits_fixed(world: &World, robot: &Robot) -> bool {
+    let mut ignored = robot.objects();
+    let floors = world.objects().filter(|(_, o)| o.category == "floor.n.01");
+    ignored.extend(floors.map(|(id, _)| id));
+    let filter = QueryFilter {
+        fixed_only: true,
+        ..QueryFilter::excluding(&ignored)
+    };
+    let core = world.core();
+    robot.objects().into_iter().any(|id| {
+        core.visual_parts(id)
+            .into_iter()
+            .any(|part| match part.shape {
+                VisualShape::Primitive(shape) => core
+                    .overlaps(shape, part.pose, &filter)
+                    .is_ok_and(|hits| !hits.is_empty()),
+                _ => false,
+            })
+    })
 }
 
 /// For an activity without an agent: the centre of the first floor.

@@ -3,10 +3,11 @@
 //! robot starts; how often each is found, and how long a plan takes.
 
 use crate::episode::robot_kind;
-use crate::prelude::{Prelude, counting_bar};
+use crate::prelude::{Prelude, counting_bar, median};
 use crate::sample::first_covering;
 use crate::scene::with_clutter;
 use anyhow::Result;
+use behavior_core::FLOOR_SYNSET;
 use behavior_core::rng::seeded;
 use behavior_env::{Env, EnvConfig};
 use behavior_planning::{
@@ -169,8 +170,8 @@ pub fn run(args: BenchPlanArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         restarts: params.restarts,
         plans: times.len(),
         planned,
-        median_plan_ms: median(&times),
         max_plan_ms: times.iter().copied().fold(0.0, f64::max),
+        median_plan_ms: median(times),
         drives: activities.iter().map(|a| a.drives.len()).sum(),
         reached: activities
             .iter()
@@ -199,7 +200,7 @@ fn attempts(env: &Env, params: &PlanParams, home_bounds: bool) -> Result<Vec<Att
     for (k, id) in bindings.iter().enumerate() {
         let Some(id) = *id else { continue };
         let object = world.object(id);
-        if id == robot.base() || object.category == "floor.n.01" {
+        if id == robot.base() || object.category == FLOOR_SYNSET {
             continue;
         }
         let mut rng = seeded(k as u64);
@@ -274,7 +275,7 @@ fn drives(env: &mut Env) -> Result<Vec<Drive>> {
         let name = env
             .world()
             .map(|w| w.object(object))
-            .filter(|o| o.category != "floor.n.01");
+            .filter(|o| o.category != FLOOR_SYNSET);
         let Some(name) = name.map(|o| o.name.clone()) else {
             continue;
         };
@@ -301,23 +302,13 @@ fn drives(env: &mut Env) -> Result<Vec<Drive>> {
 fn floors(world: &behavior_sim::World) -> ([f32; 2], [f32; 2]) {
     let (mut min, mut max) = ([f32::INFINITY; 2], [f32::NEG_INFINITY; 2]);
     for (id, object) in world.objects() {
-        if object.category == "floor.n.01" {
+        if object.category == FLOOR_SYNSET {
             let aabb = world.core().aabb(id);
             min = [min[0].min(aabb.mins.x), min[1].min(aabb.mins.y)];
             max = [max[0].max(aabb.maxs.x), max[1].max(aabb.maxs.y)];
         }
     }
     (min, max)
-}
-
-fn median(values: &[f64]) -> f64 {
-    let mut v = values.to_vec();
-    v.sort_by(f64::total_cmp);
-    match v.len() {
-        0 => 0.0,
-        n if n % 2 == 1 => v[n / 2],
-        n => 0.5 * (v[n / 2 - 1] + v[n / 2]),
-    }
 }
 
 fn print(report: &Report) {
@@ -335,7 +326,7 @@ fn print(report: &Report) {
             count(&|t| t.stand),
             count(&|t| t.outcome == "ok"),
             count(&|t| t.run == Some(0)),
-            median(&times),
+            median(times.clone()),
             times.iter().copied().fold(0.0, f64::max),
         );
         if a.seed.is_none() {

@@ -105,3 +105,9 @@ pub(crate) fn counting_bar(len: usize, hidden: bool) -> indicatif::ProgressBar {
         indicatif::ProgressBar::new(len as u64)
     }
 }
+
+/// The median (upper, for an even count); NaN when there is nothing.
+pub(crate) fn median(mut values: Vec<f64>) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values.get(values.len() / 2).copied().unwrap_or(f64::NAN)
+}

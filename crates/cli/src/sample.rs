@@ -1,6 +1,6 @@
 //! `behavior sample` and `behavior sample-all`: instantiate activities in homes.
 
-use crate::prelude::{Prelude, named_homes};
+use crate::prelude::{Prelude, median, named_homes};
 use crate::scene::with_clutter;
 use anyhow::{Context, Result, bail};
 use behavior_assets::covering;
@@ -427,10 +427,4 @@ fn print_summary(activities: &[(String, Activity)], results: &[Attempt]) {
         activities.len(),
         median(results.iter().map(|r| r.seconds).collect())
     );
-}
-
-/// The median (upper, for an even count); NaN when there is nothing.
-fn median(mut times: Vec<f64>) -> f64 {
-    times.sort_by(f64::total_cmp);
-    times.get(times.len() / 2).copied().unwrap_or(f64::NAN)
 }

@@ -2,7 +2,7 @@
 //! action primitives, scored by Q and the metrics, optionally recorded.
 
 use crate::episode::EpisodeArgs;
-use crate::prelude::{Prelude, counting_bar};
+use crate::prelude::{Prelude, counting_bar, median};
 use crate::sample::all_covering;
 use crate::scene::with_clutter;
 use anyhow::{Context, Result, bail};
@@ -233,21 +233,16 @@ pub fn solve_all(args: SolveAllArgs, data_dir: Option<&Path>) -> Result<ExitCode
     }
     bar.finish_and_clear();
     let solved = runs.iter().filter(|r| r.success).count();
-    primitive_ms.sort_by(f64::total_cmp);
-    mask_ms.sort_by(f64::total_cmp);
     let all = AllReport {
         mode: mode.name(),
         robot: args.robot.clone(),
         activities: names.len(),
         solved,
         unsampled,
-        median_primitive_ms: primitive_ms
-            .get(primitive_ms.len() / 2)
-            .copied()
-            .unwrap_or(0.0),
-        max_primitive_ms: primitive_ms.last().copied().unwrap_or(0.0),
-        median_mask_ms: mask_ms.get(mask_ms.len() / 2).copied().unwrap_or(0.0),
-        max_mask_ms: mask_ms.last().copied().unwrap_or(0.0),
+        max_primitive_ms: primitive_ms.iter().copied().fold(0.0, f64::max),
+        median_primitive_ms: median(primitive_ms),
+        max_mask_ms: mask_ms.iter().copied().fold(0.0, f64::max),
+        median_mask_ms: median(mask_ms),
         wall_s: start.elapsed().as_secs_f64(),
         runs,
     };

@@ -4,6 +4,7 @@
 use crate::metrics::Tracker;
 use crate::score::Score;
 use behavior_bddl::Activity;
+use behavior_core::FLOOR_SYNSET;
 use behavior_robots::{Robot, RobotError, RobotKind};
 use behavior_sampling::SavedInstance;
 use behavior_sim::{ObjectId, QueryFilter, VisualShape, World};
@@ -119,7 +120,7 @@ fn clear_start(world: &mut World, robot: &mut Robot, at: Vector, yaw: f32) {
 /// Whether a part of the robot overlaps a fixed object other than a floor.
 fn hits_fixed(world: &World, robot: &Robot) -> bool {
     let mut ignored = robot.objects();
-    let floors = world.objects().filter(|(_, o)| o.category == "floor.n.01");
+    let floors = world.objects().filter(|(_, o)| o.category == FLOOR_SYNSET);
     ignored.extend(floors.map(|(id, _)| id));
     let filter = QueryFilter {
         fixed_only: true,

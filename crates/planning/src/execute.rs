@@ -84,9 +84,12 @@ pub fn run(
         (Mode::Physical, Primitive::NavigateTo) => {
             physical::drive_to(env, &call, recorder.as_deref_mut())?.map(|_| ())
         }
-        // Kinematic in the original's motion-planning mode too.
-        (Mode::Physical, p) if p.is_switch() => env.edit(|edit| symbolic::apply(edit, &call))?,
-        (Mode::Symbolic, _) => env.edit(|edit| symbolic::apply(edit, &call))?,
+        // Switches are kinematic in the original's motion-planning mode too.
+        (Mode::Symbolic, _)
+        | (
+            Mode::Physical,
+            Primitive::Open | Primitive::Close | Primitive::ToggleOn | Primitive::ToggleOff,
+        ) => env.edit(|edit| symbolic::apply(edit, &call))?,
         (Mode::Physical, _) => Err(Failure::Unavailable(
             "physical grasp, place, slice, wipe and soak are not built yet",
         )),

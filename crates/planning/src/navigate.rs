@@ -107,10 +107,9 @@ impl Standing {
         rng: &mut SimRng,
     ) -> Option<BaseConfig> {
         let b = world.core().aabb(object);
+        let (min, max) = ([b.mins.x, b.mins.y], [b.maxs.x, b.maxs.y]);
         self.search(world, object, rng, |c| {
-            let dx = (b.mins.x - c.x).max(c.x - b.maxs.x).max(0.0);
-            let dy = (b.mins.y - c.y).max(c.y - b.maxs.y).max(0.0);
-            dx.hypot(dy) <= reach
+            floor_gap(min, max, c.x, c.y) <= reach
         })
     }
 
@@ -135,4 +134,11 @@ impl Standing {
         }
         None
     }
+}
+
+/// How far (x, y) is from the rectangle `min`–`max` across the floor: 0 inside it.
+pub(crate) fn floor_gap(min: [f32; 2], max: [f32; 2], x: f32, y: f32) -> f32 {
+    let dx = (min[0] - x).max(x - max[0]).max(0.0);
+    let dy = (min[1] - y).max(y - max[1]).max(0.0);
+    dx.hypot(dy)
 }

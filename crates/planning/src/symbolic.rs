@@ -3,7 +3,7 @@
 //! joints opened, states set.
 
 use crate::base::BaseConfig;
-use crate::navigate::Standing;
+use crate::navigate::{Standing, floor_gap};
 use crate::primitive::{Call, Failure, Primitive};
 use behavior_core::rng::{SimRng, seeded, uniform};
 use behavior_core::{Ability, FLOOR_SYNSET, Predicate};
@@ -255,9 +255,7 @@ fn graspable(world: &World, robot: &Robot, object: ObjectId) -> Result<(), Failu
 pub fn within_reach(world: &World, robot: &Robot, object: ObjectId) -> bool {
     let at = robot.base_pose(world).translation;
     let b = world.aabb(object);
-    let dx = (b.mins.x - at.x).max(at.x - b.maxs.x).max(0.0);
-    let dy = (b.mins.y - at.y).max(at.y - b.maxs.y).max(0.0);
-    dx.hypot(dy) <= REACH_DISTANCE
+    floor_gap([b.mins.x, b.mins.y], [b.maxs.x, b.maxs.y], at.x, at.y) <= REACH_DISTANCE
 }
 
 /// Whether an openable object is closed.

@@ -13,6 +13,7 @@
 //! left; Fetch, with one gripper, puts one down to take the other.
 
 use crate::execute::{Mode, RunError, run};
+use crate::navigate::floor_gap;
 use crate::primitive::{Call, Failure, Primitive};
 use crate::symbolic::{closed_container, within_reach};
 use behavior_bddl::{GroundGoal, Literal, Predicate, PredicateOracle};
@@ -21,6 +22,7 @@ use behavior_env::Env;
 use behavior_env::record::Recorder;
 use behavior_sim::{BoundWorld, ObjectId, World};
 use serde::Serialize;
+use std::collections::BTreeMap;
 
 /// How far the planner goes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -103,10 +105,11 @@ pub struct Solver<'a> {
     recorder: Option<&'a mut Recorder>,
     observer: &'a mut dyn FnMut(&Executed),
     log: Vec<Executed>,
-    tries: Vec<(Literal, u32)>,
+    /// How often each literal was tried and still did not hold.
+    tries: BTreeMap<Literal, u32>,
     given_up: Vec<(Literal, String)>,
     /// How often each literal was made true.
-    made: Vec<(Literal, u32)>,
+    made: BTreeMap<Literal, u32>,
     /// The option (index) followed.
     following: Option<usize>,
     /// An error that ends the solve (the recording could not be written).
@@ -133,9 +136,9 @@ impl<'a> Solver<'a> {
             recorder,
             observer,
             log: Vec::new(),
-            tries: Vec::new(),
+            tries: BTreeMap::new(),
             given_up: Vec::new(),
-            made: Vec::new(),
+            made: BTreeMap::new(),
             following: None,
             fatal: None,
         }
@@ -176,7 +179,7 @@ impl<'a> Solver<'a> {
                     .err()
                     .unwrap_or_else(|| "done, but it does not hold".into());
                 self.failed(literal, reason);
-            } else if self.made(literal) > self.limits.tries {
+            } else if bump(&mut self.made, literal) > self.limits.tries {
                 let reason = "made true again and again, undone by what came after".to_string();
                 self.given_up.push((literal, reason));
             }
@@ -197,32 +200,8 @@ impl<'a> Solver<'a> {
         })
     }
 
-    /// Counts a literal made true; how many times it was.
-    fn made(&mut self, literal: Literal) -> u32 {
-        match self.made.iter_mut().find(|(l, _)| *l == literal) {
-            Some((_, n)) => {
-                *n += 1;
-                *n
-            }
-            None => {
-                self.made.push((literal, 1));
-                1
-            }
-        }
-    }
-
     fn failed(&mut self, literal: Literal, reason: Reason) {
-        let count = match self.tries.iter_mut().find(|(l, _)| *l == literal) {
-            Some((_, n)) => {
-                *n += 1;
-                *n
-            }
-            None => {
-                self.tries.push((literal, 1));
-                1
-            }
-        };
-        if count >= self.limits.tries {
+        if bump(&mut self.tries, literal) >= self.limits.tries {
             self.given_up.push((literal, reason));
         }
     }
@@ -463,11 +442,7 @@ impl<'a> Solver<'a> {
             .ok_or("no robot")?
             .base_pose(world)
             .translation;
-        let gap = |r: &&behavior_sim::Room| {
-            let dx = (r.min[0] - at.x).max(at.x - r.max[0]).max(0.0);
-            let dy = (r.min[1] - at.y).max(at.y - r.max[1]).max(0.0);
-            dx.hypot(dy)
-        };
+        let gap = |r: &&behavior_sim::Room| floor_gap(r.min, r.max, at.x, at.y);
         let floor = world
             .rooms()
             .iter()
@@ -643,6 +618,13 @@ fn in_two_places(option: &[Literal]) -> bool {
                     && b.atom.object != a.atom.object
             })
     })
+}
+
+/// Counts one more for `literal`; the count now.
+fn bump(counts: &mut BTreeMap<Literal, u32>, literal: Literal) -> u32 {
+    let n = counts.entry(literal).or_insert(0);
+    *n += 1;
+    *n
 }
 
 /// Processes first, placements next, then slicing (the halves stay where the whole was put)

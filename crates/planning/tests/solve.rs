@@ -4,7 +4,7 @@
 #[path = "../../env/tests/common/mod.rs"]
 mod common;
 
-use behavior_env::record::{CHECKPOINT_EVERY, Recorder, read, replay, replay_with};
+use behavior_env::record::{Recorder, read, replay, replay_with};
 use behavior_planning::{Limits, Mode, Solution, Solver, replay_edit};
 
 fn solve(
@@ -89,7 +89,6 @@ fn a_recorded_solution_replays_bit_for_bit() {
     // Without the planner's editor the replay says why it cannot go on.
     let err = replay(&recording, config()).unwrap_err();
     assert!(err.to_string().contains("edited"), "{err}");
-    let _ = CHECKPOINT_EVERY;
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

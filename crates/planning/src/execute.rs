@@ -4,10 +4,15 @@
 //! them is written as they run.
 
 use crate::primitive::{Call, Failure, Primitive, WAIT_STEPS};
-use crate::{physical, symbolic};
+use crate::{manipulate, physical, symbolic};
 use behavior_env::record::Recorder;
 use behavior_env::{Env, EnvError, Step};
 use serde::{Deserialize, Serialize};
+
+/// How far across the floor from the base an object's box may be for a physical primitive
+/// to be tried on it, m: what a BehaviorRobot's hand (1.2 m from a shoulder 1 m above the
+/// floor) and Fetch's arm reach of a table's far side.
+pub const ARM_REACH: f32 = 1.0;
 
 /// How primitives act: setting outcomes, or moving the robot through its controllers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -25,6 +30,16 @@ impl Mode {
         match self {
             Mode::Symbolic => "symbolic",
             Mode::Physical => "physical",
+        }
+    }
+
+    /// How near an object the planner stands before acting on it: the primitives' 2 m
+    /// ([`behavior_robots::REACH_DISTANCE`]) when outcomes are set, [`ARM_REACH`] when a hand
+    /// or an arm must get there.
+    pub fn reach(self) -> f32 {
+        match self {
+            Mode::Symbolic => behavior_robots::REACH_DISTANCE,
+            Mode::Physical => ARM_REACH,
         }
     }
 
@@ -90,9 +105,15 @@ pub fn run(
             Mode::Physical,
             Primitive::Open | Primitive::Close | Primitive::ToggleOn | Primitive::ToggleOff,
         ) => env.edit(|edit| symbolic::apply(edit, &call))?,
-        (Mode::Physical, _) => Err(Failure::Unavailable(
-            "physical grasp, place, slice, wipe and soak are not built yet",
-        )),
+        (Mode::Physical, Primitive::Grasp) => {
+            manipulate::grasp(env, &call, recorder.as_deref_mut())?.map(|_| ())
+        }
+        (Mode::Physical, p) => match p.relation() {
+            Some(r) => manipulate::place(env, &call, r, recorder.as_deref_mut())?.map(|_| ()),
+            None => Err(Failure::Unavailable(
+                "physical slice, wipe and soak are not built yet",
+            )),
+        },
     };
     let seconds = began.elapsed().as_secs_f64();
     let edited = mode == Mode::Symbolic || call.primitive.is_switch();
@@ -147,12 +168,23 @@ fn describe(env: &Env, call: &Call) -> RecordedCall {
 pub fn replay_edit(env: &mut Env, edit: &serde_json::Value) -> Result<(), String> {
     let recorded: RecordedCall =
         serde_json::from_value(edit.clone()).map_err(|e| format!("not a primitive: {e}"))?;
-    let primitive = Primitive::from_name(&recorded.primitive)
-        .ok_or_else(|| format!("unknown primitive `{}`", recorded.primitive))?;
     let object = env
         .world()
         .and_then(|w| w.object_named(&recorded.object))
         .ok_or_else(|| format!("no object `{}` in the world", recorded.object))?;
+    if recorded.primitive == manipulate::FORCED_GRASP {
+        return env
+            .edit(|edit| edit.robot.grasp_touching(edit.world, recorded.hand, object))
+            .map_err(|e| e.to_string())?
+            .map_err(|e| {
+                format!(
+                    "the forced grasp of {} failed on replay: {e}",
+                    recorded.object
+                )
+            });
+    }
+    let primitive = Primitive::from_name(&recorded.primitive)
+        .ok_or_else(|| format!("unknown primitive `{}`", recorded.primitive))?;
     let call = Call {
         primitive,
         object,

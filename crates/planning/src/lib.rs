@@ -6,7 +6,8 @@
 //!   the outcome set at once; a refusal is a [`Failure`] that says why and changes nothing.
 //!   [`run`] does one in an episode between two steps ([`behavior_env::Env::edit`]), followed by
 //!   one still step, recording it for [`replay_edit`] to do again. In physical mode
-//!   ([`drive_to`]) navigation is planned and driven by the robot's own actions.
+//!   navigation ([`drive_to`]) and the BehaviorRobot's grasp and placements ([`grasp`],
+//!   [`place`]) are planned and executed by the robot's own actions with physics.
 //! - **The action space** ([`PrimitiveSpace`]): the original's `Discrete(n × K)` with a mask.
 //! - **The task planner** ([`Solver`]): goal options, the next literal, the primitives that make
 //!   it true, re-planning from the facts after each.
@@ -16,6 +17,8 @@
 //!   the space's resolution. [`BaseSpace`] is the base in (x, y, yaw), swept by the original's
 //!   base motion and checked with the world's overlap queries without stepping; [`Standing`]
 //!   finds where the base may stand to act on an object (NAVIGATE_TO's pose search).
+//!   [`HandSpace`] is the BehaviorRobot's hand as a free 6-D body with what it holds, within its
+//!   reach of the shoulder.
 //!
 //! It builds on the episode (`behavior-env`), the robots and the world; it knows nothing of
 //! Python, the command line or rendering.
@@ -24,6 +27,8 @@ mod action_space;
 mod base;
 mod error;
 mod execute;
+mod hand;
+mod manipulate;
 mod navigate;
 mod physical;
 mod primitive;
@@ -34,10 +39,17 @@ mod task;
 pub use action_space::{PrimitiveSet, PrimitiveSpace};
 pub use base::{BaseConfig, BaseSpace, Footprint};
 pub use error::PlanError;
-pub use execute::{Mode, Outcome, RecordedCall, RunError, replay_edit, run};
+pub use execute::{ARM_REACH, Mode, Outcome, RecordedCall, RunError, replay_edit, run};
+pub use hand::{HAND_MARGIN, HAND_RESOLUTION, HAND_WEIGHTS, HandBody, HandConfig, HandSpace};
+pub use manipulate::{
+    APPROACH_HEIGHT, CLOSE_STEPS, CROUCH, DESCENT_STEP, DESCENT_STEPS, FORCED_GRASP,
+    GRASP_HEADINGS, GRASP_INSET, GRASP_JITTER, HandPath, PLACE_HEIGHT, PLACE_TRIES, RELEASE_STEPS,
+    SETTLE_STEPS, grasp, hand_body, place,
+};
 pub use navigate::{STAND_CLEARANCE, STAND_DISTANCES, STAND_HEADINGS, Standing};
 pub use physical::{
-    BasePath, POSITION_TOLERANCE, STEPS_PER_WAYPOINT, YAW_TOLERANCE, base_config, drive_to,
+    BASE_BUDGET, BasePath, POSITION_TOLERANCE, STEPS_PER_WAYPOINT, YAW_TOLERANCE, base_config,
+    drive_to,
 };
 pub use primitive::{Call, Failure, Primitive, WAIT_STEPS};
 pub use rrt::{Path, PlanParams, Planned, Space, plan};

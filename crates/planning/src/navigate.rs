@@ -5,7 +5,7 @@ use crate::base::{BaseConfig, Footprint};
 use behavior_core::FLOOR_SYNSET;
 use behavior_core::rng::{SimRng, uniform};
 use behavior_robots::Robot;
-use behavior_sim::{ObjectId, QueryFilter, VisualShape, World};
+use behavior_sim::{BodyRef, ObjectId, Primitive, QueryFilter, VisualShape, World};
 use rapier3d::math::{Pose, Vector};
 use std::f32::consts::PI;
 
@@ -39,16 +39,8 @@ impl Standing {
             forward.y.atan2(forward.x),
         );
         let floor = config.pose().inverse();
-        let core = world.core();
-        let mut shapes = Vec::new();
         let held = (0..robot.hands()).filter_map(|h| robot.held(h));
-        for id in robot.objects().into_iter().chain(held) {
-            for part in core.visual_parts(id) {
-                if let VisualShape::Primitive(p) = part.shape {
-                    shapes.push((p.clone(), floor * part.pose));
-                }
-            }
-        }
+        let shapes = shapes_in(world, robot.objects().into_iter().chain(held), floor);
         let mut ignored = robot.objects();
         ignored.extend((0..robot.hands()).filter_map(|h| robot.held(h)));
         // The base stands on the floors (Fetch's wheels touch them): they are no obstacle.
@@ -60,6 +52,19 @@ impl Standing {
             eye: floor * robot.camera_pose(world),
             filter: QueryFilter::excluding(&ignored),
         }
+    }
+
+    /// The bodies the robot's parts would overlap at `c`.
+    pub fn overlapping(&self, world: &World, c: &BaseConfig) -> Vec<BodyRef> {
+        let base = c.pose();
+        let mut out = Vec::new();
+        for (shape, offset) in &self.footprint.shapes {
+            let hits = world.core().overlaps(shape, base * *offset, &self.filter);
+            out.extend(hits.unwrap_or_default());
+        }
+        out.sort();
+        out.dedup();
+        out
     }
 
     /// Whether every part would stand at least [`STAND_CLEARANCE`] from everything at `c`.
@@ -141,4 +146,23 @@ pub(crate) fn floor_gap(min: [f32; 2], max: [f32; 2], x: f32, y: f32) -> f32 {
     let dx = (min[0] - x).max(x - max[0]).max(0.0);
     let dy = (min[1] - y).max(y - max[1]).max(0.0);
     dx.hypot(dy)
+}
+
+/// The collision shapes of `objects` as they are now, each placed in the frame that `to_frame`
+/// maps the world into: what moves with a base or a hand, for checks at other poses.
+pub(crate) fn shapes_in(
+    world: &World,
+    objects: impl IntoIterator<Item = ObjectId>,
+    to_frame: Pose,
+) -> Vec<(Primitive, Pose)> {
+    let core = world.core();
+    let mut shapes = Vec::new();
+    for id in objects {
+        for part in core.visual_parts(id) {
+            if let VisualShape::Primitive(p) = part.shape {
+                shapes.push((p.clone(), to_frame * part.pose));
+            }
+        }
+    }
+    shapes
 }

@@ -1,8 +1,9 @@
 //! Physical primitives (the paper's fully simulated ones): a plan made with the motion
 //! planner, then executed as the robot's own actions, one step of physics each, so that what
-//! the robot meets on its way stops it. Built so far: NAVIGATE_TO for both robots. OPEN and
-//! CLOSE are kinematic in the original's motion-planning mode too, and are done as in
-//! symbolic mode; the rest are not built yet.
+//! the robot meets on its way stops it. Here: NAVIGATE_TO for both robots, and the [`Stepper`]
+//! that every physical primitive takes its steps through; GRASP and PLACE_* are in
+//! `manipulate.rs`. OPEN, CLOSE and the toggles are kinematic in the original's motion-planning
+//! mode too, and are done as in symbolic mode.
 
 use crate::base::{BaseConfig, BaseSpace};
 use crate::execute::RunError;
@@ -16,7 +17,7 @@ use behavior_env::record::Recorder;
 use behavior_robots::{
     ACTION_SCALE, ActionSpace, FetchAction, MAX_ANGULAR_SPEED, MAX_LINEAR_SPEED, Robot,
 };
-use behavior_sim::STEP_SECONDS;
+use behavior_sim::{BodyRef, STEP_SECONDS};
 use std::f32::consts::PI;
 
 /// Steps the robot has to reach each configuration of the densified path before the
@@ -26,6 +27,17 @@ pub const STEPS_PER_WAYPOINT: u32 = 10;
 pub const POSITION_TOLERANCE: f32 = 0.01;
 /// See [`POSITION_TOLERANCE`].
 pub const YAW_TOLERANCE: f32 = 0.02;
+
+/// The base planner's budget in physical mode: ten times the original's iterations. The
+/// original's 20 × 3 found no path for 297 of the 447 stands `bench plan` tried where 500
+/// iterations found more (README, "Base plans and drives"), and a robot carrying a board
+/// through a door needs them; its headless mode teleports after planning, ours drives.
+pub const BASE_BUDGET: PlanParams = PlanParams {
+    iterations: 500,
+    restarts: 2,
+    smoothing: 20,
+    seed: 0,
+};
 
 /// A robot's base path as planned and as executed.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -43,7 +55,7 @@ pub struct BasePath {
 pub fn drive_to(
     env: &mut Env,
     call: &Call,
-    mut recorder: Option<&mut Recorder>,
+    recorder: Option<&mut Recorder>,
 ) -> Result<Result<BasePath, Failure>, RunError> {
     let planned = match plan_base(env, call) {
         Ok(path) => path,
@@ -53,30 +65,66 @@ pub fn drive_to(
         planned,
         executed: Vec::new(),
     };
+    let mut steps = Stepper { env, recorder };
     for target in path.planned.clone() {
         let mut reached = false;
         for _ in 0..STEPS_PER_WAYPOINT {
-            let Some(action) = drive_toward(env, &target) else {
+            let Some(action) = drive_toward(steps.env, &target) else {
                 reached = true;
                 break;
             };
-            env.step(&action)?;
-            if let Some(r) = recorder.as_deref_mut() {
-                r.record(env, &action)?;
+            if let Err(ended) = steps.act(&action)? {
+                return Ok(Err(ended));
             }
-            path.executed.push(base_config(env));
-            if env.is_over() {
-                return Ok(Err(Failure::Unavailable("the episode ended on the way")));
-            }
+            path.executed.push(base_config(steps.env));
         }
-        if !reached && drive_toward(env, &target).is_some() {
+        if !reached && drive_toward(steps.env, &target).is_some() {
             return Ok(Err(Failure::Blocked {
-                at: base_config(env),
+                at: base_config(steps.env),
                 toward: target,
             }));
         }
     }
     Ok(Ok(path))
+}
+
+/// The steps a physical primitive takes, each recorded if a recorder is given.
+pub(crate) struct Stepper<'a> {
+    pub(crate) env: &'a mut Env,
+    pub(crate) recorder: Option<&'a mut Recorder>,
+}
+
+impl Stepper<'_> {
+    /// One step with `action`. The outer error ends the run (the episode refused the step, or
+    /// the recording failed); the inner one fails the primitive: the episode ended.
+    pub(crate) fn act(&mut self, action: &[f32]) -> Result<Result<(), Failure>, RunError> {
+        self.env.step(action)?;
+        if let Some(r) = self.recorder.as_deref_mut() {
+            r.record(self.env, action)?;
+        }
+        if self.env.is_over() {
+            return Ok(Err(Failure::Unavailable("the episode ended on the way")));
+        }
+        Ok(Ok(()))
+    }
+
+    /// `n` steps of a still action, or fewer if `done` holds first.
+    pub(crate) fn wait_until(
+        &mut self,
+        n: u32,
+        mut done: impl FnMut(&Env) -> bool,
+    ) -> Result<Result<(), Failure>, RunError> {
+        let still = vec![0.0; self.env.robot().map_or(0, |r| r.action_dim())];
+        for _ in 0..n {
+            if done(self.env) {
+                break;
+            }
+            if let Err(ended) = self.act(&still)? {
+                return Ok(Err(ended));
+            }
+        }
+        Ok(Ok(()))
+    }
 }
 
 /// The densified base path to where the robot will stand for `call.object`.
@@ -91,14 +139,30 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
         ));
     }
     let seed = call_seed(env.start().map_or(0, |s| s.seed), env.steps(), call);
-    let standing = Standing::of(world, robot);
+    let mut standing = Standing::of(world, robot);
+    // What the robot already overlaps and will push aside — a door opened against it, a box
+    // at its feet — is no obstacle to its plan; fixed things still are.
+    let pushed = standing.overlapping(world, &standing.config);
+    let movable = |b: &BodyRef| b.link.is_some() || !world.object(b.object).is_fixed();
+    standing
+        .filter
+        .exclude_bodies
+        .extend(pushed.into_iter().filter(movable));
+    // Room doors are pushed open on the way: the body is kinematic, a leaf yields on its hinge.
+    standing.filter.exclude_bodies.extend(door_leaves(world));
     let goal = stand_for(world, &standing, call.object, &mut seeded(seed))
         .ok_or(Failure::NoPlaceToStand)?;
     let start = standing.config;
     let space = BaseSpace::new(world, standing.footprint, standing.filter, &start, &goal);
+    // Samples anywhere in the home, as the July 2021 version did: the way round a table may
+    // leave the box around the ends.
+    let space = match home_bounds(world) {
+        Some((min, max)) => space.with_bounds(min, max),
+        None => space,
+    };
     let params = PlanParams {
         seed,
-        ..PlanParams::default()
+        ..BASE_BUDGET
     };
     let planned = plan(&space, &start, &goal, &params)?;
     let mut dense = Vec::new();
@@ -106,6 +170,30 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
         dense.extend(space.steps(&pair[0], &pair[1], space.resolution()));
     }
     Ok(dense)
+}
+
+/// The leaves of the home's doors: links of `door.n.01` objects.
+fn door_leaves(world: &behavior_sim::World) -> Vec<BodyRef> {
+    world
+        .objects()
+        .filter(|(_, o)| o.category == DOOR_SYNSET)
+        .flat_map(|(id, o)| (0..o.links.len()).map(move |l| BodyRef::link(id, l)))
+        .collect()
+}
+
+/// The synset of room doors, which a driving robot pushes open.
+const DOOR_SYNSET: &str = "door.n.01";
+
+/// The box of the home's rooms on the floor, if it has rooms.
+fn home_bounds(world: &behavior_sim::World) -> Option<([f32; 2], [f32; 2])> {
+    let rooms = world.rooms();
+    let first = rooms.first()?;
+    let (mut min, mut max) = (first.min, first.max);
+    for r in rooms {
+        min = [min[0].min(r.min[0]), min[1].min(r.min[1])];
+        max = [max[0].max(r.max[0]), max[1].max(r.max[1])];
+    }
+    Some((min, max))
 }
 
 /// The base's configuration on the floor now.

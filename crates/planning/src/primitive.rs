@@ -150,6 +150,16 @@ pub enum Failure {
         /// Where it was going.
         toward: crate::BaseConfig,
     },
+    /// Executing a hand or arm plan, it did not reach a configuration of it (a fixed body
+    /// stopped it, or the reach did).
+    #[error("the hand was stopped on its planned path")]
+    HandBlocked,
+    /// No pose of the hand over the object (or above the placement) is free and within reach.
+    #[error("no free hand pose within reach for it")]
+    NoHandPose,
+    /// The hand closed on the object but the assisted grasp did not take it.
+    #[error("the hand closed but did not hold it")]
+    Missed,
     /// The motion planner found no collision-free path.
     #[error("no collision-free path: {0}")]
     NoPath(#[from] crate::PlanError),

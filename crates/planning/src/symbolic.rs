@@ -253,9 +253,14 @@ fn graspable(world: &World, robot: &Robot, object: ObjectId) -> Result<(), Failu
 /// 3-D from the base's origin, which is a BehaviorRobot's body centre but Fetch's point on
 /// the floor; a primitive acts on the near side of a bed or a pool, and on a high shelf.
 pub fn within_reach(world: &World, robot: &Robot, object: ObjectId) -> bool {
+    within(world, robot, object, REACH_DISTANCE)
+}
+
+/// Whether the object's box comes within `distance` of the robot's base, across the floor.
+pub(crate) fn within(world: &World, robot: &Robot, object: ObjectId, distance: f32) -> bool {
     let at = robot.base_pose(world).translation;
     let b = world.aabb(object);
-    floor_gap([b.mins.x, b.mins.y], [b.maxs.x, b.maxs.y], at.x, at.y) <= REACH_DISTANCE
+    floor_gap([b.mins.x, b.mins.y], [b.maxs.x, b.maxs.y], at.x, at.y) <= distance
 }
 
 /// Whether an openable object is closed.
@@ -341,24 +346,34 @@ fn place(
     let held = robot
         .release_now(world, call.hand)
         .ok_or(Failure::HandEmpty)?;
-    let tries = if relation == Relation::OnTop && has_elements(world, call.object) {
+    if let Err(e) = put(world, held, call.object, relation, rng) {
+        world.restore(&before.0);
+        *robot = before.1;
+        return Err(e);
+    }
+    Ok(())
+}
+
+/// Places `held` (let go of) in `relation` to `target` by the world's sampler: on a stove, up
+/// to [`ELEMENT_TRIES`] poses until one lands near a heating element. On failure the world may
+/// have changed.
+pub(crate) fn put(
+    world: &mut World,
+    held: ObjectId,
+    target: ObjectId,
+    relation: Relation,
+    rng: &mut SimRng,
+) -> Result<(), Failure> {
+    let tries = if relation == Relation::OnTop && has_elements(world, target) {
         ELEMENT_TRIES
     } else {
         1
     };
-    let mut outcome = Ok(());
     for _ in 0..tries {
-        outcome = world
-            .place_turning(held, &[(relation, call.object)], rng)
-            .map(|_| ());
-        if outcome.is_err() || near_element(world, held, call.object) {
+        world.place_turning(held, &[(relation, target)], rng)?;
+        if near_element(world, held, target) {
             break;
         }
-    }
-    if let Err(e) = outcome {
-        world.restore(&before.0);
-        *robot = before.1;
-        return Err(e.into());
     }
     Ok(())
 }

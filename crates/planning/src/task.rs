@@ -13,9 +13,10 @@
 //! left; Fetch, with one gripper, puts one down to take the other.
 
 use crate::execute::{Mode, RunError, run};
+use crate::manipulate::hand_reaches;
 use crate::navigate::floor_gap;
 use crate::primitive::{Call, Failure, Primitive};
-use crate::symbolic::{closed_container, within_reach};
+use crate::symbolic::{closed_container, within};
 use behavior_bddl::{GroundGoal, Literal, Predicate, PredicateOracle};
 use behavior_core::{Ability, FLOOR_SYNSET};
 use behavior_env::Env;
@@ -380,7 +381,9 @@ impl<'a> Solver<'a> {
         let mut last = String::new();
         for _ in 0..NAVIGATE_ATTEMPTS {
             let robot = self.env.robot().ok_or("no robot")?;
-            if within_reach(self.world(), robot, x) {
+            let near = within(self.world(), robot, x, self.mode.reach())
+                && (self.mode == Mode::Symbolic || hand_reaches(self.world(), robot, x));
+            if near {
                 return Ok(());
             }
             let result = match self.call(Primitive::NavigateTo, x, CARRY) {

@@ -24,6 +24,9 @@ pub enum MagicError {
     /// The grasp rules do not let a hand hold it (fixed, too heavy, a robot part).
     #[error("object {0:?} cannot be held")]
     NotHoldable(ObjectId),
+    /// A forced grasp needs the hand to touch the object, and it does not.
+    #[error("the hand does not touch object {0:?}")]
+    NotTouching(ObjectId),
     /// The world refused a move.
     #[error("the world refused: {0}")]
     World(#[from] WorldError),
@@ -53,14 +56,24 @@ impl Robot {
         object: ObjectId,
     ) -> Result<(), MagicError> {
         match self {
-            Robot::Behavior(robot, _) => {
-                let side = *crate::Side::BOTH
-                    .get(hand)
-                    .ok_or(MagicError::NoHand(hand))?;
-                robot.grasp_now(world, side, object)
-            }
+            Robot::Behavior(robot, _) => robot.grasp_now(world, side(hand)?, object),
             Robot::Fetch(_, _) if hand != 0 => Err(MagicError::NoHand(hand)),
             Robot::Fetch(robot, _) => robot.grasp_now(world, object),
+        }
+    }
+
+    /// Holds `object` in hand `hand` where it is, if the hand touches it: the original's
+    /// forced assisted grasp after a physical GRASP closed the hand (it also asks for contact,
+    /// not for the assisted grasp's rays). A BehaviorRobot's hand only, for now.
+    pub fn grasp_touching(
+        &mut self,
+        world: &mut behavior_sim::World,
+        hand: usize,
+        object: ObjectId,
+    ) -> Result<(), MagicError> {
+        match self {
+            Robot::Behavior(robot, _) => robot.grasp_touching(world, side(hand)?, object),
+            Robot::Fetch(..) => Err(MagicError::NoHand(hand)),
         }
     }
 
@@ -80,4 +93,12 @@ impl Robot {
             Robot::Fetch(..) => None,
         }
     }
+}
+
+/// A BehaviorRobot's hand by its number: 0 left, 1 right.
+fn side(hand: usize) -> Result<crate::Side, MagicError> {
+    crate::Side::BOTH
+        .get(hand)
+        .copied()
+        .ok_or(MagicError::NoHand(hand))
 }

@@ -16,7 +16,7 @@ use behavior_sim::{
     AttachmentId, AttachmentKind, AttachmentSpec, BodyRef, ObjectId, QueryFilter, STEP_SECONDS,
     StepHooks, Velocity, World, WorldError, groups,
 };
-use rapier3d::math::Pose;
+use rapier3d::math::{Pose, Vector};
 
 /// Why a robot could not be added.
 #[derive(Debug, PartialEq, thiserror::Error)]
@@ -218,6 +218,19 @@ impl BehaviorRobot {
     /// palm facing −z).
     pub fn hand_pose(&self, world: &World, side: Side) -> Pose {
         world.pose(self.parts.hand(side))
+    }
+
+    /// Where a hand is told to be, in the body frame: where its actions have sent it (the palm
+    /// trails this by about a step). A planner that steers a hand computes its deltas from it.
+    pub fn hand_target(&self, side: Side) -> Pose {
+        self.targets.hands[side.index()]
+    }
+
+    /// The centre of a hand's reach, in the world: its shoulder. A hand target farther than
+    /// [`crate::HAND_REACH`] from it is pulled back onto that sphere.
+    pub fn shoulder(&self, world: &World, side: Side) -> Vector {
+        self.body_pose(world)
+            .transform_point(crate::body::shoulder(side))
     }
 
     /// A trigger's fraction, 0 (open) to 1 (fully pressed).
@@ -485,30 +498,72 @@ impl BehaviorRobot {
         side: Side,
         object: ObjectId,
     ) -> Result<(), MagicError> {
-        let i = side.index();
-        if let Some(grasp) = self.grasps[i] {
-            return Err(MagicError::HandFull(grasp.body.object));
-        }
-        let body = BodyRef::from(object);
-        let own = self.parts.all();
-        let other = self.holding(side.other()).map(|b| b.object);
-        let kind = self
-            .rules
-            .holdable(world, body)
-            .filter(|_| !own.contains(&object) && other != Some(object))
-            .ok_or(MagicError::NotHoldable(object))?;
-        let hand = self.parts.hand(side);
-        let palm = world.pose(hand);
+        let kind = self.may_hold(world, side, object)?;
+        let palm = world.pose(self.parts.hand(side));
         // The palm faces its −z: the object's box goes just below it, touching.
         let aabb = world.aabb(object);
         let half = (aabb.maxs - aabb.mins) * 0.5;
         let below = palm.rotation * rapier3d::math::Vector::NEG_Z;
         let reach = (below * half).abs().element_sum() + 0.01;
         centre_on(world, object, palm.translation + below * reach)?;
+        self.attach(world, side, object, kind, palm.translation)
+    }
+
+    /// Holds `object` where it is, if the hand touches it (the original's forced assisted
+    /// grasp, which also asks for contact).
+    pub(crate) fn grasp_touching(
+        &mut self,
+        world: &mut World,
+        side: Side,
+        object: ObjectId,
+    ) -> Result<(), MagicError> {
+        let kind = self.may_hold(world, side, object)?;
+        let hand = self.parts.hand(side);
+        let contacts = world.core().contacts(BodyRef::from(hand))?;
+        if !contacts
+            .iter()
+            .any(|c| c.other.is_some_and(|b| b.object == object))
+        {
+            return Err(MagicError::NotTouching(object));
+        }
+        let at = world.pose(hand).transform_point(crate::hand::PALM_CENTRE);
+        self.attach(world, side, object, kind, at)
+    }
+
+    /// How the hand may hold `object`: it is empty, and the rules allow it.
+    fn may_hold(
+        &self,
+        world: &World,
+        side: Side,
+        object: ObjectId,
+    ) -> Result<AttachmentKind, MagicError> {
+        if let Some(grasp) = self.grasps[side.index()] {
+            return Err(MagicError::HandFull(grasp.body.object));
+        }
+        let own = self.parts.all();
+        let other = self.holding(side.other()).map(|b| b.object);
+        self.rules
+            .holdable(world, BodyRef::from(object))
+            .filter(|_| !own.contains(&object) && other != Some(object))
+            .ok_or(MagicError::NotHoldable(object))
+    }
+
+    /// Attaches `object` to the hand at `at` as the assisted grasp does, and closes it.
+    fn attach(
+        &mut self,
+        world: &mut World,
+        side: Side,
+        object: ObjectId,
+        kind: AttachmentKind,
+        at: Vector,
+    ) -> Result<(), MagicError> {
+        let i = side.index();
+        let body = BodyRef::from(object);
+        let hand = self.parts.hand(side);
         let spec = AttachmentSpec {
             holder: BodyRef::from(hand),
             held: body,
-            at: palm.translation,
+            at,
             kind,
             max_force: self.rules.max_force(kind),
         };
@@ -516,6 +571,7 @@ impl BehaviorRobot {
         for part in [hand, self.parts.body] {
             ignore_between(world, part, body, true);
         }
+        let own = self.parts.all();
         self.releases
             .extend(overlooked(world, body, &own, world.steps()));
         self.targets.triggers[i] = 1.0;

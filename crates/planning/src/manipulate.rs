@@ -1,0 +1,676 @@
+//! Physical GRASP and PLACE_* for the BehaviorRobot (the paper's fully simulated primitives,
+//! reference §5): the hand's motion planned in [`HandSpace`] and executed as the robot's own
+//! hand actions, one step of physics each; the grasp made by the assisted grasp as the trigger
+//! closes, the placement by letting go above a pose the world's sampler found, then settling.
+//!
+//! - GRASP: palm down over the top of the object's box ([`APPROACH_HEIGHT`] above it, ±
+//!   [`GRASP_JITTER`], a random heading), down in steps of [`DESCENT_STEP`] until the hand
+//!   touches it (at most [`DESCENT_STEPS`]), the trigger pressed until it holds (at most
+//!   [`CLOSE_STEPS`]), then back to where the hand was — raised if what it now carries would
+//!   not fit there.
+//! - PLACE_*: poses for the held object by the world's sampler ([`PLACE_TRIES`], in a copy of
+//!   the world, so that the episode itself only ever moves by actions), the hand planned with
+//!   the object to [`PLACE_HEIGHT`] above one, the trigger let go, [`SETTLE_STEPS`] steps for it
+//!   to fall and settle, then the hand back.
+//! - Where the hand cannot reach its goal from the shoulder, the body goes down (at most
+//!   [`CROUCH`]) or up ([`RISE`]) first, and back after.
+//!
+//! Where we differ: the original retracts along the reversed approach, we plan the way back
+//! with what the hand now carries (a carton lifted off a table, retraced, drags through the
+//! table's edge); it forces the assisted grasp after closing if the hand touches the object, we
+//! report the miss; after placing, the original leaves the hand where it let go, ours comes
+//! back, so that the next NAVIGATE_TO finds the robot as compact as it started.
+
+use crate::execute::{RecordedCall, RunError};
+use crate::hand::{HandBody, HandConfig, HandSpace};
+use crate::navigate::shapes_in;
+use crate::physical::{BASE_BUDGET, STEPS_PER_WAYPOINT, Stepper};
+use crate::primitive::{Call, Failure};
+use crate::rrt::{PlanParams, Space, plan};
+use crate::symbolic::{call_seed, check, put};
+use behavior_core::rng::{SimRng, seeded, uniform};
+use behavior_env::Env;
+use behavior_env::record::Recorder;
+use behavior_robots::{ACTION_SCALE, Action, BehaviorRobot, HAND_REACH, Robot, Side};
+use behavior_sim::{BodyRef, ObjectId, QueryFilter, Relation, World};
+use rapier3d::glamx::EulerRot;
+use rapier3d::math::{Pose, Rotation, Vector};
+use std::f32::consts::PI;
+
+/// How a recording names the forced grasp of a physical GRASP (see [`grasp`]).
+pub const FORCED_GRASP: &str = "grasp_touching";
+/// How far above the top of the object's box the grasp's approach ends, m (the original's).
+pub const APPROACH_HEIGHT: f32 = 0.05;
+/// The random offset of the approach across the top, m (the original's ±0.025).
+pub const GRASP_JITTER: f32 = 0.025;
+/// How far in from the sides of an object's box its grasp point lies, at most, m.
+pub const GRASP_INSET: f32 = 0.05;
+/// How far the body may go down to reach low things, m: its capsule's bottom is 0.2 m above
+/// the floor at the original's standing height ([`behavior_robots::BODY_HEIGHT`]).
+pub const CROUCH: f32 = 0.19;
+/// Room left within a hand's reach for the grasp's jitter and the hand's own size, m.
+const REACH_MARGIN: f32 = 0.05;
+/// Room left within a hand's reach for a goal, m: the path to it may bend outward.
+const REACH_SLACK: f32 = 0.02;
+/// How far the body may go up to reach high things, m (the BehaviorRobot's body floats; a
+/// person in VR stands up or stretches).
+pub const RISE: f32 = 0.4;
+/// Headings tried for the approach until one is free and within reach.
+pub const GRASP_HEADINGS: usize = 8;
+/// One step of the descent onto the object, m.
+pub const DESCENT_STEP: f32 = 0.005;
+/// The most steps of descent (the original's 25).
+pub const DESCENT_STEPS: u32 = 25;
+/// The most steps the trigger is pressed for (the original closes for 50).
+pub const CLOSE_STEPS: u32 = 50;
+/// How far above the sampled pose the held object is let go, m (the original's).
+pub const PLACE_HEIGHT: f32 = 0.1;
+/// Heights tried above a sampled pose when [`PLACE_HEIGHT`] collides (a shelf above), m.
+const PLACE_HEIGHTS: [f32; 3] = [PLACE_HEIGHT, 0.05, 0.02];
+/// Poses sampled for a placement until the hand can get there.
+pub const PLACE_TRIES: usize = 20;
+/// The most steps the trigger is let go for (the original's 100).
+pub const RELEASE_STEPS: u32 = 100;
+/// Steps for a placed object to fall and settle (the original's 100).
+pub const SETTLE_STEPS: u32 = 100;
+/// Raises of the way-back pose tried when what the hand carries would not fit where it
+/// started, m each.
+const RAISE: f32 = 0.1;
+const RAISES: usize = 7;
+/// The point of the hand put over the object: under the fingers' roots on the palm's inner
+/// face, where closing fingers wrap (see `behavior-robots`' hand frame).
+const GRASP_POINT: Vector = Vector::new(0.04, 0.0, -0.015);
+/// A hand target this close to a configuration counts as there, m or rad.
+const TARGET_TOLERANCE: f32 = 1e-4;
+/// A palm this close to its target has arrived, m.
+const ARRIVED: f32 = 0.005;
+/// Still steps the palm gets to arrive at the end of a motion.
+const ARRIVAL_STEPS: u32 = 30;
+
+/// A hand's motion: the configurations planned (to over the object, or to above the
+/// placement) and the palm's poses as that plan was executed, step by step; then its poses
+/// in contact and on the way back (the descent, the lift, the return).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct HandPath {
+    pub planned: Vec<HandConfig>,
+    pub executed: Vec<Pose>,
+    pub after: Vec<Pose>,
+}
+
+type Attempt<T> = Result<Result<T, Failure>, RunError>;
+
+/// Unwraps a step's outcome: a failed primitive returns its failure, a failed run its error.
+macro_rules! attempt {
+    ($e:expr) => {
+        match $e? {
+            Ok(v) => v,
+            Err(failure) => return Ok(Err(failure)),
+        }
+    };
+}
+
+/// GRASP with physics (see the module docs). The paths it planned and executed come back.
+pub fn grasp(env: &mut Env, call: &Call, recorder: Option<&mut Recorder>) -> Attempt<HandPath> {
+    let side = match hand_side(env, call) {
+        Ok(side) => side,
+        Err(failure) => return Ok(Err(failure)),
+    };
+    let mut rng = call_rng(env, call);
+    let goals = match behavior_robot(env) {
+        Some((world, robot)) => approach_goals(world, robot, call, side, &mut rng),
+        None => Vec::new(),
+    };
+    let mut steps = Stepper { env, recorder };
+    let mut reached = attempt!(reach(&mut steps, side, &goals, &mut rng));
+    attempt!(descend(
+        &mut steps,
+        side,
+        call.object,
+        &mut reached.path.after
+    ));
+    close(&mut steps, call)?;
+    let held = holds(steps.env, side, call.object);
+    if !held {
+        attempt!(open(&mut steps, side));
+    }
+    // Straight back up as high as the approach ended, turned as the palm now is (what it
+    // holds keeps its pose), lifting it off its support.
+    let mut up = palm(steps.env, side);
+    let top = reached.path.planned.last().map(|c| c.position.z);
+    up.translation.z = top.unwrap_or(up.translation.z);
+    let up = HandConfig::of(&up);
+    attempt!(follow(&mut steps, side, &[up, up], &mut reached.path.after));
+    attempt!(retreat(&mut steps, side, &mut reached));
+    if !held {
+        return Ok(Err(Failure::Missed));
+    }
+    Ok(Ok(reached.path))
+}
+
+/// PLACE_* with physics (see the module docs).
+pub fn place(
+    env: &mut Env,
+    call: &Call,
+    relation: Relation,
+    recorder: Option<&mut Recorder>,
+) -> Attempt<HandPath> {
+    let side = match hand_side(env, call) {
+        Ok(side) => side,
+        Err(failure) => return Ok(Err(failure)),
+    };
+    let mut rng = call_rng(env, call);
+    let goals = match behavior_robot(env) {
+        Some((world, robot)) => placement_goals(world, robot, call, relation, side, &mut rng),
+        None => Err(Failure::Unavailable("no episode")),
+    };
+    let goals = match goals {
+        Ok(goals) => goals,
+        Err(failure) => return Ok(Err(failure)),
+    };
+    let mut steps = Stepper { env, recorder };
+    let mut reached = attempt!(reach(&mut steps, side, &goals, &mut rng));
+    attempt!(open(&mut steps, side));
+    attempt!(steps.wait_until(SETTLE_STEPS, |_| false));
+    attempt!(retreat(&mut steps, side, &mut reached));
+    Ok(Ok(reached.path))
+}
+
+/// The call's own random numbers (the same episode, step and call draw the same).
+fn call_rng(env: &Env, call: &Call) -> SimRng {
+    seeded(call_seed(
+        env.start().map_or(0, |s| s.seed),
+        env.steps(),
+        call,
+    ))
+}
+
+/// Where a physical primitive's hand got to: how far the body went down for it (up, if
+/// negative), where the hand was told to be before, and the path.
+struct Reached {
+    depth: f32,
+    start: Pose,
+    path: HandPath,
+}
+
+/// The hand taken along a plan to the first of `goals` it can reach (the body down or up
+/// first if need be). On failure the hand and the body are brought back.
+fn reach(
+    steps: &mut Stepper<'_>,
+    side: Side,
+    goals: &[Pose],
+    rng: &mut SimRng,
+) -> Attempt<Reached> {
+    let (depth, start, planned) = match attempt!(reach_for(steps, side, goals, rng)) {
+        (depth, start, Ok(path)) => (depth, start, path),
+        (depth, _, Err(failure)) => {
+            attempt!(crouch(steps, -depth));
+            return Ok(Err(failure));
+        }
+    };
+    let mut reached = Reached {
+        depth,
+        start,
+        path: HandPath {
+            planned: planned.clone(),
+            executed: Vec::new(),
+            after: Vec::new(),
+        },
+    };
+    if let Err(failure) = follow(steps, side, &planned, &mut reached.path.executed)? {
+        let _ = retreat(steps, side, &mut reached)?;
+        return Ok(Err(failure));
+    }
+    Ok(Ok(reached))
+}
+
+/// The hand back where it was told to be before the primitive, the body at its height (even
+/// where the hand could not come back).
+fn retreat(steps: &mut Stepper<'_>, side: Side, reached: &mut Reached) -> Attempt<()> {
+    let back = come_back(steps, side, reached.start, &mut reached.path.after)?;
+    let up = crouch(steps, -reached.depth)?;
+    Ok(back.and(up))
+}
+
+/// The hand a call uses, checked with the primitive's preconditions.
+fn hand_side(env: &Env, call: &Call) -> Result<Side, Failure> {
+    let (Some(world), Some(robot)) = (env.world(), env.robot()) else {
+        return Err(Failure::Unavailable("no episode"));
+    };
+    if let Robot::Fetch(..) = robot {
+        return Err(Failure::Unavailable(
+            "Fetch's physical grasp and place are not built yet",
+        ));
+    }
+    check(world, robot, call)?;
+    Side::BOTH
+        .get(call.hand)
+        .copied()
+        .ok_or(Failure::NoHand(call.hand))
+}
+
+fn behavior_robot(env: &Env) -> Option<(&World, &BehaviorRobot)> {
+    match (env.world(), env.robot()) {
+        (Some(world), Some(Robot::Behavior(robot, _))) => Some((world, robot)),
+        _ => None,
+    }
+}
+
+/// Where the hand is told to be, in the world.
+fn target_in_world(env: &Env, side: Side) -> Pose {
+    behavior_robot(env).map_or(Pose::IDENTITY, |(world, robot)| {
+        robot.body_pose(world) * robot.hand_target(side)
+    })
+}
+
+/// The hand and what it holds as the planner moves them, ignoring the robot and what it holds.
+pub fn hand_body(world: &World, robot: &BehaviorRobot, side: Side) -> HandBody {
+    let hand = robot.parts().hand(side);
+    let held = robot.holding(side).map(|b| b.object);
+    let frame = world.pose(hand).inverse();
+    let mut ignored = robot.parts().all().to_vec();
+    ignored.extend(
+        Side::BOTH
+            .iter()
+            .filter_map(|&s| robot.holding(s).map(|b| b.object)),
+    );
+    HandBody {
+        shapes: shapes_in(world, std::iter::once(hand).chain(held), frame),
+        filter: QueryFilter::excluding(&ignored),
+        shoulder: robot.shoulder(world, side),
+        reach: HAND_REACH,
+    }
+}
+
+/// Where on the top of the object's box the hand goes: the point nearest the shoulder, at
+/// least [`GRASP_INSET`] in from the box's sides (its centre, for a small object), so that a
+/// board is taken by its near end.
+fn grasp_point(world: &World, object: ObjectId, shoulder: Vector) -> Vector {
+    let b = world.aabb(object);
+    let inward = |lo: f32, hi: f32, x: f32| {
+        let inset = GRASP_INSET.min(0.5 * (hi - lo));
+        x.clamp(lo + inset, hi - inset)
+    };
+    Vector::new(
+        inward(b.mins.x, b.maxs.x, shoulder.x),
+        inward(b.mins.y, b.maxs.y, shoulder.y),
+        b.maxs.z,
+    )
+}
+
+/// Whether a hand of the robot, its body down or up if need be, reaches the nearest point of the
+/// object's box within its reach less [`REACH_MARGIN`] (for a small object, over it; for a
+/// shelf, its near side).
+pub(crate) fn hand_reaches(world: &World, robot: &Robot, object: ObjectId) -> bool {
+    let Robot::Behavior(robot, _) = robot else {
+        return true;
+    };
+    let b = world.aabb(object);
+    Side::BOTH.iter().any(|&side| {
+        let shoulder = robot.shoulder(world, side);
+        let nearest = shoulder.clamp(b.mins, b.maxs);
+        shift_for(shoulder, nearest, HAND_REACH - REACH_MARGIN).is_some()
+    })
+}
+
+/// How far the body must go down (up, if negative) for a shoulder at `shoulder` to reach
+/// `point` within `reach`: 0 if it does, `None` if no height within [`CROUCH`] down and
+/// [`RISE`] up does.
+fn shift_for(shoulder: Vector, point: Vector, reach: f32) -> Option<f32> {
+    let across = (point - shoulder).truncate().length();
+    if across > reach {
+        return None;
+    }
+    let half = (reach * reach - across * across).sqrt();
+    let height = shoulder.z.clamp(point.z - half, point.z + half);
+    let shift = shoulder.z - height;
+    (-RISE..=CROUCH).contains(&shift).then_some(shift)
+}
+
+/// The first of `goals` (hand poses, best first) that is clear of everything and that the hand
+/// reaches once the body has gone down or up: the body moved so, and the hand planned there.
+/// Returns the body's shift (to undo), where the hand was told to be before planning, and the
+/// plan or why there is none.
+fn reach_for(
+    steps: &mut Stepper<'_>,
+    side: Side,
+    goals: &[Pose],
+    rng: &mut SimRng,
+) -> Attempt<(f32, Pose, Result<Vec<HandConfig>, Failure>)> {
+    let Some((world, robot)) = behavior_robot(steps.env) else {
+        return Ok(Err(Failure::Unavailable("no episode")));
+    };
+    let body = hand_body(world, robot, side);
+    let here = HandConfig::of(&target_in_world(steps.env, side));
+    let probe = HandSpace::new(world, body.clone(), &here, &here);
+    let reach = HAND_REACH - REACH_SLACK;
+    let chosen = goals.iter().find_map(|g| {
+        let shift = shift_for(body.shoulder, g.translation, reach)?;
+        probe.clear(&HandConfig::of(g)).then_some((*g, shift))
+    });
+    let Some((goal, shift)) = chosen else {
+        let start = target_in_world(steps.env, side);
+        return Ok(Ok((0.0, start, Err(Failure::NoHandPose))));
+    };
+    attempt!(crouch(steps, shift));
+    let start = target_in_world(steps.env, side);
+    let Some((world, robot)) = behavior_robot(steps.env) else {
+        return Ok(Err(Failure::Unavailable("no episode")));
+    };
+    let planned = plan_hand(world, robot, side, [goal], rng_seed(rng));
+    Ok(Ok((shift, start, planned)))
+}
+
+/// Lowers (or raises, for a negative `depth`) the body by `depth`, m, with body actions.
+fn crouch(steps: &mut Stepper<'_>, depth: f32) -> Attempt<()> {
+    let Some((world, robot)) = behavior_robot(steps.env) else {
+        return Ok(Err(Failure::Unavailable("no episode")));
+    };
+    let goal = robot.body_pose(world).translation.z - depth;
+    for _ in 0..STEPS_PER_WAYPOINT {
+        let Some((world, robot)) = behavior_robot(steps.env) else {
+            break;
+        };
+        let dz = goal - robot.body_pose(world).translation.z;
+        if dz.abs() <= TARGET_TOLERANCE {
+            break;
+        }
+        let mut action = vec![0.0; robot_dim(steps.env)];
+        action[Action::BODY.start + 2] = (dz / ACTION_SCALE).clamp(-1.0, 1.0);
+        attempt!(steps.act(&action));
+    }
+    Ok(Ok(()))
+}
+
+/// A planned hand path from where the hand is told to be to `goals`' first free one.
+fn plan_hand(
+    world: &World,
+    robot: &BehaviorRobot,
+    side: Side,
+    goals: impl IntoIterator<Item = Pose>,
+    seed: u64,
+) -> Result<Vec<HandConfig>, Failure> {
+    let start = HandConfig::of(&(robot.body_pose(world) * robot.hand_target(side)));
+    let body = hand_body(world, robot, side);
+    let probe = HandSpace::new(world, body.clone(), &start, &start);
+    let goal = goals
+        .into_iter()
+        .map(|g| HandConfig::of(&g))
+        .find(|g| probe.free(g))
+        .ok_or(Failure::NoHandPose)?;
+    let space = HandSpace::new(world, body, &start, &goal);
+    let params = PlanParams {
+        seed,
+        ..BASE_BUDGET
+    };
+    let planned = plan(&space, &start, &goal, &params)?;
+    let mut dense = vec![start];
+    for pair in planned.path.windows(2) {
+        dense.extend(space.steps(&pair[0], &pair[1], space.resolution()));
+    }
+    Ok(dense)
+}
+
+/// Hand poses over the object, palm down, best first: over the top of its box near the
+/// shoulder, jittered, at headings around the one from the body to the object.
+fn approach_goals(
+    world: &World,
+    robot: &BehaviorRobot,
+    call: &Call,
+    side: Side,
+    rng: &mut SimRng,
+) -> Vec<Pose> {
+    let shoulder = robot.shoulder(world, side);
+    let at = grasp_point(world, call.object, shoulder);
+    let body = robot.body_pose(world).translation;
+    let facing = (at.y - body.y).atan2(at.x - body.x);
+    (0..GRASP_HEADINGS)
+        .map(|k| {
+            let top = Vector::new(
+                at.x + uniform(rng, -GRASP_JITTER, GRASP_JITTER),
+                at.y + uniform(rng, -GRASP_JITTER, GRASP_JITTER),
+                at.z + APPROACH_HEIGHT,
+            );
+            let spread = if k == 0 { 0.0 } else { PI / 2.0 };
+            let heading = facing + uniform(rng, -spread, spread);
+            let rotation = Rotation::from_rotation_z(heading);
+            Pose::from_parts(top - rotation * GRASP_POINT, rotation)
+        })
+        .collect()
+}
+
+/// Hand poses above poses the world's sampler finds for the held object: each sample as
+/// found and turned half round about its centre (the hand then comes from the other side), at
+/// the heights of [`PLACE_HEIGHTS`].
+fn placement_goals(
+    world: &World,
+    robot: &BehaviorRobot,
+    call: &Call,
+    relation: Relation,
+    side: Side,
+    rng: &mut SimRng,
+) -> Result<Vec<Pose>, Failure> {
+    let held = robot
+        .holding(side)
+        .map(|b| b.object)
+        .ok_or(Failure::HandEmpty)?;
+    let grip = world.pose(robot.parts().hand(side)).inverse() * world.pose(held);
+    let mut let_go = world.clone();
+    Robot::Behavior(robot.clone(), behavior_robots::ActionSpace::Full)
+        .release_now(&mut let_go, side.index());
+    let mut goals = Vec::new();
+    let mut last = Failure::NoHandPose;
+    for _ in 0..PLACE_TRIES {
+        let mut scratch = let_go.clone();
+        if let Err(failure) = put(&mut scratch, held, call.object, relation, rng) {
+            last = failure;
+            continue;
+        }
+        let placed = scratch.pose(held);
+        let centre = scratch.aabb(held).center();
+        for turn in [0.0, PI] {
+            let about = Rotation::from_rotation_z(turn);
+            let turned = Pose::from_parts(
+                centre + about * (placed.translation - centre),
+                about * placed.rotation,
+            );
+            for h in PLACE_HEIGHTS {
+                let lifted = Pose::from_parts(turned.translation + Vector::Z * h, turned.rotation);
+                goals.push(lifted * grip.inverse());
+            }
+        }
+    }
+    if goals.is_empty() {
+        return Err(last);
+    }
+    Ok(goals)
+}
+
+/// A seed for the planner drawn from the call's random numbers.
+fn rng_seed(rng: &mut SimRng) -> u64 {
+    (uniform(rng, 0.0, 1.0) * u32::MAX as f32) as u64
+}
+
+/// The action that takes the hand's target one step toward `goal` (in the world), or `None`
+/// when it is there.
+fn hand_action(env: &Env, side: Side, goal: &Pose) -> Option<Vec<f32>> {
+    let (world, robot) = behavior_robot(env)?;
+    let local = robot.body_pose(world).inverse() * *goal;
+    let target = robot.hand_target(side);
+    let d = local.translation - target.translation;
+    let turn = (local.rotation * target.rotation.inverse()).normalize();
+    let (yaw, pitch, roll) = turn.to_euler(EulerRot::ZYX);
+    let values = [d.x, d.y, d.z, roll, pitch, yaw];
+    if values.iter().all(|v| v.abs() <= TARGET_TOLERANCE) {
+        return None;
+    }
+    let mut action = vec![0.0; robot_dim(env)];
+    for (k, v) in values.iter().enumerate() {
+        action[Action::hand_range(side).start + k] = (v / ACTION_SCALE).clamp(-1.0, 1.0);
+    }
+    Some(action)
+}
+
+fn robot_dim(env: &Env) -> usize {
+    env.robot().map_or(0, |r| r.action_dim())
+}
+
+/// Executes a hand path, one step per configuration (more where a turn needs them), then lets
+/// the palm arrive. The palm's poses go to `executed`.
+fn follow(
+    steps: &mut Stepper<'_>,
+    side: Side,
+    path: &[HandConfig],
+    executed: &mut Vec<Pose>,
+) -> Attempt<()> {
+    for c in path.iter().skip(1) {
+        let goal = c.pose();
+        for _ in 0..STEPS_PER_WAYPOINT {
+            let Some(action) = hand_action(steps.env, side, &goal) else {
+                break;
+            };
+            attempt!(steps.act(&action));
+            executed.push(palm(steps.env, side));
+        }
+        if hand_action(steps.env, side, &goal).is_some() {
+            return Ok(Err(Failure::HandBlocked));
+        }
+    }
+    attempt!(steps.wait_until(ARRIVAL_STEPS, |env| arrived(env, side)));
+    Ok(Ok(()))
+}
+
+/// Down onto the object until the hand touches it.
+fn descend(
+    steps: &mut Stepper<'_>,
+    side: Side,
+    object: ObjectId,
+    executed: &mut Vec<Pose>,
+) -> Attempt<()> {
+    for _ in 0..DESCENT_STEPS {
+        if touches(steps.env, side, object) {
+            break;
+        }
+        let mut goal = target_in_world(steps.env, side);
+        goal.translation.z -= DESCENT_STEP;
+        let Some(action) = hand_action(steps.env, side, &goal) else {
+            break;
+        };
+        attempt!(steps.act(&action));
+        executed.push(palm(steps.env, side));
+    }
+    Ok(Ok(()))
+}
+
+/// Presses the trigger until the hand holds the object; if the assisted grasp has not taken
+/// it once the trigger is past its threshold and the hand touches it, forces the grasp as the
+/// original does after closing (recorded as an
+/// edit, [`FORCED_GRASP`], for replays to do again).
+fn close(steps: &mut Stepper<'_>, call: &Call) -> Result<(), RunError> {
+    let side = Side::BOTH[call.hand];
+    let mut action = vec![0.0; robot_dim(steps.env)];
+    action[Action::trigger_index(side)] = 1.0;
+    for _ in 0..CLOSE_STEPS {
+        if steps.act(&action)?.is_err() || holds(steps.env, side, call.object) {
+            return Ok(());
+        }
+        // Past the grasp's threshold, touching and still not holding: force it.
+        let closed =
+            behavior_robot(steps.env).is_some_and(|(_, r)| r.trigger(side) > r.rules().threshold);
+        if closed && touches(steps.env, side, call.object) {
+            break;
+        }
+    }
+    let forced = steps.env.edit(|edit| {
+        edit.robot
+            .grasp_touching(edit.world, call.hand, call.object)
+            .is_ok()
+    })?;
+    if forced && let Some(r) = steps.recorder.as_deref_mut() {
+        let edit = RecordedCall {
+            primitive: FORCED_GRASP.to_string(),
+            object: steps
+                .env
+                .world()
+                .map(|w| w.object(call.object).name.clone())
+                .unwrap_or_default(),
+            hand: call.hand,
+        };
+        r.record_edit(steps.env, &edit)?;
+    }
+    Ok(())
+}
+
+/// Lets the trigger go until the hand is open and holds nothing.
+fn open(steps: &mut Stepper<'_>, side: Side) -> Attempt<()> {
+    let mut action = vec![0.0; robot_dim(steps.env)];
+    action[Action::trigger_index(side)] = -1.0;
+    for _ in 0..RELEASE_STEPS {
+        let done = behavior_robot(steps.env)
+            .is_none_or(|(_, r)| r.trigger(side) == 0.0 && r.holding(side).is_none());
+        if done {
+            break;
+        }
+        attempt!(steps.act(&action));
+    }
+    Ok(Ok(()))
+}
+
+/// The hand planned back to `start` with what it now carries, raised where that would not
+/// fit.
+fn come_back(
+    steps: &mut Stepper<'_>,
+    side: Side,
+    start: Pose,
+    executed: &mut Vec<Pose>,
+) -> Attempt<()> {
+    let Some((world, robot)) = behavior_robot(steps.env) else {
+        return Ok(Err(Failure::Unavailable("no episode")));
+    };
+    // Holding something, the hand keeps the turn it has (so does what it holds); empty, it
+    // turns back as it was.
+    let turn = if robot.holding(side).is_some() {
+        robot.hand_pose(world, side).rotation
+    } else {
+        start.rotation
+    };
+    let goals = (0..RAISES)
+        .map(|k| Pose::from_parts(start.translation + Vector::Z * (RAISE * k as f32), turn));
+    let seed = u64::from(steps.env.steps());
+    let path = match plan_hand(world, robot, side, goals, seed) {
+        Ok(path) => path,
+        Err(failure) => return Ok(Err(failure)),
+    };
+    follow(steps, side, &path, executed)
+}
+
+/// The palm's pose now.
+fn palm(env: &Env, side: Side) -> Pose {
+    behavior_robot(env).map_or(Pose::IDENTITY, |(world, robot)| {
+        robot.hand_pose(world, side)
+    })
+}
+
+/// Whether the palm is within [`ARRIVED`] of its target.
+fn arrived(env: &Env, side: Side) -> bool {
+    let target = target_in_world(env, side);
+    (palm(env, side).translation - target.translation).length() <= ARRIVED
+}
+
+/// Whether the hand (palm or finger) touches the object (its body or a link).
+fn touches(env: &Env, side: Side, object: ObjectId) -> bool {
+    behavior_robot(env).is_some_and(|(world, robot)| {
+        let hand = BodyRef::from(robot.parts().hand(side));
+        world
+            .core()
+            .contacts(hand)
+            .unwrap_or_default()
+            .iter()
+            .any(|c| c.other.is_some_and(|b| b.object == object))
+    })
+}
+
+/// Whether the hand holds the object.
+fn holds(env: &Env, side: Side, object: ObjectId) -> bool {
+    behavior_robot(env)
+        .is_some_and(|(_, robot)| robot.holding(side).is_some_and(|b| b.object == object))
+}

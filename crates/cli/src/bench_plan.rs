@@ -11,7 +11,8 @@ use behavior_core::FLOOR_SYNSET;
 use behavior_core::rng::seeded;
 use behavior_env::{Env, EnvConfig};
 use behavior_planning::{
-    BaseSpace, Call, PlanError, PlanParams, Primitive, Standing, drive_to, plan,
+    BaseSpace, Call, Mode, PlanError, PlanParams, Primitive, Standing, approach_plan, check,
+    drive_to, plan,
 };
 use behavior_sim::ObjectId;
 use serde::Serialize;
@@ -52,6 +53,10 @@ pub struct BenchPlanArgs {
     /// plan, and the path driven by the robot's actions), each from the episode's start.
     #[arg(long)]
     drive: bool,
+    /// Also plan the BehaviorRobot's right hand to over every object a GRASP may be tried on,
+    /// as a physical GRASP does, after a symbolic NAVIGATE_TO to it from the episode's start.
+    #[arg(long)]
+    hands: bool,
     #[arg(long)]
     json: bool,
 }
@@ -70,6 +75,16 @@ struct Attempt {
     plan_ms: Option<f64>,
     /// Configurations on the path.
     waypoints: Option<usize>,
+}
+
+/// One hand plan to over an object (`--hands`).
+#[derive(Serialize)]
+struct HandPlan {
+    object: String,
+    /// `ok`, or why there is none.
+    outcome: String,
+    /// Planning time, ms (the symbolic navigation before it not included).
+    plan_ms: f64,
 }
 
 /// One physical NAVIGATE_TO from the episode's start.
@@ -91,6 +106,8 @@ struct ActivityReport {
     attempts: Vec<Attempt>,
     /// With `--drive`.
     drives: Vec<Drive>,
+    /// With `--hands`.
+    hands: Vec<HandPlan>,
 }
 
 /// Seeds tried per activity.
@@ -111,6 +128,11 @@ struct Report {
     /// With `--drive`: drives tried, and those that ended where they were going.
     drives: usize,
     reached: usize,
+    /// With `--hands`: hand plans tried, found, and their times.
+    hand_plans: usize,
+    hands_planned: usize,
+    median_hand_ms: f64,
+    max_hand_ms: f64,
 }
 
 pub fn run(args: BenchPlanArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
@@ -150,6 +172,10 @@ pub fn run(args: BenchPlanArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
                 Some(_) if args.drive => drives(&mut env)?,
                 _ => Vec::new(),
             },
+            hands: match seed {
+                Some(_) if args.hands => hands(&mut env)?,
+                _ => Vec::new(),
+            },
         });
         bar.inc(1);
     }
@@ -163,6 +189,10 @@ pub fn run(args: BenchPlanArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         .flat_map(|a| &a.attempts)
         .filter(|t| t.outcome == "ok")
         .count();
+    let hand_times: Vec<f64> = activities
+        .iter()
+        .flat_map(|a| a.hands.iter().map(|h| h.plan_ms))
+        .collect();
     let report = Report {
         robot: args.robot.clone(),
         home_bounds: args.home_bounds,
@@ -178,6 +208,14 @@ pub fn run(args: BenchPlanArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
             .flat_map(|a| &a.drives)
             .filter(|d| d.outcome == "ok")
             .count(),
+        hand_plans: hand_times.len(),
+        hands_planned: activities
+            .iter()
+            .flat_map(|a| &a.hands)
+            .filter(|h| h.outcome == "ok")
+            .count(),
+        max_hand_ms: hand_times.iter().copied().fold(0.0, f64::max),
+        median_hand_ms: median(hand_times),
         activities,
     };
     if args.json {
@@ -298,6 +336,47 @@ fn drives(env: &mut Env) -> Result<Vec<Drive>> {
     Ok(out)
 }
 
+/// For each object of the activity that a GRASP may be tried on (not fixed, not the robot's,
+/// not in a closed container), a symbolic NAVIGATE_TO from the episode's start, then the right
+/// hand's approach planned and timed (the episode put back after each).
+fn hands(env: &mut Env) -> Result<Vec<HandPlan>> {
+    let (Some(start), Some(bindings)) = (env.checkpoint(), env.bindings()) else {
+        anyhow::bail!("no episode");
+    };
+    let objects: Vec<ObjectId> = bindings.iter().flatten().copied().collect();
+    let mut out = Vec::new();
+    for object in objects {
+        let call = |primitive| Call {
+            primitive,
+            object,
+            hand: 1,
+        };
+        let walked =
+            behavior_planning::run(env, call(Primitive::NavigateTo), Mode::Symbolic, None)?;
+        let tried = match (env.world(), env.robot()) {
+            (Some(w), Some(r)) => {
+                walked.result.is_ok() && check(w, r, &call(Primitive::Grasp)).is_ok()
+            }
+            _ => false,
+        };
+        if tried {
+            let clock = Instant::now();
+            let result = approach_plan(env, &call(Primitive::Grasp));
+            let plan_ms = clock.elapsed().as_secs_f64() * 1e3;
+            out.push(HandPlan {
+                object: env
+                    .world()
+                    .map(|w| w.object(object).name.clone())
+                    .unwrap_or_default(),
+                outcome: result.map_or_else(|e| e.to_string(), |_| "ok".to_string()),
+                plan_ms,
+            });
+        }
+        env.restore(&start);
+    }
+    Ok(out)
+}
+
 /// The extent of the home's floors on x and y.
 fn floors(world: &behavior_sim::World) -> ([f32; 2], [f32; 2]) {
     let (mut min, mut max) = ([f32::INFINITY; 2], [f32::NEG_INFINITY; 2]);
@@ -351,6 +430,12 @@ fn print(report: &Report) {
         println!(
             "driven with physics: {} of {} reached where they were going",
             report.reached, report.drives
+        );
+    }
+    if report.hand_plans > 0 {
+        println!(
+            "hand plans to over an object: {} of {} found; median {:.2} ms, max {:.2} ms",
+            report.hands_planned, report.hand_plans, report.median_hand_ms, report.max_hand_ms
         );
     }
 }

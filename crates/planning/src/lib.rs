@@ -44,11 +44,11 @@ pub use hand::{HAND_MARGIN, HAND_RESOLUTION, HAND_WEIGHTS, HandBody, HandConfig,
 pub use manipulate::{
     APPROACH_HEIGHT, CLOSE_STEPS, CROUCH, DESCENT_STEP, DESCENT_STEPS, FORCED_GRASP,
     GRASP_HEADINGS, GRASP_INSET, GRASP_JITTER, HandPath, PLACE_HEIGHT, PLACE_TRIES, RELEASE_STEPS,
-    SETTLE_STEPS, grasp, hand_body, place,
+    RISE, SETTLE_STEPS, approach_plan, grasp, hand_body, place,
 };
 pub use navigate::{STAND_CLEARANCE, STAND_DISTANCES, STAND_HEADINGS, Standing};
 pub use physical::{
-    BASE_BUDGET, BasePath, POSITION_TOLERANCE, STEPS_PER_WAYPOINT, YAW_TOLERANCE, base_config,
+    BasePath, PHYSICAL_BUDGET, POSITION_TOLERANCE, STEPS_PER_WAYPOINT, YAW_TOLERANCE, base_config,
     drive_to,
 };
 pub use primitive::{Call, Failure, Primitive, WAIT_STEPS};

@@ -24,7 +24,7 @@
 use crate::execute::{RecordedCall, RunError};
 use crate::hand::{HandBody, HandConfig, HandSpace};
 use crate::navigate::shapes_in;
-use crate::physical::{BASE_BUDGET, STEPS_PER_WAYPOINT, Stepper};
+use crate::physical::{PHYSICAL_BUDGET, STEPS_PER_WAYPOINT, Stepper};
 use crate::primitive::{Call, Failure};
 use crate::rrt::{PlanParams, Space, plan};
 use crate::symbolic::{call_seed, check, put};
@@ -173,6 +173,17 @@ pub fn place(
     attempt!(steps.wait_until(SETTLE_STEPS, |_| false));
     attempt!(retreat(&mut steps, side, &mut reached));
     Ok(Ok(reached.path))
+}
+
+/// The hand's plan to over `call.object` for a GRASP from where the robot stands, as the
+/// physical primitive makes it (without moving the body: a goal out of reach at the body's
+/// height counts as none). For measuring the planner (`behavior bench plan --hands`).
+pub fn approach_plan(env: &Env, call: &Call) -> Result<Vec<HandConfig>, Failure> {
+    let side = hand_side(env, call)?;
+    let (world, robot) = behavior_robot(env).ok_or(Failure::Unavailable("no episode"))?;
+    let mut rng = call_rng(env, call);
+    let goals = approach_goals(world, robot, call, side, &mut rng);
+    plan_hand(world, robot, side, goals, rng_seed(&mut rng))
 }
 
 /// The call's own random numbers (the same episode, step and call draw the same).
@@ -400,7 +411,7 @@ fn plan_hand(
     let space = HandSpace::new(world, body, &start, &goal);
     let params = PlanParams {
         seed,
-        ..BASE_BUDGET
+        ..PHYSICAL_BUDGET
     };
     let planned = plan(&space, &start, &goal, &params)?;
     let mut dense = vec![start];

@@ -28,11 +28,12 @@ pub const POSITION_TOLERANCE: f32 = 0.01;
 /// See [`POSITION_TOLERANCE`].
 pub const YAW_TOLERANCE: f32 = 0.02;
 
-/// The base planner's budget in physical mode: ten times the original's iterations. The
-/// original's 20 × 3 found no path for 297 of the 447 stands `bench plan` tried where 500
-/// iterations found more (README, "Base plans and drives"), and a robot carrying a board
-/// through a door needs them; its headless mode teleports after planning, ours drives.
-pub const BASE_BUDGET: PlanParams = PlanParams {
+/// The motion planners' budget in physical mode (base and hand): 25 times the original's
+/// iterations. The original's 20 × 3 found no base path for 297 of the 447 stands `bench plan`
+/// tried where 500 iterations found more (README, "Base plans and drives"), and a robot carrying
+/// a board through a door, or a hand reaching round a shelf's edge, needs them; the original's
+/// headless mode teleports after planning, ours executes.
+pub const PHYSICAL_BUDGET: PlanParams = PlanParams {
     iterations: 500,
     restarts: 2,
     smoothing: 20,
@@ -162,7 +163,7 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
     };
     let params = PlanParams {
         seed,
-        ..BASE_BUDGET
+        ..PHYSICAL_BUDGET
     };
     let planned = plan(&space, &start, &goal, &params)?;
     let mut dense = Vec::new();

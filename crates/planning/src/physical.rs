@@ -58,7 +58,10 @@ pub fn drive_to(
     call: &Call,
     recorder: Option<&mut Recorder>,
 ) -> Result<Result<BasePath, Failure>, RunError> {
-    let planned = match plan_base(env, call) {
+    let mut steps = Stepper { env, recorder };
+    // Best effort: a hand that cannot get there is planned around where it is.
+    let _ = crate::manipulate::tuck(&mut steps)?;
+    let planned = match plan_base(steps.env, call) {
         Ok(path) => path,
         Err(failure) => return Ok(Err(failure)),
     };
@@ -66,7 +69,6 @@ pub fn drive_to(
         planned,
         executed: Vec::new(),
     };
-    let mut steps = Stepper { env, recorder };
     for target in path.planned.clone() {
         let mut reached = false;
         for _ in 0..STEPS_PER_WAYPOINT {

@@ -112,3 +112,60 @@ fn solving_before_a_reset_is_an_error() {
         "{err}"
     );
 }
+
+#[test]
+fn laying_tile_floors_is_solved_with_physical_primitives_and_replays_bit_for_bit() {
+    // Tiles carried to the bathroom floor: every navigation driven, every grasp and placement
+    // planned and executed with physics.
+    let dir = std::env::temp_dir().join(format!("behavior-tiles-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("tiles.mcap");
+    let activity = "laying_tile_floors";
+    // The episode as `behavior solve` makes it: the first covering home, with its clutter.
+    let config = || {
+        let a = common::activity(activity);
+        let home = common::home(&a, true);
+        let mut c = behavior_env::EnvConfig::new(a, common::taxonomy(), vec![home]);
+        c.max_steps = 20_000; // as `behavior solve`'s
+        c
+    };
+    let mut env = behavior_env::Env::new(config());
+    env.reset(0).unwrap();
+    let mut recorder = Recorder::create(&path, &env, "", 50).unwrap();
+    let solution = Solver::new(
+        &mut env,
+        Mode::Physical,
+        Limits::default(),
+        Some(&mut recorder),
+        &mut |_| {},
+    )
+    .solve()
+    .unwrap();
+    recorder.finish().unwrap();
+    assert!(
+        solution.success,
+        "Q = {}, given up: {:?}",
+        solution.q_final, solution.given_up
+    );
+    let physical = |name: &str| solution.primitives.iter().any(|p| p.ok && p.name == name);
+    assert!(physical("grasp") && physical("place_onfloor") && physical("navigate_to"));
+    let recording = read(&path).unwrap();
+    // Forced grasps, and switches (kinematic in the original's motion-planning mode too), are
+    // the only edits; the rest is actions.
+    let edited = ["open", "close", "toggle_on", "toggle_off"];
+    for (step, edit) in &recording.edits {
+        let name = edit["primitive"].as_str().unwrap_or_default();
+        assert!(
+            name == behavior_planning::FORCED_GRASP || edited.contains(&name),
+            "step {step}: {edit}"
+        );
+    }
+    let report = replay_with(&recording, config(), &mut replay_edit).unwrap();
+    assert!(
+        report.identical,
+        "differs from step {:?}",
+        report.first_difference
+    );
+    assert_eq!(report.q_final, 1.0);
+    std::fs::remove_dir_all(&dir).unwrap();
+}

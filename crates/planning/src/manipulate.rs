@@ -31,7 +31,7 @@ use crate::symbolic::{call_seed, check, put};
 use behavior_core::rng::{SimRng, seeded, uniform};
 use behavior_env::Env;
 use behavior_env::record::Recorder;
-use behavior_robots::{ACTION_SCALE, Action, BehaviorRobot, HAND_REACH, Robot, Side};
+use behavior_robots::{ACTION_SCALE, Action, ActionSpace, BehaviorRobot, HAND_REACH, Robot, Side};
 use behavior_sim::{BodyRef, ObjectId, QueryFilter, Relation, World};
 use rapier3d::glamx::EulerRot;
 use rapier3d::math::{Pose, Rotation, Vector};
@@ -281,6 +281,11 @@ fn hand_side(env: &Env, call: &Call) -> Result<Side, Failure> {
             "Fetch's physical grasp and place are not built yet",
         ));
     }
+    if robot.space() != ActionSpace::Full {
+        return Err(Failure::Unavailable(
+            "physical primitives drive the full action space",
+        ));
+    }
     check(world, robot, call)?;
     Side::BOTH
         .get(call.hand)
@@ -288,9 +293,11 @@ fn hand_side(env: &Env, call: &Call) -> Result<Side, Failure> {
         .ok_or(Failure::NoHand(call.hand))
 }
 
+/// The episode's world and BehaviorRobot, if it drives one through the full action space (the
+/// hand actions here are that space's).
 fn behavior_robot(env: &Env) -> Option<(&World, &BehaviorRobot)> {
     match (env.world(), env.robot()) {
-        (Some(world), Some(Robot::Behavior(robot, _))) => Some((world, robot)),
+        (Some(world), Some(Robot::Behavior(robot, ActionSpace::Full))) => Some((world, robot)),
         _ => None,
     }
 }
@@ -495,8 +502,7 @@ fn placement_goals(
         .ok_or(Failure::HandEmpty)?;
     let grip = world.pose(robot.parts().hand(side)).inverse() * world.pose(held);
     let mut let_go = world.clone();
-    Robot::Behavior(robot.clone(), behavior_robots::ActionSpace::Full)
-        .release_now(&mut let_go, side.index());
+    Robot::Behavior(robot.clone(), ActionSpace::Full).release_now(&mut let_go, side.index());
     let mut goals = Vec::new();
     let mut last = Failure::NoHandPose;
     for _ in 0..PLACE_TRIES {

@@ -130,6 +130,19 @@ fn refused_physical_primitives_say_why_and_move_nothing() {
     );
     assert_eq!(env.steps(), steps, "no step was taken");
 
+    // A reduced action space has no hand actions to plan with: it says so, takes no step.
+    let mut config = common::config(ACTIVITY);
+    config.action_space = behavior_robots::ActionSpace::Navigation;
+    let mut reduced = Env::new(config);
+    reduced.reset(0).unwrap();
+    let book = object(&reduced, "book.n.02_1");
+    let refused = grasp(&mut reduced, &call(Primitive::Grasp, book), None).unwrap();
+    assert!(
+        matches!(refused, Err(Failure::Unavailable(_))),
+        "{refused:?}"
+    );
+    assert_eq!(reduced.steps(), 0);
+
     // Fetch's arm is not planned yet: it says so.
     let mut fetch = episode(RobotKind::Fetch);
     let book = object(&fetch, "book.n.02_1");

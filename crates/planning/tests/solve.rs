@@ -1,5 +1,5 @@
-//! The task planner end to end: activities solved with symbolic primitives, and their
-//! recordings replayed bit for bit with the primitives done again.
+//! The task planner end to end: activities solved with symbolic primitives, one with physical
+//! primitives, and their recordings replayed bit for bit with the edits done again.
 
 #[path = "../../env/tests/common/mod.rs"]
 mod common;
@@ -14,16 +14,17 @@ fn solve(
 ) -> (Solution, behavior_env::Env) {
     let mut env = common::env(activity);
     env.reset(seed).unwrap();
-    let solution = Solver::new(
-        &mut env,
-        Mode::Symbolic,
-        Limits::default(),
-        recorder,
-        &mut |_| {},
-    )
-    .solve()
-    .unwrap();
+    let solution = solve_in(&mut env, Mode::Symbolic, recorder).unwrap();
     (solution, env)
+}
+
+/// The planner in `env` as it is.
+fn solve_in(
+    env: &mut behavior_env::Env,
+    mode: Mode,
+    recorder: Option<&mut Recorder>,
+) -> Result<Solution, behavior_planning::RunError> {
+    Solver::new(env, mode, Limits::default(), recorder, &mut |_| {}).solve()
 }
 
 #[test]
@@ -55,15 +56,7 @@ fn a_recorded_solution_replays_bit_for_bit() {
     let mut env = common::env(activity);
     env.reset(2).unwrap();
     let mut recorder = Recorder::create(&path, &env, "", 5).unwrap();
-    let solution = Solver::new(
-        &mut env,
-        Mode::Symbolic,
-        Limits::default(),
-        Some(&mut recorder),
-        &mut |_| {},
-    )
-    .solve()
-    .unwrap();
+    let solution = solve_in(&mut env, Mode::Symbolic, Some(&mut recorder)).unwrap();
     recorder.finish().unwrap();
     assert!(solution.success, "{:?}", solution.given_up);
     let recording = read(&path).unwrap();
@@ -95,15 +88,7 @@ fn a_recorded_solution_replays_bit_for_bit() {
 #[test]
 fn solving_before_a_reset_is_an_error() {
     let mut env = common::env("bringing_in_wood");
-    let err = Solver::new(
-        &mut env,
-        Mode::Symbolic,
-        Limits::default(),
-        None,
-        &mut |_| {},
-    )
-    .solve()
-    .unwrap_err();
+    let err = solve_in(&mut env, Mode::Symbolic, None).unwrap_err();
     assert!(
         matches!(
             err,
@@ -132,15 +117,7 @@ fn laying_tile_floors_is_solved_with_physical_primitives_and_replays_bit_for_bit
     let mut env = behavior_env::Env::new(config());
     env.reset(0).unwrap();
     let mut recorder = Recorder::create(&path, &env, "", 50).unwrap();
-    let solution = Solver::new(
-        &mut env,
-        Mode::Physical,
-        Limits::default(),
-        Some(&mut recorder),
-        &mut |_| {},
-    )
-    .solve()
-    .unwrap();
+    let solution = solve_in(&mut env, Mode::Physical, Some(&mut recorder)).unwrap();
     recorder.finish().unwrap();
     assert!(
         solution.success,

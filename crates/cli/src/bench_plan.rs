@@ -12,7 +12,7 @@ use behavior_core::rng::seeded;
 use behavior_env::{Env, EnvConfig};
 use behavior_planning::{
     BaseSpace, Call, Mode, PlanError, PlanParams, Primitive, Standing, approach_plan, check,
-    drive_to, plan,
+    drive_to, home_extent, plan,
 };
 use behavior_sim::ObjectId;
 use serde::Serialize;
@@ -42,7 +42,7 @@ pub struct BenchPlanArgs {
     /// RRT runs after the first (the original's 2).
     #[arg(long, default_value_t = PlanParams::default().restarts)]
     restarts: u32,
-    /// Sample the whole home (its floors' extent) rather than the box around start and goal
+    /// Sample the whole home (its rooms' extent) rather than the box around start and goal
     /// widened by 1 m (the original's).
     #[arg(long)]
     home_bounds: bool,
@@ -261,8 +261,7 @@ fn attempts(env: &Env, params: &PlanParams, home_bounds: bool) -> Result<Vec<Att
             &start,
             &goal,
         );
-        if home_bounds {
-            let (min, max) = floors(world);
+        if home_bounds && let Some((min, max)) = home_extent(world) {
             space = space.with_bounds(min, max);
         }
         let clock = Instant::now();
@@ -375,19 +374,6 @@ fn hands(env: &mut Env) -> Result<Vec<HandPlan>> {
         env.restore(&start);
     }
     Ok(out)
-}
-
-/// The extent of the home's floors on x and y.
-fn floors(world: &behavior_sim::World) -> ([f32; 2], [f32; 2]) {
-    let (mut min, mut max) = ([f32::INFINITY; 2], [f32::NEG_INFINITY; 2]);
-    for (id, object) in world.objects() {
-        if object.category == FLOOR_SYNSET {
-            let aabb = world.core().aabb(id);
-            min = [min[0].min(aabb.mins.x), min[1].min(aabb.mins.y)];
-            max = [max[0].max(aabb.maxs.x), max[1].max(aabb.maxs.y)];
-        }
-    }
-    (min, max)
 }
 
 fn print(report: &Report) {

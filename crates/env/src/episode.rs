@@ -7,7 +7,7 @@ use behavior_bddl::Activity;
 use behavior_core::FLOOR_SYNSET;
 use behavior_robots::{Robot, RobotError, RobotKind};
 use behavior_sampling::SavedInstance;
-use behavior_sim::{ObjectId, QueryFilter, VisualShape, World};
+use behavior_sim::{ObjectId, QueryFilter, World};
 use rapier3d::glamx::EulerRot;
 use rapier3d::math::Vector;
 use std::f32::consts::{FRAC_PI_2, PI};
@@ -128,14 +128,10 @@ fn hits_fixed(world: &World, robot: &Robot) -> bool {
     };
     let core = world.core();
     robot.objects().into_iter().any(|id| {
-        core.visual_parts(id)
-            .into_iter()
-            .any(|part| match part.shape {
-                VisualShape::Primitive(shape) => core
-                    .overlaps(shape, part.pose, &filter)
-                    .is_ok_and(|hits| !hits.is_empty()),
-                _ => false,
-            })
+        core.collision_parts(id).into_iter().any(|(shape, pose)| {
+            core.overlaps(shape, pose, &filter)
+                .is_ok_and(|hits| !hits.is_empty())
+        })
     })
 }
 

@@ -104,6 +104,19 @@ impl<'w> BaseSpace<'w> {
     }
 }
 
+/// The box of the home's rooms on the floor (x, y), if it has rooms: where a base planner may
+/// sample to go round what blocks the box around start and goal.
+pub fn home_extent(world: &World) -> Option<([f32; 2], [f32; 2])> {
+    let rooms = world.rooms();
+    let first = rooms.first()?;
+    let (mut min, mut max) = (first.min, first.max);
+    for r in rooms {
+        min = [min[0].min(r.min[0]), min[1].min(r.min[1])];
+        max = [max[0].max(r.max[0]), max[1].max(r.max[1])];
+    }
+    Some((min, max))
+}
+
 /// How many even steps of at most `resolution` cover `length`.
 fn even_steps(length: f32, resolution: f32) -> usize {
     (length / resolution).ceil().max(0.0) as usize

@@ -67,13 +67,7 @@ pub const ANGLE_MARGIN: f32 = 0.5;
 /// A hand, and what it holds, moving among the world's objects.
 pub struct HandSpace<'w> {
     world: &'w World,
-    /// The shapes that move with the hand, in its frame: palm, fingers, what it holds.
-    shapes: Vec<(Primitive, Pose)>,
-    /// What collisions ignore: the robot and what it holds.
-    filter: QueryFilter,
-    /// The shoulder in the world and the hand's reach from it.
-    shoulder: Vector,
-    reach: f32,
+    body: HandBody,
     min: [f32; 6],
     max: [f32; 6],
 }
@@ -81,10 +75,36 @@ pub struct HandSpace<'w> {
 /// Where a hand moves: the shapes carried, what they ignore, its shoulder and reach.
 #[derive(Clone, Debug)]
 pub struct HandBody {
+    /// The shapes that move with the hand, in its frame: palm, fingers, what it holds.
     pub shapes: Vec<(Primitive, Pose)>,
+    /// What collisions ignore: the robot and what it holds.
     pub filter: QueryFilter,
+    /// The shoulder in the world.
     pub shoulder: Vector,
+    /// How far from the shoulder the hand may be, m.
     pub reach: f32,
+}
+
+impl HandBody {
+    /// Whether the hand and what it holds touch nothing in `world` at `c`, wherever the
+    /// shoulder is.
+    pub fn clear(&self, world: &World, c: &HandConfig) -> bool {
+        let finite = c.position.is_finite() && c.angles.iter().all(|x| x.is_finite());
+        if !finite {
+            return false;
+        }
+        let pose = c.pose();
+        let core = world.core();
+        self.shapes.iter().all(|(shape, offset)| {
+            core.overlaps(shape, pose * *offset, &self.filter)
+                .is_ok_and(|hits| hits.is_empty())
+        })
+    }
+
+    /// Whether `c` lies within the hand's reach of the shoulder.
+    pub fn reaches(&self, c: &HandConfig) -> bool {
+        (c.position - self.shoulder).length() <= self.reach
+    }
 }
 
 impl<'w> HandSpace<'w> {
@@ -112,29 +132,15 @@ impl<'w> HandSpace<'w> {
         }
         HandSpace {
             world,
-            shapes: body.shapes,
-            filter: body.filter,
-            shoulder: body.shoulder,
-            reach: body.reach,
+            body,
             min,
             max,
         }
     }
-}
 
-impl HandSpace<'_> {
     /// Whether the hand and what it holds touch nothing at `c`, wherever the shoulder is.
     pub fn clear(&self, c: &HandConfig) -> bool {
-        let finite = c.position.is_finite() && c.angles.iter().all(|x| x.is_finite());
-        if !finite {
-            return false;
-        }
-        let pose = c.pose();
-        let core = self.world.core();
-        self.shapes.iter().all(|(shape, offset)| {
-            core.overlaps(shape, pose * *offset, &self.filter)
-                .is_ok_and(|hits| hits.is_empty())
-        })
+        self.body.clear(self.world, c)
     }
 }
 
@@ -178,7 +184,7 @@ impl Space for HandSpace<'_> {
     }
 
     fn free(&self, c: &HandConfig) -> bool {
-        (c.position - self.shoulder).length() <= self.reach && self.clear(c)
+        self.body.reaches(c) && self.clear(c)
     }
 
     fn resolution(&self) -> f32 {

@@ -37,7 +37,7 @@ mod symbolic;
 mod task;
 
 pub use action_space::{PrimitiveSet, PrimitiveSpace};
-pub use base::{BaseConfig, BaseSpace, Footprint};
+pub use base::{BaseConfig, BaseSpace, Footprint, home_extent};
 pub use error::PlanError;
 pub use execute::{ARM_REACH, Mode, Outcome, RecordedCall, RunError, replay_edit, run};
 pub use hand::{HAND_MARGIN, HAND_RESOLUTION, HAND_WEIGHTS, HandBody, HandConfig, HandSpace};

@@ -233,16 +233,28 @@ struct Reached {
 }
 
 /// The hand taken along a plan to the first of `goals` it can reach (the body down or up
-/// first if need be). On failure the hand and the body are brought back.
+/// first if need be, [`choose_goal`]). On failure the hand and the body are brought back.
 fn reach(
     steps: &mut Stepper<'_>,
     side: Side,
     goals: &[Pose],
     rng: &mut SimRng,
 ) -> Attempt<Reached> {
-    let (depth, start, planned) = match attempt!(reach_for(steps, side, goals, rng)) {
-        (depth, start, Ok(path)) => (depth, start, path),
-        (depth, _, Err(failure)) => {
+    let Some((world, robot)) = behavior_robot(steps.env) else {
+        return Ok(Err(Failure::Unavailable("no episode")));
+    };
+    let Some((goal, depth)) = choose_goal(world, robot, side, goals) else {
+        return Ok(Err(Failure::NoHandPose));
+    };
+    attempt!(crouch(steps, depth));
+    let start = target_in_world(steps.env, side);
+    let planned = match behavior_robot(steps.env) {
+        Some((world, robot)) => plan_hand(world, robot, side, [goal], rng_seed(rng)),
+        None => Err(Failure::Unavailable("no episode")),
+    };
+    let planned = match planned {
+        Ok(path) => path,
+        Err(failure) => {
             attempt!(crouch(steps, -depth));
             return Ok(Err(failure));
         }
@@ -374,37 +386,19 @@ fn shift_for(shoulder: Vector, point: Vector, reach: f32) -> Option<f32> {
 }
 
 /// The first of `goals` (hand poses, best first) that is clear of everything and that the hand
-/// reaches once the body has gone down or up: the body moved so, and the hand planned there.
-/// Returns the body's shift (to undo), where the hand was told to be before planning, and the
-/// plan or why there is none.
-fn reach_for(
-    steps: &mut Stepper<'_>,
+/// reaches once the body has gone down or up, with that shift (see [`shift_for`]).
+fn choose_goal(
+    world: &World,
+    robot: &BehaviorRobot,
     side: Side,
     goals: &[Pose],
-    rng: &mut SimRng,
-) -> Attempt<(f32, Pose, Result<Vec<HandConfig>, Failure>)> {
-    let Some((world, robot)) = behavior_robot(steps.env) else {
-        return Ok(Err(Failure::Unavailable("no episode")));
-    };
+) -> Option<(Pose, f32)> {
     let body = hand_body(world, robot, side);
-    let here = HandConfig::of(&target_in_world(steps.env, side));
-    let probe = HandSpace::new(world, body.clone(), &here, &here);
     let reach = HAND_REACH - REACH_SLACK;
-    let chosen = goals.iter().find_map(|g| {
+    goals.iter().find_map(|g| {
         let shift = shift_for(body.shoulder, g.translation, reach)?;
-        probe.clear(&HandConfig::of(g)).then_some((*g, shift))
-    });
-    let Some((goal, shift)) = chosen else {
-        let start = target_in_world(steps.env, side);
-        return Ok(Ok((0.0, start, Err(Failure::NoHandPose))));
-    };
-    attempt!(crouch(steps, shift));
-    let start = target_in_world(steps.env, side);
-    let Some((world, robot)) = behavior_robot(steps.env) else {
-        return Ok(Err(Failure::Unavailable("no episode")));
-    };
-    let planned = plan_hand(world, robot, side, [goal], rng_seed(rng));
-    Ok(Ok((shift, start, planned)))
+        body.clear(world, &HandConfig::of(g)).then_some((*g, shift))
+    })
 }
 
 /// Lowers (or raises, for a negative `depth`) the body by `depth`, m, with body actions.
@@ -438,11 +432,10 @@ fn plan_hand(
 ) -> Result<Vec<HandConfig>, Failure> {
     let start = HandConfig::of(&(robot.body_pose(world) * robot.hand_target(side)));
     let body = hand_body(world, robot, side);
-    let probe = HandSpace::new(world, body.clone(), &start, &start);
     let goal = goals
         .into_iter()
         .map(|g| HandConfig::of(&g))
-        .find(|g| probe.free(g))
+        .find(|g| body.reaches(g) && body.clear(world, g))
         .ok_or(Failure::NoHandPose)?;
     let space = HandSpace::new(world, body, &start, &goal);
     let params = PlanParams {

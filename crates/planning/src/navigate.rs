@@ -5,7 +5,7 @@ use crate::base::{BaseConfig, Footprint};
 use behavior_core::FLOOR_SYNSET;
 use behavior_core::rng::{SimRng, uniform};
 use behavior_robots::Robot;
-use behavior_sim::{BodyRef, ObjectId, Primitive, QueryFilter, VisualShape, World};
+use behavior_sim::{BodyRef, ObjectId, Primitive, QueryFilter, World};
 use rapier3d::math::{Pose, Vector};
 use std::f32::consts::PI;
 
@@ -156,13 +156,9 @@ pub(crate) fn shapes_in(
     to_frame: Pose,
 ) -> Vec<(Primitive, Pose)> {
     let core = world.core();
-    let mut shapes = Vec::new();
-    for id in objects {
-        for part in core.visual_parts(id) {
-            if let VisualShape::Primitive(p) = part.shape {
-                shapes.push((p.clone(), to_frame * part.pose));
-            }
-        }
-    }
-    shapes
+    objects
+        .into_iter()
+        .flat_map(|id| core.collision_parts(id))
+        .map(|(shape, pose)| (shape.clone(), to_frame * pose))
+        .collect()
 }

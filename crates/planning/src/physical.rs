@@ -5,7 +5,7 @@
 //! `manipulate.rs`. OPEN, CLOSE and the toggles are kinematic in the original's motion-planning
 //! mode too, and are done as in symbolic mode.
 
-use crate::base::{BaseConfig, BaseSpace};
+use crate::base::{BaseConfig, BaseSpace, home_extent};
 use crate::execute::RunError;
 use crate::navigate::Standing;
 use crate::primitive::{Call, Failure};
@@ -159,7 +159,7 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
     let space = BaseSpace::new(world, standing.footprint, standing.filter, &start, &goal);
     // Samples anywhere in the home, as the July 2021 version did: the way round a table may
     // leave the box around the ends.
-    let space = match home_bounds(world) {
+    let space = match home_extent(world) {
         Some((min, max)) => space.with_bounds(min, max),
         None => space,
     };
@@ -186,18 +186,6 @@ fn door_leaves(world: &behavior_sim::World) -> Vec<BodyRef> {
 
 /// The synset of room doors, which a driving robot pushes open.
 const DOOR_SYNSET: &str = "door.n.01";
-
-/// The box of the home's rooms on the floor, if it has rooms.
-fn home_bounds(world: &behavior_sim::World) -> Option<([f32; 2], [f32; 2])> {
-    let rooms = world.rooms();
-    let first = rooms.first()?;
-    let (mut min, mut max) = (first.min, first.max);
-    for r in rooms {
-        min = [min[0].min(r.min[0]), min[1].min(r.min[1])];
-        max = [max[0].max(r.max[0]), max[1].max(r.max[1])];
-    }
-    Some((min, max))
-}
 
 /// The base's configuration on the floor now.
 pub fn base_config(env: &Env) -> BaseConfig {

@@ -162,6 +162,26 @@ impl Core {
         })
     }
 
+    /// An object's collision shapes (its body's and its links'), each posed in the world as it
+    /// is now: what moves with it, for checking it at other poses with [`Core::overlaps`]. Unlike
+    /// [`Core::visual_parts`], never visual meshes. Nothing for an object no longer present.
+    pub fn collision_parts(&self, id: ObjectId) -> Vec<(&Primitive, Pose)> {
+        let object = self.object(id);
+        if !object.is_present() {
+            return Vec::new();
+        }
+        let body = object.parts.iter().map(|p| (p, self.pose(id)));
+        // A link's parts are given in the object's frame at zero joint position; its body
+        // started at the object's pose, so its current pose maps them.
+        let links = object.links.iter().enumerate().flat_map(|(l, link)| {
+            let frame = self.link_pose(id, l);
+            link.parts.iter().map(move |p| (p, frame))
+        });
+        body.chain(links)
+            .map(|(part, frame)| (&part.primitive, frame * part.offset))
+            .collect()
+    }
+
     /// The bodies that a shape at `pose` would overlap, each once, in id order.
     pub fn overlaps(
         &self,

@@ -168,6 +168,12 @@ fn describe(env: &Env, call: &Call) -> RecordedCall {
 pub fn replay_edit(env: &mut Env, edit: &serde_json::Value) -> Result<(), String> {
     let recorded: RecordedCall =
         serde_json::from_value(edit.clone()).map_err(|e| format!("not a primitive: {e}"))?;
+    if recorded.primitive == manipulate::HAND_RESET {
+        return env
+            .edit(|edit| edit.robot.reset_hand(edit.world, recorded.hand))
+            .map_err(|e| e.to_string())?
+            .map_err(|e| format!("the reset of hand {} failed on replay: {e}", recorded.hand));
+    }
     let object = env
         .world()
         .and_then(|w| w.object_named(&recorded.object))

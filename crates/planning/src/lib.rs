@@ -43,8 +43,8 @@ pub use execute::{ARM_REACH, Mode, Outcome, RecordedCall, RunError, replay_edit,
 pub use hand::{HAND_MARGIN, HAND_RESOLUTION, HAND_WEIGHTS, HandBody, HandConfig, HandSpace};
 pub use manipulate::{
     APPROACH_HEIGHT, CLOSE_STEPS, CROUCH, DESCENT_STEP, DESCENT_STEPS, FORCED_GRASP,
-    GRASP_HEADINGS, GRASP_INSET, GRASP_JITTER, HandPath, PLACE_HEIGHT, PLACE_TRIES, RELEASE_STEPS,
-    RISE, SETTLE_STEPS, approach_plan, grasp, hand_body, place,
+    GRASP_HEADINGS, GRASP_INSET, GRASP_JITTER, HAND_RESET, HandPath, PLACE_HEIGHT, PLACE_TRIES,
+    RELEASE_STEPS, RISE, SETTLE_STEPS, approach_plan, grasp, hand_body, place,
 };
 pub use navigate::{STAND_CLEARANCE, STAND_DISTANCES, STAND_HEADINGS, Standing};
 pub use physical::{

@@ -39,6 +39,11 @@ use std::f32::consts::PI;
 
 /// How a recording names the forced grasp of a physical GRASP (see [`grasp`]).
 pub const FORCED_GRASP: &str = "grasp_touching";
+/// How a recording names a hand put back at its target (see [`free_stranded`]).
+pub const HAND_RESET: &str = "reset_hand";
+/// A palm this far from its target is pinned, not trailing, m (it trails by about a step,
+/// ≤ 0.05 m).
+const STRANDED: f32 = 0.1;
 /// How far above the top of the object's box the grasp's approach ends, m (the original's).
 pub const APPROACH_HEIGHT: f32 = 0.05;
 /// The random offset of the approach across the top, m (the original's ±0.025).
@@ -212,7 +217,36 @@ pub(crate) fn tuck(steps: &mut Stepper<'_>) -> Attempt<()> {
             attempt!(follow(steps, side, &[here, goal], &mut poses));
         }
     }
+    free_stranded(steps)?;
     Ok(Ok(()))
+}
+
+/// Puts back at its target, at once, each palm its servo left more than [`STRANDED`] behind
+/// (pinned behind furniture the body moved past: 300 N cannot pull it through), as the
+/// original robot's reset entry does; recorded as an edit, [`HAND_RESET`], for replays.
+fn free_stranded(steps: &mut Stepper<'_>) -> Result<(), RunError> {
+    for side in Side::BOTH {
+        let behind = behavior_robot(steps.env).map_or(0.0, |(world, robot)| {
+            let target = robot.body_pose(world) * robot.hand_target(side);
+            (robot.hand_pose(world, side).translation - target.translation).length()
+        });
+        if behind <= STRANDED {
+            continue;
+        }
+        let hand = side.index();
+        let reset = steps
+            .env
+            .edit(|edit| edit.robot.reset_hand(edit.world, hand).is_ok())?;
+        if reset && let Some(r) = steps.recorder.as_deref_mut() {
+            let edit = RecordedCall {
+                primitive: HAND_RESET.to_string(),
+                object: String::new(),
+                hand,
+            };
+            r.record_edit(steps.env, &edit)?;
+        }
+    }
+    Ok(())
 }
 
 /// The call's own random numbers (the same episode, step and call draw the same).
@@ -240,6 +274,7 @@ fn reach(
     goals: &[Pose],
     rng: &mut SimRng,
 ) -> Attempt<Reached> {
+    free_stranded(steps)?;
     let Some((world, robot)) = behavior_robot(steps.env) else {
         return Ok(Err(Failure::Unavailable("no episode")));
     };
@@ -340,6 +375,15 @@ pub fn hand_body(world: &World, robot: &BehaviorRobot, side: Side) -> HandBody {
     }
 }
 
+/// The hand as planned: [`hand_body`] with the palm's straight-fingered box, which the robot
+/// keeps out of fixed bodies by refusing the hand's target there (a plan clear of it only
+/// would stop the hand on its way, at a countertop's edge).
+fn planning_body(world: &World, robot: &BehaviorRobot, side: Side) -> HandBody {
+    let mut body = hand_body(world, robot, side);
+    body.shapes.push(behavior_robots::sweep_shape());
+    body
+}
+
 /// Where on the top of the object's box the hand goes: the point nearest the shoulder, at
 /// least [`GRASP_INSET`] in from the box's sides (its centre, for a small object), so that a
 /// board is taken by its near end.
@@ -393,7 +437,7 @@ fn choose_goal(
     side: Side,
     goals: &[Pose],
 ) -> Option<(Pose, f32)> {
-    let body = hand_body(world, robot, side);
+    let body = planning_body(world, robot, side);
     let reach = HAND_REACH - REACH_SLACK;
     goals.iter().find_map(|g| {
         let shift = shift_for(body.shoulder, g.translation, reach)?;
@@ -431,7 +475,7 @@ fn plan_hand(
     seed: u64,
 ) -> Result<Vec<HandConfig>, Failure> {
     let start = HandConfig::of(&(robot.body_pose(world) * robot.hand_target(side)));
-    let body = hand_body(world, robot, side);
+    let body = planning_body(world, robot, side);
     let goal = goals
         .into_iter()
         .map(|g| HandConfig::of(&g))

@@ -4,7 +4,7 @@
 use crate::base::{BaseConfig, Footprint};
 use behavior_core::FLOOR_SYNSET;
 use behavior_core::rng::{SimRng, uniform};
-use behavior_robots::Robot;
+use behavior_robots::{Robot, Side};
 use behavior_sim::{BodyRef, ObjectId, Primitive, QueryFilter, World};
 use rapier3d::math::{Pose, Vector};
 use std::f32::consts::PI;
@@ -40,7 +40,16 @@ impl Standing {
         );
         let floor = config.pose().inverse();
         let held = (0..robot.hands()).filter_map(|h| robot.held(h));
-        let shapes = shapes_in(world, robot.objects().into_iter().chain(held), floor);
+        let mut shapes = shapes_in(world, robot.objects().into_iter().chain(held), floor);
+        // A BehaviorRobot's body is stopped where a palm's target with straight fingers would
+        // enter something fixed: that shape goes with the base too.
+        if let Robot::Behavior(r, _) = robot {
+            let (sweep, offset) = behavior_robots::sweep_shape();
+            for side in Side::BOTH {
+                let target = r.body_pose(world) * r.hand_target(side);
+                shapes.push((sweep.clone(), floor * target * offset));
+            }
+        }
         let mut ignored = robot.objects();
         ignored.extend((0..robot.hands()).filter_map(|h| robot.held(h)));
         // The base stands on the floors (Fetch's wheels touch them): they are no obstacle.

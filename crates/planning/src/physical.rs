@@ -6,6 +6,7 @@
 //! mode too, and are done as in symbolic mode.
 
 use crate::base::{BaseConfig, BaseSpace, home_extent};
+use crate::error::PlanError;
 use crate::execute::RunError;
 use crate::navigate::Standing;
 use crate::primitive::{Call, Failure};
@@ -18,7 +19,7 @@ use behavior_robots::{
     ACTION_SCALE, ActionSpace, FetchAction, MAX_ANGULAR_SPEED, MAX_LINEAR_SPEED, Robot,
 };
 use behavior_sim::{BodyRef, STEP_SECONDS};
-use std::f32::consts::PI;
+use std::f32::consts::{FRAC_PI_2, PI};
 
 /// Steps the robot has to reach each configuration of the densified path before the
 /// execution is given up as blocked.
@@ -151,8 +152,9 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
         .filter
         .exclude_bodies
         .extend(pushed.into_iter().filter(movable));
-    // Room doors are pushed open on the way: the body is kinematic, a leaf yields on its hinge.
-    standing.filter.exclude_bodies.extend(door_leaves(world));
+    // Hinged and sliding parts — room doors, a cabinet's door left open — are pushed aside on
+    // the way: the body is kinematic, a leaf yields on its hinge.
+    standing.filter.exclude_bodies.extend(hinged_parts(world));
     let goal = stand_for(world, &standing, call.object, &mut seeded(seed))
         .ok_or(Failure::NoPlaceToStand)?;
     let start = standing.config;
@@ -167,25 +169,70 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
         seed,
         ..PHYSICAL_BUDGET
     };
-    let planned = plan(&space, &start, &goal, &params)?;
+    // A robot put or pushed into something fixed first backs out of it, by the shortest free
+    // move nearby, then plans from there.
     let mut dense = Vec::new();
+    let from = if space.free(&start) {
+        start
+    } else {
+        let out = escape(&space, robot, &start).ok_or(PlanError::StartInCollision)?;
+        dense.extend(straight(&start, &out, space.resolution()));
+        out
+    };
+    let planned = plan(&space, &from, &goal, &params)?;
     for pair in planned.path.windows(2) {
         dense.extend(space.steps(&pair[0], &pair[1], space.resolution()));
     }
     Ok(dense)
 }
 
-/// The leaves of the home's doors: links of `door.n.01` objects.
-fn door_leaves(world: &behavior_sim::World) -> Vec<BodyRef> {
-    world
-        .objects()
-        .filter(|(_, o)| o.category == DOOR_SYNSET)
-        .flat_map(|(id, o)| (0..o.links.len()).map(move |l| BodyRef::link(id, l)))
+/// How far a robot overlapping something at its start looks for a way out, m.
+const ESCAPE_DISTANCE: f32 = 0.4;
+/// The steps of that search, m.
+const ESCAPE_STEP: f32 = 0.05;
+/// The directions tried at each distance.
+const ESCAPE_DIRECTIONS: usize = 16;
+
+/// The nearest free configuration within [`ESCAPE_DISTANCE`] of `start`, heading kept, straight
+/// back tried first at each distance: where a robot that overlaps a fixed thing (its body
+/// carried into a carcass by a door it opened) gets out without turning (the robot's own
+/// motion allows leaving an overlap, never entering one). A BehaviorRobot moves any way,
+/// Fetch back or forward only.
+fn escape(space: &BaseSpace<'_>, robot: &Robot, start: &BaseConfig) -> Option<BaseConfig> {
+    let steps = (ESCAPE_DISTANCE / ESCAPE_STEP).round() as usize;
+    let directions: Vec<usize> = match robot {
+        Robot::Behavior(..) => (0..ESCAPE_DIRECTIONS).collect(),
+        Robot::Fetch(..) => vec![0, ESCAPE_DIRECTIONS / 2],
+    };
+    (1..=steps).find_map(|k| {
+        let d = ESCAPE_STEP * k as f32;
+        directions.iter().find_map(|&i| {
+            let a = start.yaw + PI + 2.0 * PI * i as f32 / ESCAPE_DIRECTIONS as f32;
+            let c = BaseConfig::new(start.x + d * a.cos(), start.y + d * a.sin(), start.yaw);
+            space.free(&c).then_some(c)
+        })
+    })
+}
+
+/// The configurations from `a` to `b` on a straight line, heading kept, at most `resolution`
+/// apart, without `a`.
+fn straight(a: &BaseConfig, b: &BaseConfig, resolution: f32) -> Vec<BaseConfig> {
+    let n = ((b.x - a.x).hypot(b.y - a.y) / resolution).ceil().max(1.0) as usize;
+    (1..=n)
+        .map(|k| {
+            let t = k as f32 / n as f32;
+            BaseConfig::new(a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.yaw)
+        })
         .collect()
 }
 
-/// The synset of room doors, which a driving robot pushes open.
-const DOOR_SYNSET: &str = "door.n.01";
+/// Every object's links: the leaves of doors, the doors, lids and drawers of furniture.
+fn hinged_parts(world: &behavior_sim::World) -> Vec<BodyRef> {
+    world
+        .objects()
+        .flat_map(|(id, o)| (0..o.links.len()).map(move |l| BodyRef::link(id, l)))
+        .collect()
+}
 
 /// The base's configuration on the floor now.
 pub fn base_config(env: &Env) -> BaseConfig {
@@ -224,8 +271,14 @@ fn drive_toward(env: &Env, target: &BaseConfig) -> Option<Vec<f32>> {
             // A unicycle: turn toward the point first, drive when facing it, then turn to the
             // target's heading.
             let distance = forward.hypot(left);
+            // A point behind is backed onto (a robot backing out of what it overlaps).
             let turn = if distance > POSITION_TOLERANCE {
-                wrap(left.atan2(forward))
+                let toward = wrap(left.atan2(forward));
+                if toward.abs() > FRAC_PI_2 {
+                    wrap(toward + PI)
+                } else {
+                    toward
+                }
             } else {
                 dyaw
             };

@@ -397,9 +397,14 @@ impl<'a> Solver<'a> {
                 last = why;
             }
         }
-        Err(format!(
-            "{last} (not in reach after {NAVIGATE_ATTEMPTS} navigations)"
-        ))
+        Err(if last.is_empty() {
+            let name = &self.world().object(x).name;
+            format!(
+                "{name} not in reach after {NAVIGATE_ATTEMPTS} navigations, each of which arrived"
+            )
+        } else {
+            format!("{last} (not in reach after {NAVIGATE_ATTEMPTS} navigations)")
+        })
     }
 
     /// What `x` is in or on, if anything.

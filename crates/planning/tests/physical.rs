@@ -8,7 +8,7 @@ mod common;
 use behavior_env::Env;
 use behavior_env::record::{Recorder, read, replay};
 use behavior_planning::{
-    BaseSpace, Call, Primitive, Space, Standing, base_config, drive_to, within_reach,
+    BaseConfig, BaseSpace, Call, Primitive, Space, Standing, base_config, drive_to, within_reach,
 };
 use behavior_robots::RobotKind;
 
@@ -86,4 +86,78 @@ fn a_recorded_drive_replays_bit_for_bit() {
     let report = replay(&recording, common::config("bringing_in_wood")).unwrap();
     assert!(report.identical && report.checkpoints > 1, "{report:?}");
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Puts the robot 10 cm into the first fixed piece of furniture beside which that is all it
+/// overlaps, facing away from it with room ahead, as a door it opened or a push can leave it.
+fn put_into_furniture(env: &mut Env) -> behavior_sim::ObjectId {
+    let (world, robot) = (env.world().unwrap(), env.robot().unwrap());
+    let mut standing = Standing::of(world, robot);
+    let base = robot.base_pose(world);
+    let radius = match robot.kind() {
+        RobotKind::Behavior => behavior_robots::BODY_RADIUS,
+        RobotKind::Fetch => behavior_robots::BASE_RADIUS,
+    };
+    let found = world.objects().find_map(|(id, o)| {
+        let b = world.aabb(id);
+        let c = BaseConfig::new(b.maxs.x + radius - 0.1, 0.5 * (b.mins.y + b.maxs.y), 0.0);
+        standing.config = c;
+        let only_it = standing.overlapping(world, &c) == [id.into()];
+        let ahead = BaseConfig::new(c.x + 0.3, c.y, 0.0);
+        let way_out = standing.overlapping(world, &ahead).is_empty();
+        // Furniture: fixed, without doors, lower than a wall.
+        let furniture = o.is_fixed() && o.links.is_empty() && b.maxs.z < 1.5;
+        (furniture && only_it && way_out).then_some((id, c))
+    });
+    let (furniture, c) = found.expect("a fixed piece of furniture to stand in");
+    let pose = rapier3d::math::Pose::from_parts(
+        rapier3d::math::Vector::new(c.x, c.y, base.translation.z),
+        rapier3d::math::Rotation::IDENTITY,
+    );
+    env.edit(|edit| edit.robot.teleport(edit.world, pose))
+        .unwrap()
+        .unwrap();
+    furniture
+}
+
+#[test]
+fn a_robot_put_into_furniture_backs_out_and_stands_clear_by_it() {
+    // The BehaviorRobot: Fetch backs out the same way (straight back or forward only), but its
+    // base plans reach half the stands the BehaviorRobot's do (README), none in this home here.
+    for robot in [RobotKind::Behavior] {
+        let mut env = episode("bringing_in_wood", robot, 0);
+        let furniture = put_into_furniture(&mut env);
+        let (world, bot) = (env.world().unwrap(), env.robot().unwrap());
+        let standing = Standing::of(world, bot);
+        let start = standing.config;
+        assert_eq!(standing.overlapping(world, &start), [furniture.into()]);
+        // Asked to face the furniture it stands in: out, then to a clear place by it.
+        let call = Call {
+            primitive: Primitive::NavigateTo,
+            object: furniture,
+            hand: 0,
+        };
+        let path = drive_to(&mut env, &call, None).unwrap();
+        let path = path.unwrap_or_else(|f| panic!("{robot:?}: {f}"));
+        let (world, bot) = (env.world().unwrap(), env.robot().unwrap());
+        assert!(
+            within_reach(world, bot, furniture),
+            "{robot:?} ends in reach"
+        );
+        let end = Standing::of(world, bot);
+        assert!(
+            end.overlapping(world, &end.config).is_empty(),
+            "{robot:?} ends clear"
+        );
+        // It left the furniture without turning first: the heading is kept until it is out.
+        let out = path
+            .planned
+            .iter()
+            .position(|c| standing.overlapping(world, c).is_empty())
+            .expect("the plan leaves the furniture");
+        assert!(out > 0, "{robot:?}: the plan starts inside the furniture");
+        for c in &path.planned[..out] {
+            assert_eq!(c.yaw, start.yaw, "{robot:?} turned inside the furniture");
+        }
+    }
 }

@@ -212,8 +212,9 @@ pub(crate) fn hand_spec(name: &str, side: Side, pose: Pose) -> ObjectSpec {
 }
 
 /// The shape that must not move into fixed things: the palm with its fingers straight, and its
-/// pose in the hand frame.
-pub(crate) fn sweep_shape() -> (Primitive, Pose) {
+/// pose in the hand frame. A planner that keeps this shape clear of fixed bodies plans nothing
+/// the robot refuses (see `motion.rs`).
+pub fn sweep_shape() -> (Primitive, Pose) {
     let half = Vector::new(
         0.5 * (2.0 * PALM_HALF.x + FINGER_LENGTH),
         PALM_HALF.y,

@@ -111,7 +111,7 @@ pub use fetch_body::{
 pub use fetch_proprioception::FetchProprioception;
 pub use grasp::GraspRules;
 pub use hand::{
-    FINGER_CLOSED, FINGER_SPEED, FINGERS, HAND_FRICTION, HAND_MASS, Side, THUMB_CLOSED,
+    FINGER_CLOSED, FINGER_SPEED, FINGERS, HAND_FRICTION, HAND_MASS, Side, THUMB_CLOSED, sweep_shape,
 };
 pub use ik::{IK_JOINTS, IkError, IkSolver};
 pub use magic::MagicError;

@@ -77,6 +77,21 @@ impl Robot {
         }
     }
 
+    /// Puts a BehaviorRobot's hand `hand` at its target at once, with what it holds: the
+    /// original robot's "reset" entry, for a hand pinned behind furniture. Fetch's arm is
+    /// kinematic and never left behind: nothing to do.
+    pub fn reset_hand(
+        &mut self,
+        world: &mut behavior_sim::World,
+        hand: usize,
+    ) -> Result<(), MagicError> {
+        match self {
+            Robot::Behavior(robot, _) => robot.reset_hand(world, side(hand)?),
+            Robot::Fetch(..) if hand == 0 => Ok(()),
+            Robot::Fetch(..) => Err(MagicError::NoHand(hand)),
+        }
+    }
+
     /// Lets go of what hand `hand` holds at once and opens it; the object it held, if any.
     /// The object stays where it is, its contacts with the hand back once they are apart.
     pub fn release_now(

@@ -490,6 +490,28 @@ impl BehaviorRobot {
         Ok(())
     }
 
+    /// The raw action's reset entry (reference §4.2, left out of the env's 26): the palm put
+    /// at its target at once, with what it holds, at rest and parked. For a hand pinned behind
+    /// furniture that its servo cannot pull free.
+    pub(crate) fn reset_hand(&mut self, world: &mut World, side: Side) -> Result<(), MagicError> {
+        let i = side.index();
+        if let Some(id) = self.parked[i].take() {
+            world.core_mut().detach(id);
+        }
+        let before = self.hand_pose(world, side);
+        let target = self.targets.hand_in_world(side);
+        world.set_pose(self.parts.hand(side), target)?;
+        self.hands[i] = Follower::at(target);
+        if let Some(grasp) = self.grasps[i] {
+            let held = grasp.body.object;
+            let relative = before.inv_mul(&world.pose(held));
+            world.set_pose(held, target * relative)?;
+        }
+        self.park(world, side);
+        self.press_with_hands(world);
+        Ok(())
+    }
+
     /// Puts `object` just under the palm of an empty hand, attaches it as a grasp does and
     /// presses the trigger.
     pub(crate) fn grasp_now(

@@ -93,3 +93,34 @@ fn a_full_hand_and_a_fixed_object_are_refused() {
     let bad = Pose::from_parts(Vector::new(f32::NAN, 0.0, BODY_HEIGHT), Rotation::IDENTITY);
     assert_eq!(robot.teleport(&mut world, bad), Err(MagicError::BadPose));
 }
+
+#[test]
+fn a_hand_reset_puts_a_pinned_palm_back_at_its_target_with_what_it_holds() {
+    let (mut world, mut robot, carton) = scene(RobotKind::Behavior);
+    robot.grasp_now(&mut world, 1, carton).unwrap();
+    steps(&mut world, &mut robot, 10);
+    let Robot::Behavior(bot, _) = &robot else {
+        unreachable!()
+    };
+    let side = behavior_robots::Side::Right;
+    let (palm, target) = (
+        bot.parts().hand(side),
+        bot.body_pose(&world) * bot.hand_target(side),
+    );
+    let grip = world.pose(palm).inv_mul(&world.pose(carton));
+    // Left 2 m behind with what it holds, as a doorway can leave it.
+    let behind = Pose::from_translation(Vector::new(-2.0, 0.0, 1.0));
+    world.set_pose(palm, behind).unwrap();
+    world.set_pose(carton, behind * grip).unwrap();
+    robot.reset_hand(&mut world, 1).unwrap();
+    let now = world.pose(palm);
+    assert!(
+        (now.translation - target.translation).length() < 1e-4,
+        "{now:?}"
+    );
+    let carried = world.pose(palm).inv_mul(&world.pose(carton));
+    assert!((carried.translation - grip.translation).length() < 1e-4);
+    steps(&mut world, &mut robot, 30);
+    assert_eq!(robot.held(1), Some(carton), "still held after the reset");
+    assert_eq!(robot.reset_hand(&mut world, 2), Err(MagicError::NoHand(2)));
+}

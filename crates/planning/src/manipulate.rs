@@ -237,13 +237,12 @@ fn free_stranded(steps: &mut Stepper<'_>) -> Result<(), RunError> {
         let reset = steps
             .env
             .edit(|edit| edit.robot.reset_hand(edit.world, hand).is_ok())?;
-        if reset && let Some(r) = steps.recorder.as_deref_mut() {
-            let edit = RecordedCall {
+        if reset {
+            steps.record_edit(&RecordedCall {
                 primitive: HAND_RESET.to_string(),
                 object: String::new(),
                 hand,
-            };
-            r.record_edit(steps.env, &edit)?;
+            })?;
         }
     }
     Ok(())
@@ -668,17 +667,16 @@ fn close(steps: &mut Stepper<'_>, call: &Call) -> Result<(), RunError> {
             .grasp_touching(edit.world, call.hand, call.object)
             .is_ok()
     })?;
-    if forced && let Some(r) = steps.recorder.as_deref_mut() {
-        let edit = RecordedCall {
+    if forced {
+        let object = steps
+            .env
+            .world()
+            .map(|w| w.object(call.object).name.clone());
+        steps.record_edit(&RecordedCall {
             primitive: FORCED_GRASP.to_string(),
-            object: steps
-                .env
-                .world()
-                .map(|w| w.object(call.object).name.clone())
-                .unwrap_or_default(),
+            object: object.unwrap_or_default(),
             hand: call.hand,
-        };
-        r.record_edit(steps.env, &edit)?;
+        })?;
     }
     Ok(())
 }

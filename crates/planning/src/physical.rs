@@ -7,7 +7,7 @@
 
 use crate::base::{BaseConfig, BaseSpace, home_extent};
 use crate::error::PlanError;
-use crate::execute::RunError;
+use crate::execute::{RecordedCall, RunError};
 use crate::navigate::Standing;
 use crate::primitive::{Call, Failure};
 use crate::rrt::{PlanParams, Space, plan};
@@ -110,6 +110,14 @@ impl Stepper<'_> {
             return Ok(Err(Failure::Unavailable("the episode ended on the way")));
         }
         Ok(Ok(()))
+    }
+
+    /// Records an edit done between steps, if recording.
+    pub(crate) fn record_edit(&mut self, edit: &RecordedCall) -> Result<(), RunError> {
+        if let Some(r) = self.recorder.as_deref_mut() {
+            r.record_edit(self.env, edit)?;
+        }
+        Ok(())
     }
 
     /// `n` steps of a still action, or fewer if `done` holds first.

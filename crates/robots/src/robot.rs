@@ -475,30 +475,21 @@ impl BehaviorRobot {
         self.step_from = pose;
         self.body_moving = false;
         for side in Side::BOTH {
-            let i = side.index();
-            let target = self.targets.hand_in_world(side);
-            world.set_pose(self.parts.hand(side), target)?;
-            self.hands[i] = Follower::at(target);
-            if let Some(grasp) = self.grasps[i] {
-                let held = grasp.body.object;
-                let relative = before[i].inv_mul(&world.pose(held));
-                world.set_pose(held, target * relative)?;
-            }
-            self.park(world, side);
+            self.put_hand_at_target(world, side, before[side.index()])?;
         }
         self.press_with_hands(world);
         Ok(())
     }
 
-    /// The raw action's reset entry (reference §4.2, left out of the env's 26): the palm put
-    /// at its target at once, with what it holds, at rest and parked. For a hand pinned behind
-    /// furniture that its servo cannot pull free.
-    pub(crate) fn reset_hand(&mut self, world: &mut World, side: Side) -> Result<(), MagicError> {
+    /// Puts a palm at its target at once, at rest and parked, carrying what it holds from
+    /// where the palm was (`before`).
+    fn put_hand_at_target(
+        &mut self,
+        world: &mut World,
+        side: Side,
+        before: Pose,
+    ) -> Result<(), MagicError> {
         let i = side.index();
-        if let Some(id) = self.parked[i].take() {
-            world.core_mut().detach(id);
-        }
-        let before = self.hand_pose(world, side);
         let target = self.targets.hand_in_world(side);
         world.set_pose(self.parts.hand(side), target)?;
         self.hands[i] = Follower::at(target);
@@ -508,6 +499,18 @@ impl BehaviorRobot {
             world.set_pose(held, target * relative)?;
         }
         self.park(world, side);
+        Ok(())
+    }
+
+    /// The raw action's reset entry (reference §4.2, left out of the env's 26): the palm put
+    /// at its target at once, with what it holds, at rest and parked. For a hand pinned behind
+    /// furniture that its servo cannot pull free.
+    pub(crate) fn reset_hand(&mut self, world: &mut World, side: Side) -> Result<(), MagicError> {
+        if let Some(id) = self.parked[side.index()].take() {
+            world.core_mut().detach(id);
+        }
+        let before = self.hand_pose(world, side);
+        self.put_hand_at_target(world, side, before)?;
         self.press_with_hands(world);
         Ok(())
     }

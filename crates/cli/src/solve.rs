@@ -150,9 +150,13 @@ fn report(env: &Env, robot: &str, mode: Mode, solution: Solution, wall_s: f64) -
 }
 
 fn print_executed(e: &Executed) {
+    let head = format!(
+        "  {} {} (hand {}, {} steps)",
+        e.name, e.object, e.hand, e.steps
+    );
     match &e.reason {
-        None => println!("  {} {} (hand {})", e.name, e.object, e.hand),
-        Some(why) => println!("  {} {} (hand {}): FAILED: {why}", e.name, e.object, e.hand),
+        None => println!("{head}"),
+        Some(why) => println!("{head}: FAILED: {why}"),
     }
 }
 

@@ -117,6 +117,21 @@ pub fn home_extent(world: &World) -> Option<([f32; 2], [f32; 2])> {
     Some((min, max))
 }
 
+/// How high above the floor the check for standing inside something starts, m: under the
+/// BehaviorRobot's body (its capsule ends 0.2 m up), over what lies flat on the floor.
+const KEEL: f32 = 0.15;
+
+/// Whether a base at (x, y) stands within something whose walls its parts clear (an open
+/// container, a bathtub): straight down from [`KEEL`], the first thing met reaches above it.
+/// The BehaviorRobot's body floats 0.2 m up, over what is lower than that.
+pub(crate) fn stands_inside(world: &World, filter: &QueryFilter, x: f32, y: f32) -> bool {
+    let from = Vector::new(x, y, KEEL);
+    match world.core().cast_ray(from, -Vector::Z, KEEL, filter) {
+        Ok(Some(hit)) => hit.body.is_some_and(|b| world.aabb(b.object).maxs.z > KEEL),
+        _ => false,
+    }
+}
+
 /// How many even steps of at most `resolution` cover `length`.
 fn even_steps(length: f32, resolution: f32) -> usize {
     (length / resolution).ceil().max(0.0) as usize
@@ -176,10 +191,11 @@ impl Space for BaseSpace<'_> {
         }
         let base = c.pose();
         let core = self.world.core();
-        self.footprint.shapes.iter().all(|(shape, offset)| {
+        let clear = self.footprint.shapes.iter().all(|(shape, offset)| {
             core.overlaps(shape, base * *offset, &self.filter)
                 .is_ok_and(|hits| hits.is_empty())
-        })
+        });
+        clear && !stands_inside(self.world, &self.filter, c.x, c.y)
     }
 
     fn resolution(&self) -> f32 {

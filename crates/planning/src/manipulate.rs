@@ -15,8 +15,11 @@
 //! - Where the hand cannot reach its goal from the shoulder, the body goes down (at most
 //!   [`CROUCH`]) or up ([`RISE`]) first, and back after.
 //!
-//! Where we differ: the original retracts along the reversed approach, we plan the way back
-//! with what the hand now carries (a carton lifted off a table, retraced, drags through the
+//! - The hand is planned to a little above its goal, or in front of it, and comes straight in;
+//!   it backs out the same way after ([`plan_with_approach`], [`back_out`]).
+//!
+//! Where we differ: the original retracts along the reversed approach, we back out of the
+//! last straight stretch and then plan the way back with what the hand now carries (a carton lifted off a table, retraced, drags through the
 //! table's edge); it forces the assisted grasp after closing if the hand touches the object, we
 //! report the miss; after placing, the original leaves the hand where it let go, ours comes
 //! back, so that the next NAVIGATE_TO finds the robot as compact as it started.
@@ -46,6 +49,9 @@ pub const HAND_RESET: &str = "reset_hand";
 const STRANDED: f32 = 0.1;
 /// How far above the top of the object's box the grasp's approach ends, m (the original's).
 pub const APPROACH_HEIGHT: f32 = 0.05;
+/// How much higher the approach is tried where fingers at [`APPROACH_HEIGHT`] would touch
+/// something, m: the descent ([`DESCENT_STEPS`] of [`DESCENT_STEP`]) still reaches the top.
+const APPROACH_RAISE: f32 = 0.05;
 /// The random offset of the approach across the top, m (the original's ±0.025).
 pub const GRASP_JITTER: f32 = 0.025;
 /// How far in from the sides of an object's box its grasp point lies, at most, m.
@@ -62,6 +68,13 @@ const REACH_SLACK: f32 = 0.02;
 pub const RISE: f32 = 0.4;
 /// Headings tried for the approach until one is free and within reach.
 pub const GRASP_HEADINGS: usize = 8;
+/// How far above a grasp's approach or a placement the hand is planned to, m, best first,
+/// before it comes straight down (see [`plan_with_approach`]).
+const PRE_ABOVE: [f32; 2] = [0.1, 0.05];
+/// How far toward the shoulder (across the floor) from a grasp's approach or a placement the
+/// hand is planned to, m, best first, where it cannot come from above, before it goes straight
+/// in (see [`plan_with_approach`]).
+const PRE_FRONT: [f32; 3] = [0.3, 0.2, 0.1];
 /// One step of the descent onto the object, m.
 pub const DESCENT_STEP: f32 = 0.005;
 /// The most steps of descent (the original's 25).
@@ -165,7 +178,9 @@ pub fn place(
     };
     let mut rng = call_rng(env, call);
     let goals = match behavior_robot(env) {
-        Some((world, robot)) => placement_goals(world, robot, call, relation, side, &mut rng),
+        Some((world, robot)) => {
+            placement_goals(world, robot, call.object, relation, side, &mut rng)
+        }
         None => Err(Failure::Unavailable("no episode")),
     };
     let goals = match goals {
@@ -191,6 +206,32 @@ pub fn approach_plan(env: &Env, call: &Call) -> Result<Vec<HandConfig>, Failure>
     plan_hand(world, robot, side, goals, rng_seed(&mut rng))
 }
 
+/// Whether a hand holding something reaches, its body down or up if need be, above one of the
+/// places the world's sampler finds for it by `call` (a PLACE_*), drawing the numbers the
+/// placement itself will; true where the call is no physical BehaviorRobot placement or the
+/// hand is empty (the primitive then says why it cannot).
+pub(crate) fn placement_in_reach(env: &Env, call: &Call) -> bool {
+    let (Some((world, robot)), Some(relation), Some(&side)) = (
+        behavior_robot(env),
+        call.primitive.relation(),
+        Side::BOTH.get(call.hand),
+    ) else {
+        return true;
+    };
+    if robot.holding(side).is_none() {
+        return true;
+    }
+    let shoulder = robot.shoulder(world, side);
+    let reach = HAND_REACH - REACH_SLACK;
+    let mut rng = call_rng(env, call);
+    placement_goals(world, robot, call.object, relation, side, &mut rng).is_ok_and(|goals| {
+        goals.iter().any(|g| {
+            shift_for(shoulder, g.translation, reach).is_some()
+                && open_to(world, robot, g.translation, shoulder, &[])
+        })
+    })
+}
+
 /// Where a BehaviorRobot's hands go before it drives, in the body frame: drawn in so that
 /// palm and fingers lie within the body's capsule (at rest the fingertips stick out 2 cm, and a
 /// door leaf the body pushes open caught them and left both palms behind at a doorway).
@@ -210,12 +251,26 @@ pub(crate) fn tuck(steps: &mut Stepper<'_>) -> Attempt<()> {
         let Some((world, robot)) = behavior_robot(steps.env) else {
             return Ok(Ok(()));
         };
-        let goal = HandConfig::of(&(robot.body_pose(world) * tucked(side)));
-        let here = HandConfig::of(&target_in_world(steps.env, side));
-        if here != goal {
-            let mut poses = Vec::new();
-            attempt!(follow(steps, side, &[here, goal], &mut poses));
+        let tuck = robot.body_pose(world) * tucked(side);
+        let (goal, here) = (HandConfig::of(&tuck), target_in_world(steps.env, side));
+        if HandConfig::of(&here) == goal {
+            continue;
         }
+        // Straight in where that is free, else planned (a hand left over a high shelf board
+        // would be carried into it).
+        let body = planning_body(world, robot, side);
+        let line = straight(&HandConfig::of(&here), &goal);
+        let path = if line.iter().all(|c| body.clear(world, c)) {
+            vec![HandConfig::of(&here), goal]
+        } else {
+            let seed = u64::from(steps.env.steps());
+            match plan_hand(world, robot, side, [tuck], seed) {
+                Ok(path) => path,
+                Err(_) => vec![HandConfig::of(&here), goal],
+            }
+        };
+        let mut poses = Vec::new();
+        attempt!(follow(steps, side, &path, &mut poses));
     }
     free_stranded(steps)?;
     Ok(Ok(()))
@@ -263,6 +318,8 @@ struct Reached {
     depth: f32,
     start: Pose,
     path: HandPath,
+    /// The way the hand came straight in at the end, reversed (see [`plan_with_approach`]).
+    exit: Option<Vector>,
 }
 
 /// The hand taken along a plan to the first of `goals` it can reach (the body down or up
@@ -283,11 +340,11 @@ fn reach(
     attempt!(crouch(steps, depth));
     let start = target_in_world(steps.env, side);
     let planned = match behavior_robot(steps.env) {
-        Some((world, robot)) => plan_hand(world, robot, side, [goal], rng_seed(rng)),
+        Some((world, robot)) => plan_with_approach(world, robot, side, goal, rng_seed(rng)),
         None => Err(Failure::Unavailable("no episode")),
     };
-    let planned = match planned {
-        Ok(path) => path,
+    let (planned, exit) = match planned {
+        Ok(planned) => planned,
         Err(failure) => {
             attempt!(crouch(steps, -depth));
             return Ok(Err(failure));
@@ -301,6 +358,7 @@ fn reach(
             executed: Vec::new(),
             after: Vec::new(),
         },
+        exit,
     };
     if let Err(failure) = follow(steps, side, &planned, &mut reached.path.executed)? {
         let _ = retreat(steps, side, &mut reached)?;
@@ -312,6 +370,9 @@ fn reach(
 /// The hand back where it was told to be before the primitive, the body at its height (even
 /// where the hand could not come back).
 fn retreat(steps: &mut Stepper<'_>, side: Side, reached: &mut Reached) -> Attempt<()> {
+    if let Some(exit) = reached.exit {
+        back_out(steps, side, exit, &mut reached.path.after)?;
+    }
     let back = come_back(steps, side, reached.start, &mut reached.path.after)?;
     let up = crouch(steps, -reached.depth)?;
     Ok(back.and(up))
@@ -401,7 +462,8 @@ fn grasp_point(world: &World, object: ObjectId, shoulder: Vector) -> Vector {
 
 /// Whether a hand of the robot, its body down or up if need be, reaches the nearest point of the
 /// object's box within its reach less [`REACH_MARGIN`] (for a small object, over it; for a
-/// shelf, its near side).
+/// shelf, its near side), and the top of the box there lies [`open_to`] the shoulder (a
+/// necklace in a cabinet is not in reach from beside the cabinet).
 pub(crate) fn hand_reaches(world: &World, robot: &Robot, object: ObjectId) -> bool {
     let Robot::Behavior(robot, _) = robot else {
         return true;
@@ -411,7 +473,40 @@ pub(crate) fn hand_reaches(world: &World, robot: &Robot, object: ObjectId) -> bo
         let shoulder = robot.shoulder(world, side);
         let nearest = shoulder.clamp(b.mins, b.maxs);
         shift_for(shoulder, nearest, HAND_REACH - REACH_MARGIN).is_some()
+            && open_to(world, robot, nearest.with_z(b.maxs.z), shoulder, &[object])
     })
+}
+
+/// How far up a point must be clear to count as open from above, m.
+const OPEN_ABOVE: f32 = 0.3;
+
+/// Whether a hand can come to `point` from the shoulder's side or from above: nothing fixed
+/// (furniture, walls) lies across the floor from it toward the shoulder, or above it. The
+/// robot's parts and `besides` aside; what moves would be pushed. (The hand flies free, with
+/// no arm: what matters is whether the point is walled in on the robot's side.)
+fn open_to(
+    world: &World,
+    robot: &BehaviorRobot,
+    point: Vector,
+    shoulder: Vector,
+    besides: &[ObjectId],
+) -> bool {
+    let mut ignored = robot.parts().all().to_vec();
+    ignored.extend_from_slice(besides);
+    let filter = QueryFilter {
+        fixed_only: true,
+        ..QueryFilter::excluding(&ignored)
+    };
+    let clear = |direction: Vector, length: f32| {
+        length <= 0.0
+            || matches!(
+                world.core().cast_ray(point, direction, length, &filter),
+                Ok(None)
+            )
+    };
+    let across = (shoulder - point).with_z(0.0);
+    let level = across.length();
+    (level > 0.0 && clear(across / level, level)) || clear(Vector::Z, OPEN_ABOVE)
 }
 
 /// How far the body must go down (up, if negative) for a shoulder at `shoulder` to reach
@@ -493,8 +588,60 @@ fn plan_hand(
     Ok(dense)
 }
 
+/// A planned hand path to `goal` that ends with a straight move onto it: down from above
+/// ([`PRE_ABOVE`]), else in from the robot's side ([`PRE_FRONT`], into a cabinet or under a
+/// shelf), where that last stretch is free; else planned to the goal itself. With the path,
+/// the way out: from the goal back to where the straight move began. Planned to hover
+/// just over a tin, a hand found no way in sideways, its fingers a few millimetres above the
+/// lid; planned into a cabinet's compartment, none through the narrow opening.
+fn plan_with_approach(
+    world: &World,
+    robot: &BehaviorRobot,
+    side: Side,
+    goal: Pose,
+    seed: u64,
+) -> Result<(Vec<HandConfig>, Option<Vector>), Failure> {
+    let body = planning_body(world, robot, side);
+    let end = HandConfig::of(&goal);
+    let outward = (body.shoulder - goal.translation)
+        .with_z(0.0)
+        .normalize_or_zero();
+    let above = PRE_ABOVE.iter().map(|&h| Vector::Z * h);
+    let front = PRE_FRONT.iter().map(|&d| outward * d);
+    for offset in above.chain(front) {
+        let mut pre = end;
+        pre.position += offset;
+        let last = straight(&pre, &end);
+        let free = body.reaches(&pre) && last.iter().all(|c| body.clear(world, c));
+        if !free {
+            continue;
+        }
+        if let Ok(mut path) = plan_hand(world, robot, side, [pre.pose()], seed) {
+            path.extend(last);
+            return Ok((path, Some(offset)));
+        }
+    }
+    Ok((plan_hand(world, robot, side, [goal], seed)?, None))
+}
+
+/// The hand's configurations from `from` straight to `to`, at the hand planner's resolution,
+/// without `from`.
+fn straight(from: &HandConfig, to: &HandConfig) -> Vec<HandConfig> {
+    let n = ((from.position - to.position).length() / crate::hand::HAND_RESOLUTION)
+        .ceil()
+        .max(1.0) as usize;
+    (1..=n)
+        .map(|k| HandConfig {
+            position: from.position.lerp(to.position, k as f32 / n as f32),
+            angles: to.angles,
+        })
+        .collect()
+}
+
 /// Hand poses over the object, palm down, best first: over the top of its box near the
-/// shoulder, jittered, at headings around the one from the body to the object.
+/// shoulder, jittered, at headings around the one from the body to the object; then the same
+/// higher up (fingers that would touch a tilted tile at [`APPROACH_HEIGHT`] clear it there, and
+/// the descent still reaches it).
 fn approach_goals(
     world: &World,
     robot: &BehaviorRobot,
@@ -506,7 +653,7 @@ fn approach_goals(
     let at = grasp_point(world, call.object, shoulder);
     let body = robot.body_pose(world).translation;
     let facing = (at.y - body.y).atan2(at.x - body.x);
-    (0..GRASP_HEADINGS)
+    let near: Vec<Pose> = (0..GRASP_HEADINGS)
         .map(|k| {
             let top = Vector::new(
                 at.x + uniform(rng, -GRASP_JITTER, GRASP_JITTER),
@@ -518,6 +665,13 @@ fn approach_goals(
             let rotation = Rotation::from_rotation_z(heading);
             Pose::from_parts(top - rotation * GRASP_POINT, rotation)
         })
+        .collect();
+    let higher = near
+        .iter()
+        .map(|g| Pose::from_parts(g.translation + Vector::Z * APPROACH_RAISE, g.rotation));
+    near.iter()
+        .copied()
+        .chain(higher.collect::<Vec<_>>())
         .collect()
 }
 
@@ -527,7 +681,7 @@ fn approach_goals(
 fn placement_goals(
     world: &World,
     robot: &BehaviorRobot,
-    call: &Call,
+    target: ObjectId,
     relation: Relation,
     side: Side,
     rng: &mut SimRng,
@@ -543,7 +697,7 @@ fn placement_goals(
     let mut last = Failure::NoHandPose;
     for _ in 0..PLACE_TRIES {
         let mut scratch = let_go.clone();
-        if let Err(failure) = put(&mut scratch, held, call.object, relation, rng) {
+        if let Err(failure) = put(&mut scratch, held, target, relation, rng) {
             last = failure;
             continue;
         }
@@ -572,9 +726,9 @@ fn rng_seed(rng: &mut SimRng) -> u64 {
     (uniform(rng, 0.0, 1.0) * u32::MAX as f32) as u64
 }
 
-/// The action that takes the hand's target one step toward `goal` (in the world), or `None`
-/// when it is there.
-fn hand_action(env: &Env, side: Side, goal: &Pose) -> Option<Vec<f32>> {
+/// How far the hand's target is from `goal` (in the world), as the hand's action counts it:
+/// position and roll, pitch, yaw in the body frame; `None` when it is there.
+fn hand_offset(env: &Env, side: Side, goal: &Pose) -> Option<[f32; 6]> {
     let (world, robot) = behavior_robot(env)?;
     let local = robot.body_pose(world).inverse() * *goal;
     let target = robot.hand_target(side);
@@ -582,9 +736,21 @@ fn hand_action(env: &Env, side: Side, goal: &Pose) -> Option<Vec<f32>> {
     let turn = (local.rotation * target.rotation.inverse()).normalize();
     let (yaw, pitch, roll) = turn.to_euler(EulerRot::ZYX);
     let values = [d.x, d.y, d.z, roll, pitch, yaw];
-    if values.iter().all(|v| v.abs() <= TARGET_TOLERANCE) {
-        return None;
-    }
+    (!values.iter().all(|v| v.abs() <= TARGET_TOLERANCE)).then_some(values)
+}
+
+/// The steps a hand's target needs to get to `goal` at full speed.
+fn steps_to(env: &Env, side: Side, goal: &Pose) -> u32 {
+    hand_offset(env, side, goal).map_or(0, |values| {
+        let longest = values.iter().fold(0.0f32, |m, v| m.max(v.abs()));
+        (longest / ACTION_SCALE).ceil() as u32
+    })
+}
+
+/// The action that takes the hand's target one step toward `goal` (in the world), or `None`
+/// when it is there.
+fn hand_action(env: &Env, side: Side, goal: &Pose) -> Option<Vec<f32>> {
+    let values = hand_offset(env, side, goal)?;
     let mut action = vec![0.0; robot_dim(env)];
     for (k, v) in values.iter().enumerate() {
         action[Action::hand_range(side).start + k] = (v / ACTION_SCALE).clamp(-1.0, 1.0);
@@ -606,7 +772,9 @@ fn follow(
 ) -> Attempt<()> {
     for c in path.iter().skip(1) {
         let goal = c.pose();
-        for _ in 0..STEPS_PER_WAYPOINT {
+        // Waypoints a resolution apart take a step each; a straight move (tucking the hands)
+        // takes as many as it needs.
+        for _ in 0..STEPS_PER_WAYPOINT + steps_to(steps.env, side, &goal) {
             let Some(action) = hand_action(steps.env, side, &goal) else {
                 break;
             };
@@ -694,6 +862,38 @@ fn open(steps: &mut Stepper<'_>, side: Side) -> Attempt<()> {
         attempt!(steps.act(&action));
     }
     Ok(Ok(()))
+}
+
+/// The hand moved straight by `exit` (the way it came in, reversed), with what it now
+/// carries, as far as that is free: out of the cabinet or up from the table before the way
+/// back is planned (from where it let go, the placed object under its fingers, no plan starts).
+fn back_out(
+    steps: &mut Stepper<'_>,
+    side: Side,
+    exit: Vector,
+    executed: &mut Vec<Pose>,
+) -> Result<(), RunError> {
+    let Some((world, robot)) = behavior_robot(steps.env) else {
+        return Ok(());
+    };
+    let body = planning_body(world, robot, side);
+    let here = HandConfig::of(&target_in_world(steps.env, side));
+    let mut out = here;
+    out.position += exit;
+    let line = straight(&here, &out);
+    // The first step may still touch what was let go or taken; the rest must be clear.
+    let clear = line
+        .iter()
+        .skip(1)
+        .take_while(|c| body.clear(world, c))
+        .count();
+    let path: Vec<HandConfig> = std::iter::once(here)
+        .chain(line.into_iter().take(clear + 1))
+        .collect();
+    if path.len() > 1 {
+        follow(steps, side, &path, executed)?.ok();
+    }
+    Ok(())
 }
 
 /// The hand planned back to `start` with what it now carries, raised where that would not

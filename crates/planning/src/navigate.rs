@@ -1,7 +1,7 @@
 //! Where the base may stand to act on an object — NAVIGATE_TO's pose search (reference §5) — and
 //! the robot's footprint, read from the world.
 
-use crate::base::{BaseConfig, Footprint};
+use crate::base::{BaseConfig, Footprint, stands_inside};
 use behavior_core::FLOOR_SYNSET;
 use behavior_core::rng::{SimRng, uniform};
 use behavior_robots::{Robot, Side};
@@ -10,11 +10,15 @@ use rapier3d::math::{Pose, Vector};
 use std::f32::consts::PI;
 
 /// The distances from the object tried, nearest first, m.
-pub const STAND_DISTANCES: [f32; 4] = [0.6, 1.2, 1.8, 2.4];
+pub const STAND_DISTANCES: [f32; 6] = [0.6, 0.8, 1.0, 1.2, 1.8, 2.4];
 /// Random headings tried per distance.
 pub const STAND_HEADINGS: usize = 20;
 /// How clear of everything the robot must stand, m.
 pub const STAND_CLEARANCE: f32 = 0.01;
+/// How much larger what the robot carries is planned than it is, m: held in a hand servoed
+/// toward its target, it trails and swings as the base drives (a tile caught a wall on a
+/// path planned past it with no room, and its grasp broke).
+pub const CARRY_MARGIN: f32 = 0.03;
 
 /// The robot as it stands now: its base's configuration on the floor, and the shapes of its
 /// parts (base, hands or arm) and of what it holds, in the base's floor frame, which move with
@@ -40,7 +44,14 @@ impl Standing {
         );
         let floor = config.pose().inverse();
         let held = (0..robot.hands()).filter_map(|h| robot.held(h));
-        let mut shapes = shapes_in(world, robot.objects().into_iter().chain(held), floor);
+        let mut shapes = shapes_in(world, robot.objects(), floor);
+        // What the hands carry sways and trails as the base drives: it is kept clear by a margin.
+        let carried = shapes_in(world, held, floor);
+        shapes.extend(
+            carried
+                .into_iter()
+                .map(|(shape, pose)| (inflated(&shape, CARRY_MARGIN), pose)),
+        );
         // A BehaviorRobot's body is stopped where a palm's target with straight fingers would
         // enter something fixed: that shape goes with the base too.
         if let Robot::Behavior(r, _) = robot {
@@ -76,15 +87,17 @@ impl Standing {
         out
     }
 
-    /// Whether every part would stand at least [`STAND_CLEARANCE`] from everything at `c`.
+    /// Whether every part would stand at least [`STAND_CLEARANCE`] from everything at `c`,
+    /// and not within something whose walls it clears.
     pub fn clear_at(&self, world: &World, c: &BaseConfig) -> bool {
         let base = c.pose();
-        self.footprint.shapes.iter().all(|(shape, offset)| {
+        let clear = self.footprint.shapes.iter().all(|(shape, offset)| {
             world
                 .core()
                 .nearest(shape, base * *offset, STAND_CLEARANCE, &self.filter)
                 .is_ok_and(|near| near.is_none())
-        })
+        });
+        clear && !stands_inside(world, &self.filter, c.x, c.y)
     }
 
     /// Whether the eye at `c` sees `object`'s centre before anything else.
@@ -120,10 +133,22 @@ impl Standing {
         reach: f32,
         rng: &mut SimRng,
     ) -> Option<BaseConfig> {
-        let b = world.core().aabb(object);
-        let (min, max) = ([b.mins.x, b.mins.y], [b.maxs.x, b.maxs.y]);
+        self.search(world, object, rng, box_within(world, object, reach))
+    }
+
+    /// As [`Standing::near`], but only where the object's box lies within `reach` across the
+    /// floor: where a hand can act on what it sees (the farther rings of [`STAND_DISTANCES`]
+    /// see a plate on a counter but leave it out of reach).
+    pub fn near_within(
+        &self,
+        world: &World,
+        object: ObjectId,
+        reach: f32,
+        rng: &mut SimRng,
+    ) -> Option<BaseConfig> {
+        let close = box_within(world, object, reach);
         self.search(world, object, rng, |c| {
-            floor_gap(min, max, c.x, c.y) <= reach
+            close(c) && self.sees(world, c, object)
         })
     }
 
@@ -150,11 +175,54 @@ impl Standing {
     }
 }
 
+/// Whether a base configuration stands within `reach` of the object's box across the floor.
+fn box_within(world: &World, object: ObjectId, reach: f32) -> impl Fn(&BaseConfig) -> bool {
+    let b = world.core().aabb(object);
+    let (min, max) = ([b.mins.x, b.mins.y], [b.maxs.x, b.maxs.y]);
+    move |c| floor_gap(min, max, c.x, c.y) <= reach
+}
+
 /// How far (x, y) is from the rectangle `min`–`max` across the floor: 0 inside it.
 pub(crate) fn floor_gap(min: [f32; 2], max: [f32; 2], x: f32, y: f32) -> f32 {
     let dx = (min[0] - x).max(x - max[0]).max(0.0);
     let dy = (min[1] - y).max(y - max[1]).max(0.0);
     dx.hypot(dy)
+}
+
+/// `shape` grown by `margin` on every side (a convex hull, each point pushed out from its
+/// centre).
+fn inflated(shape: &Primitive, margin: f32) -> Primitive {
+    match shape {
+        Primitive::Box { half_extents } => Primitive::Box {
+            half_extents: *half_extents + Vector::splat(margin),
+        },
+        Primitive::Cylinder {
+            radius,
+            half_height,
+        } => Primitive::Cylinder {
+            radius: radius + margin,
+            half_height: half_height + margin,
+        },
+        Primitive::Sphere { radius } => Primitive::Sphere {
+            radius: radius + margin,
+        },
+        Primitive::Capsule {
+            radius,
+            half_height,
+        } => Primitive::Capsule {
+            radius: radius + margin,
+            half_height: *half_height,
+        },
+        Primitive::ConvexHull { points } => {
+            let centre = points.iter().copied().sum::<Vector>() / points.len().max(1) as f32;
+            Primitive::ConvexHull {
+                points: points
+                    .iter()
+                    .map(|&p| p + (p - centre).normalize_or_zero() * margin)
+                    .collect(),
+            }
+        }
+    }
 }
 
 /// The collision shapes of `objects` as they are now, each placed in the frame that `to_frame`

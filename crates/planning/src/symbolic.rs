@@ -287,7 +287,8 @@ fn navigate(
     rng: &mut SimRng,
 ) -> Result<(), Failure> {
     let standing = Standing::of(world, robot);
-    let config = stand_for(world, &standing, object, rng).ok_or(Failure::NoPlaceToStand)?;
+    let config =
+        stand_for(world, &standing, object, REACH_DISTANCE, rng).ok_or(Failure::NoPlaceToStand)?;
     let z = robot.base_pose(world).translation.z;
     let pose = Pose::from_parts(
         Vector::new(config.x, config.y, z),
@@ -296,20 +297,23 @@ fn navigate(
     Ok(robot.teleport(world, pose)?)
 }
 
-/// Where NAVIGATE_TO stands for `object`: facing it and seeing it, else clear within reach of
-/// it; for a floor, a clear place in its room.
+/// Where NAVIGATE_TO stands for `object`: facing it and seeing it within `reach` of it (the
+/// mode's reach), else clear within that reach, else seeing it from farther; for a floor, a
+/// clear place in its room.
 pub(crate) fn stand_for(
     world: &World,
     standing: &Standing,
     object: ObjectId,
+    reach: f32,
     rng: &mut SimRng,
 ) -> Option<BaseConfig> {
     if world.object(object).category == FLOOR_SYNSET {
         stand_in_room(world, standing, object, rng)
     } else {
         standing
-            .near(world, object, rng)
-            .or_else(|| standing.within(world, object, REACH_DISTANCE, rng))
+            .near_within(world, object, reach, rng)
+            .or_else(|| standing.within(world, object, reach, rng))
+            .or_else(|| standing.near(world, object, rng))
     }
 }
 

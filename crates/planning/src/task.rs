@@ -13,7 +13,7 @@
 //! left; Fetch, with one gripper, puts one down to take the other.
 
 use crate::execute::{Mode, RunError, run};
-use crate::manipulate::hand_reaches;
+use crate::manipulate::{hand_reaches, placement_in_reach};
 use crate::navigate::floor_gap;
 use crate::primitive::{Call, Failure, Primitive};
 use crate::symbolic::{closed_container, within};
@@ -65,6 +65,8 @@ pub struct Executed {
     pub reason: Option<String>,
     /// How long the primitive itself took, ms (its check and outcome, not the step after).
     pub ms: f64,
+    /// The episode's steps it took (one for a symbolic primitive: the still step after it).
+    pub steps: u32,
 }
 
 /// A literal the planner gave up on, and why.
@@ -115,6 +117,9 @@ pub struct Solver<'a> {
     following: Option<usize>,
     /// An error that ends the solve (the recording could not be written).
     fatal: Option<RunError>,
+    /// Whether the next approach stands somewhere new even if in reach: a physical grasp or
+    /// placement failed from where the robot stands, and would fail there again.
+    stand_again: bool,
 }
 
 /// Why a step of a recipe failed: a primitive's failure, or something the planner lacks.
@@ -142,6 +147,7 @@ impl<'a> Solver<'a> {
             made: BTreeMap::new(),
             following: None,
             fatal: None,
+            stand_again: false,
         }
     }
 
@@ -344,6 +350,7 @@ impl<'a> Solver<'a> {
             object,
             hand,
         };
+        let before = self.env.steps();
         let outcome = match run(self.env, call, self.mode, self.recorder.as_deref_mut()) {
             Ok(outcome) => outcome,
             Err(e) => {
@@ -363,7 +370,12 @@ impl<'a> Solver<'a> {
             ok: outcome.result.is_ok(),
             reason: outcome.result.as_ref().err().map(Failure::to_string),
             ms: outcome.seconds * 1000.0,
+            steps: self.env.steps() - before,
         };
+        let manipulates = primitive == Primitive::Grasp || primitive.relation().is_some();
+        if self.mode == Mode::Physical && manipulates && !executed.ok {
+            self.stand_again = true;
+        }
         (self.observer)(&executed);
         self.log.push(executed);
         outcome.result.map_err(|e| {
@@ -378,11 +390,23 @@ impl<'a> Solver<'a> {
     /// Stands where `x` is in reach, if it is not: next to it, or next to what holds it, up to
     /// [`NAVIGATE_ATTEMPTS`] times (the 2.0.x primitives' `navigate_if_needed`).
     fn approach(&mut self, x: ObjectId) -> Result<(), Reason> {
+        self.approach_for(x, None)
+    }
+
+    /// As [`Self::approach`]; for a physical `placement` (a PLACE_* call on `x`), in reach
+    /// means within a hand's reach of a place the world's sampler finds, not of the nearest
+    /// corner of `x`'s box (which left an ashcan's inside 1.2 m away).
+    fn approach_for(&mut self, x: ObjectId, placement: Option<Call>) -> Result<(), Reason> {
         let mut last = String::new();
         for _ in 0..NAVIGATE_ATTEMPTS {
             let robot = self.env.robot().ok_or("no robot")?;
-            let near = within(self.world(), robot, x, self.mode.reach())
-                && (self.mode == Mode::Symbolic || hand_reaches(self.world(), robot, x));
+            let near = !std::mem::take(&mut self.stand_again)
+                && within(self.world(), robot, x, self.mode.reach())
+                && (self.mode == Mode::Symbolic
+                    || match &placement {
+                        Some(call) => placement_in_reach(self.env, call),
+                        None => hand_reaches(self.world(), robot, x),
+                    });
             if near {
                 return Ok(());
             }
@@ -482,7 +506,12 @@ impl<'a> Solver<'a> {
         if primitive == Primitive::PlaceOnFloor {
             self.call(Primitive::NavigateTo, y, CARRY)?;
         } else {
-            self.approach(y)?;
+            let call = Call {
+                primitive,
+                object: y,
+                hand: self.carry_hand(),
+            };
+            self.approach_for(y, Some(call))?;
         }
         self.call(primitive, y, CARRY)
     }

@@ -42,7 +42,7 @@ use std::f32::consts::PI;
 
 /// How a recording names the forced grasp of a physical GRASP (see [`grasp`]).
 pub const FORCED_GRASP: &str = "grasp_touching";
-/// How a recording names a hand put back at its target (see [`free_stranded`]).
+/// How a recording names a hand put back at its target (see `free_stranded`).
 pub const HAND_RESET: &str = "reset_hand";
 /// A palm this far from its target is pinned, not trailing, m (it trails by about a step,
 /// ≤ 0.05 m).

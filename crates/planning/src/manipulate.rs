@@ -260,14 +260,12 @@ pub(crate) fn tuck(steps: &mut Stepper<'_>) -> Attempt<()> {
         // would be carried into it).
         let body = planning_body(world, robot, side);
         let line = straight(&HandConfig::of(&here), &goal);
+        let direct = vec![HandConfig::of(&here), goal];
         let path = if line.iter().all(|c| body.clear(world, c)) {
-            vec![HandConfig::of(&here), goal]
+            direct
         } else {
             let seed = u64::from(steps.env.steps());
-            match plan_hand(world, robot, side, [tuck], seed) {
-                Ok(path) => path,
-                Err(_) => vec![HandConfig::of(&here), goal],
-            }
+            plan_hand(world, robot, side, [tuck], seed).unwrap_or(direct)
         };
         let mut poses = Vec::new();
         attempt!(follow(steps, side, &path, &mut poses));
@@ -653,7 +651,7 @@ fn approach_goals(
     let at = grasp_point(world, call.object, shoulder);
     let body = robot.body_pose(world).translation;
     let facing = (at.y - body.y).atan2(at.x - body.x);
-    let near: Vec<Pose> = (0..GRASP_HEADINGS)
+    let mut goals: Vec<Pose> = (0..GRASP_HEADINGS)
         .map(|k| {
             let top = Vector::new(
                 at.x + uniform(rng, -GRASP_JITTER, GRASP_JITTER),
@@ -666,13 +664,12 @@ fn approach_goals(
             Pose::from_parts(top - rotation * GRASP_POINT, rotation)
         })
         .collect();
-    let higher = near
+    let higher: Vec<Pose> = goals
         .iter()
-        .map(|g| Pose::from_parts(g.translation + Vector::Z * APPROACH_RAISE, g.rotation));
-    near.iter()
-        .copied()
-        .chain(higher.collect::<Vec<_>>())
-        .collect()
+        .map(|g| Pose::from_parts(g.translation + Vector::Z * APPROACH_RAISE, g.rotation))
+        .collect();
+    goals.extend(higher);
+    goals
 }
 
 /// Hand poses above poses the world's sampler finds for the held object: each sample as

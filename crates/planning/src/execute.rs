@@ -4,7 +4,7 @@
 //! them is written as they run.
 
 use crate::primitive::{Call, Failure, Primitive, WAIT_STEPS};
-use crate::{manipulate, physical, symbolic};
+use crate::{fetch_manipulate, manipulate, physical, symbolic};
 use behavior_env::record::Recorder;
 use behavior_env::{Env, EnvError, Step};
 use serde::{Deserialize, Serialize};
@@ -13,6 +13,10 @@ use serde::{Deserialize, Serialize};
 /// to be tried on it, m: what a BehaviorRobot's hand (1.2 m from a shoulder 1 m above the
 /// floor) and Fetch's arm reach of a table's far side.
 pub const ARM_REACH: f32 = 1.0;
+/// How far across the floor from Fetch's base the box of an object it stands to take may be, m:
+/// its end effector's workspace ends 0.75 m in front of the base
+/// ([`behavior_robots::WORKSPACE_RADIUS`] about a centre 0.25 m ahead).
+pub const FETCH_ARM_REACH: f32 = 0.7;
 
 /// How primitives act: setting outcomes, or moving the robot through its controllers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -105,10 +109,16 @@ pub fn run(
             Mode::Physical,
             Primitive::Open | Primitive::Close | Primitive::ToggleOn | Primitive::ToggleOff,
         ) => env.edit(|edit| symbolic::apply(edit, &call))?,
+        (Mode::Physical, Primitive::Grasp) if drives_fetch(env) => {
+            fetch_manipulate::grasp(env, &call, recorder.as_deref_mut())?.map(|_| ())
+        }
         (Mode::Physical, Primitive::Grasp) => {
             manipulate::grasp(env, &call, recorder.as_deref_mut())?.map(|_| ())
         }
         (Mode::Physical, p) => match p.relation() {
+            Some(r) if drives_fetch(env) => {
+                fetch_manipulate::place(env, &call, r, recorder.as_deref_mut())?.map(|_| ())
+            }
             Some(r) => manipulate::place(env, &call, r, recorder.as_deref_mut())?.map(|_| ()),
             None => Err(Failure::Unavailable(
                 "physical slice, wipe and soak are not built yet",
@@ -148,6 +158,11 @@ pub fn run(
         seconds,
         step,
     })
+}
+
+/// Whether the episode's robot is a Fetch.
+fn drives_fetch(env: &Env) -> bool {
+    matches!(env.robot(), Some(behavior_robots::Robot::Fetch(..)))
 }
 
 /// The call as a recording says it.

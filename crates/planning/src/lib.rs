@@ -24,9 +24,11 @@
 //! Python, the command line or rendering.
 
 mod action_space;
+mod arm;
 mod base;
 mod error;
 mod execute;
+mod fetch_manipulate;
 mod hand;
 mod manipulate;
 mod navigate;
@@ -37,9 +39,14 @@ mod symbolic;
 mod task;
 
 pub use action_space::{PrimitiveSet, PrimitiveSpace};
+pub use arm::{ARM_RESOLUTION, ArmBody, ArmConfig, ArmSpace};
 pub use base::{BaseConfig, BaseSpace, Footprint, home_extent};
 pub use error::PlanError;
-pub use execute::{ARM_REACH, Mode, Outcome, RecordedCall, RunError, replay_edit, run};
+pub use execute::{
+    ARM_REACH, FETCH_ARM_REACH, Mode, Outcome, RecordedCall, RunError, replay_edit, run,
+};
+pub use fetch_manipulate::{ArmPath, FETCH_APPROACH, FETCH_DESCENT_STEPS};
+pub use fetch_manipulate::{grasp as fetch_grasp, place as fetch_place};
 pub use hand::{HAND_MARGIN, HAND_RESOLUTION, HAND_WEIGHTS, HandBody, HandConfig, HandSpace};
 pub use manipulate::{
     APPROACH_HEIGHT, CLOSE_STEPS, CROUCH, DESCENT_STEP, DESCENT_STEPS, FORCED_GRASP,

@@ -383,7 +383,7 @@ fn hand_side(env: &Env, call: &Call) -> Result<Side, Failure> {
     };
     if let Robot::Fetch(..) = robot {
         return Err(Failure::Unavailable(
-            "Fetch's physical grasp and place are not built yet",
+            "these are the BehaviorRobot's hands; Fetch's arm has fetch_grasp and fetch_place",
         ));
     }
     if robot.space() != ActionSpace::Full {
@@ -445,7 +445,7 @@ fn planning_body(world: &World, robot: &BehaviorRobot, side: Side) -> HandBody {
 /// Where on the top of the object's box the hand goes: the point nearest the shoulder, at
 /// least [`GRASP_INSET`] in from the box's sides (its centre, for a small object), so that a
 /// board is taken by its near end.
-fn grasp_point(world: &World, object: ObjectId, shoulder: Vector) -> Vector {
+pub(crate) fn grasp_point(world: &World, object: ObjectId, shoulder: Vector) -> Vector {
     let b = world.aabb(object);
     let inward = |lo: f32, hi: f32, x: f32| {
         let inset = GRASP_INSET.min(0.5 * (hi - lo));
@@ -672,9 +672,8 @@ fn approach_goals(
     goals
 }
 
-/// Hand poses above poses the world's sampler finds for the held object: each sample as
-/// found and turned half round about its centre (the hand then comes from the other side), at
-/// the heights of [`PLACE_HEIGHTS`].
+/// Hand poses above poses the world's sampler finds for the held object (see
+/// [`poses_above_places`]).
 fn placement_goals(
     world: &World,
     robot: &BehaviorRobot,
@@ -690,7 +689,22 @@ fn placement_goals(
     let grip = world.pose(robot.parts().hand(side)).inverse() * world.pose(held);
     let mut let_go = world.clone();
     Robot::Behavior(robot.clone(), ActionSpace::Full).release_now(&mut let_go, side.index());
-    let mut goals = Vec::new();
+    let poses = poses_above_places(&let_go, held, target, relation, rng)?;
+    Ok(poses.into_iter().map(|p| p * grip.inverse()).collect())
+}
+
+/// Poses of `held` above the places the world's sampler finds for it (in `let_go`, a copy of
+/// the world where the hand has let go of it; [`PLACE_TRIES`] samples): each sample as found
+/// and turned half round about its centre (a hand then comes from the other side), at the
+/// heights of [`PLACE_HEIGHTS`].
+pub(crate) fn poses_above_places(
+    let_go: &World,
+    held: ObjectId,
+    target: ObjectId,
+    relation: Relation,
+    rng: &mut SimRng,
+) -> Result<Vec<Pose>, Failure> {
+    let mut poses = Vec::new();
     let mut last = Failure::NoHandPose;
     for _ in 0..PLACE_TRIES {
         let mut scratch = let_go.clone();
@@ -707,15 +721,17 @@ fn placement_goals(
                 about * placed.rotation,
             );
             for h in PLACE_HEIGHTS {
-                let lifted = Pose::from_parts(turned.translation + Vector::Z * h, turned.rotation);
-                goals.push(lifted * grip.inverse());
+                poses.push(Pose::from_parts(
+                    turned.translation + Vector::Z * h,
+                    turned.rotation,
+                ));
             }
         }
     }
-    if goals.is_empty() {
+    if poses.is_empty() {
         return Err(last);
     }
-    Ok(goals)
+    Ok(poses)
 }
 
 /// A seed for the planner drawn from the call's random numbers.

@@ -7,7 +7,7 @@
 
 use crate::base::{BaseConfig, BaseSpace, home_extent};
 use crate::error::PlanError;
-use crate::execute::{ARM_REACH, RecordedCall, RunError};
+use crate::execute::{ARM_REACH, FETCH_ARM_REACH, RecordedCall, RunError};
 use crate::navigate::Standing;
 use crate::primitive::{Call, Failure};
 use crate::rrt::{PlanParams, Space, plan};
@@ -64,6 +64,7 @@ pub fn drive_to(
     let mut steps = Stepper { env, recorder };
     // Best effort: a hand that cannot get there is planned around where it is.
     let _ = crate::manipulate::tuck(&mut steps)?;
+    let _ = crate::fetch_manipulate::tuck(&mut steps)?;
     let planned = match plan_base(steps.env, call) {
         Ok(path) => path,
         Err(failure) => return Ok(Err(failure)),
@@ -165,7 +166,11 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
     // Hinged and sliding parts — room doors, a cabinet's door left open — are pushed aside on
     // the way: the body is kinematic, a leaf yields on its hinge.
     standing.filter.exclude_bodies.extend(hinged_parts(world));
-    let goal = stand_for(world, &standing, call.object, ARM_REACH, &mut seeded(seed))
+    let reach = match robot {
+        Robot::Fetch(..) => FETCH_ARM_REACH,
+        Robot::Behavior(..) => ARM_REACH,
+    };
+    let goal = stand_for(world, &standing, call.object, reach, &mut seeded(seed))
         .ok_or(Failure::NoPlaceToStand)?;
     let start = standing.config;
     let space = BaseSpace::new(world, standing.footprint, standing.filter, &start, &goal);

@@ -13,6 +13,7 @@
 //! left; Fetch, with one gripper, puts one down to take the other.
 
 use crate::execute::{Mode, RunError, run};
+use crate::fetch_manipulate::reaches as arm_reaches;
 use crate::manipulate::{hand_reaches, placement_in_reach};
 use crate::navigate::floor_gap;
 use crate::primitive::{Call, Failure, Primitive};
@@ -21,6 +22,7 @@ use behavior_bddl::{GroundGoal, Literal, Predicate, PredicateOracle};
 use behavior_core::{Ability, FLOOR_SYNSET};
 use behavior_env::Env;
 use behavior_env::record::Recorder;
+use behavior_robots::Robot;
 use behavior_sim::{BoundWorld, ObjectId, World};
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -403,9 +405,10 @@ impl<'a> Solver<'a> {
             let near = !std::mem::take(&mut self.stand_again)
                 && within(self.world(), robot, x, self.mode.reach())
                 && (self.mode == Mode::Symbolic
-                    || match &placement {
-                        Some(call) => placement_in_reach(self.env, call),
-                        None => hand_reaches(self.world(), robot, x),
+                    || match (robot, &placement) {
+                        (Robot::Fetch(..), _) => arm_reaches(self.env, x, placement.as_ref()),
+                        (_, Some(call)) => placement_in_reach(self.env, call),
+                        (_, None) => hand_reaches(self.world(), robot, x),
                     });
             if near {
                 return Ok(());

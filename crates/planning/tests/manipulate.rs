@@ -9,8 +9,8 @@ mod common;
 use behavior_env::Env;
 use behavior_env::record::{Recorder, read, replay_with};
 use behavior_planning::{
-    Call, Failure, HandConfig, HandSpace, Mode, Primitive, Space, grasp, hand_body, place,
-    replay_edit, run,
+    Call, Failure, HandConfig, HandSpace, Mode, Primitive, Space, fetch_grasp, grasp, hand_body,
+    place, replay_edit, run,
 };
 use behavior_robots::{Robot, RobotKind, Side};
 use behavior_sim::{ObjectId, Relation};
@@ -143,7 +143,7 @@ fn refused_physical_primitives_say_why_and_move_nothing() {
     );
     assert_eq!(reduced.steps(), 0);
 
-    // Fetch's arm is not planned yet: it says so.
+    // The BehaviorRobot's hand primitives refuse Fetch, which has its own arm's.
     let mut fetch = episode(RobotKind::Fetch);
     let book = object(&fetch, "book.n.02_1");
     let gripper = Call {
@@ -155,6 +155,16 @@ fn refused_physical_primitives_say_why_and_move_nothing() {
         matches!(refused, Err(Failure::Unavailable(_))),
         "{refused:?}"
     );
+    // Fetch's own: from where the episode starts the book is out of reach; no step taken.
+    let before = fetch.world().unwrap().pose(book);
+    let steps = fetch.steps();
+    let far = fetch_grasp(&mut fetch, &gripper, None).unwrap();
+    assert!(matches!(far, Err(Failure::Unreachable)), "{far:?}");
+    assert_eq!(fetch.steps(), steps);
+    assert_eq!(fetch.world().unwrap().pose(book), before);
+    let second = Call { hand: 1, ..gripper };
+    let one_hand = fetch_grasp(&mut fetch, &second, None).unwrap();
+    assert!(matches!(one_hand, Err(Failure::NoHand(1))), "{one_hand:?}");
 }
 
 #[test]

@@ -370,6 +370,51 @@ fn wheel_limited((v, w): (f32, f32)) -> ([f32; 2], (f32, f32)) {
 }
 
 /// A base-frame end-effector position kept in the workspace (iGibson's clips).
+/// The head's and arm's positions after one step of `action` from `now`: the head at its
+/// commanded rates, the torso and arm toward the IK solution for the action's end-effector
+/// target (or the closest found, with why it is not exact), each within its maximum velocity.
+fn step_joints(
+    ik: &IkSolver,
+    now: &FetchJoints,
+    action: &FetchAction,
+) -> (FetchJoints, Option<IkError>) {
+    let mut joints = *now;
+    let [pan, tilt] = action.head();
+    joints.head = [
+        joints.head[0] + pan * STEP_SECONDS,
+        joints.head[1] + tilt * STEP_SECONDS,
+    ];
+    let mut error = None;
+    if action.moves_eef() {
+        let eef = now.eef();
+        let (dp, dr) = action.eef();
+        let target = Pose::from_parts(
+            in_workspace(eef.translation + dp),
+            (dr * eef.rotation).normalize(),
+        );
+        let goal = match ik.solve(now, &target) {
+            Ok(q) => q,
+            Err(e) => {
+                let closest = match &e {
+                    IkError::Unreachable { closest, .. } => *closest,
+                    IkError::NotFinite => *now,
+                };
+                error = Some(e);
+                closest
+            }
+        };
+        joints.torso = approach(
+            joints.torso,
+            goal.torso,
+            FetchJoint::TorsoLift.info().max_velocity,
+        );
+        for (k, joint) in FetchJoint::ARM.iter().enumerate() {
+            joints.arm[k] = approach(joints.arm[k], goal.arm[k], joint.info().max_velocity);
+        }
+    }
+    (joints.clamped(), error)
+}
+
 fn in_workspace(p: Vector) -> Vector {
     let centre = Vector::new(WORKSPACE_CENTRE[0], WORKSPACE_CENTRE[1], 0.0);
     let mut flat = Vector::new(p.x, p.y, 0.0) - centre;
@@ -453,50 +498,18 @@ impl Fetch {
 
     /// The head's and arm's positions at the end of the step the action asks for.
     fn joint_targets(&mut self, action: &FetchAction) -> FetchJoints {
-        let mut joints = self.now.joints;
-        let [pan, tilt] = action.head();
-        joints.head = [
-            joints.head[0] + pan * STEP_SECONDS,
-            joints.head[1] + tilt * STEP_SECONDS,
-        ];
+        let (joints, error) = step_joints(&self.ik, &self.now.joints, action);
         if action.moves_eef() {
-            let goal = self.ik_goal(action);
-            joints.torso = approach(
-                joints.torso,
-                goal.torso,
-                FetchJoint::TorsoLift.info().max_velocity,
-            );
-            for (k, joint) in FetchJoint::ARM.iter().enumerate() {
-                let v = joint.info().max_velocity;
-                joints.arm[k] = approach(joints.arm[k], goal.arm[k], v);
-            }
+            self.ik_error = error;
         }
-        joints.clamped()
+        joints
     }
 
-    /// The IK solution for the action's end-effector target (or the closest found).
-    fn ik_goal(&mut self, action: &FetchAction) -> FetchJoints {
-        let now = self.now.joints;
-        let eef = now.eef();
-        let (dp, dr) = action.eef();
-        let target = Pose::from_parts(
-            in_workspace(eef.translation + dp),
-            (dr * eef.rotation).normalize(),
-        );
-        match self.ik.solve(&now, &target) {
-            Ok(q) => {
-                self.ik_error = None;
-                q
-            }
-            Err(error) => {
-                let closest = match &error {
-                    IkError::Unreachable { closest, .. } => *closest,
-                    IkError::NotFinite => now,
-                };
-                self.ik_error = Some(error);
-                closest
-            }
-        }
+    /// Where one step of `action` takes the torso, head and arm from `joints` if nothing fixed
+    /// is in their way: what the controller does, without a world, for planners that predict
+    /// an executed path.
+    pub fn joints_after(&self, joints: &FetchJoints, action: &FetchAction) -> FetchJoints {
+        step_joints(&self.ik, joints, action).0
     }
 
     /// `wanted` as far as fixed bodies let it be: all of it, or the joints' motion without the
@@ -814,6 +827,59 @@ impl Fetch {
         Ok(())
     }
 
+    /// Holds `object` where it is, if the palm or a finger touches it: the forced assisted
+    /// grasp after a physical GRASP closed the gripper (the BehaviorRobot's, which asks for
+    /// contact too), attached at the middle of those contacts.
+    pub(crate) fn grasp_touching(
+        &mut self,
+        world: &mut World,
+        object: ObjectId,
+    ) -> Result<(), MagicError> {
+        if let Some(grasp) = self.grasp {
+            return Err(MagicError::HandFull(grasp.body.object));
+        }
+        let gripper = self.parts.gripper();
+        let parts = [BodyRef::from(gripper)]
+            .into_iter()
+            .chain(FINGER_LINKS.map(|l| BodyRef::link(gripper, l)));
+        let mut points = Vec::new();
+        let mut body = None;
+        for part in parts {
+            for c in world.core().contacts(part)? {
+                if let Some(b) = c.other.filter(|b| b.object == object) {
+                    points.push(c.point);
+                    body = Some(body.map_or(b, |old: BodyRef| old.min(b)));
+                }
+            }
+        }
+        let body = body.ok_or(MagicError::NotTouching(object))?;
+        let kind = self
+            .rules
+            .holdable(world, body)
+            .filter(|_| !self.parts.all().contains(&object))
+            .ok_or(MagicError::NotHoldable(object))?;
+        let at = points.iter().copied().sum::<Vector>() / points.len() as f32;
+        let spec = AttachmentSpec {
+            holder: BodyRef::from(gripper),
+            held: body,
+            at,
+            kind,
+            max_force: self.rules.max_force(kind),
+        };
+        let attachment = world.core_mut().attach(spec)?;
+        let bodies = [BodyRef::from(gripper)]
+            .into_iter()
+            .chain(FINGER_LINKS.map(|l| BodyRef::link(gripper, l)));
+        for part in bodies {
+            let _ = world.core_mut().ignore_contacts(part, body, true);
+        }
+        let [right, _] = self.fingers(world);
+        self.drive_fingers(world, right.clamp(0.0, FINGER_OPEN));
+        self.gripper = -1.0;
+        self.grasp = Some(FetchGrasp { body, attachment });
+        Ok(())
+    }
+
     /// Detaches what the gripper holds and opens it.
     pub(crate) fn release_now(&mut self, world: &mut World) -> Option<ObjectId> {
         self.gripper = 1.0;
@@ -849,6 +915,24 @@ mod tests {
         assert!(v < 1.0 && w > 0.0);
         let (_, straight) = wheel_limited((1.0, 0.0));
         assert!((straight.0 - 1.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn joints_after_predicts_what_a_step_does_to_the_arm() {
+        let mut world = World::default();
+        let mut fetch = Fetch::add(&mut world, Pose::IDENTITY).unwrap();
+        let mut values = [0.0; crate::FETCH_ACTION_DIM];
+        values[FetchAction::EEF_POSITION.start] = 1.0;
+        values[FetchAction::EEF_ROTATION.start + 2] = -0.5;
+        values[FetchAction::HEAD.start] = 0.3;
+        values[FetchAction::GRIPPER] = 1.0;
+        let action = FetchAction::new(&values).unwrap();
+        for _ in 0..5 {
+            let predicted = fetch.joints_after(&fetch.joints(), &action);
+            fetch.step(&mut world, &values).unwrap();
+            assert_eq!(fetch.joints(), predicted);
+        }
+        assert_ne!(fetch.joints(), FetchJoints::default(), "the arm moved");
     }
 
     #[test]

@@ -64,7 +64,8 @@ impl Robot {
 
     /// Holds `object` in hand `hand` where it is, if the hand touches it: the original's
     /// forced assisted grasp after a physical GRASP closed the hand (it also asks for contact,
-    /// not for the assisted grasp's rays). A BehaviorRobot's hand only, for now.
+    /// not for the assisted grasp's rays). Fetch has one hand, 0: its palm or a finger must
+    /// touch the object.
     pub fn grasp_touching(
         &mut self,
         world: &mut behavior_sim::World,
@@ -73,6 +74,7 @@ impl Robot {
     ) -> Result<(), MagicError> {
         match self {
             Robot::Behavior(robot, _) => robot.grasp_touching(world, side(hand)?, object),
+            Robot::Fetch(robot, _) if hand == 0 => robot.grasp_touching(world, object),
             Robot::Fetch(..) => Err(MagicError::NoHand(hand)),
         }
     }

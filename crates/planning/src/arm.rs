@@ -1,0 +1,305 @@
+//! Fetch's torso and arm as an 8-D joint space — the torso lift and the seven arm joints —
+//! for the arm planner of Fetch's physical primitives. The links are posed by Fetch's own
+//! forward kinematics ([`FetchJoints::link_poses`]) on a base that stays where it is, and
+//! checked with what the gripper holds against the world's shapes, without stepping.
+//!
+//! The original plans only the BehaviorRobot's hand for its primitives; for Fetch we plan as
+//! pybullet-planning plans an arm: joint space, unit weights, a resolution of 0.05 (rad, or m for
+//! the torso), samples within the joint limits (a continuous joint within half a turn either
+//! way of where it starts). The arm's links do not collide with the robot's own base and torso
+//! in the robot model (its parts are kinematic bodies, placed by forward kinematics), so the
+//! planner does not check that either; what the gripper holds is kept clear of the base, which
+//! it would hit.
+
+use crate::rrt::Space;
+use behavior_core::rng::{SimRng, uniform};
+use behavior_robots::{
+    Fetch, FetchJoint, FetchJoints, FetchLink, WORKSPACE_CENTRE, WORKSPACE_HEIGHT, WORKSPACE_RADIUS,
+};
+use behavior_sim::{ObjectId, Primitive, QueryFilter, World};
+use rapier3d::math::{Pose, Vector};
+use std::f32::consts::PI;
+
+/// How far apart the checked configurations of an arm motion are, rad (m for the torso).
+pub const ARM_RESOLUTION: f32 = 0.05;
+
+/// Fetch's torso lift, m, and its seven arm joints, rad, shoulder pan first.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ArmConfig(pub [f32; 8]);
+
+impl ArmConfig {
+    /// The torso and arm positions of `joints`.
+    pub fn of(joints: &FetchJoints) -> ArmConfig {
+        ArmConfig(std::array::from_fn(|k| {
+            if k == 0 {
+                joints.torso
+            } else {
+                joints.arm[k - 1]
+            }
+        }))
+    }
+
+    /// All of Fetch's kinematic joints: these, with the head at `head`.
+    pub fn joints(&self, head: [f32; 2]) -> FetchJoints {
+        FetchJoints {
+            torso: self.0[0],
+            head,
+            arm: std::array::from_fn(|k| self.0[k + 1]),
+        }
+    }
+}
+
+/// The joints in [`ArmConfig`]'s order.
+const ARM_JOINTS: [FetchJoint; 8] = [
+    FetchJoint::TorsoLift,
+    FetchJoint::ShoulderPan,
+    FetchJoint::ShoulderLift,
+    FetchJoint::UpperarmRoll,
+    FetchJoint::ElbowFlex,
+    FetchJoint::ForearmRoll,
+    FetchJoint::WristFlex,
+    FetchJoint::WristRoll,
+];
+
+/// The links the torso and arm move ([`FetchLink::ALL`] from the torso on: the head rides on
+/// the torso).
+const MOVING: std::ops::Range<usize> = 1..behavior_robots::FETCH_LINKS;
+
+/// The box the finger pads sweep over their travel, in the gripper's frame (Fetch's own
+/// blocking box: pads 6 × 1.4 × 2.6 cm, each travelling 5 cm out).
+fn finger_sweep() -> (Primitive, Pose) {
+    let half_extents = Vector::new(0.03, 0.0643, 0.01315);
+    (
+        Primitive::Box { half_extents },
+        Pose::from_translation(Vector::new(0.001, 0.0, 0.0)),
+    )
+}
+
+/// Fetch's moving links and what the gripper holds, as the arm planner moves them.
+#[derive(Clone, Debug)]
+pub struct ArmBody {
+    /// Where the base stands, in the world.
+    pub base: Pose,
+    /// The head's pan and tilt, which the arm's motion keeps.
+    pub head: [f32; 2],
+    /// Each moving link's shapes in its own frame, in [`FetchLink::ALL`] order from the torso.
+    pub links: Vec<Vec<(Primitive, Pose)>>,
+    /// What the gripper holds, in the gripper's frame.
+    pub held: Vec<(Primitive, Pose)>,
+    /// What the links' checks ignore: the robot and what it holds.
+    pub filter: QueryFilter,
+    /// What the held object's checks ignore: itself and the robot's moving links (not its
+    /// base, which it would hit).
+    pub held_filter: QueryFilter,
+}
+
+impl ArmBody {
+    /// Fetch's arm as it stands in `world`, holding what it holds.
+    pub fn of(world: &World, fetch: &Fetch) -> ArmBody {
+        let parts = fetch.parts();
+        let shapes =
+            |id: ObjectId| crate::navigate::shapes_in(world, [id], world.pose(id).inverse());
+        let mut links: Vec<_> = MOVING
+            .map(|k| shapes(parts.link(FetchLink::ALL[k])))
+            .collect();
+        // The robot keeps the fingers' whole travel out of fixed bodies, open or closed.
+        if let Some(gripper) = links.last_mut() {
+            gripper.push(finger_sweep());
+        }
+        let held = fetch.holding().map(|b| b.object);
+        let gripper = world.pose(parts.gripper()).inverse();
+        let mut ignored = parts.all().to_vec();
+        ignored.extend(held);
+        let moving: Vec<ObjectId> = MOVING
+            .map(|k| parts.link(FetchLink::ALL[k]))
+            .chain(held)
+            .collect();
+        ArmBody {
+            base: fetch.base_pose(world),
+            head: fetch.joints().head,
+            links,
+            held: crate::navigate::shapes_in(world, held, gripper),
+            filter: QueryFilter::excluding(&ignored),
+            held_filter: QueryFilter::excluding(&moving),
+        }
+    }
+
+    /// Whether the moving links and what the gripper holds touch nothing at `c`, and what it
+    /// holds keeps clear of the base.
+    pub fn clear(&self, world: &World, c: &ArmConfig) -> bool {
+        if !c.0.iter().all(|x| x.is_finite()) {
+            return false;
+        }
+        let poses = c.joints(self.head).link_poses();
+        let core = world.core();
+        let free = |shape: &Primitive, pose: Pose, filter: &QueryFilter| {
+            core.overlaps(shape, pose, filter)
+                .is_ok_and(|hits| hits.is_empty())
+        };
+        let links = self.links.iter().zip(MOVING).all(|(shapes, k)| {
+            let at = self.base * poses[k];
+            shapes
+                .iter()
+                .all(|(s, offset)| free(s, at * *offset, &self.filter))
+        });
+        let gripper = self.base * poses[FetchLink::Gripper as usize];
+        links
+            && self
+                .held
+                .iter()
+                .all(|(s, offset)| free(s, gripper * *offset, &self.held_filter))
+    }
+
+    /// The end effector's pose in the world at `c`.
+    pub fn eef(&self, c: &ArmConfig) -> Pose {
+        self.base * c.joints(self.head).eef()
+    }
+}
+
+/// Whether Fetch's end-effector controller moves to `p` (base frame): it keeps its targets
+/// within [`WORKSPACE_RADIUS`] of [`WORKSPACE_CENTRE`] and between the [`WORKSPACE_HEIGHT`]s,
+/// and a path through a configuration outside would be cut short there.
+pub fn in_workspace(p: Vector) -> bool {
+    let [cx, cy] = WORKSPACE_CENTRE;
+    let [low, high] = WORKSPACE_HEIGHT;
+    (p.x - cx).hypot(p.y - cy) <= WORKSPACE_RADIUS && (low..=high).contains(&p.z)
+}
+
+/// Fetch's arm moving among the world's objects, its base still, its end effector within the
+/// controller's workspace.
+pub struct ArmSpace<'w> {
+    world: &'w World,
+    body: ArmBody,
+    min: [f32; 8],
+    max: [f32; 8],
+}
+
+impl<'w> ArmSpace<'w> {
+    /// The space of the arm from `start`: joint limits, and half a turn either way of the
+    /// start for a continuous joint.
+    pub fn new(world: &'w World, body: ArmBody, start: &ArmConfig) -> ArmSpace<'w> {
+        let bounds = |k: usize| match ARM_JOINTS[k].info().limits {
+            Some(limits) => limits,
+            None => [start.0[k] - PI, start.0[k] + PI],
+        };
+        ArmSpace {
+            world,
+            body,
+            min: std::array::from_fn(|k| bounds(k)[0]),
+            max: std::array::from_fn(|k| bounds(k)[1]),
+        }
+    }
+
+    /// The arm's body.
+    pub fn body(&self) -> &ArmBody {
+        &self.body
+    }
+
+    /// Whether `c` lies within the joints' limits.
+    fn within(&self, c: &ArmConfig) -> bool {
+        (0..8).all(|k| (self.min[k]..=self.max[k]).contains(&c.0[k]))
+    }
+}
+
+impl Space for ArmSpace<'_> {
+    type Config = ArmConfig;
+
+    fn distance(&self, a: &ArmConfig, b: &ArmConfig) -> f32 {
+        a.0.iter()
+            .zip(b.0)
+            .map(|(x, y)| (x - y) * (x - y))
+            .sum::<f32>()
+            .sqrt()
+    }
+
+    fn sample(&self, rng: &mut SimRng) -> ArmConfig {
+        ArmConfig(std::array::from_fn(|k| {
+            uniform(rng, self.min[k], self.max[k])
+        }))
+    }
+
+    fn steps(&self, a: &ArmConfig, b: &ArmConfig, resolution: f32) -> Vec<ArmConfig> {
+        let longest =
+            a.0.iter()
+                .zip(b.0)
+                .fold(0.0f32, |m, (x, y)| m.max((y - x).abs()));
+        let n = (longest / resolution).ceil() as usize;
+        let mut out: Vec<ArmConfig> = (1..n)
+            .map(|i| {
+                let t = i as f32 / n as f32;
+                ArmConfig(std::array::from_fn(|k| a.0[k] + (b.0[k] - a.0[k]) * t))
+            })
+            .collect();
+        if a != b {
+            out.push(*b);
+        }
+        out
+    }
+
+    fn free(&self, c: &ArmConfig) -> bool {
+        self.within(c)
+            && in_workspace(c.joints(self.body.head).eef().translation)
+            && self.body.clear(self.world, c)
+    }
+
+    fn resolution(&self) -> f32 {
+        ARM_RESOLUTION
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use behavior_sim::{BodyKind, ObjectSpec, Part};
+
+    fn fetch_in(world: &mut World) -> Fetch {
+        Fetch::add(world, Pose::IDENTITY).unwrap()
+    }
+
+    #[test]
+    fn the_start_pose_is_free_and_a_wall_through_the_gripper_is_not() {
+        let mut world = World::default();
+        let fetch = fetch_in(&mut world);
+        let body = ArmBody::of(&world, &fetch);
+        let start = ArmConfig::of(&fetch.joints());
+        assert!(body.clear(&world, &start));
+        let at = body.eef(&start).translation;
+        let wall = ObjectSpec::new(
+            "wall",
+            "wall.n.01",
+            vec![Part::at(
+                Primitive::Box {
+                    half_extents: Vector::new(0.02, 1.0, 1.0),
+                },
+                Vector::ZERO,
+            )],
+        )
+        .body(BodyKind::Fixed);
+        let mut spec = wall;
+        spec.pose = Pose::from_translation(at);
+        world.add(spec).unwrap();
+        let body = ArmBody::of(&world, &fetch);
+        assert!(!body.clear(&world, &start));
+    }
+
+    #[test]
+    fn steps_are_no_longer_than_the_resolution_and_end_at_the_goal() {
+        let world = World::default();
+        let mut w = world.clone();
+        let fetch = fetch_in(&mut w);
+        let body = ArmBody::of(&w, &fetch);
+        let a = ArmConfig::of(&fetch.joints());
+        let mut b = a;
+        b.0[1] += 0.33;
+        b.0[0] += 0.01;
+        let space = ArmSpace::new(&world, body, &a);
+        let steps = space.steps(&a, &b, ARM_RESOLUTION);
+        assert_eq!(steps.len(), 7);
+        assert_eq!(*steps.last().unwrap(), b);
+        let mut previous = a;
+        for s in &steps {
+            assert!(space.distance(&previous, s) <= ARM_RESOLUTION * 1.01);
+            previous = *s;
+        }
+    }
+}

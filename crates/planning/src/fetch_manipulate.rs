@@ -15,11 +15,13 @@
 //!   gripper let go), the arm planned with it to [`crate::PLACE_HEIGHT`] above one, the gripper
 //!   opened, [`SETTLE_STEPS`] steps to settle, straight up and back.
 //!
-//! Executing a joint path through an end-effector controller: each configuration's end-effector
-//! pose is the next target, and the action asks for what the controller's gain
-//! ([`ARM_GAIN`]) turns into that move in one step, within the action's range. The IK keeps the
-//! arm near the planned joints (it starts from the current ones), not on them: the executed
-//! configurations are kept ([`ArmPath::executed`]) and are what the tests check for collisions.
+//! Executing through an end-effector controller: each way's end-effector poses are the
+//! targets, and the action asks for what the controller's gain ([`ARM_GAIN`]) turns into that
+//! move in one step, within the action's range. The controller's IK pulls the arm toward its
+//! rest pose in the null space, so it does not follow a joint-space plan joint for joint: every
+//! way is first predicted step by step with the robot's own joint update
+//! ([`Fetch::joints_after`]) and each predicted configuration checked free; only a way that
+//! arrives free is executed, and the execution then is exactly the prediction.
 
 use crate::arm::{ArmBody, ArmConfig, ArmSpace, in_workspace};
 use crate::execute::{RecordedCall, RunError};
@@ -64,8 +66,9 @@ const LIFT_OFF: f32 = 0.1;
 /// How far the gripper goes straight up after letting go, m.
 const LEAVE: f32 = 0.1;
 
-/// An arm's motion: the configurations planned, those the arm passed executing them, step by
-/// step, and those of the rest of the primitive (the descent, the lift, the way back).
+/// An arm's motion: where it started and the goal configuration it was taken to, the
+/// configurations it passed on the way, step by step, and those of the rest of the primitive
+/// (the descent, the lift, the way back).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct ArmPath {
     pub planned: Vec<ArmConfig>,

@@ -49,17 +49,13 @@ impl ArmConfig {
     }
 }
 
-/// The joints in [`ArmConfig`]'s order.
-const ARM_JOINTS: [FetchJoint; 8] = [
-    FetchJoint::TorsoLift,
-    FetchJoint::ShoulderPan,
-    FetchJoint::ShoulderLift,
-    FetchJoint::UpperarmRoll,
-    FetchJoint::ElbowFlex,
-    FetchJoint::ForearmRoll,
-    FetchJoint::WristFlex,
-    FetchJoint::WristRoll,
-];
+/// The joint of [`ArmConfig`]'s coordinate `k`.
+fn joint(k: usize) -> FetchJoint {
+    match k {
+        0 => FetchJoint::TorsoLift,
+        _ => FetchJoint::ARM[k - 1],
+    }
+}
 
 /// The links the torso and arm move ([`FetchLink::ALL`] from the torso on: the head rides on
 /// the torso).
@@ -178,7 +174,7 @@ impl<'w> ArmSpace<'w> {
     /// The space of the arm from `start`: joint limits, and half a turn either way of the
     /// start for a continuous joint.
     pub fn new(world: &'w World, body: ArmBody, start: &ArmConfig) -> ArmSpace<'w> {
-        let bounds = |k: usize| match ARM_JOINTS[k].info().limits {
+        let bounds = |k: usize| match joint(k).info().limits {
             Some(limits) => limits,
             None => [start.0[k] - PI, start.0[k] + PI],
         };

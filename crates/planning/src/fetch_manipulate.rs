@@ -24,15 +24,14 @@
 //! arrives free is executed, and the execution then is exactly the prediction.
 
 use crate::arm::{ArmBody, ArmConfig, ArmSpace, in_workspace};
-use crate::execute::{RecordedCall, RunError};
+use crate::execute::RunError;
 use crate::manipulate::{
-    CLOSE_STEPS, FORCED_GRASP, GRASP_JITTER, RELEASE_STEPS, SETTLE_STEPS, grasp_point,
-    poses_above_places,
+    CLOSE_STEPS, GRASP_JITTER, Placing, RELEASE_STEPS, SETTLE_STEPS, grasp_point, holder_goals,
 };
-use crate::physical::{PHYSICAL_BUDGET, Stepper};
+use crate::physical::{Attempt, PHYSICAL_BUDGET, Stepper, attempt, call_rng, force_grasp};
 use crate::primitive::{Call, Failure};
 use crate::rrt::{PlanParams, Space, plan};
-use crate::symbolic::{call_seed, check};
+use crate::symbolic::check;
 use behavior_core::rng::{SimRng, seeded, uniform};
 use behavior_env::Env;
 use behavior_env::record::Recorder;
@@ -74,17 +73,6 @@ pub struct ArmPath {
     pub planned: Vec<ArmConfig>,
     pub executed: Vec<ArmConfig>,
     pub after: Vec<ArmConfig>,
-}
-
-type Attempt<T> = Result<Result<T, Failure>, RunError>;
-
-macro_rules! attempt {
-    ($e:expr) => {
-        match $e? {
-            Ok(v) => v,
-            Err(failure) => return Ok(Err(failure)),
-        }
-    };
 }
 
 /// GRASP with Fetch's arm and physics (see the module docs).
@@ -208,20 +196,11 @@ fn fetch(env: &Env) -> Option<(&World, &Fetch)> {
     }
 }
 
-fn call_rng(env: &Env, call: &Call) -> SimRng {
-    seeded(call_seed(
-        env.start().map_or(0, |s| s.seed),
-        env.steps(),
-        call,
-    ))
-}
-
-/// End-effector poses in the world over the object, best first: for each of [`PITCHES`],
-/// the gripper pointing at the top of its box (near its end nearest the base, for a long
-/// one), jittered, the fingertips [`FETCH_APPROACH`] short of it; pointing straight down
-/// first, the fingers closing across the box's narrower side, then the other, then at random
-/// headings; tilted, from the base's side. Straight down reaches least far: a hamburger 0.9 m
-/// into a counter is out of reach from above but not from the front.
+/// End-effector poses in the world over the object, best first, the gripper pointing at the
+/// top of its box (near its end nearest the base, for a long one), jittered, the fingertips
+/// [`FETCH_APPROACH`] short of it: straight down, the fingers closing across the box's narrower
+/// side, then the other, then at random headings; then tilted by each of [`PITCHES`] from the
+/// base's side (straight down, a hamburger 0.98 m ahead had no IK solution within 0.27 m).
 fn grasp_goals(world: &World, fetch: &Fetch, object: ObjectId, rng: &mut SimRng) -> Vec<Pose> {
     let base = fetch.base_pose(world).translation;
     let at = grasp_point(world, object, base);
@@ -261,7 +240,7 @@ fn pointing(heading: f32, pitch: f32) -> Rotation {
 }
 
 /// End-effector poses in the world that hold the held object above the places the world's
-/// sampler finds for it (see [`poses_above_places`]).
+/// sampler finds for it (see [`holder_goals`]).
 fn placement_goals(
     world: &World,
     fetch: &Fetch,
@@ -269,15 +248,14 @@ fn placement_goals(
     relation: Relation,
     rng: &mut SimRng,
 ) -> Result<Vec<Pose>, Failure> {
-    let held = fetch
-        .holding()
-        .map(|b| b.object)
-        .ok_or(Failure::HandEmpty)?;
-    let grip = world.pose(fetch.parts().gripper()).inverse() * world.pose(held);
-    let mut let_go = world.clone();
-    Robot::Fetch(fetch.clone(), ActionSpace::Full).release_now(&mut let_go, 0);
-    let poses = poses_above_places(&let_go, held, target, relation, rng)?;
-    Ok(poses.into_iter().map(|p| p * grip.inverse()).collect())
+    let embodied = Robot::Fetch(fetch.clone(), ActionSpace::Full);
+    let placing = Placing {
+        hand: 0,
+        holder: fetch.parts().gripper(),
+        target,
+        relation,
+    };
+    holder_goals(world, &embodied, &placing, rng)
 }
 
 /// The arm's free configuration that puts the end effector at `goal` (in the world), by IK
@@ -294,8 +272,8 @@ fn solve(world: &World, fetch: &Fetch, body: &ArmBody, goal: &Pose) -> Option<Ar
 
 /// Fetch's arm folded over its base before it drives, as the real robot's `tuck_arm` folds
 /// it (reference: robots §1.6, iGibson's tucked joints), the torso where it is: unfolded, the
-/// BEHAVIOR start pose holds the gripper 0.55 m ahead at a counter's height, and the base then
-/// stands no nearer a counter than that. Planned with what the gripper holds; where no plan
+/// BEHAVIOR start pose holds the gripper 0.55 m ahead at a counter's height, and every stand
+/// found with it left a hamburger on a counter 0.9 m from the base. Planned with what the gripper holds; where no plan
 /// gets there, the arm stays.
 pub(crate) fn tuck(steps: &mut Stepper<'_>) -> Attempt<()> {
     let Some((world, fetch)) = fetch(steps.env) else {
@@ -318,11 +296,7 @@ pub(crate) fn tuck(steps: &mut Stepper<'_>) -> Attempt<()> {
     let Ok(planned) = plan_arm_to(world, fetch, body, tucked, &mut rng) else {
         return Ok(Ok(()));
     };
-    let targets: Vec<Pose> = planned
-        .iter()
-        .skip(1)
-        .map(|c| eef_in_base(steps.env, c))
-        .collect();
+    let targets = eef_targets(steps.env, &planned);
     move_to(steps, &targets, gripper, true, &mut Vec::new())
 }
 
@@ -363,8 +337,7 @@ fn reach(
         let mut ways = vec![vec![local], vec![over, local]];
         let planned = plan_arm_to(world, fetch, body, config, rng);
         if let Ok(planned) = &planned {
-            let targets = planned.iter().skip(1);
-            ways.push(targets.map(|c| eef_in_base(steps.env, c)).collect());
+            ways.push(eef_targets(steps.env, planned));
         }
         let Some((targets, actions)) = ways.into_iter().find_map(|targets| {
             let actions = prepare(steps.env, &targets, gripper, true)?;
@@ -416,10 +389,15 @@ fn plan_arm_to(
     Ok(dense)
 }
 
-/// The end effector's pose in the base frame at `c`, the head as it is.
-fn eef_in_base(env: &Env, c: &ArmConfig) -> Pose {
+/// The end effector's poses in the base frame along a planned path, after its start: the
+/// targets the controller is given.
+fn eef_targets(env: &Env, planned: &[ArmConfig]) -> Vec<Pose> {
     let head = fetch(env).map_or([0.0; 2], |(_, f)| f.joints().head);
-    c.joints(head).eef()
+    planned
+        .iter()
+        .skip(1)
+        .map(|c| c.joints(head).eef())
+        .collect()
 }
 
 /// The end effector's pose in the base frame now.
@@ -592,29 +570,13 @@ fn descend(
 }
 
 /// Closes the gripper until it holds the object; touching it and not holding it once closed,
-/// forces the grasp (recorded as the edit [`FORCED_GRASP`]).
+/// forces the grasp ([`force_grasp`]).
 fn close(steps: &mut Stepper<'_>, call: &Call) -> Result<(), RunError> {
     let holds = |env: &Env| fetch(env).is_some_and(|(_, f)| f.is_holding(call.object));
     if hold(steps, CLOSE_STEPS, CLOSED, holds)?.is_err() || holds(steps.env) {
         return Ok(());
     }
-    let forced = steps.env.edit(|edit| {
-        edit.robot
-            .grasp_touching(edit.world, 0, call.object)
-            .is_ok()
-    })?;
-    if forced {
-        let object = steps
-            .env
-            .world()
-            .map(|w| w.object(call.object).name.clone());
-        steps.record_edit(&RecordedCall {
-            primitive: FORCED_GRASP.to_string(),
-            object: object.unwrap_or_default(),
-            hand: 0,
-        })?;
-    }
-    Ok(())
+    force_grasp(steps, call)
 }
 
 /// Opens the gripper until it holds nothing and the fingers are apart.
@@ -657,11 +619,7 @@ fn come_back(
         Ok(planned) => planned,
         Err(failure) => return Ok(Err(failure)),
     };
-    let targets: Vec<Pose> = planned
-        .iter()
-        .skip(1)
-        .map(|c| eef_in_base(steps.env, c))
-        .collect();
+    let targets = eef_targets(steps.env, &planned);
     move_to(steps, &targets, gripper, true, executed)
 }
 

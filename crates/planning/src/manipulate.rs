@@ -27,11 +27,13 @@
 use crate::execute::{RecordedCall, RunError};
 use crate::hand::{HandBody, HandConfig, HandSpace};
 use crate::navigate::shapes_in;
-use crate::physical::{PHYSICAL_BUDGET, STEPS_PER_WAYPOINT, Stepper};
+use crate::physical::{
+    Attempt, PHYSICAL_BUDGET, STEPS_PER_WAYPOINT, Stepper, attempt, call_rng, force_grasp,
+};
 use crate::primitive::{Call, Failure};
 use crate::rrt::{PlanParams, Space, plan};
-use crate::symbolic::{call_seed, check, put};
-use behavior_core::rng::{SimRng, seeded, uniform};
+use crate::symbolic::{check, put};
+use behavior_core::rng::{SimRng, uniform};
 use behavior_env::Env;
 use behavior_env::record::Recorder;
 use behavior_robots::{ACTION_SCALE, Action, ActionSpace, BehaviorRobot, HAND_REACH, Robot, Side};
@@ -113,18 +115,6 @@ pub struct HandPath {
     pub planned: Vec<HandConfig>,
     pub executed: Vec<Pose>,
     pub after: Vec<Pose>,
-}
-
-type Attempt<T> = Result<Result<T, Failure>, RunError>;
-
-/// Unwraps a step's outcome: a failed primitive returns its failure, a failed run its error.
-macro_rules! attempt {
-    ($e:expr) => {
-        match $e? {
-            Ok(v) => v,
-            Err(failure) => return Ok(Err(failure)),
-        }
-    };
 }
 
 /// GRASP with physics (see the module docs). The paths it planned and executed come back.
@@ -299,15 +289,6 @@ fn free_stranded(steps: &mut Stepper<'_>) -> Result<(), RunError> {
         }
     }
     Ok(())
-}
-
-/// The call's own random numbers (the same episode, step and call draw the same).
-fn call_rng(env: &Env, call: &Call) -> SimRng {
-    seeded(call_seed(
-        env.start().map_or(0, |s| s.seed),
-        env.steps(),
-        call,
-    ))
 }
 
 /// Where a physical primitive's hand got to: how far the body went down for it (up, if
@@ -673,7 +654,7 @@ fn approach_goals(
 }
 
 /// Hand poses above poses the world's sampler finds for the held object (see
-/// [`poses_above_places`]).
+/// [`holder_goals`]).
 fn placement_goals(
     world: &World,
     robot: &BehaviorRobot,
@@ -682,13 +663,39 @@ fn placement_goals(
     side: Side,
     rng: &mut SimRng,
 ) -> Result<Vec<Pose>, Failure> {
-    let held = robot
-        .holding(side)
-        .map(|b| b.object)
-        .ok_or(Failure::HandEmpty)?;
-    let grip = world.pose(robot.parts().hand(side)).inverse() * world.pose(held);
+    let embodied = Robot::Behavior(robot.clone(), ActionSpace::Full);
+    let placing = Placing {
+        hand: side.index(),
+        holder: robot.parts().hand(side),
+        target,
+        relation,
+    };
+    holder_goals(world, &embodied, &placing, rng)
+}
+
+/// A placement by a robot's hand: which hand, the part that holds (a palm, Fetch's gripper),
+/// where, and how.
+pub(crate) struct Placing {
+    pub(crate) hand: usize,
+    pub(crate) holder: ObjectId,
+    pub(crate) target: ObjectId,
+    pub(crate) relation: Relation,
+}
+
+/// Poses of the holder that hold what the hand holds, as it holds it now, above the places
+/// the world's sampler finds for it (sampled in a copy of the world where the hand has let go:
+/// see [`poses_above_places`]).
+pub(crate) fn holder_goals(
+    world: &World,
+    robot: &Robot,
+    placing: &Placing,
+    rng: &mut SimRng,
+) -> Result<Vec<Pose>, Failure> {
+    let held = robot.held(placing.hand).ok_or(Failure::HandEmpty)?;
+    let grip = world.pose(placing.holder).inverse() * world.pose(held);
     let mut let_go = world.clone();
-    Robot::Behavior(robot.clone(), ActionSpace::Full).release_now(&mut let_go, side.index());
+    robot.clone().release_now(&mut let_go, placing.hand);
+    let (target, relation) = (placing.target, placing.relation);
     let poses = poses_above_places(&let_go, held, target, relation, rng)?;
     Ok(poses.into_iter().map(|p| p * grip.inverse()).collect())
 }
@@ -697,7 +704,7 @@ fn placement_goals(
 /// the world where the hand has let go of it; [`PLACE_TRIES`] samples): each sample as found
 /// and turned half round about its centre (a hand then comes from the other side), at the
 /// heights of [`PLACE_HEIGHTS`].
-pub(crate) fn poses_above_places(
+fn poses_above_places(
     let_go: &World,
     held: ObjectId,
     target: ObjectId,
@@ -843,23 +850,7 @@ fn close(steps: &mut Stepper<'_>, call: &Call) -> Result<(), RunError> {
             break;
         }
     }
-    let forced = steps.env.edit(|edit| {
-        edit.robot
-            .grasp_touching(edit.world, call.hand, call.object)
-            .is_ok()
-    })?;
-    if forced {
-        let object = steps
-            .env
-            .world()
-            .map(|w| w.object(call.object).name.clone());
-        steps.record_edit(&RecordedCall {
-            primitive: FORCED_GRASP.to_string(),
-            object: object.unwrap_or_default(),
-            hand: call.hand,
-        })?;
-    }
-    Ok(())
+    force_grasp(steps, call)
 }
 
 /// Lets the trigger go until the hand is open and holds nothing.

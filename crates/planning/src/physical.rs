@@ -12,7 +12,7 @@ use crate::navigate::Standing;
 use crate::primitive::{Call, Failure};
 use crate::rrt::{PlanParams, Space, plan};
 use crate::symbolic::{call_seed, stand_for};
-use behavior_core::rng::seeded;
+use behavior_core::rng::{SimRng, seeded};
 use behavior_env::Env;
 use behavior_env::record::Recorder;
 use behavior_robots::{
@@ -93,6 +93,52 @@ pub fn drive_to(
         }
     }
     Ok(Ok(path))
+}
+
+/// A physical primitive's outcome: the run's error outside, the primitive's failure inside.
+pub(crate) type Attempt<T> = Result<Result<T, Failure>, RunError>;
+
+/// Unwraps a step's outcome: a failed primitive returns its failure, a failed run its error.
+macro_rules! attempt {
+    ($e:expr) => {
+        match $e? {
+            Ok(v) => v,
+            Err(failure) => return Ok(Err(failure)),
+        }
+    };
+}
+pub(crate) use attempt;
+
+/// The call's own random numbers (the same episode, step and call draw the same).
+pub(crate) fn call_rng(env: &Env, call: &Call) -> SimRng {
+    seeded(call_seed(
+        env.start().map_or(0, |s| s.seed),
+        env.steps(),
+        call,
+    ))
+}
+
+/// Forces the assisted grasp of `call.object` by `call.hand` where the hand touches it, as
+/// the original does after closing, recorded as the edit [`crate::FORCED_GRASP`] for replays to do
+/// again; nothing where it does not touch it.
+pub(crate) fn force_grasp(steps: &mut Stepper<'_>, call: &Call) -> Result<(), RunError> {
+    let forced = steps.env.edit(|edit| {
+        edit.robot
+            .grasp_touching(edit.world, call.hand, call.object)
+            .is_ok()
+    })?;
+    if forced {
+        let object = steps
+            .env
+            .world()
+            .map(|w| w.object(call.object).name.clone());
+        steps.record_edit(&RecordedCall {
+            primitive: crate::FORCED_GRASP.to_string(),
+            object: object.unwrap_or_default(),
+            hand: call.hand,
+        })?;
+    }
+    Ok(())
 }
 
 /// The steps a physical primitive takes, each recorded if a recorder is given.

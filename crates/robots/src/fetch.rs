@@ -17,8 +17,8 @@ use crate::proprioception::LocalPose;
 use crate::relative;
 use crate::robot::{RobotError, pose_ok};
 use behavior_sim::{
-    AttachmentId, AttachmentSpec, BodyRef, Drive, JointState, ObjectId, Primitive, QueryFilter,
-    STEP_SECONDS, StepHooks, Velocity, World, WorldError, groups,
+    AttachmentId, AttachmentKind, AttachmentSpec, BodyRef, Drive, JointState, ObjectId, Primitive,
+    QueryFilter, STEP_SECONDS, StepHooks, Velocity, World, WorldError, groups,
 };
 use rapier3d::glamx::EulerRot;
 use rapier3d::math::{Pose, Rotation, Vector};
@@ -647,6 +647,18 @@ impl Fetch {
         let Some(kind) = self.rules.holdable(world, body) else {
             return;
         };
+        let _ = self.hold(world, body, at, kind);
+    }
+
+    /// Attaches `body` to the palm at `at` as the assisted grasp does: its contacts with the
+    /// palm and fingers off, the fingers frozen where they are while it is held.
+    fn hold(
+        &mut self,
+        world: &mut World,
+        body: BodyRef,
+        at: Vector,
+        kind: AttachmentKind,
+    ) -> Result<(), WorldError> {
         let gripper = self.parts.gripper();
         let spec = AttachmentSpec {
             holder: BodyRef::from(gripper),
@@ -655,9 +667,7 @@ impl Fetch {
             kind,
             max_force: self.rules.max_force(kind),
         };
-        let Ok(attachment) = world.core_mut().attach(spec) else {
-            return;
-        };
+        let attachment = world.core_mut().attach(spec)?;
         let bodies = [BodyRef::from(gripper)]
             .into_iter()
             .chain(FINGER_LINKS.map(|l| BodyRef::link(gripper, l)));
@@ -667,6 +677,7 @@ impl Fetch {
         let [right, _] = self.fingers(world);
         self.drive_fingers(world, right.clamp(0.0, FINGER_OPEN));
         self.grasp = Some(FetchGrasp { body, attachment });
+        Ok(())
     }
 
     /// The body touching both fingers closest to the gripper's centre, and the middle of its
@@ -859,24 +870,8 @@ impl Fetch {
             .filter(|_| !self.parts.all().contains(&object))
             .ok_or(MagicError::NotHoldable(object))?;
         let at = points.iter().copied().sum::<Vector>() / points.len() as f32;
-        let spec = AttachmentSpec {
-            holder: BodyRef::from(gripper),
-            held: body,
-            at,
-            kind,
-            max_force: self.rules.max_force(kind),
-        };
-        let attachment = world.core_mut().attach(spec)?;
-        let bodies = [BodyRef::from(gripper)]
-            .into_iter()
-            .chain(FINGER_LINKS.map(|l| BodyRef::link(gripper, l)));
-        for part in bodies {
-            let _ = world.core_mut().ignore_contacts(part, body, true);
-        }
-        let [right, _] = self.fingers(world);
-        self.drive_fingers(world, right.clamp(0.0, FINGER_OPEN));
+        self.hold(world, body, at, kind)?;
         self.gripper = -1.0;
-        self.grasp = Some(FetchGrasp { body, attachment });
         Ok(())
     }
 

@@ -93,6 +93,11 @@ impl<'w> BaseSpace<'w> {
         BaseSpace { min, max, ..self }
     }
 
+    /// The box on the floor (x, y) that samples fall in.
+    pub(crate) fn bounds(&self) -> ([f32; 2], [f32; 2]) {
+        (self.min, self.max)
+    }
+
     /// The heading of the drive from `a` to `b`, or `a`'s own if they stand at one point.
     fn heading(a: &BaseConfig, b: &BaseConfig) -> f32 {
         let (dx, dy) = (b.x - a.x, b.y - a.y);

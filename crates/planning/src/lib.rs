@@ -15,7 +15,10 @@
 //!   [`Space`] the way the original does (reference §5, pybullet-planning's `birrt`): the direct
 //!   path if free, else RRT-Connect with restarts, then shortcut smoothing, re-checked at half
 //!   the space's resolution. [`BaseSpace`] is the base in (x, y, yaw), swept by the original's
-//!   base motion and checked with the world's overlap queries without stepping; [`Standing`]
+//!   base motion and checked with the world's overlap queries without stepping; where
+//!   RRT-Connect finds no base path in physical mode, [`lattice_plan`] searches a 0.1 m,
+//!   eight-heading lattice of the same space with A* (the way through a door that random
+//!   samples miss, or a fast "none" where the goal's cells are cut off). [`Standing`]
 //!   finds where the base may stand to act on an object (NAVIGATE_TO's pose search).
 //!   [`HandSpace`] is the BehaviorRobot's hand as a free 6-D body with what it holds, within its
 //!   reach of the shoulder.
@@ -30,6 +33,7 @@ mod error;
 mod execute;
 mod fetch_manipulate;
 mod hand;
+mod lattice;
 mod manipulate;
 mod navigate;
 mod physical;
@@ -48,6 +52,7 @@ pub use execute::{
 pub use fetch_manipulate::{ArmPath, FETCH_APPROACH, FETCH_DESCENT_STEPS};
 pub use fetch_manipulate::{grasp as fetch_grasp, place as fetch_place};
 pub use hand::{HAND_MARGIN, HAND_RESOLUTION, HAND_WEIGHTS, HandBody, HandConfig, HandSpace};
+pub use lattice::{LATTICE_CELL, LATTICE_EXPANSIONS, LATTICE_HEADINGS, lattice_plan};
 pub use manipulate::{
     APPROACH_HEIGHT, CLOSE_STEPS, CROUCH, DESCENT_STEP, DESCENT_STEPS, FORCED_GRASP,
     GRASP_HEADINGS, GRASP_INSET, GRASP_JITTER, HAND_RESET, HandPath, PLACE_HEIGHT, PLACE_TRIES,

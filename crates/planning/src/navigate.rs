@@ -166,13 +166,20 @@ impl Standing {
                 let psi = uniform(rng, -PI, PI);
                 let yaw = psi - PI;
                 let c = BaseConfig::new(centre.x + d * psi.cos(), centre.y + d * psi.sin(), yaw);
-                if self.clear_at(world, &c) && fits(&c) {
+                if indoors(world, &c) && self.clear_at(world, &c) && fits(&c) {
                     return Some(c);
                 }
             }
         }
         None
     }
+}
+
+/// Whether a base configuration stands in one of the home's rooms (in a world without rooms,
+/// anywhere): a place clear beside an outer wall may lie outside the house, where no door
+/// leads.
+fn indoors(world: &World, c: &BaseConfig) -> bool {
+    world.rooms().is_empty() || world.core().room_at(c.x, c.y).is_some()
 }
 
 /// Whether a base configuration stands within `reach` of the object's box across the floor.

@@ -8,6 +8,7 @@
 use crate::base::{BaseConfig, BaseSpace, home_extent};
 use crate::error::PlanError;
 use crate::execute::{ARM_REACH, FETCH_ARM_REACH, RecordedCall, RunError};
+use crate::lattice::lattice_plan;
 use crate::navigate::Standing;
 use crate::primitive::{Call, Failure};
 use crate::rrt::{PlanParams, Space, plan};
@@ -240,8 +241,13 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
         dense.extend(straight(&start, &out, space.resolution()));
         out
     };
-    let planned = plan(&space, &from, &goal, &params)?;
-    for pair in planned.path.windows(2) {
+    // Where RRT-Connect's samples miss the way (a door between rooms), the lattice finds it.
+    let planned = match plan(&space, &from, &goal, &params) {
+        Ok(planned) => planned.path,
+        Err(PlanError::NoPath { .. }) => lattice_plan(&space, &from, &goal, &params)?,
+        Err(other) => return Err(other.into()),
+    };
+    for pair in planned.windows(2) {
         dense.extend(space.steps(&pair[0], &pair[1], space.resolution()));
     }
     Ok(dense)

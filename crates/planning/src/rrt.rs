@@ -191,7 +191,7 @@ fn connect<S: Space>(
 
 /// Shortcuts: a random pair of configurations on the path joined directly where that motion is
 /// free (pybullet-planning's `smooth_path`).
-fn smooth<S: Space>(
+pub(crate) fn smooth<S: Space>(
     space: &S,
     mut path: Path<S::Config>,
     attempts: u32,
@@ -219,7 +219,7 @@ fn smooth<S: Space>(
 }
 
 /// Every motion between consecutive configurations free at half the resolution.
-fn valid<S: Space>(space: &S, path: &[S::Config]) -> bool {
+pub(crate) fn valid<S: Space>(space: &S, path: &[S::Config]) -> bool {
     let fine = 0.5 * space.resolution();
     path.windows(2).all(|w| {
         space

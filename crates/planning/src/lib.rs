@@ -60,8 +60,8 @@ pub use manipulate::{
 };
 pub use navigate::{CARRY_MARGIN, STAND_CLEARANCE, STAND_DISTANCES, STAND_HEADINGS, Standing};
 pub use physical::{
-    BasePath, PHYSICAL_BUDGET, POSITION_TOLERANCE, STEPS_PER_WAYPOINT, YAW_TOLERANCE, base_config,
-    drive_to,
+    BasePath, PHYSICAL_BUDGET, POSITION_TOLERANCE, STAND_PLANS, STEPS_PER_WAYPOINT, YAW_TOLERANCE,
+    base_config, drive_to,
 };
 pub use primitive::{Call, Failure, Primitive, WAIT_STEPS};
 pub use rrt::{Path, PlanParams, Planned, Space, plan};

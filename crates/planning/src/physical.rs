@@ -8,7 +8,7 @@
 use crate::base::{BaseConfig, BaseSpace, home_extent};
 use crate::error::PlanError;
 use crate::execute::{ARM_REACH, FETCH_ARM_REACH, RecordedCall, RunError};
-use crate::lattice::lattice_plan;
+use crate::lattice::{LATTICE_EXPANSIONS, lattice_plan};
 use crate::navigate::Standing;
 use crate::primitive::{Call, Failure};
 use crate::rrt::{PlanParams, Space, plan};
@@ -19,7 +19,7 @@ use behavior_env::record::Recorder;
 use behavior_robots::{
     ACTION_SCALE, ActionSpace, FetchAction, MAX_ANGULAR_SPEED, MAX_LINEAR_SPEED, Robot,
 };
-use behavior_sim::{BodyRef, STEP_SECONDS};
+use behavior_sim::{BodyRef, STEP_SECONDS, World};
 use std::f32::consts::{FRAC_PI_2, PI};
 
 /// Steps the robot has to reach each configuration of the densified path before the
@@ -217,40 +217,82 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
         Robot::Fetch(..) => FETCH_ARM_REACH,
         Robot::Behavior(..) => ARM_REACH,
     };
-    let goal = stand_for(world, &standing, call.object, reach, &mut seeded(seed))
-        .ok_or(Failure::NoPlaceToStand)?;
     let start = standing.config;
-    let space = BaseSpace::new(world, standing.footprint, standing.filter, &start, &goal);
-    // Samples anywhere in the home, as the July 2021 version did: the way round a table may
-    // leave the box around the ends.
-    let space = match home_extent(world) {
-        Some((min, max)) => space.with_bounds(min, max),
-        None => space,
-    };
-    let params = PlanParams {
-        seed,
-        ..PHYSICAL_BUDGET
-    };
     // A robot put or pushed into something fixed first backs out of it, by the shortest free
     // move nearby, then plans from there.
     let mut dense = Vec::new();
-    let from = if space.free(&start) {
-        start
-    } else {
-        let out = escape(&space, robot, &start).ok_or(PlanError::StartInCollision)?;
-        dense.extend(straight(&start, &out, space.resolution()));
-        out
-    };
-    // Where RRT-Connect's samples miss the way (a door between rooms), the lattice finds it.
-    let planned = match plan(&space, &from, &goal, &params) {
-        Ok(planned) => planned.path,
-        Err(PlanError::NoPath { .. }) => lattice_plan(&space, &from, &goal, &params)?,
-        Err(other) => return Err(other.into()),
-    };
-    for pair in planned.windows(2) {
-        dense.extend(space.steps(&pair[0], &pair[1], space.resolution()));
+    let mut from = start;
+    let mut last = Failure::NoPlaceToStand;
+    // A clear place to stand may lie in a pocket no way leads into (between a cabinet and a
+    // corner), which the lattice tells at once: then another one.
+    for k in 0..STAND_PLANS {
+        let mut rng = seeded(seed.wrapping_add(k));
+        let Some(goal) = stand_for(world, &standing, call.object, reach, &mut rng) else {
+            break;
+        };
+        let space = home_space(world, &standing, &start, &goal);
+        if k == 0 && !space.free(&start) {
+            let out = escape(&space, robot, &start).ok_or(PlanError::StartInCollision)?;
+            dense.extend(straight(&start, &out, space.resolution()));
+            from = out;
+        }
+        let params = PlanParams {
+            seed,
+            ..PHYSICAL_BUDGET
+        };
+        // Where RRT-Connect's samples miss the way (a door between rooms), the lattice finds it.
+        let planned = match plan(&space, &from, &goal, &params) {
+            Ok(planned) => Ok(planned.path),
+            Err(PlanError::NoPath { .. }) => lattice_plan(&space, &from, &goal, &params),
+            Err(other) => Err(other),
+        };
+        match planned {
+            Ok(path) => {
+                for pair in path.windows(2) {
+                    dense.extend(space.steps(&pair[0], &pair[1], space.resolution()));
+                }
+                return Ok(dense);
+            }
+            Err(e) if ends_navigation(&e) => return Err(e.into()),
+            Err(other) => last = other.into(),
+        }
     }
-    Ok(dense)
+    Err(last)
+}
+
+/// Whether a base plan's failure ends NAVIGATE_TO rather than sending it to the next stand: a
+/// start in collision (no stand helps), or a lattice search that ran out of nodes (seconds
+/// spent; where one stand by a wall cannot be turned into, the next one by it is no better).
+fn ends_navigation(e: &PlanError) -> bool {
+    match e {
+        PlanError::StartInCollision => true,
+        PlanError::NoLatticePath { expansions, .. } => *expansions >= LATTICE_EXPANSIONS,
+        _ => false,
+    }
+}
+
+/// Places to stand tried in turn for one NAVIGATE_TO, each with a base plan there.
+pub const STAND_PLANS: u64 = 3;
+
+/// The base's space from `start` to `goal` for `standing`, sampled anywhere in the home as the
+/// July 2021 version did: the way round a table may leave the box around the ends.
+fn home_space<'w>(
+    world: &'w World,
+    standing: &Standing,
+    start: &BaseConfig,
+    goal: &BaseConfig,
+) -> BaseSpace<'w> {
+    let space = BaseSpace::new(
+        world,
+        standing.footprint.clone(),
+        standing.filter.clone(),
+        start,
+        goal,
+    );
+    match home_extent(world) {
+        Some((min, max)) => space.with_bounds(min, max),
+        None => space,
+    }
 }
 
 /// How far a robot overlapping something at its start looks for a way out, m.

@@ -1,8 +1,9 @@
 //! A lattice over the base's configurations, searched with A*: the fallback where RRT-Connect's
 //! random samples miss a narrow way (a door between two rooms, a gap between a sofa and a
 //! table). The July 2021 version of the original sampled its base planner's points from the
-//! home's traversable map for the same reason; a lattice finds such a way whenever one exists at
-//! its resolution, and says so within a bounded search when none does.
+//! home's traversable map for the same reason; a lattice finds such a way where one exists at
+//! its resolution within [`LATTICE_EXPANSIONS`] nodes, and says at once when the goal's cells
+//! are cut off from the start's.
 //!
 //! Nodes stand on a square grid of [`LATTICE_CELL`] anchored at the start, facing one of
 //! [`LATTICE_HEADINGS`] headings. From a node the base turns to the next heading either way, or

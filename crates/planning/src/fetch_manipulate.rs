@@ -626,11 +626,7 @@ fn come_back(
 /// Whether the gripper's palm or a finger touches the object.
 fn touches(env: &Env, object: ObjectId) -> bool {
     fetch(env).is_some_and(|(world, fetch)| {
-        let gripper = fetch.parts().gripper();
-        let parts = [BodyRef::from(gripper)]
-            .into_iter()
-            .chain([0, 1].map(|l| BodyRef::link(gripper, l)));
-        parts.into_iter().any(|part| {
+        fetch.parts().gripper_bodies().into_iter().any(|part| {
             world
                 .core()
                 .contacts(part)

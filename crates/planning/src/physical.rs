@@ -223,6 +223,10 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
     let mut dense = Vec::new();
     let mut from = start;
     let mut last = Failure::NoPlaceToStand;
+    let params = PlanParams {
+        seed,
+        ..PHYSICAL_BUDGET
+    };
     // A clear place to stand may lie in a pocket no way leads into (between a cabinet and a
     // corner), which the lattice tells at once: then another one.
     for k in 0..STAND_PLANS {
@@ -236,10 +240,6 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
             dense.extend(straight(&start, &out, space.resolution()));
             from = out;
         }
-        let params = PlanParams {
-            seed,
-            ..PHYSICAL_BUDGET
-        };
         // Where RRT-Connect's samples miss the way (a door between rooms), the lattice finds it.
         let planned = match plan(&space, &from, &goal, &params) {
             Ok(planned) => Ok(planned.path),

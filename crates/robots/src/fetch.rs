@@ -67,6 +67,13 @@ impl FetchParts {
     pub fn all(&self) -> [ObjectId; FETCH_LINKS] {
         self.links
     }
+
+    /// The bodies that touch what the gripper takes: its palm and its two fingers.
+    pub fn gripper_bodies(&self) -> [BodyRef; 3] {
+        let gripper = self.gripper();
+        let [right, left] = FINGER_LINKS.map(|l| BodyRef::link(gripper, l));
+        [BodyRef::from(gripper), right, left]
+    }
 }
 
 /// What the gripper holds.
@@ -668,10 +675,7 @@ impl Fetch {
             max_force: self.rules.max_force(kind),
         };
         let attachment = world.core_mut().attach(spec)?;
-        let bodies = [BodyRef::from(gripper)]
-            .into_iter()
-            .chain(FINGER_LINKS.map(|l| BodyRef::link(gripper, l)));
-        for part in bodies {
+        for part in self.parts.gripper_bodies() {
             let _ = world.core_mut().ignore_contacts(part, body, true);
         }
         let [right, _] = self.fingers(world);
@@ -807,15 +811,9 @@ impl Fetch {
         world: &mut World,
         object: ObjectId,
     ) -> Result<(), MagicError> {
-        if let Some(grasp) = self.grasp {
-            return Err(MagicError::HandFull(grasp.body.object));
-        }
+        self.empty_hand()?;
         let body = BodyRef::from(object);
-        let kind = self
-            .rules
-            .holdable(world, body)
-            .filter(|_| !self.parts.all().contains(&object))
-            .ok_or(MagicError::NotHoldable(object))?;
+        let kind = self.holdable(world, body)?;
         let gripper = self.parts.gripper();
         let centre = world.pose(gripper).transform_point(GRIPPER_CENTRE);
         centre_on(world, object, centre)?;
@@ -846,16 +844,10 @@ impl Fetch {
         world: &mut World,
         object: ObjectId,
     ) -> Result<(), MagicError> {
-        if let Some(grasp) = self.grasp {
-            return Err(MagicError::HandFull(grasp.body.object));
-        }
-        let gripper = self.parts.gripper();
-        let parts = [BodyRef::from(gripper)]
-            .into_iter()
-            .chain(FINGER_LINKS.map(|l| BodyRef::link(gripper, l)));
+        self.empty_hand()?;
         let mut points = Vec::new();
         let mut body = None;
-        for part in parts {
+        for part in self.parts.gripper_bodies() {
             for c in world.core().contacts(part)? {
                 if let Some(b) = c.other.filter(|b| b.object == object) {
                     points.push(c.point);
@@ -864,15 +856,27 @@ impl Fetch {
             }
         }
         let body = body.ok_or(MagicError::NotTouching(object))?;
-        let kind = self
-            .rules
-            .holdable(world, body)
-            .filter(|_| !self.parts.all().contains(&object))
-            .ok_or(MagicError::NotHoldable(object))?;
+        let kind = self.holdable(world, body)?;
         let at = points.iter().copied().sum::<Vector>() / points.len() as f32;
         self.hold(world, body, at, kind)?;
         self.gripper = -1.0;
         Ok(())
+    }
+
+    /// Refuses a grasp while the gripper holds something.
+    fn empty_hand(&self) -> Result<(), MagicError> {
+        match self.grasp {
+            Some(grasp) => Err(MagicError::HandFull(grasp.body.object)),
+            None => Ok(()),
+        }
+    }
+
+    /// How the grasp rules would hold `body`, if at all (never one of Fetch's own parts).
+    fn holdable(&self, world: &World, body: BodyRef) -> Result<AttachmentKind, MagicError> {
+        self.rules
+            .holdable(world, body)
+            .filter(|_| !self.parts.all().contains(&body.object))
+            .ok_or(MagicError::NotHoldable(body.object))
     }
 
     /// Detaches what the gripper holds and opens it.

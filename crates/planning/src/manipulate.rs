@@ -52,8 +52,12 @@ const STRANDED: f32 = 0.1;
 /// How far above the top of the object's box the grasp's approach ends, m (the original's).
 pub const APPROACH_HEIGHT: f32 = 0.05;
 /// How much higher the approach is tried where fingers at [`APPROACH_HEIGHT`] would touch
-/// something, m: the descent ([`DESCENT_STEPS`] of [`DESCENT_STEP`]) still reaches the top.
-const APPROACH_RAISE: f32 = 0.05;
+/// something, m, in turn: a tilted tile's edge is cleared by the second; the higher ones are
+/// for an object low among others or in an open box, where a column the hand can come down
+/// clear of all but the object leads to it ([`clear_column`]). The descent grows by the raise.
+const APPROACH_RAISES: [f32; 5] = [0.0, 0.05, 0.15, 0.25, 0.35];
+/// How far apart the poses checked down a raised approach's column are, m.
+const COLUMN_STEP: f32 = 0.025;
 /// The random offset of the approach across the top, m (the original's ±0.025).
 pub const GRASP_JITTER: f32 = 0.025;
 /// How far in from the sides of an object's box its grasp point lies, at most, m.
@@ -70,6 +74,9 @@ const REACH_SLACK: f32 = 0.02;
 pub const RISE: f32 = 0.4;
 /// Headings tried for the approach until one is free and within reach.
 pub const GRASP_HEADINGS: usize = 8;
+/// Free goals (at the body height of the first) that the hand is planned to in turn, until a
+/// plan is found: the first may be free yet walled in (a drawer's far corner).
+const GOALS_PLANNED: usize = 3;
 /// How far above a grasp's approach or a placement the hand is planned to, m, best first,
 /// before it comes straight down (see [`plan_with_approach`]).
 const PRE_ABOVE: [f32; 2] = [0.1, 0.05];
@@ -79,7 +86,8 @@ const PRE_ABOVE: [f32; 2] = [0.1, 0.05];
 const PRE_FRONT: [f32; 3] = [0.3, 0.2, 0.1];
 /// One step of the descent onto the object, m.
 pub const DESCENT_STEP: f32 = 0.005;
-/// The most steps of descent (the original's 25).
+/// The most steps of descent from [`APPROACH_HEIGHT`] (the original's 25), more from a raised
+/// approach (see [`APPROACH_RAISES`]).
 pub const DESCENT_STEPS: u32 = 25;
 /// The most steps the trigger is pressed for (the original closes for 50).
 pub const CLOSE_STEPS: u32 = 50;
@@ -302,7 +310,8 @@ struct Reached {
 }
 
 /// The hand taken along a plan to the first of `goals` it can reach (the body down or up
-/// first if need be, [`choose_goal`]). On failure the hand and the body are brought back.
+/// first if need be, [`choose_goals`]), the next tried where no plan is found. On failure the
+/// hand and the body are brought back.
 fn reach(
     steps: &mut Stepper<'_>,
     side: Side,
@@ -313,15 +322,21 @@ fn reach(
     let Some((world, robot)) = behavior_robot(steps.env) else {
         return Ok(Err(Failure::Unavailable("no episode")));
     };
-    let Some((goal, depth)) = choose_goal(world, robot, side, goals) else {
+    let Some((chosen, depth)) = choose_goals(world, robot, side, goals) else {
         return Ok(Err(Failure::NoHandPose));
     };
     attempt!(crouch(steps, depth));
     let start = target_in_world(steps.env, side);
-    let planned = match behavior_robot(steps.env) {
-        Some((world, robot)) => plan_with_approach(world, robot, side, goal, rng_seed(rng)),
-        None => Err(Failure::Unavailable("no episode")),
-    };
+    let mut planned = Err(Failure::NoHandPose);
+    for goal in chosen {
+        planned = match behavior_robot(steps.env) {
+            Some((world, robot)) => plan_with_approach(world, robot, side, goal, rng_seed(rng)),
+            None => Err(Failure::Unavailable("no episode")),
+        };
+        if planned.is_ok() {
+            break;
+        }
+    }
     let (planned, exit) = match planned {
         Ok(planned) => planned,
         Err(failure) => {
@@ -425,18 +440,36 @@ fn planning_body(world: &World, robot: &BehaviorRobot, side: Side) -> HandBody {
 
 /// Where on the top of the object's box the hand goes: the point nearest the shoulder, at
 /// least [`GRASP_INSET`] in from the box's sides (its centre, for a small object), so that a
-/// board is taken by its near end.
+/// board is taken by its near end. The box is the object's own, turned as it lies (a plank
+/// turned about the vertical fills only part of its axis-aligned box: a corner of that box
+/// may be floor).
 pub(crate) fn grasp_point(world: &World, object: ObjectId, shoulder: Vector) -> Vector {
-    let b = world.aabb(object);
-    let inward = |lo: f32, hi: f32, x: f32| {
-        let inset = GRASP_INSET.min(0.5 * (hi - lo));
-        x.clamp(lo + inset, hi - inset)
-    };
-    Vector::new(
-        inward(b.mins.x, b.maxs.x, shoulder.x),
-        inward(b.mins.y, b.maxs.y, shoulder.y),
-        b.maxs.z,
-    )
+    on_top(world, object, shoulder, GRASP_INSET)
+}
+
+/// The point of the object's own box nearest `toward` across the floor, at least `inset` in
+/// from its sides, at the height of the top of the object.
+fn on_top(world: &World, object: ObjectId, toward: Vector, inset: f32) -> Vector {
+    let pose = world.pose(object);
+    let local = world.core().local_aabb(object);
+    let mut at = pose.inverse_transform_point(toward);
+    // The object's axis nearest the vertical is its height: the point sits at its middle.
+    let up = pose.rotation.inverse() * Vector::Z;
+    let vertical = (0..3)
+        .max_by(|&a, &b| up[a].abs().total_cmp(&up[b].abs()))
+        .unwrap_or(2);
+    for axis in 0..3 {
+        let middle = 0.5 * (local.mins[axis] + local.maxs[axis]);
+        // How far from the middle the point may lie (never negative: a clamp whose bounds
+        // cross by a rounding error panics).
+        let room = (0.5 * (local.maxs[axis] - local.mins[axis]) - inset).max(0.0);
+        at[axis] = if axis == vertical {
+            middle
+        } else {
+            at[axis].clamp(middle - room, middle + room)
+        };
+    }
+    pose.transform_point(at).with_z(world.aabb(object).maxs.z)
 }
 
 /// Whether a hand of the robot, its body down or up if need be, reaches the nearest point of the
@@ -450,9 +483,10 @@ pub(crate) fn hand_reaches(world: &World, robot: &Robot, object: ObjectId) -> bo
     let b = world.aabb(object);
     Side::BOTH.iter().any(|&side| {
         let shoulder = robot.shoulder(world, side);
-        let nearest = shoulder.clamp(b.mins, b.maxs);
+        let top = on_top(world, object, shoulder, 0.0);
+        let nearest = top.with_z(shoulder.z.clamp(b.mins.z, b.maxs.z));
         shift_for(shoulder, nearest, HAND_REACH - REACH_MARGIN).is_some()
-            && open_to(world, robot, nearest.with_z(b.maxs.z), shoulder, &[object])
+            && open_to(world, robot, top, shoulder, &[object])
     })
 }
 
@@ -502,20 +536,25 @@ fn shift_for(shoulder: Vector, point: Vector, reach: f32) -> Option<f32> {
     (-RISE..=CROUCH).contains(&shift).then_some(shift)
 }
 
-/// The first of `goals` (hand poses, best first) that is clear of everything and that the hand
-/// reaches once the body has gone down or up, with that shift (see [`shift_for`]).
-fn choose_goal(
+/// Up to [`GOALS_PLANNED`] of `goals` (hand poses, best first) that are clear of everything and
+/// that the hand reaches once the body has gone down or up by the shift the first needs (see
+/// [`shift_for`]); with that shift.
+fn choose_goals(
     world: &World,
     robot: &BehaviorRobot,
     side: Side,
     goals: &[Pose],
-) -> Option<(Pose, f32)> {
+) -> Option<(Vec<Pose>, f32)> {
     let body = planning_body(world, robot, side);
     let reach = HAND_REACH - REACH_SLACK;
-    goals.iter().find_map(|g| {
+    let mut free = goals.iter().filter_map(|g| {
         let shift = shift_for(body.shoulder, g.translation, reach)?;
         body.clear(world, &HandConfig::of(g)).then_some((*g, shift))
-    })
+    });
+    let (first, depth) = free.next()?;
+    let same = free.filter(|&(_, shift)| shift == depth).map(|(g, _)| g);
+    let chosen = std::iter::once(first).chain(same).take(GOALS_PLANNED);
+    Some((chosen.collect(), depth))
 }
 
 /// Lowers (or raises, for a negative `depth`) the body by `depth`, m, with body actions.
@@ -619,8 +658,10 @@ fn straight(from: &HandConfig, to: &HandConfig) -> Vec<HandConfig> {
 
 /// Hand poses over the object, palm down, best first: over the top of its box near the
 /// shoulder, jittered, at headings around the one from the body to the object; then the same
-/// higher up (fingers that would touch a tilted tile at [`APPROACH_HEIGHT`] clear it there, and
-/// the descent still reaches it).
+/// higher up, by each of [`APPROACH_RAISES`] (fingers that would touch a tilted tile at
+/// [`APPROACH_HEIGHT`] clear it higher, and the descent still reaches it), those raised more
+/// than the first only above a column the hand can come down clear of everything but the
+/// object.
 fn approach_goals(
     world: &World,
     robot: &BehaviorRobot,
@@ -632,7 +673,7 @@ fn approach_goals(
     let at = grasp_point(world, call.object, shoulder);
     let body = robot.body_pose(world).translation;
     let facing = (at.y - body.y).atan2(at.x - body.x);
-    let mut goals: Vec<Pose> = (0..GRASP_HEADINGS)
+    let low: Vec<Pose> = (0..GRASP_HEADINGS)
         .map(|k| {
             let top = Vector::new(
                 at.x + uniform(rng, -GRASP_JITTER, GRASP_JITTER),
@@ -645,12 +686,32 @@ fn approach_goals(
             Pose::from_parts(top - rotation * GRASP_POINT, rotation)
         })
         .collect();
-    let higher: Vec<Pose> = goals
-        .iter()
-        .map(|g| Pose::from_parts(g.translation + Vector::Z * APPROACH_RAISE, g.rotation))
-        .collect();
-    goals.extend(higher);
+    let planning = planning_body(world, robot, side);
+    let mut goals = Vec::new();
+    for (k, raise) in APPROACH_RAISES.into_iter().enumerate() {
+        for g in &low {
+            let raised = Pose::from_parts(g.translation + Vector::Z * raise, g.rotation);
+            if k < 2 || clear_column(world, &planning, call.object, &raised, g) {
+                goals.push(raised);
+            }
+        }
+    }
     goals
+}
+
+/// Whether the hand comes straight down from `from` to `to` touching nothing but `object`
+/// (checked every [`COLUMN_STEP`]).
+fn clear_column(world: &World, body: &HandBody, object: ObjectId, from: &Pose, to: &Pose) -> bool {
+    let mut column = body.clone();
+    column.filter.exclude_objects.push(object);
+    let drop = from.translation.z - to.translation.z;
+    let n = (drop / COLUMN_STEP).ceil().max(1.0) as usize;
+    (0..=n).all(|i| {
+        let t = i as f32 / n as f32;
+        let mut pose = *from;
+        pose.translation.z -= t * drop;
+        column.clear(world, &HandConfig::of(&pose))
+    })
 }
 
 /// Hand poses above poses the world's sampler finds for the held object (see
@@ -809,14 +870,20 @@ fn follow(
     Ok(Ok(()))
 }
 
-/// Down onto the object until the hand touches it.
+/// Down onto the object until the hand touches it: at most [`DESCENT_STEPS`], more from an
+/// approach raised above [`APPROACH_HEIGHT`] (by as many steps as the raise).
 fn descend(
     steps: &mut Stepper<'_>,
     side: Side,
     object: ObjectId,
     executed: &mut Vec<Pose>,
 ) -> Attempt<()> {
-    for _ in 0..DESCENT_STEPS {
+    let above = behavior_robot(steps.env).map_or(0.0, |(world, _)| {
+        let fingers = palm(steps.env, side).transform_point(GRASP_POINT).z;
+        fingers - world.aabb(object).maxs.z - APPROACH_HEIGHT
+    });
+    let raised = (above.max(0.0) / DESCENT_STEP).ceil() as u32;
+    for _ in 0..DESCENT_STEPS + raised {
         if touches(steps.env, side, object) {
             break;
         }
@@ -958,4 +1025,63 @@ fn touches(env: &Env, side: Side, object: ObjectId) -> bool {
 fn holds(env: &Env, side: Side, object: ObjectId) -> bool {
     behavior_robot(env)
         .is_some_and(|(_, robot)| robot.holding(side).is_some_and(|b| b.object == object))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use behavior_sim::{ObjectSpec, Part, Primitive};
+
+    /// A board 1 × 0.8 m lying flat, turned `yaw` about the vertical.
+    fn board(yaw: f32) -> (World, ObjectId) {
+        let mut world = World::default();
+        let slab = Part::new(Primitive::Box {
+            half_extents: Vector::new(0.5, 0.4, 0.01),
+        });
+        let mut spec = ObjectSpec::new("plywood_1", "plywood.n.01", vec![slab]);
+        spec.pose = Pose::from_parts(Vector::new(2.0, 0.0, 0.01), Rotation::from_rotation_z(yaw));
+        let id = world.add(spec).unwrap();
+        (world, id)
+    }
+
+    #[test]
+    fn a_turned_board_is_taken_on_the_board_by_its_near_end() {
+        for yaw in [0.0, 0.37, 1.2, -2.5] {
+            let (world, id) = board(yaw);
+            // From the corner of the box around the board, where a turned board leaves floor.
+            let b = world.aabb(id);
+            let shoulder = Vector::new(b.mins.x - 0.3, b.mins.y - 0.3, 1.0);
+            let at = grasp_point(&world, id, shoulder);
+            let local = world.pose(id).inverse_transform_point(at);
+            let inside = |x: f32, half: f32| x.abs() <= half - GRASP_INSET + 1e-4;
+            assert!(
+                inside(local.x, 0.5) && inside(local.y, 0.4),
+                "yaw {yaw}: {local:?} off the board"
+            );
+            assert!((at.z - b.maxs.z).abs() < 1e-5, "on top: {at:?}");
+            // The near end: no point of the board (inset) lies nearer the shoulder.
+            let corners = [(-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0)].map(|(sx, sy)| {
+                let c = Vector::new(sx * (0.5 - GRASP_INSET), sy * (0.4 - GRASP_INSET), 0.0);
+                world.pose(id).transform_point(c)
+            });
+            let d = |p: Vector| (p - shoulder).truncate().length();
+            let nearest = corners.iter().map(|&c| d(c)).fold(f32::MAX, f32::min);
+            assert!(d(at) <= nearest + 1e-4, "yaw {yaw}: {} > {nearest}", d(at));
+        }
+    }
+
+    #[test]
+    fn an_object_smaller_than_twice_the_inset_is_taken_at_its_middle() {
+        let mut world = World::default();
+        // Half as wide as the inset one way, a rounding error short of it the other.
+        let eraser = Part::new(Primitive::Box {
+            half_extents: Vector::new(GRASP_INSET * (1.0 - 1e-7), 0.5 * GRASP_INSET, 0.01),
+        });
+        let mut spec = ObjectSpec::new("eraser_1", "eraser.n.01", vec![eraser]);
+        spec.pose = Pose::from_parts(Vector::new(1.0, 1.0, 0.5), Rotation::from_rotation_z(0.3));
+        let id = world.add(spec).unwrap();
+        let at = grasp_point(&world, id, Vector::new(0.0, 3.0, 1.0));
+        let local = world.pose(id).inverse_transform_point(at);
+        assert!(local.x.abs() < 1e-4 && local.y.abs() < 1e-4, "{local:?}");
+    }
 }

@@ -97,6 +97,15 @@ pub struct Solution {
 
 /// Navigations to one object before it is given up as out of reach (the 2.0.x primitives').
 const NAVIGATE_ATTEMPTS: usize = 10;
+/// Physical navigations in a row that may fail, nothing else run between them, before the
+/// robot counts as stuck where it stands and the next ones are not tried (a robot holding a
+/// book where it could not turn found no way to any of the places it was sent).
+const STUCK_AFTER: usize = 6;
+
+/// Physical navigations to one object that may fail (no place to stand, no way there) before
+/// it is given up: each has tried several places to stand already, and a robot carrying a book
+/// spent 9 minutes in 64 failing ones, ten each for the shelf and the floor.
+const NAVIGATE_FAILURES: usize = 3;
 
 /// The right hand carries, the left holds tools (Fetch: its one gripper for both).
 const CARRY: usize = 1;
@@ -122,6 +131,8 @@ pub struct Solver<'a> {
     /// Whether the next approach stands somewhere new even if in reach: a physical grasp or
     /// placement failed from where the robot stands, and would fail there again.
     stand_again: bool,
+    /// Physical navigations that failed in a row, nothing else run between them.
+    failed_drives: usize,
 }
 
 /// Why a step of a recipe failed: a primitive's failure, or something the planner lacks.
@@ -150,6 +161,7 @@ impl<'a> Solver<'a> {
             following: None,
             fatal: None,
             stand_again: false,
+            failed_drives: 0,
         }
     }
 
@@ -352,6 +364,12 @@ impl<'a> Solver<'a> {
             object,
             hand,
         };
+        let drive = self.mode == Mode::Physical && primitive == Primitive::NavigateTo;
+        if drive && self.failed_drives >= STUCK_AFTER {
+            return Err(format!(
+                "stuck: the last {STUCK_AFTER} navigations found no way, nothing else tried since"
+            ));
+        }
         let before = self.env.steps();
         let outcome = match run(self.env, call, self.mode, self.recorder.as_deref_mut()) {
             Ok(outcome) => outcome,
@@ -373,6 +391,11 @@ impl<'a> Solver<'a> {
             reason: outcome.result.as_ref().err().map(Failure::to_string),
             ms: outcome.seconds * 1000.0,
             steps: self.env.steps() - before,
+        };
+        self.failed_drives = if drive && !executed.ok {
+            self.failed_drives + 1
+        } else {
+            0
         };
         let manipulates = primitive == Primitive::Grasp || primitive.relation().is_some();
         if self.mode == Mode::Physical && manipulates && !executed.ok {
@@ -400,7 +423,17 @@ impl<'a> Solver<'a> {
     /// corner of `x`'s box (which left an ashcan's inside 1.2 m away).
     fn approach_for(&mut self, x: ObjectId, placement: Option<Call>) -> Result<(), Reason> {
         let mut last = String::new();
+        let mut failed = 0;
+        let may_fail = match self.mode {
+            Mode::Physical => NAVIGATE_FAILURES,
+            Mode::Symbolic => NAVIGATE_ATTEMPTS,
+        };
+        let mut tried = 0;
         for _ in 0..NAVIGATE_ATTEMPTS {
+            if failed == may_fail {
+                break;
+            }
+            tried += 1;
             let robot = self.env.robot().ok_or("no robot")?;
             let near = !std::mem::take(&mut self.stand_again)
                 && within(self.world(), robot, x, self.mode.reach())
@@ -422,6 +455,7 @@ impl<'a> Solver<'a> {
             };
             if let Err(why) = result {
                 last = why;
+                failed += 1;
             }
         }
         Err(if last.is_empty() {
@@ -430,7 +464,7 @@ impl<'a> Solver<'a> {
                 "{name} not in reach after {NAVIGATE_ATTEMPTS} navigations, each of which arrived"
             )
         } else {
-            format!("{last} (not in reach after {NAVIGATE_ATTEMPTS} navigations)")
+            format!("{last} (not in reach after {tried} navigations, {failed} of which failed)")
         })
     }
 

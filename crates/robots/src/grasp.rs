@@ -14,20 +14,23 @@
 //!
 //! It is then attached at the hit point: a fixed attachment of at most 500 N, or point-to-point of
 //! 350 N for a link of fixed furniture on a revolute or prismatic joint (a door turns about the
-//! hand). Contacts between it and the hand, and the robot's body, are off while held; the
-//! fingers freeze where they are.
+//! hand). Contacts between it and the robot (the hand, the body and the other hand) are off
+//! while held; the fingers freeze where they are.
 //!
 //! A hand lets go after a step in which its trigger is at or below the threshold, the attachment
 //! broke (it needed more than its maximum force) or its two anchor points drifted more than
-//! 0.1 m apart. Contacts come back once the released object's box no longer overlaps the hand's
-//! (or the body's) box — not after the original's fixed release window of one step — so that a
+//! 0.1 m apart. Contacts come back once the released object's box no longer overlaps the box of
+//! each robot part — not after the original's fixed release window of one step — so that a
 //! released object still inside closed fingers drops out instead of being pushed out, a released
 //! lid falls past the fingers that held its edge instead of wedging on them (they are rigid, see
 //! `hand.rs`), and nothing is grasped again before the hand has left it.
 //!
 //! Differences from the original: it requires contact with a fingertip, we with any part of the
 //! hand (our fingers are single capsules); it re-enables contacts after a fixed 1/30 s, we once
-//! apart; its allow-list comes from per-category data we do not have (empty by default).
+//! apart; its allow-list comes from per-category data we do not have (empty by default). It
+//! keeps the held object's contacts with the other hand; we turn them off as the robot's parts
+//! ignore each other: a plank held by its end, swung back beside the body, struck the other
+//! hand hard enough to break its 500 N grasp.
 
 use crate::hand::{FINGERS, HandPoints};
 use behavior_sim::{
@@ -124,9 +127,7 @@ pub(crate) struct Grasper<'a> {
     pub(crate) rules: &'a GraspRules,
     /// The hand's object.
     pub(crate) hand: ObjectId,
-    /// The robot's body object.
-    pub(crate) torso: ObjectId,
-    /// Every robot object, ignored by the rays.
+    /// Every robot object: ignored by the rays, and by what the hand takes while it holds it.
     pub(crate) own: &'a [ObjectId],
     /// What the other hand holds.
     pub(crate) other_holds: Option<BodyRef>,
@@ -158,8 +159,10 @@ impl Grasper<'_> {
             max_force: self.rules.max_force(kind),
         };
         let attachment = world.core_mut().attach(spec).ok()?;
-        for part in [hand, BodyRef::from(self.torso)] {
-            let _ = world.core_mut().ignore_contacts(part, body, true);
+        // With all of a held object's bodies (a folder's cover too, which otherwise struck
+        // the palm that held the folder and broke the grasp).
+        for &part in self.own {
+            ignore_between(world, part, body, true);
         }
         Some(Grasp {
             body,
@@ -295,11 +298,13 @@ fn object_bodies(world: &World, id: ObjectId) -> Vec<BodyRef> {
 }
 
 /// Turns contacts off (or back on) between every body of `part` and `held` — with all of
-/// `held`'s object, links included, when `held` is an object's root (a carton with its lid).
+/// `held`'s object, links included, when it is movable (a carton with its lid; a folder held
+/// by its cover, whose other half otherwise strikes the palm); only the link held of fixed
+/// furniture (a door).
 pub(crate) fn ignore_between(world: &mut World, part: ObjectId, held: BodyRef, ignore: bool) {
     let helds = match held.link {
-        None => object_bodies(world, held.object),
-        Some(_) => vec![held],
+        Some(_) if world.object(held.object).is_fixed() => vec![held],
+        _ => object_bodies(world, held.object),
     };
     for p in object_bodies(world, part) {
         for &h in &helds {

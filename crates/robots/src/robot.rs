@@ -434,7 +434,7 @@ impl BehaviorRobot {
                     self.grasps[i] = None;
                     self.releases.push(Release {
                         body: grasp.body,
-                        parts: vec![self.parts.hand(side), self.parts.body],
+                        parts: self.parts.all().to_vec(),
                         since: world.steps(),
                     });
                 }
@@ -443,7 +443,6 @@ impl BehaviorRobot {
                     let grasper = Grasper {
                         rules: &self.rules,
                         hand: self.parts.hand(side),
-                        torso: self.parts.body,
                         own: &own,
                         other_holds: self.holding(side.other()),
                         fingers: self.fingers[i].angles,
@@ -593,7 +592,7 @@ impl BehaviorRobot {
             max_force: self.rules.max_force(kind),
         };
         let attachment = world.core_mut().attach(spec)?;
-        for part in [hand, self.parts.body] {
+        for part in self.parts.all() {
             ignore_between(world, part, body, true);
         }
         let own = self.parts.all();
@@ -617,7 +616,7 @@ impl BehaviorRobot {
         restore_overlooked(world, &mut self.releases, grasp.body, &self.parts.all());
         self.releases.push(Release {
             body: grasp.body,
-            parts: vec![self.parts.hand(side), self.parts.body],
+            parts: self.parts.all().to_vec(),
             since: world.steps(),
         });
         Some(grasp.body.object)

@@ -419,3 +419,26 @@ fn proprioception_reports_where_the_parts_are_in_the_body_frame() {
     let hand = robot.hand_pose(&world, Side::Right).translation;
     assert!((hand - v(2.0 + 0.12, 1.1, 0.95)).length() < 1e-4, "{hand}");
 }
+
+#[test]
+fn what_a_hand_holds_passes_through_the_other_hand_until_let_go_and_clear() {
+    let (mut world, mut robot, apple, _) = holding_an_apple(Substeps::default());
+    assert!(robot.is_holding(apple));
+    let ignored = |world: &World, robot: &BehaviorRobot, side: Side| {
+        let part = robot.parts().hand(side);
+        world.core().contacts_ignored(part.into(), apple.into())
+    };
+    // The whole robot lets it through while held: the hand, the body and the other hand.
+    assert!(ignored(&world, &robot, Side::Right));
+    assert!(ignored(&world, &robot, Side::Left));
+    let body = robot.parts().body;
+    assert!(world.core().contacts_ignored(body.into(), apple.into()));
+    // Let go, it falls onto the table clear of every part: contacts are back with each.
+    press(&mut world, &mut robot, Side::Right, -1.0, 6);
+    assert!(!robot.is_holding(apple));
+    hand_to(&mut world, &mut robot, Side::Right, v(0.66, -0.12, 0.45));
+    idle(&mut world, &mut robot, 20);
+    assert!(!ignored(&world, &robot, Side::Right));
+    assert!(!ignored(&world, &robot, Side::Left));
+    assert!(!world.core().contacts_ignored(body.into(), apple.into()));
+}

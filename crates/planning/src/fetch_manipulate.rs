@@ -26,11 +26,11 @@
 use crate::arm::{ArmBody, ArmConfig, ArmSpace, in_workspace};
 use crate::execute::RunError;
 use crate::manipulate::{
-    CLOSE_STEPS, GRASP_JITTER, Placing, RELEASE_STEPS, SETTLE_STEPS, grasp_point, holder_goals,
+    CLOSE_STEPS, GRASP_JITTER, RELEASE_STEPS, SETTLE_STEPS, grasp_point, placement_goals, rng_seed,
 };
 use crate::physical::{Attempt, PHYSICAL_BUDGET, Stepper, attempt, call_rng, force_grasp};
 use crate::primitive::{Call, Failure};
-use crate::rrt::{PlanParams, Space, plan};
+use crate::rrt::{PlanParams, plan, steps_along};
 use crate::symbolic::check;
 use behavior_core::rng::{SimRng, seeded, uniform};
 use behavior_env::Env;
@@ -112,9 +112,9 @@ pub fn place(
         return Ok(Err(failure));
     }
     let mut rng = call_rng(env, call);
-    let goals = match fetch(env) {
-        Some((world, fetch)) => placement_goals(world, fetch, call.object, relation, &mut rng),
-        None => Err(Failure::Unavailable("no episode")),
+    let goals = match (env.world(), env.robot()) {
+        (Some(world), Some(robot)) => placement_goals(world, robot, call, relation, &mut rng),
+        _ => Err(Failure::Unavailable("no episode")),
     };
     let goals = match goals {
         Ok(goals) => goals,
@@ -136,13 +136,13 @@ pub fn place(
 /// for a grasp — or, holding something and given a placement, above a place for it; true for
 /// what cannot be held (a cabinet to open) and for a robot that is no Fetch.
 pub(crate) fn reaches(env: &Env, object: ObjectId, placement: Option<&Call>) -> bool {
-    let Some((world, fetch)) = fetch(env) else {
+    let (Some((world, fetch)), Some(robot)) = (fetch(env), env.robot()) else {
         return true;
     };
     let goals = match placement.and_then(|c| Some((c, c.primitive.relation()?))) {
         Some((call, relation)) if fetch.holding().is_some() => {
             let mut rng = call_rng(env, call);
-            placement_goals(world, fetch, call.object, relation, &mut rng).unwrap_or_default()
+            placement_goals(world, robot, call, relation, &mut rng).unwrap_or_default()
         }
         // Nothing to take (a cabinet to open): within reach of its box is enough.
         _ if fetch
@@ -237,25 +237,6 @@ const PITCHES: [f32; 3] = [PI / 3.0, PI / 4.0, PI / 6.0];
 /// direction `heading`, its fingers closing level.
 fn pointing(heading: f32, pitch: f32) -> Rotation {
     Rotation::from_rotation_z(heading) * Rotation::from_rotation_y(pitch)
-}
-
-/// End-effector poses in the world that hold the held object above the places the world's
-/// sampler finds for it (see [`holder_goals`]).
-fn placement_goals(
-    world: &World,
-    fetch: &Fetch,
-    target: ObjectId,
-    relation: Relation,
-    rng: &mut SimRng,
-) -> Result<Vec<Pose>, Failure> {
-    let embodied = Robot::Fetch(fetch.clone(), ActionSpace::Full);
-    let placing = Placing {
-        hand: 0,
-        holder: fetch.parts().gripper(),
-        target,
-        relation,
-    };
-    holder_goals(world, &embodied, &placing, rng)
 }
 
 /// The arm's free configuration that puts the end effector at `goal` (in the world), by IK
@@ -378,14 +359,12 @@ fn plan_arm_to(
     let start = ArmConfig::of(&fetch.joints());
     let space = ArmSpace::new(world, body, &start);
     let params = PlanParams {
-        seed: (uniform(rng, 0.0, 1.0) * u32::MAX as f32) as u64,
+        seed: rng_seed(rng),
         ..PHYSICAL_BUDGET
     };
     let planned = plan(&space, &start, &goal, &params)?;
     let mut dense = vec![start];
-    for pair in planned.path.windows(2) {
-        dense.extend(space.steps(&pair[0], &pair[1], space.resolution()));
-    }
+    dense.extend(steps_along(&space, &planned.path));
     Ok(dense)
 }
 

@@ -31,7 +31,7 @@ use crate::physical::{
     Attempt, PHYSICAL_BUDGET, STEPS_PER_WAYPOINT, Stepper, attempt, call_rng, force_grasp,
 };
 use crate::primitive::{Call, Failure};
-use crate::rrt::{PlanParams, Space, plan};
+use crate::rrt::{PlanParams, plan, steps_along};
 use crate::symbolic::{check, put};
 use behavior_core::rng::{SimRng, uniform};
 use behavior_env::Env;
@@ -75,7 +75,8 @@ pub const RISE: f32 = 0.4;
 /// Headings tried for the approach until one is free and within reach.
 pub const GRASP_HEADINGS: usize = 8;
 /// Free goals (at the body height of the first) that the hand is planned to in turn, until a
-/// plan is found: the first may be free yet walled in (a drawer's far corner).
+/// plan is found: a free goal may have no way to it (the last folder into a file cabinet had
+/// none on four seeds).
 const GOALS_PLANNED: usize = 3;
 /// How far above a grasp's approach or a placement the hand is planned to, m, best first,
 /// before it comes straight down (see [`plan_with_approach`]).
@@ -175,11 +176,9 @@ pub fn place(
         Err(failure) => return Ok(Err(failure)),
     };
     let mut rng = call_rng(env, call);
-    let goals = match behavior_robot(env) {
-        Some((world, robot)) => {
-            placement_goals(world, robot, call.object, relation, side, &mut rng)
-        }
-        None => Err(Failure::Unavailable("no episode")),
+    let goals = match (env.world(), env.robot()) {
+        (Some(world), Some(robot)) => placement_goals(world, robot, call, relation, &mut rng),
+        _ => Err(Failure::Unavailable("no episode")),
     };
     let goals = match goals {
         Ok(goals) => goals,
@@ -221,8 +220,10 @@ pub(crate) fn placement_in_reach(env: &Env, call: &Call) -> bool {
     }
     let shoulder = robot.shoulder(world, side);
     let reach = HAND_REACH - REACH_SLACK;
-    let mut rng = call_rng(env, call);
-    placement_goals(world, robot, call.object, relation, side, &mut rng).is_ok_and(|goals| {
+    let (Some(embodied), mut rng) = (env.robot(), call_rng(env, call)) else {
+        return true;
+    };
+    placement_goals(world, embodied, call, relation, &mut rng).is_ok_and(|goals| {
         goals.iter().any(|g| {
             shift_for(shoulder, g.translation, reach).is_some()
                 && open_to(world, robot, g.translation, shoulder, &[])
@@ -600,9 +601,7 @@ fn plan_hand(
     };
     let planned = plan(&space, &start, &goal, &params)?;
     let mut dense = vec![start];
-    for pair in planned.path.windows(2) {
-        dense.extend(space.steps(&pair[0], &pair[1], space.resolution()));
-    }
+    dense.extend(steps_along(&space, &planned.path));
     Ok(dense)
 }
 
@@ -686,12 +685,14 @@ fn approach_goals(
             Pose::from_parts(top - rotation * GRASP_POINT, rotation)
         })
         .collect();
-    let planning = planning_body(world, robot, side);
+    // The hand coming down to the object touches only it.
+    let mut coming_down = planning_body(world, robot, side);
+    coming_down.filter.exclude_objects.push(call.object);
     let mut goals = Vec::new();
     for (k, raise) in APPROACH_RAISES.into_iter().enumerate() {
         for g in &low {
             let raised = Pose::from_parts(g.translation + Vector::Z * raise, g.rotation);
-            if k < 2 || clear_column(world, &planning, call.object, &raised, g) {
+            if k < 2 || clear_column(world, &coming_down, &raised, g) {
                 goals.push(raised);
             }
         }
@@ -699,65 +700,43 @@ fn approach_goals(
     goals
 }
 
-/// Whether the hand comes straight down from `from` to `to` touching nothing but `object`
-/// (checked every [`COLUMN_STEP`]).
-fn clear_column(world: &World, body: &HandBody, object: ObjectId, from: &Pose, to: &Pose) -> bool {
-    let mut column = body.clone();
-    column.filter.exclude_objects.push(object);
+/// Whether `body` comes straight down from `from` to `to` clear (checked every
+/// [`COLUMN_STEP`]).
+fn clear_column(world: &World, body: &HandBody, from: &Pose, to: &Pose) -> bool {
     let drop = from.translation.z - to.translation.z;
     let n = (drop / COLUMN_STEP).ceil().max(1.0) as usize;
     (0..=n).all(|i| {
         let t = i as f32 / n as f32;
         let mut pose = *from;
         pose.translation.z -= t * drop;
-        column.clear(world, &HandConfig::of(&pose))
+        body.clear(world, &HandConfig::of(&pose))
     })
 }
 
-/// Hand poses above poses the world's sampler finds for the held object (see
-/// [`holder_goals`]).
-fn placement_goals(
-    world: &World,
-    robot: &BehaviorRobot,
-    target: ObjectId,
-    relation: Relation,
-    side: Side,
-    rng: &mut SimRng,
-) -> Result<Vec<Pose>, Failure> {
-    let embodied = Robot::Behavior(robot.clone(), ActionSpace::Full);
-    let placing = Placing {
-        hand: side.index(),
-        holder: robot.parts().hand(side),
-        target,
-        relation,
-    };
-    holder_goals(world, &embodied, &placing, rng)
-}
-
-/// A placement by a robot's hand: which hand, the part that holds (a palm, Fetch's gripper),
-/// where, and how.
-pub(crate) struct Placing {
-    pub(crate) hand: usize,
-    pub(crate) holder: ObjectId,
-    pub(crate) target: ObjectId,
-    pub(crate) relation: Relation,
-}
-
-/// Poses of the holder that hold what the hand holds, as it holds it now, above the places
-/// the world's sampler finds for it (sampled in a copy of the world where the hand has let go:
-/// see [`poses_above_places`]).
-pub(crate) fn holder_goals(
+/// Poses of the part that holds in hand `call.hand` (a palm, Fetch's gripper) that hold what
+/// it holds, as it holds it now, above the places the world's sampler finds for it by `call`
+/// (sampled in a copy of the world where the hand has let go: see [`poses_above_places`]).
+pub(crate) fn placement_goals(
     world: &World,
     robot: &Robot,
-    placing: &Placing,
+    call: &Call,
+    relation: Relation,
     rng: &mut SimRng,
 ) -> Result<Vec<Pose>, Failure> {
-    let held = robot.held(placing.hand).ok_or(Failure::HandEmpty)?;
-    let grip = world.pose(placing.holder).inverse() * world.pose(held);
+    let held = robot.held(call.hand).ok_or(Failure::HandEmpty)?;
+    let holder = match robot {
+        Robot::Behavior(robot, _) => {
+            let side = Side::BOTH
+                .get(call.hand)
+                .ok_or(Failure::NoHand(call.hand))?;
+            robot.parts().hand(*side)
+        }
+        Robot::Fetch(fetch, _) => fetch.parts().gripper(),
+    };
+    let grip = world.pose(holder).inverse() * world.pose(held);
     let mut let_go = world.clone();
-    robot.clone().release_now(&mut let_go, placing.hand);
-    let (target, relation) = (placing.target, placing.relation);
-    let poses = poses_above_places(&let_go, held, target, relation, rng)?;
+    robot.clone().release_now(&mut let_go, call.hand);
+    let poses = poses_above_places(&let_go, held, call.object, relation, rng)?;
     Ok(poses.into_iter().map(|p| p * grip.inverse()).collect())
 }
 
@@ -803,7 +782,7 @@ fn poses_above_places(
 }
 
 /// A seed for the planner drawn from the call's random numbers.
-fn rng_seed(rng: &mut SimRng) -> u64 {
+pub(crate) fn rng_seed(rng: &mut SimRng) -> u64 {
     (uniform(rng, 0.0, 1.0) * u32::MAX as f32) as u64
 }
 

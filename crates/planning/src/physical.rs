@@ -11,7 +11,7 @@ use crate::execute::{ARM_REACH, FETCH_ARM_REACH, RecordedCall, RunError};
 use crate::lattice::{LATTICE_EXPANSIONS, lattice_plan};
 use crate::navigate::Standing;
 use crate::primitive::{Call, Failure};
-use crate::rrt::{PlanParams, Space, plan};
+use crate::rrt::{PlanParams, Space, plan, steps_along};
 use crate::symbolic::{call_seed, stand_for};
 use behavior_core::rng::{SimRng, seeded};
 use behavior_env::Env;
@@ -248,9 +248,7 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
         };
         match planned {
             Ok(path) => {
-                for pair in path.windows(2) {
-                    dense.extend(space.steps(&pair[0], &pair[1], space.resolution()));
-                }
+                dense.extend(steps_along(&space, &path));
                 return Ok(dense);
             }
             Err(e) if ends_navigation(&e) => return Err(e.into()),

@@ -218,6 +218,14 @@ pub(crate) fn smooth<S: Space>(
     path
 }
 
+/// Every configuration passed along `path` at the space's resolution, after its first: what a
+/// robot is driven through, one configuration at a time.
+pub(crate) fn steps_along<S: Space>(space: &S, path: &[S::Config]) -> Vec<S::Config> {
+    path.windows(2)
+        .flat_map(|w| space.steps(&w[0], &w[1], space.resolution()))
+        .collect()
+}
+
 /// Every motion between consecutive configurations free at half the resolution.
 pub(crate) fn valid<S: Space>(space: &S, path: &[S::Config]) -> bool {
     let fine = 0.5 * space.resolution();

@@ -99,12 +99,12 @@ pub struct Solution {
 const NAVIGATE_ATTEMPTS: usize = 10;
 /// Physical navigations in a row that may fail, nothing else run between them, before the
 /// robot counts as stuck where it stands and the next ones are not tried (a robot holding a
-/// book where it could not turn found no way to any of the places it was sent).
+/// book found no way to the shelf or the floor 60 times in a row).
 const STUCK_AFTER: usize = 6;
 
 /// Physical navigations to one object that may fail (no place to stand, no way there) before
 /// it is given up: each has tried several places to stand already, and a robot carrying a book
-/// spent 9 minutes in 64 failing ones, ten each for the shelf and the floor.
+/// spent 9 minutes in 60 failing ones, 30 each to the shelf and to the floor.
 const NAVIGATE_FAILURES: usize = 3;
 
 /// The right hand carries, the left holds tools (Fetch: its one gripper for both).
@@ -131,8 +131,6 @@ pub struct Solver<'a> {
     /// Whether the next approach stands somewhere new even if in reach: a physical grasp or
     /// placement failed from where the robot stands, and would fail there again.
     stand_again: bool,
-    /// Physical navigations that failed in a row, nothing else run between them.
-    failed_drives: usize,
 }
 
 /// Why a step of a recipe failed: a primitive's failure, or something the planner lacks.
@@ -161,7 +159,6 @@ impl<'a> Solver<'a> {
             following: None,
             fatal: None,
             stand_again: false,
-            failed_drives: 0,
         }
     }
 
@@ -365,7 +362,7 @@ impl<'a> Solver<'a> {
             hand,
         };
         let drive = self.mode == Mode::Physical && primitive == Primitive::NavigateTo;
-        if drive && self.failed_drives >= STUCK_AFTER {
+        if drive && self.failed_drives() >= STUCK_AFTER {
             return Err(format!(
                 "stuck: the last {STUCK_AFTER} navigations found no way, nothing else tried since"
             ));
@@ -392,11 +389,6 @@ impl<'a> Solver<'a> {
             ms: outcome.seconds * 1000.0,
             steps: self.env.steps() - before,
         };
-        self.failed_drives = if drive && !executed.ok {
-            self.failed_drives + 1
-        } else {
-            0
-        };
         let manipulates = primitive == Primitive::Grasp || primitive.relation().is_some();
         if self.mode == Mode::Physical && manipulates && !executed.ok {
             self.stand_again = true;
@@ -410,6 +402,16 @@ impl<'a> Solver<'a> {
                 self.world().object(object).name
             )
         })
+    }
+
+    /// The navigations that failed last, in a row, nothing else run between them.
+    fn failed_drives(&self) -> usize {
+        let navigate = Primitive::NavigateTo.name();
+        self.log
+            .iter()
+            .rev()
+            .take_while(|e| e.name == navigate && !e.ok)
+            .count()
     }
 
     /// Stands where `x` is in reach, if it is not: next to it, or next to what holds it, up to

@@ -1,0 +1,33 @@
+"""BEHAVIOR in Rust, for Python.
+
+Importing the package registers one Gymnasium environment per official activity,
+``behavior/<activity>-v0`` (the official data is fetched from PyPI on first use, then cached)::
+
+    import gymnasium as gym
+    import behavior  # noqa: F401  (registers the environments)
+
+    env = gym.make("behavior/bringing_in_wood-v0", robot="fetch")
+    obs, info = env.reset(seed=0)
+    obs, reward, terminated, truncated, info = env.step(env.action_space.sample())
+
+``behavior.BehaviorEnv`` is the environment class; ``behavior.activities()`` lists the
+activities.
+"""
+
+from gymnasium.envs.registration import register, registry
+
+from ._core import activities
+from .env import BehaviorEnv
+
+__all__ = ["BehaviorEnv", "activities", "register_envs"]
+
+
+def register_envs():
+    """Registers ``behavior/<activity>-v0`` for every official activity (done on import)."""
+    for name in activities():
+        env_id = f"behavior/{name}-v0"
+        if env_id not in registry:
+            register(id=env_id, entry_point="behavior.env:BehaviorEnv", kwargs={"activity": name})
+
+
+register_envs()

@@ -1,0 +1,134 @@
+//! An environment built from names, as `behavior run` builds one: the official data located
+//! (fetched from PyPI on first use), the activity's definition loaded, the first of the named
+//! homes that covers it, with its clutter.
+
+use behavior_assets::{Library, NAMED_HOMES, Scene, clutter, covering, generate};
+use behavior_bddl::Knowledge;
+use behavior_bddl::load::read_source;
+use behavior_data::DataDir;
+use behavior_env::{EnvConfig, Instances};
+use behavior_robots::RobotKind;
+use std::sync::Arc;
+
+/// Why an environment could not be built. Each says which name or file was at fault.
+#[derive(Debug, thiserror::Error)]
+pub enum BuildError {
+    /// The official data could not be located or fetched.
+    #[error("the official BEHAVIOR data: {0}")]
+    Data(#[from] behavior_data::DataError),
+    /// The taxonomy or domain, or a definition file, did not load.
+    #[error("{0}")]
+    Load(#[from] behavior_bddl::load::LoadError),
+    /// The definition has errors (rendered with where they are).
+    #[error("{0}")]
+    Definition(#[from] behavior_bddl::SourceErrors),
+    /// Not an official activity.
+    #[error("`{0}` is not an official activity (behavior.activities() lists them)")]
+    UnknownActivity(String),
+    /// Not a robot.
+    #[error("robot must be one of {known}, not `{given}`")]
+    UnknownRobot { given: String, known: String },
+    /// Not a named home.
+    #[error("scene must be one of the named homes ({known}), not `{given}`")]
+    UnknownScene { given: String, known: String },
+    /// No named home holds what the activity needs.
+    #[error("no named home covers {0}")]
+    NotCovered(String),
+    /// A home could not be made.
+    #[error("making the home: {0}")]
+    Home(#[from] behavior_assets::AssetError),
+    /// A home could not be cluttered.
+    #[error("cluttering the home: {0}")]
+    Clutter(#[from] behavior_assets::ClutterError),
+}
+
+/// What an environment is built from.
+#[derive(Clone, Debug)]
+pub struct EnvSpec {
+    /// An official activity's name.
+    pub activity: String,
+    /// `behavior` or `fetch`.
+    pub robot: String,
+    /// A named home; `None` for the first that covers the activity.
+    pub scene: Option<String>,
+    /// Whether the home has its everyday clutter.
+    pub clutter: bool,
+}
+
+/// The official data and the knowledge loaded from it.
+pub struct Catalog {
+    data: DataDir,
+    knowledge: Knowledge,
+}
+
+impl Catalog {
+    /// Locates the data (`$BEHAVIOR_DATA_DIR`, else the cache, filled from PyPI on first use)
+    /// and loads the taxonomy and domain.
+    pub fn load() -> Result<Catalog, BuildError> {
+        let data = DataDir::locate(None, |message| eprintln!("{message}"))?;
+        let knowledge = Knowledge::read(&data.taxonomy_path(), &data.domain_path())?;
+        Ok(Catalog { data, knowledge })
+    }
+
+    /// Every official activity's name, in the manifest's order.
+    pub fn activities(&self) -> Result<Vec<String>, BuildError> {
+        Ok(self.data.activities()?)
+    }
+
+    /// The configuration of an environment of `spec`, with the defaults of [`EnvConfig::new`].
+    pub fn config(&self, spec: &EnvSpec) -> Result<EnvConfig, BuildError> {
+        let known = self.activities()?;
+        if !known.contains(&spec.activity) {
+            return Err(BuildError::UnknownActivity(spec.activity.clone()));
+        }
+        let robot = RobotKind::from_name(&spec.robot).ok_or_else(|| BuildError::UnknownRobot {
+            given: spec.robot.clone(),
+            known: names(RobotKind::ALL.iter().map(|k| k.name())),
+        })?;
+        let source = read_source(&self.data.problem_path(&spec.activity)?)?;
+        let (activity, _warnings) = self.knowledge.load(&source)?;
+        let library = Library::new(&self.knowledge.taxonomy);
+        let home = match &spec.scene {
+            Some(name) => named_home(name, &library)?,
+            None => {
+                let homes = NAMED_HOMES
+                    .iter()
+                    .map(|(n, s)| generate(n, *s, &library))
+                    .collect::<Result<Vec<Scene>, _>>()?;
+                covering(&homes, &activity, &self.knowledge.taxonomy)
+                    .first()
+                    .map(|h| (*h).clone())
+                    .ok_or_else(|| BuildError::NotCovered(spec.activity.clone()))?
+            }
+        };
+        let home = if spec.clutter {
+            clutter(&home, &library, home.seed)?
+        } else {
+            home.without_clutter()
+        };
+        let mut config = EnvConfig::new(
+            Arc::new(activity),
+            Arc::new(self.knowledge.taxonomy.clone()),
+            vec![home],
+        );
+        config.robot = robot;
+        config.instances = Instances::Sampled;
+        Ok(config)
+    }
+}
+
+/// A named home, generated.
+fn named_home(name: &str, library: &Library) -> Result<Scene, BuildError> {
+    let (n, seed) = NAMED_HOMES
+        .iter()
+        .find(|(n, _)| *n == name)
+        .ok_or_else(|| BuildError::UnknownScene {
+            given: name.to_string(),
+            known: names(NAMED_HOMES.iter().map(|(n, _)| *n)),
+        })?;
+    Ok(generate(n, *seed, library)?)
+}
+
+fn names<'a>(all: impl Iterator<Item = &'a str>) -> String {
+    all.collect::<Vec<_>>().join(", ")
+}

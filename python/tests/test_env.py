@@ -1,0 +1,107 @@
+"""The Gymnasium environments, as a user meets them: made by id, checked by Gymnasium's own
+checker, stepped, fed bad input."""
+
+import threading
+
+import gymnasium
+import numpy as np
+import pytest
+from gymnasium.utils.env_checker import check_env
+
+import behavior
+
+ACTIVITY = "bringing_in_wood"
+
+
+def make(robot="behavior", **kwargs):
+    return gymnasium.make(f"behavior/{ACTIVITY}-v0", robot=robot, **kwargs)
+
+
+def test_every_official_activity_is_registered():
+    names = behavior.activities()
+    assert len(names) == 100
+    for name in names:
+        assert f"behavior/{name}-v0" in gymnasium.registry
+
+
+@pytest.mark.parametrize("robot,dim,proprioception", [("behavior", 26, 22), ("fetch", 11, 49)])
+def test_check_env_passes_with_each_robot(robot, dim, proprioception):
+    env = make(robot)
+    assert env.action_space.shape == (dim,)
+    assert env.observation_space["proprioception"].shape == (proprioception,)
+    assert env.observation_space["task_obs"].shape == (456,)
+    check_env(env.unwrapped, skip_render_check=True)
+
+
+def test_an_episode_steps_and_reports_q_and_metrics():
+    env = make(max_steps=5)
+    obs, info = env.reset(seed=1)
+    assert obs["task_obs"].dtype == np.float32
+    assert info["steps"] == 0 and 0.0 <= info["q"] <= 1.0
+    truncated = False
+    steps = 0
+    while not truncated:
+        obs, reward, terminated, truncated, info = env.step(env.action_space.sample())
+        steps += 1
+        assert isinstance(reward, float) and not terminated
+    assert steps == 5 and info["steps"] == 5
+    assert env.unwrapped.metrics()["steps"] == 5
+
+
+def test_same_seed_and_actions_give_identical_observations():
+    actions = np.random.default_rng(3).uniform(-1, 1, size=(20, 26)).astype(np.float32)
+    runs = []
+    for _ in range(2):
+        env = make()
+        obs, _ = env.reset(seed=7)
+        trace = [obs["task_obs"].copy(), obs["proprioception"].copy()]
+        for a in actions:
+            obs, *_ = env.step(a)
+            trace += [obs["task_obs"].copy(), obs["proprioception"].copy()]
+        runs.append(trace)
+    for a, b in zip(*runs):
+        assert a.tobytes() == b.tobytes()
+
+
+def test_bad_input_raises_clear_errors():
+    env = make(max_steps=1)
+    env.reset(seed=0)
+    with pytest.raises(ValueError, match=r"shape \(26,\)"):
+        env.step(np.zeros((2, 13), dtype=np.float32))
+    with pytest.raises(ValueError, match="finite"):
+        env.step(np.full(26, np.nan, dtype=np.float32))
+    raw = env.unwrapped._env
+    with pytest.raises(ValueError, match="26 values, got 3"):
+        raw.step(np.zeros(3, dtype=np.float32))
+    env.step(np.zeros(26, dtype=np.float32))
+    with pytest.raises(ValueError, match="episode is over"):
+        raw.step(np.zeros(26, dtype=np.float32))
+    with pytest.raises(ValueError, match="not an official activity"):
+        behavior.BehaviorEnv(activity="juggling")
+    with pytest.raises(ValueError, match="robot must be one of"):
+        behavior.BehaviorEnv(robot="roomba")
+    with pytest.raises(ValueError, match="named homes"):
+        behavior.BehaviorEnv(scene="atlantis")
+
+
+def test_two_environments_step_at_once_in_threads():
+    envs = [make(), make()]
+    for k, env in enumerate(envs):
+        env.reset(seed=k)
+    errors, steps = [], []
+
+    def run(env):
+        try:
+            for _ in range(10):
+                *_, info = env.step(np.zeros(26, dtype=np.float32))
+            steps.append(info["steps"])
+        except Exception as e:  # reported below
+            errors.append(e)
+
+    threads = [threading.Thread(target=run, args=(env,)) for env in envs]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert not errors
+    assert steps == [10, 10]

@@ -10,16 +10,18 @@ Importing the package registers one Gymnasium environment per official activity,
     obs, info = env.reset(seed=0)
     obs, reward, terminated, truncated, info = env.step(env.action_space.sample())
 
-``behavior.BehaviorEnv`` is the environment class; ``behavior.activities()`` lists the
-activities.
+``behavior.BehaviorEnv`` is the environment class; ``behavior.make_vec(activity, num_envs)``
+(or ``gymnasium.make_vec(id, num_envs, vectorization_mode="vector_entry_point")``) steps several
+in Rust threads; ``behavior.activities()`` lists the activities.
 """
 
 from gymnasium.envs.registration import register, registry
 
 from ._core import activities
 from .env import BehaviorEnv
+from .vector import BehaviorVecEnv, make_vec
 
-__all__ = ["BehaviorEnv", "activities", "register_envs"]
+__all__ = ["BehaviorEnv", "BehaviorVecEnv", "activities", "make_vec", "register_envs"]
 
 
 def register_envs():
@@ -27,7 +29,12 @@ def register_envs():
     for name in activities():
         env_id = f"behavior/{name}-v0"
         if env_id not in registry:
-            register(id=env_id, entry_point="behavior.env:BehaviorEnv", kwargs={"activity": name})
+            register(
+                id=env_id,
+                entry_point="behavior.env:BehaviorEnv",
+                vector_entry_point="behavior.vector:BehaviorVecEnv",
+                kwargs={"activity": name},
+            )
 
 
 register_envs()

@@ -23,6 +23,15 @@ class BehaviorEnv(gymnasium.Env):
       the observation's shapes).
     - ``max_steps``: the episode's step limit (default the Rust side's).
     - ``clutter``: whether the home holds its everyday clutter.
+    - ``action_space``: ``"continuous"`` (the robot's own actions, one step each) or
+      ``"primitives"``: the original's ``Discrete(n × K)`` (object ``a % n``, primitive
+      ``a // n``), each action one primitive run to its end, ``primitive_mode`` ``"symbolic"``
+      (check, then set the outcome) or ``"physical"`` (planned and executed with physics), of
+      ``primitive_set`` ``"paper"`` (the paper's six: navigate_to, grasp, place_ontop,
+      place_inside, open, close; K = 6), ``"two_hands"`` (the 2.0.x releases' nine) or ``"all"``.
+      The reward is then ΔQ over the whole primitive, and ``info`` also says ``primitive``,
+      ``object``, ``hand``, ``ok``, ``reason`` and has the ``action_mask`` of feasible actions
+      (``action_masks()`` too, for sb3-contrib's MaskablePPO).
 
     Observations: a ``Dict`` of ``proprioception`` (22 numbers for the BehaviorRobot, 49 for
     Fetch) and ``task_obs`` (456: the robot's pose and 50 object slots), float32. Actions: a
@@ -41,12 +50,27 @@ class BehaviorEnv(gymnasium.Env):
         seed: int = 0,
         max_steps: Optional[int] = None,
         clutter: bool = True,
+        action_space: str = "continuous",
+        primitive_mode: str = "symbolic",
+        primitive_set: str = "paper",
         render_mode: Optional[str] = None,
     ):
         if render_mode is not None:
             raise ValueError(f"render_mode {render_mode!r} is not offered yet (none is)")
+        if action_space not in ("continuous", "primitives"):
+            raise ValueError(
+                f"action_space must be 'continuous' or 'primitives', not {action_space!r}"
+            )
+        self._primitives = action_space == "primitives"
         self._env = _core.Env(
-            activity, robot=robot, scene=scene, seed=seed, max_steps=max_steps, clutter=clutter
+            activity,
+            robot=robot,
+            scene=scene,
+            seed=seed,
+            max_steps=max_steps,
+            clutter=clutter,
+            primitives=primitive_set if self._primitives else None,
+            primitive_mode=primitive_mode,
         )
         first, _ = self._env.reset(seed)
         self.observation_space = spaces.Dict(
@@ -55,8 +79,11 @@ class BehaviorEnv(gymnasium.Env):
                 for name, value in first.items()
             }
         )
-        dim = self._env.action_dim
-        self.action_space = spaces.Box(-1.0, 1.0, shape=(dim,), dtype=np.float32)
+        if self._primitives:
+            self.action_space = spaces.Discrete(self._env.primitive_count)
+        else:
+            dim = self._env.action_dim
+            self.action_space = spaces.Box(-1.0, 1.0, shape=(dim,), dtype=np.float32)
         self.render_mode = render_mode
 
     @property
@@ -81,13 +108,33 @@ class BehaviorEnv(gymnasium.Env):
         return self._env.reset(episode_seed)
 
     def step(self, action: Any):
-        """One action step (1/30 s of simulated time)."""
+        """One action step (1/30 s of simulated time), or one primitive run to its end."""
+        if self._primitives:
+            return self._env.step_primitive(self._primitive_index(action))
         values = np.asarray(action, dtype=np.float32)
         if values.shape != self.action_space.shape:
             raise ValueError(
                 f"the action must have shape {self.action_space.shape}, not {values.shape}"
             )
         return self._env.step(values)
+
+    def action_masks(self) -> np.ndarray:
+        """Whether each primitive action's preconditions hold now (sb3-contrib's
+        MaskablePPO asks for this)."""
+        if not self._primitives:
+            raise ValueError("action masks are for action_space='primitives'")
+        return self._env.action_mask()
+
+    def _primitive_index(self, action: Any) -> int:
+        value = np.asarray(action)
+        if value.shape != () or not np.issubdtype(value.dtype, np.integer):
+            raise ValueError(f"a primitive action is one integer, not {action!r}")
+        index = int(value)
+        if not 0 <= index < self.action_space.n:
+            raise ValueError(
+                f"primitive action {index} is out of range: the space has {self.action_space.n}"
+            )
+        return index
 
     def metrics(self) -> dict:
         """The episode's metrics so far (as ``behavior run --json`` reports them)."""

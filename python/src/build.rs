@@ -62,22 +62,16 @@ pub struct Catalog {
 }
 
 impl Catalog {
-    /// Locates the data (`$BEHAVIOR_DATA_DIR`, else the cache, filled from PyPI on first use)
-    /// and loads the taxonomy and domain.
+    /// Locates the data (see [`data_dir`]) and loads the taxonomy and domain.
     pub fn load() -> Result<Catalog, BuildError> {
-        let data = DataDir::locate(None, |message| eprintln!("{message}"))?;
+        let data = data_dir()?;
         let knowledge = Knowledge::read(&data.taxonomy_path(), &data.domain_path())?;
         Ok(Catalog { data, knowledge })
     }
 
-    /// Every official activity's name, in the manifest's order.
-    pub fn activities(&self) -> Result<Vec<String>, BuildError> {
-        Ok(self.data.activities()?)
-    }
-
     /// The configuration of an environment of `spec`, with the defaults of [`EnvConfig::new`].
     pub fn config(&self, spec: &EnvSpec) -> Result<EnvConfig, BuildError> {
-        let known = self.activities()?;
+        let known = self.data.activities()?;
         if !known.contains(&spec.activity) {
             return Err(BuildError::UnknownActivity(spec.activity.clone()));
         }
@@ -115,6 +109,17 @@ impl Catalog {
         config.instances = Instances::Sampled;
         Ok(config)
     }
+}
+
+/// The official data: `$BEHAVIOR_DATA_DIR`, else the cache, filled from PyPI on first use
+/// (saying so on stderr).
+fn data_dir() -> Result<DataDir, BuildError> {
+    Ok(DataDir::locate(None, |message| eprintln!("{message}"))?)
+}
+
+/// Every official activity's name, in the manifest's order.
+pub fn activities() -> Result<Vec<String>, BuildError> {
+    Ok(data_dir()?.activities()?)
 }
 
 /// A named home, generated.

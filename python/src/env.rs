@@ -1,9 +1,11 @@
 //! `behavior._core.Env`: one episode loop of `behavior-env`, stepped from Python with the
 //! interpreter's lock released, observations handed over as numpy arrays that own the Rust
-//! vectors (no copy).
+//! vectors (no copy). Optionally with the primitive action space ([`Primitives`]).
 
 use crate::build::{Catalog, EnvSpec};
+use crate::primitives::{Done, PrimitiveError, Primitives};
 use behavior_env::{Env, EnvError, Obs, Score};
+use behavior_planning::RunError;
 use behavior_render::Pixels;
 use numpy::{AllowTypeChange, IntoPyArray, PyArrayLike1, PyArrayMethods};
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
@@ -12,15 +14,21 @@ use pyo3::types::PyDict;
 use std::sync::{Mutex, MutexGuard};
 use std::time::{Duration, Instant};
 
+/// The episode and, when actions are primitives, their space over its objects.
+struct Episode {
+    env: Env,
+    primitives: Option<Primitives>,
+}
+
 /// A BEHAVIOR environment: `reset` and `step` as Gymnasium's, observations as a dict of numpy
 /// arrays (`proprioception`, `task_obs`), info as a dict (`steps`, `q`, `success`,
 /// `conjuncts`). The Gymnasium class `behavior.BehaviorEnv` wraps it.
 #[pyclass(module = "behavior._core", name = "Env")]
 pub struct PyEnv {
     // Env is Send, not Sync: the lock makes the class shareable, as pyo3 asks.
-    env: Mutex<Env>,
-    /// Seconds spent inside the Rust `step`s so far, and how many: what a
-    /// benchmark subtracts to find the binding's own cost per step.
+    episode: Mutex<Episode>,
+    /// Seconds spent inside the Rust `step`s so far, and how many: what a benchmark subtracts
+    /// to find the binding's own cost per step.
     inside: Mutex<(f64, u64)>,
     action_dim: usize,
     activity: String,
@@ -32,8 +40,12 @@ pub struct PyEnv {
 impl PyEnv {
     /// Builds the environment and starts a first episode with `seed` (so that its shapes are
     /// known). `scene`: a named home, or `None` for the first that covers the activity.
+    /// `primitives`: `None` for continuous actions, else the primitive set (`paper`,
+    /// `two_hands`, `all`) of `step_primitive`, run in `primitive_mode` (`symbolic`,
+    /// `physical`).
     #[new]
-    #[pyo3(signature = (activity, robot = "behavior".to_string(), scene = None, seed = 0, max_steps = None, clutter = true))]
+    #[pyo3(signature = (activity, robot = "behavior".to_string(), scene = None, seed = 0, max_steps = None, clutter = true, primitives = None, primitive_mode = "symbolic".to_string()))]
+    #[allow(clippy::too_many_arguments)] // Python's keyword arguments
     fn new(
         py: Python<'_>,
         activity: String,
@@ -42,14 +54,20 @@ impl PyEnv {
         seed: u64,
         max_steps: Option<u32>,
         clutter: bool,
+        primitives: Option<String>,
+        primitive_mode: String,
     ) -> PyResult<PyEnv> {
+        let primitives = primitives
+            .map(|set| Primitives::new(&set, &primitive_mode))
+            .transpose()
+            .map_err(PyValueError::new_err)?;
         let spec = EnvSpec {
             activity,
             robot,
             scene,
             clutter,
         };
-        let built = py.detach(|| -> Result<(Env, usize, String), String> {
+        let built = py.detach(|| -> Result<(Episode, String), String> {
             let catalog = Catalog::load().map_err(|e| e.to_string())?;
             let mut config = catalog.config(&spec).map_err(|e| e.to_string())?;
             if let Some(max) = max_steps {
@@ -60,32 +78,37 @@ impl PyEnv {
                 .first()
                 .map(|s| s.name.clone())
                 .unwrap_or_default();
-            let mut env = Env::new(config);
-            env.reset(seed).map_err(|e| e.to_string())?;
-            let dim = env.robot().map_or(0, |r| r.action_dim());
-            Ok((env, dim, scene))
+            let mut episode = Episode {
+                env: Env::new(config),
+                primitives,
+            };
+            episode.reset(seed).map_err(|e| e.to_string())?;
+            Ok((episode, scene))
         });
-        let (env, action_dim, scene) = built.map_err(PyValueError::new_err)?;
+        let (episode, scene) = built.map_err(PyValueError::new_err)?;
         Ok(PyEnv {
-            env: Mutex::new(env),
+            action_dim: episode.env.robot().map_or(0, |r| r.action_dim()),
+            episode: Mutex::new(episode),
             inside: Mutex::new((0.0, 0)),
-            action_dim,
             activity: spec.activity,
             robot: spec.robot,
             scene,
         })
     }
 
-    /// Starts an episode: a new instance sampled with `seed`. Returns `(obs, info)`.
+    /// Starts an episode: a new instance sampled with `seed`. Returns `(obs, info)`; with
+    /// primitives, info has the `action_mask` too.
     fn reset<'py>(
         &self,
         py: Python<'py>,
         seed: u64,
     ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
         let mut guard = self.lock()?;
-        let env: &mut Env = &mut guard;
-        let (obs, info) = py.detach(|| env.reset(seed)).map_err(env_error)?;
-        Ok((obs_dict(py, obs)?, info_dict(py, info.steps, &info.score)?))
+        let episode: &mut Episode = &mut guard;
+        let (obs, info) = py.detach(|| episode.reset(seed)).map_err(env_error)?;
+        let dict = info_dict(py, info.steps, &info.score)?;
+        episode.add_mask(py, &dict)?;
+        Ok((obs_dict(py, obs)?, dict))
     }
 
     /// One action step (1/30 s). `action`: `action_dim` finite numbers. Returns `(obs, reward,
@@ -100,7 +123,7 @@ impl PyEnv {
             PyValueError::new_err("the action must be a contiguous one-dimensional array")
         })?;
         let mut guard = self.lock()?;
-        let env: &mut Env = &mut guard;
+        let env = &mut guard.env;
         // Timed inside, so that releasing and taking back the lock counts as the binding's.
         let (step, took) = py.detach(|| {
             let started = Instant::now();
@@ -118,6 +141,60 @@ impl PyEnv {
         ))
     }
 
+    /// One primitive action `a` of the primitive space, run to its end (object `a mod n`,
+    /// primitive `a div n`). Returns `(obs, reward, terminated, truncated, info)`: the last
+    /// step's observation, ΔQ over the whole primitive, and info with `primitive`, `object`,
+    /// `hand`, `ok`, `reason` (why it failed, or `None`) and the next `action_mask`.
+    #[allow(clippy::type_complexity)]
+    fn step_primitive<'py>(
+        &self,
+        py: Python<'py>,
+        a: usize,
+    ) -> PyResult<(Bound<'py, PyDict>, f64, bool, bool, Bound<'py, PyDict>)> {
+        let mut guard = self.lock()?;
+        let Episode { env, primitives } = &mut *guard;
+        let primitives = primitives.as_ref().ok_or_else(|| {
+            PyValueError::new_err("this environment's actions are continuous, not primitives")
+        })?;
+        let done = py
+            .detach(|| primitives.step(env, a))
+            .map_err(primitive_error)?;
+        let Done {
+            step,
+            reward,
+            primitive,
+            object,
+            hand,
+            failure,
+        } = done;
+        let info = info_dict(py, step.info.steps, &step.info.score)?;
+        info.set_item("primitive", primitive)?;
+        info.set_item("object", object)?;
+        info.set_item("hand", hand)?;
+        info.set_item("ok", failure.is_none())?;
+        info.set_item("reason", failure)?;
+        guard.add_mask(py, &info)?;
+        Ok((
+            obs_dict(py, step.obs)?,
+            reward,
+            step.terminated,
+            step.truncated,
+            info,
+        ))
+    }
+
+    /// How many primitive actions (n × K; 0 without primitives).
+    #[getter]
+    fn primitive_count(&self) -> PyResult<usize> {
+        Ok(self.lock()?.primitives.as_ref().map_or(0, Primitives::len))
+    }
+
+    /// Whether each primitive action's preconditions hold now (for MaskablePPO).
+    fn action_mask<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let guard = self.lock()?;
+        Ok(guard.mask().into_pyarray(py).into_any())
+    }
+
     /// Seconds spent inside Rust's `Env::step` (the world's step, observations and score) over
     /// the steps taken so far, and how many: `(seconds, steps)`.
     #[getter]
@@ -125,7 +202,7 @@ impl PyEnv {
         Ok(*self.inside.lock().map_err(|_| broken())?)
     }
 
-    /// How many numbers an action has (26 for the BehaviorRobot, 11 for Fetch).
+    /// How many numbers a continuous action has (26 for the BehaviorRobot, 11 for Fetch).
     #[getter]
     fn action_dim(&self) -> usize {
         self.action_dim
@@ -152,19 +229,47 @@ impl PyEnv {
     /// The episode's metrics so far (the per-episode JSON of `behavior run --json`), as a JSON
     /// string; `None` before the first reset.
     fn metrics_json(&self) -> PyResult<Option<String>> {
-        let env = self.lock()?;
-        env.metrics()
+        let guard = self.lock()?;
+        guard
+            .env
+            .metrics()
             .map(|m| serde_json::to_string(&m))
             .transpose()
             .map_err(|e| PyRuntimeError::new_err(e.to_string()))
     }
 }
 
+impl Episode {
+    /// A new episode; the primitives find its objects.
+    fn reset(&mut self, seed: u64) -> Result<(Obs, behavior_env::Info), EnvError> {
+        let started = self.env.reset(seed)?;
+        if let Some(p) = &mut self.primitives {
+            p.reset(&self.env);
+        }
+        Ok(started)
+    }
+
+    /// The primitive actions' mask (empty without primitives).
+    fn mask(&self) -> Vec<bool> {
+        self.primitives
+            .as_ref()
+            .map_or_else(Vec::new, |p| p.mask(&self.env))
+    }
+
+    /// Adds `action_mask` to `info` when actions are primitives.
+    fn add_mask(&self, py: Python<'_>, info: &Bound<'_, PyDict>) -> PyResult<()> {
+        if self.primitives.is_some() {
+            info.set_item("action_mask", self.mask().into_pyarray(py))?;
+        }
+        Ok(())
+    }
+}
+
 impl PyEnv {
-    /// The environment, or an error if a step panicked while holding it (it never should; the
+    /// The episode, or an error if a step panicked while holding it (it never should; the
     /// interpreter must not die of it either way).
-    fn lock(&self) -> PyResult<MutexGuard<'_, Env>> {
-        self.env.lock().map_err(|_| broken())
+    fn lock(&self) -> PyResult<MutexGuard<'_, Episode>> {
+        self.episode.lock().map_err(|_| broken())
     }
 
     /// Adds a step that took `took` to [`PyEnv::rust_step_time`].
@@ -182,12 +287,20 @@ fn broken() -> PyErr {
 
 /// Errors of the caller's making (an action, stepping an ended episode) are `ValueError`s;
 /// the rest (sampling, sensors) `RuntimeError`s.
-fn env_error(e: EnvError) -> PyErr {
+pub(crate) fn env_error(e: EnvError) -> PyErr {
     match e {
         EnvError::Action(_) | EnvError::EpisodeOver { .. } | EnvError::NotReset => {
             PyValueError::new_err(e.to_string())
         }
         other => PyRuntimeError::new_err(other.to_string()),
+    }
+}
+
+/// An action out of range is the caller's; the episode's refusals as [`env_error`].
+fn primitive_error(e: PrimitiveError) -> PyErr {
+    match e {
+        PrimitiveError::Run(RunError::Env(e)) => env_error(e),
+        other => PyValueError::new_err(other.to_string()),
     }
 }
 

@@ -105,3 +105,59 @@ def test_two_environments_step_at_once_in_threads():
         t.join()
     assert not errors
     assert steps == [10, 10]
+
+
+@pytest.mark.parametrize("mode", ["symbolic", "physical"])
+@pytest.mark.parametrize("robot", ["behavior", "fetch"])
+def test_check_env_passes_with_primitives(robot, mode):
+    env = make(robot, action_space="primitives", primitive_mode=mode)
+    assert isinstance(env.action_space, gymnasium.spaces.Discrete)
+    check_env(env.unwrapped, skip_render_check=True)
+
+
+def test_primitives_follow_the_mask_and_report_what_they_did():
+    env = make(action_space="primitives", primitive_set="paper")
+    _, info = env.reset(seed=0)
+    n_actions = env.action_space.n
+    assert n_actions % 6 == 0 and info["action_mask"].shape == (n_actions,)
+    assert (info["action_mask"] == env.unwrapped.action_masks()).all()
+    n = n_actions // 6
+    # navigate_to (primitive 0) the first object, then grasp it (primitive 1), as the mask allows.
+    q = info["q"]
+    for a in (0, n):
+        assert info["action_mask"][a], f"action {a} masked"
+        obs, reward, terminated, truncated, info = env.step(a)
+        assert info["ok"], info["reason"]
+        assert reward == pytest.approx(info["q"] - q)
+        q = info["q"]
+    assert info["primitive"] == "grasp" and info["object"]
+    # A masked action runs and says why it failed.
+    masked = int(np.flatnonzero(~info["action_mask"])[0])
+    _, reward, _, _, info = env.step(masked)
+    assert not info["ok"] and info["reason"] and reward == 0.0
+
+
+def test_physical_primitives_drive_with_physics():
+    env = make(action_space="primitives", primitive_mode="physical")
+    _, info = env.reset(seed=0)
+    _, _, _, _, info = env.step(0)  # navigate_to the first object
+    assert info["primitive"] == "navigate_to" and info["ok"], info["reason"]
+    assert info["steps"] > 10  # driven step by step, not teleported
+
+
+def test_bad_primitive_input_raises():
+    env = make(action_space="primitives")
+    env.reset(seed=0)
+    with pytest.raises(ValueError, match="out of range"):
+        env.step(env.action_space.n)
+    with pytest.raises(ValueError, match="one integer"):
+        env.step(np.zeros(26, dtype=np.float32))
+    with pytest.raises(ValueError, match="primitive_mode must be"):
+        make(action_space="primitives", primitive_mode="magic")
+    with pytest.raises(ValueError, match="primitive_set must be"):
+        make(action_space="primitives", primitive_set="many")
+    with pytest.raises(ValueError, match="action_space must be"):
+        make(action_space="discrete")
+    continuous = make()
+    with pytest.raises(ValueError, match="continuous, not primitives"):
+        continuous.unwrapped._env.step_primitive(0)

@@ -7,7 +7,9 @@ and reports the wall time per step from Python, the time per step inside Rust's 
 own cost (argument conversion, releasing and retaking the interpreter's lock, building the
 observation dict) and, for Gymnasium, the wrapper's. Then environment steps per second of one
 ``BehaviorEnv`` taking the episodes of a ``BehaviorVecEnv`` of ``--vector`` environments in
-turn, and of that vector environment taking them together, and their ratio.
+turn, and of that vector environment taking them together, and their ratio; last, steps per
+second of one ``BehaviorEnv`` that also observes the robot camera's RGB, depth and semantic
+segmentation at 128² (the original's onboard sensing).
 """
 
 import argparse
@@ -17,7 +19,7 @@ import time
 import numpy as np
 
 from . import _core
-from .env import BehaviorEnv
+from .env import STATE_OBSERVATIONS, BehaviorEnv, _options
 from .vector import BehaviorVecEnv
 
 
@@ -43,7 +45,8 @@ def main():
     parser.add_argument("--json", action="store_true")
     args = parser.parse_args()
     rows = {}
-    raw = _core.Env(args.activity, robot=args.robot, max_steps=10**6)
+    raw = _core.Env(args.activity, _options(args.robot, None, 0, 10**6, True,
+                                            STATE_OBSERVATIONS, 128))
     actions = np.random.default_rng(0).uniform(
         -1, 1, size=(args.steps, raw.action_dim)).astype(np.float32)
     raw.reset(0)
@@ -52,6 +55,7 @@ def main():
     env.reset(seed=0)
     rows["BehaviorEnv"] = _measure(env.step, env._env, actions)
     rates = _rates(args, env, actions)
+    rates["with_images"] = _with_images(args, actions)
     if args.json:
         print(json.dumps({"per_step": rows, "steps_per_s": rates}))
         return
@@ -61,6 +65,21 @@ def main():
               f"overhead {r['overhead_us']:6.1f} µs")
     print(f"  one BehaviorEnv: {rates['single']:.0f} steps/s; BehaviorVecEnv of {args.vector}: "
           f"{rates['vector']:.0f} environment steps/s, {rates['ratio']:.2f}x")
+    print(f"  BehaviorEnv with the robot camera's rgb, depth and seg at 128²: "
+          f"{rates['with_images']:.0f} steps/s")
+
+
+def _with_images(args, actions):
+    """Steps per second of a ``BehaviorEnv`` observing the original's onboard images too (a
+    tenth of the steps: each is drawn)."""
+    env = BehaviorEnv(args.activity, robot=args.robot, max_steps=10**6,
+                      observations=STATE_OBSERVATIONS + ("rgb", "depth", "seg"))
+    env.reset(seed=1)
+    steps = actions[: max(1, len(actions) // 10)]
+    start = time.perf_counter()
+    for a in steps:
+        env.step(a)
+    return len(steps) / (time.perf_counter() - start)
 
 
 def _rates(args, env, actions):

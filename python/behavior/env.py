@@ -11,6 +11,38 @@ from . import _core
 # Seeds drawn for episodes reset without one stay within what the Rust side takes (u64) and
 # numpy draws (int64).
 _SEED_BOUND = 2**63 - 1
+# The state-only observations (the default).
+STATE_OBSERVATIONS = ("proprioception", "task_obs")
+# The key prefix of the overview camera that ``render()`` shows (not an observation).
+_RENDER_PREFIX = "render/"
+
+
+def _options(robot, scene, seed, max_steps, clutter, observations, image_size,
+             render_size=None, primitives=None, primitive_mode="symbolic"):
+    """The native module's options: every key, as ``behavior._core.Env`` reads them."""
+    if isinstance(observations, str):
+        raise ValueError(f"observations is a list of names, not the string {observations!r}")
+    return {
+        "robot": robot,
+        "scene": scene,
+        "seed": seed,
+        "max_steps": max_steps,
+        "clutter": clutter,
+        "observations": list(observations),
+        "image_size": image_size,
+        "render_size": render_size,
+        "primitives": primitives,
+        "primitive_mode": primitive_mode,
+    }
+
+
+def _box(value: np.ndarray) -> spaces.Box:
+    """The space of one observation, from its first value: images of integers within their
+    type's range, the rest unbounded."""
+    if np.issubdtype(value.dtype, np.integer):
+        info = np.iinfo(value.dtype)
+        return spaces.Box(info.min, info.max, shape=value.shape, dtype=value.dtype)
+    return spaces.Box(-np.inf, np.inf, shape=value.shape, dtype=value.dtype)
 
 
 class BehaviorEnv(gymnasium.Env):
@@ -23,6 +55,11 @@ class BehaviorEnv(gymnasium.Env):
       the observation's shapes).
     - ``max_steps``: the episode's step limit (default the Rust side's).
     - ``clutter``: whether the home holds its everyday clutter.
+    - ``observations``: what the agent observes: ``"proprioception"``, ``"task_obs"``,
+      ``"lidar"`` and the robot camera's images ``"rgb"`` (``(s, s, 3)`` uint8), ``"depth"``
+      (float32, m), ``"normal"``, ``"seg"`` (uint16 categories), ``"ins_seg"`` (uint32),
+      ``"highlight"``, ``"flow"``, ``"scene_flow"``, each ``image_size`` pixels square (the
+      original's 128 by default).
     - ``action_space``: ``"continuous"`` (the robot's own actions, one step each) or
       ``"primitives"``: the original's ``Discrete(n × K)`` (object ``a % n``, primitive
       ``a // n``), each action one primitive run to its end, ``primitive_mode`` ``"symbolic"``
@@ -40,7 +77,7 @@ class BehaviorEnv(gymnasium.Env):
     ``conjuncts`` (whether each top-level conjunct of the goal holds).
     """
 
-    metadata = {"render_modes": []}
+    metadata = {"render_modes": ["rgb_array"], "render_fps": 30}
 
     def __init__(
         self,
@@ -53,10 +90,13 @@ class BehaviorEnv(gymnasium.Env):
         action_space: str = "continuous",
         primitive_mode: str = "symbolic",
         primitive_set: str = "paper",
+        observations=STATE_OBSERVATIONS,
+        image_size: int = 128,
         render_mode: Optional[str] = None,
+        render_size: int = 256,
     ):
-        if render_mode is not None:
-            raise ValueError(f"render_mode {render_mode!r} is not offered yet (none is)")
+        if render_mode not in (None, "rgb_array"):
+            raise ValueError(f"render_mode must be None or 'rgb_array', not {render_mode!r}")
         if action_space not in ("continuous", "primitives"):
             raise ValueError(
                 f"action_space must be 'continuous' or 'primitives', not {action_space!r}"
@@ -64,21 +104,17 @@ class BehaviorEnv(gymnasium.Env):
         self._primitives = action_space == "primitives"
         self._env = _core.Env(
             activity,
-            robot=robot,
-            scene=scene,
-            seed=seed,
-            max_steps=max_steps,
-            clutter=clutter,
-            primitives=primitive_set if self._primitives else None,
-            primitive_mode=primitive_mode,
+            _options(
+                robot, scene, seed, max_steps, clutter, observations, image_size,
+                render_size=render_size if render_mode == "rgb_array" else None,
+                primitives=primitive_set if self._primitives else None,
+                primitive_mode=primitive_mode,
+            ),
         )
+        self._frame = None
         first, _ = self._env.reset(seed)
-        self.observation_space = spaces.Dict(
-            {
-                name: spaces.Box(-np.inf, np.inf, shape=value.shape, dtype=value.dtype)
-                for name, value in first.items()
-            }
-        )
+        first = self._observed(first)
+        self.observation_space = spaces.Dict({name: _box(v) for name, v in first.items()})
         if self._primitives:
             self.action_space = spaces.Discrete(self._env.primitive_count)
         else:
@@ -105,18 +141,33 @@ class BehaviorEnv(gymnasium.Env):
         episode_seed = seed if seed is not None else int(self.np_random.integers(_SEED_BOUND))
         if episode_seed < 0:
             raise ValueError(f"seed must be a non-negative integer, not {episode_seed}")
-        return self._env.reset(episode_seed)
+        obs, info = self._env.reset(episode_seed)
+        return self._observed(obs), info
 
     def step(self, action: Any):
         """One action step (1/30 s of simulated time), or one primitive run to its end."""
         if self._primitives:
-            return self._env.step_primitive(self._primitive_index(action))
-        values = np.asarray(action, dtype=np.float32)
-        if values.shape != self.action_space.shape:
-            raise ValueError(
-                f"the action must have shape {self.action_space.shape}, not {values.shape}"
-            )
-        return self._env.step(values)
+            obs, *rest = self._env.step_primitive(self._primitive_index(action))
+        else:
+            values = np.asarray(action, dtype=np.float32)
+            if values.shape != self.action_space.shape:
+                raise ValueError(
+                    f"the action must have shape {self.action_space.shape}, not {values.shape}"
+                )
+            obs, *rest = self._env.step(values)
+        return (self._observed(obs), *rest)
+
+    def render(self):
+        """With ``render_mode="rgb_array"``: the home from above after the last reset or step,
+        ``(render_size, render_size, 3)`` uint8; else ``None``."""
+        return self._frame
+
+    def _observed(self, obs: dict) -> dict:
+        """The agent's observation: the render camera's frame kept aside for ``render()``."""
+        frame = obs.pop(_RENDER_PREFIX + "rgb", None)
+        if frame is not None:
+            self._frame = frame
+        return obs
 
     def action_masks(self) -> np.ndarray:
         """Whether each primitive action's preconditions hold now (sb3-contrib's

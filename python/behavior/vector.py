@@ -8,7 +8,7 @@ from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
 from . import _core
-from .env import _SEED_BOUND
+from .env import _SEED_BOUND, STATE_OBSERVATIONS, _box, _options
 
 
 class BehaviorVecEnv(VectorEnv):
@@ -23,7 +23,8 @@ class BehaviorVecEnv(VectorEnv):
     resets it, ignoring its action, and returns the new episode's first observation with reward
     0, neither terminated nor truncated. ``reset(seed=s)`` starts environment k with ``s + k``;
     the episodes an environment starts by itself after that get seeds derived from its own, so
-    a run is the same for the same seed and actions. Arguments as ``BehaviorEnv``'s.
+    a run is the same for the same seed and actions. Arguments as ``BehaviorEnv``'s (continuous
+    actions; no rendering).
     """
 
     metadata = {"autoreset_mode": AutoresetMode.NEXT_STEP, "render_modes": []}
@@ -37,21 +38,21 @@ class BehaviorVecEnv(VectorEnv):
         seed: int = 0,
         max_steps: Optional[int] = None,
         clutter: bool = True,
+        observations=STATE_OBSERVATIONS,
+        image_size: int = 128,
         render_mode: Optional[str] = None,
     ):
         if render_mode is not None:
-            raise ValueError(f"render_mode {render_mode!r} is not offered yet (none is)")
+            raise ValueError(f"the vector environment renders nothing, not {render_mode!r}")
         self._env = _core.VecEnv(
-            activity, num_envs, robot=robot, scene=scene, seed=seed, max_steps=max_steps,
-            clutter=clutter,
+            activity,
+            num_envs,
+            _options(robot, scene, seed, max_steps, clutter, observations, image_size),
         )
         first, _ = self._env.reset(seed)
         self.num_envs = num_envs
         self.single_observation_space = spaces.Dict(
-            {
-                name: spaces.Box(-np.inf, np.inf, shape=value.shape[1:], dtype=value.dtype)
-                for name, value in first.items()
-            }
+            {name: _box(value[0]) for name, value in first.items()}
         )
         self.single_action_space = spaces.Box(
             -1.0, 1.0, shape=(self._env.action_dim,), dtype=np.float32

@@ -2,7 +2,7 @@
 //! interpreter's lock released, observations handed over as numpy arrays that own the Rust
 //! vectors (no copy). Optionally with the primitive action space ([`Primitives`]).
 
-use crate::build::{Catalog, EnvSpec};
+use crate::options::EnvOptions;
 use crate::primitives::{Done, PrimitiveError, Primitives};
 use behavior_env::{Env, EnvError, Obs, Score};
 use behavior_planning::RunError;
@@ -38,41 +38,19 @@ pub struct PyEnv {
 
 #[pymethods]
 impl PyEnv {
-    /// Builds the environment and starts a first episode with `seed` (so that its shapes are
-    /// known). `scene`: a named home, or `None` for the first that covers the activity.
-    /// `primitives`: `None` for continuous actions, else the primitive set (`paper`,
-    /// `two_hands`, `all`) of `step_primitive`, run in `primitive_mode` (`symbolic`,
-    /// `physical`).
+    /// Builds the environment of `activity` with `options` (a dict with every field of
+    /// [`EnvOptions`]; `behavior.BehaviorEnv` gives the defaults) and starts a first episode
+    /// with its seed, so that the shapes are known.
     #[new]
-    #[pyo3(signature = (activity, robot = "behavior".to_string(), scene = None, seed = 0, max_steps = None, clutter = true, primitives = None, primitive_mode = "symbolic".to_string()))]
-    #[allow(clippy::too_many_arguments)] // Python's keyword arguments
-    fn new(
-        py: Python<'_>,
-        activity: String,
-        robot: String,
-        scene: Option<String>,
-        seed: u64,
-        max_steps: Option<u32>,
-        clutter: bool,
-        primitives: Option<String>,
-        primitive_mode: String,
-    ) -> PyResult<PyEnv> {
-        let primitives = primitives
-            .map(|set| Primitives::new(&set, &primitive_mode))
+    fn new(py: Python<'_>, activity: String, options: EnvOptions) -> PyResult<PyEnv> {
+        let primitives = options
+            .primitives
+            .as_deref()
+            .map(|set| Primitives::new(set, &options.primitive_mode))
             .transpose()
             .map_err(PyValueError::new_err)?;
-        let spec = EnvSpec {
-            activity,
-            robot,
-            scene,
-            clutter,
-        };
         let built = py.detach(|| -> Result<(Episode, String), String> {
-            let catalog = Catalog::load().map_err(|e| e.to_string())?;
-            let mut config = catalog.config(&spec).map_err(|e| e.to_string())?;
-            if let Some(max) = max_steps {
-                config.max_steps = max;
-            }
+            let config = options.config(&activity)?;
             let scene = config
                 .scenes
                 .first()
@@ -82,7 +60,7 @@ impl PyEnv {
                 env: Env::new(config),
                 primitives,
             };
-            episode.reset(seed).map_err(|e| e.to_string())?;
+            episode.reset(options.seed).map_err(|e| e.to_string())?;
             Ok((episode, scene))
         });
         let (episode, scene) = built.map_err(PyValueError::new_err)?;
@@ -90,8 +68,8 @@ impl PyEnv {
             action_dim: episode.env.robot().map_or(0, |r| r.action_dim()),
             episode: Mutex::new(episode),
             inside: Mutex::new((0.0, 0)),
-            activity: spec.activity,
-            robot: spec.robot,
+            activity,
+            robot: options.robot,
             scene,
         })
     }

@@ -13,6 +13,7 @@ static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 mod build;
 mod env;
+mod options;
 mod primitives;
 mod vector;
 

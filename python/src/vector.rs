@@ -10,7 +10,7 @@
 //! e-th episode environment k starts by itself after that has the seed [`next_seed`] of its
 //! last reset seed and e, so a run is the same for the same seed and actions.
 
-use crate::build::{Catalog, EnvSpec};
+use crate::options::EnvOptions;
 use crate::env::env_error;
 use behavior_env::{Env, EnvError, Obs, Score};
 use behavior_render::Pixels;
@@ -50,41 +50,31 @@ pub struct PyVecEnv {
 
 #[pymethods]
 impl PyVecEnv {
-    /// Builds `num_envs` environments (the home made once) and resets environment k with
-    /// `seed + k`.
+    /// Builds `num_envs` environments of `activity` with `options` (as `Env`'s; continuous
+    /// actions) and resets environment k with `seed + k`.
     #[new]
-    #[allow(clippy::too_many_arguments)] // Python's keyword arguments
-    #[pyo3(signature = (activity, num_envs, robot = "behavior".to_string(), scene = None, seed = 0, max_steps = None, clutter = true))]
     fn new(
         py: Python<'_>,
         activity: String,
         num_envs: usize,
-        robot: String,
-        scene: Option<String>,
-        seed: u64,
-        max_steps: Option<u32>,
-        clutter: bool,
+        options: EnvOptions,
     ) -> PyResult<PyVecEnv> {
         if num_envs == 0 {
             return Err(PyValueError::new_err("num_envs must be at least 1"));
         }
-        let spec = EnvSpec {
-            activity,
-            robot,
-            scene,
-            clutter,
-        };
+        if options.primitives.is_some() {
+            return Err(PyValueError::new_err(
+                "the vector environment takes continuous actions, not primitives",
+            ));
+        }
         // The calling thread steps the first environment itself (see `each`).
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(num_envs.min(available_cores()).saturating_sub(1).max(1))
             .build()
             .map_err(|e| PyRuntimeError::new_err(format!("starting threads: {e}")))?;
+        let seed = options.seed;
         let slots = py.detach(|| -> Result<Vec<Slot>, String> {
-            let catalog = Catalog::load().map_err(|e| e.to_string())?;
-            let mut config = catalog.config(&spec).map_err(|e| e.to_string())?;
-            if let Some(max) = max_steps {
-                config.max_steps = max;
-            }
+            let config = options.config(&activity)?;
             let mut slots: Vec<Slot> = (0..num_envs as u64)
                 .map(|k| Slot {
                     env: Env::new(config.clone()),

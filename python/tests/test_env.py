@@ -161,3 +161,34 @@ def test_bad_primitive_input_raises():
     continuous = make()
     with pytest.raises(ValueError, match="continuous, not primitives"):
         continuous.unwrapped._env.step_primitive(0)
+
+
+def test_camera_images_are_observed_and_the_overview_rendered():
+    env = make(
+        observations=["task_obs", "rgb", "depth", "seg"], image_size=64,
+        render_mode="rgb_array", render_size=96,
+    )
+    space = env.observation_space
+    assert set(space.keys()) == {"task_obs", "rgb", "depth", "seg"}
+    assert space["rgb"].shape == (64, 64, 3) and space["rgb"].dtype == np.uint8
+    assert space["depth"].shape == (64, 64) and space["depth"].dtype == np.float32
+    assert space["seg"].dtype == np.uint16
+    obs, _ = env.reset(seed=0)
+    assert obs in space
+    assert obs["rgb"].std() > 0 and obs["depth"].max() > 0  # something in view
+    frame = env.render()
+    assert frame.shape == (96, 96, 3) and frame.dtype == np.uint8 and frame.std() > 0
+    obs, *_ = env.step(env.action_space.sample())
+    assert env.render() is not frame  # a new frame each step
+    check_env(env.unwrapped)
+
+
+def test_bad_observation_options_raise():
+    with pytest.raises(ValueError, match="unknown modality `colour`"):
+        make(observations=["colour"])
+    with pytest.raises(ValueError, match="list of names"):
+        make(observations="rgb")
+    with pytest.raises(ValueError, match="render_mode must be"):
+        behavior.BehaviorEnv(ACTIVITY, render_mode="ansi")
+    with pytest.raises(ValueError, match="at least 1 pixel"):
+        make(observations=["rgb"], image_size=0)

@@ -92,3 +92,13 @@ def test_bad_input_raises():
         envs.reset(seed=[1, 2])
     with pytest.raises(ValueError, match="at least 1"):
         behavior.make_vec(ACTIVITY, num_envs=0)
+
+
+def test_vector_observes_images_batched():
+    envs = behavior.make_vec(ACTIVITY, num_envs=2, observations=["rgb", "proprioception"],
+                             image_size=32)
+    obs, _ = envs.reset(seed=0)
+    assert obs["rgb"].shape == (2, 32, 32, 3) and obs["rgb"].dtype == np.uint8
+    assert envs.single_observation_space["rgb"].shape == (32, 32, 3)
+    obs, *_ = envs.step(envs.action_space.sample())
+    assert obs in envs.observation_space

@@ -10,8 +10,8 @@
 //! e-th episode environment k starts by itself after that has the seed [`next_seed`] of its
 //! last reset seed and e, so a run is the same for the same seed and actions.
 
-use crate::options::EnvOptions;
 use crate::env::env_error;
+use crate::options::EnvOptions;
 use behavior_env::{Env, EnvError, Obs, Score};
 use behavior_render::Pixels;
 use numpy::{AllowTypeChange, IntoPyArray, PyArrayLike2, PyArrayMethods, PyUntypedArrayMethods};

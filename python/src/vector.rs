@@ -1,10 +1,9 @@
 //! `behavior._core.VecEnv`: N environments of one activity stepped together, the first on the
 //! calling thread and each other one on a thread of a pool (rayon), while the interpreter's
-//! lock is released, observations batched
-//! into `(N, …)` numpy arrays. Ended episodes reset on the next step, as Gymnasium 1.x's
-//! vector environments do by default (autoreset "next step"): that step ignores the
-//! environment's action and returns the new episode's first observation, reward 0, neither
-//! terminated nor truncated.
+//! lock is released, observations batched into `(N, …)` numpy arrays. Ended episodes reset on
+//! the next step, as Gymnasium 1.x's vector environments do by default (autoreset "next
+//! step"): that step ignores the environment's action and returns the new episode's first
+//! observation, reward 0, neither terminated nor truncated.
 //!
 //! Seeds: `reset(seed)` starts environment k with `seed + k` (Gymnasium's convention); the
 //! e-th episode environment k starts by itself after that has the seed [`next_seed`] of its
@@ -274,27 +273,28 @@ fn broken() -> PyErr {
     PyRuntimeError::new_err("the environments were left broken by an earlier error")
 }
 
+/// Which of an observation's vectors.
+type VectorOf = fn(&Obs) -> &Vec<f32>;
+
 /// Each observation key as one `(N, …)` array (the environments' readings have the same
 /// shapes: one activity, one robot, the same sensors).
 fn batch_obs<'py>(py: Python<'py>, outcomes: &[Outcome]) -> PyResult<Bound<'py, PyDict>> {
     let dict = PyDict::new(py);
     let n = outcomes.len();
     let first = &outcomes[0].obs;
-    if !first.proprioception.is_empty() {
-        let all: Vec<f32> = outcomes
-            .iter()
-            .flat_map(|o| o.obs.proprioception.iter().copied())
-            .collect();
-        let width = first.proprioception.len();
-        dict.set_item("proprioception", all.into_pyarray(py).reshape([n, width])?)?;
-    }
-    if !first.task_obs.is_empty() {
-        let all: Vec<f32> = outcomes
-            .iter()
-            .flat_map(|o| o.obs.task_obs.iter().copied())
-            .collect();
-        let width = first.task_obs.len();
-        dict.set_item("task_obs", all.into_pyarray(py).reshape([n, width])?)?;
+    let vectors: [(&str, VectorOf); 2] = [
+        ("proprioception", |o| &o.proprioception),
+        ("task_obs", |o| &o.task_obs),
+    ];
+    for (name, of) in vectors {
+        let width = of(first).len();
+        if width > 0 {
+            let all: Vec<f32> = outcomes
+                .iter()
+                .flat_map(|o| of(&o.obs).iter().copied())
+                .collect();
+            dict.set_item(name, all.into_pyarray(py).reshape([n, width])?)?;
+        }
     }
     for (k, (name, reading)) in first.sensors.iter().enumerate() {
         let mut shape = vec![n];

@@ -70,9 +70,10 @@ class BehaviorEnv(gymnasium.Env):
       ``object``, ``hand``, ``ok``, ``reason`` and has the ``action_mask`` of feasible actions
       (``action_masks()`` too, for sb3-contrib's MaskablePPO).
 
-    Observations: a ``Dict`` of ``proprioception`` (22 numbers for the BehaviorRobot, 49 for
-    Fetch) and ``task_obs`` (456: the robot's pose and 50 object slots), float32. Actions: a
-    ``Box`` in [-1, 1]. Reward: the change of Q, the goal's success score. ``terminated``: the
+    Observations: a ``Dict`` of those asked for, by default ``proprioception`` (22 numbers for
+    the BehaviorRobot, 49 for Fetch) and ``task_obs`` (456: the robot's pose and 50 object
+    slots), float32. Continuous actions: a ``Box`` in [-1, 1]. Reward: the change of Q, the
+    goal's success score. ``terminated``: the
     goal holds; ``truncated``: the step limit. ``info``: ``steps``, ``q``, ``success`` and
     ``conjuncts`` (whether each top-level conjunct of the goal holds).
     """

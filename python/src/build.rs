@@ -2,11 +2,11 @@
 //! (fetched from PyPI on first use), the activity's definition loaded, the first of the named
 //! homes that covers it, with its clutter.
 
-use behavior_assets::{Library, NAMED_HOMES, Scene, clutter, covering, generate};
+use behavior_assets::{Library, NAMED_HOMES, clutter, first_covering, named_home};
 use behavior_bddl::Knowledge;
 use behavior_bddl::load::read_source;
 use behavior_data::DataDir;
-use behavior_env::{EnvConfig, Instances};
+use behavior_env::EnvConfig;
 use behavior_robots::RobotKind;
 use std::sync::Arc;
 
@@ -83,17 +83,14 @@ impl Catalog {
         let (activity, _warnings) = self.knowledge.load(&source)?;
         let library = Library::new(&self.knowledge.taxonomy);
         let home = match &spec.scene {
-            Some(name) => named_home(name, &library)?,
-            None => {
-                let homes = NAMED_HOMES
-                    .iter()
-                    .map(|(n, s)| generate(n, *s, &library))
-                    .collect::<Result<Vec<Scene>, _>>()?;
-                covering(&homes, &activity, &self.knowledge.taxonomy)
-                    .first()
-                    .map(|h| (*h).clone())
-                    .ok_or_else(|| BuildError::NotCovered(spec.activity.clone()))?
+            Some(name) => {
+                named_home(name, &library).ok_or_else(|| BuildError::UnknownScene {
+                    given: name.clone(),
+                    known: names(NAMED_HOMES.iter().map(|(n, _)| *n)),
+                })??
             }
+            None => first_covering(&activity, &library, &self.knowledge.taxonomy)?
+                .ok_or_else(|| BuildError::NotCovered(spec.activity.clone()))?,
         };
         let home = if spec.clutter {
             clutter(&home, &library, home.seed)?
@@ -106,7 +103,6 @@ impl Catalog {
             vec![home],
         );
         config.robot = robot;
-        config.instances = Instances::Sampled;
         Ok(config)
     }
 }
@@ -120,18 +116,6 @@ fn data_dir() -> Result<DataDir, BuildError> {
 /// Every official activity's name, in the manifest's order.
 pub fn activities() -> Result<Vec<String>, BuildError> {
     Ok(data_dir()?.activities()?)
-}
-
-/// A named home, generated.
-fn named_home(name: &str, library: &Library) -> Result<Scene, BuildError> {
-    let (n, seed) = NAMED_HOMES
-        .iter()
-        .find(|(n, _)| *n == name)
-        .ok_or_else(|| BuildError::UnknownScene {
-            given: name.to_string(),
-            known: names(NAMED_HOMES.iter().map(|(n, _)| *n)),
-        })?;
-    Ok(generate(n, *seed, library)?)
 }
 
 fn names<'a>(all: impl Iterator<Item = &'a str>) -> String {

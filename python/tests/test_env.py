@@ -2,6 +2,7 @@
 checker, stepped, fed bad input."""
 
 import threading
+import time
 
 import gymnasium
 import numpy as np
@@ -192,3 +193,31 @@ def test_bad_observation_options_raise():
         behavior.BehaviorEnv(ACTIVITY, render_mode="ansi")
     with pytest.raises(ValueError, match="at least 1 pixel"):
         make(observations=["rgb"], image_size=0)
+
+
+def test_python_runs_on_another_thread_while_rust_works():
+    # A reset (sampling an instance, tens of ms) is one call into Rust; were the interpreter's
+    # lock held through it, no Python code could run on another thread until it returned: one
+    # gap as long as the call between the other thread's ticks.
+    env = make()
+    spans = []
+
+    def resets():
+        for seed in range(3):
+            start = time.perf_counter()
+            env.reset(seed=seed)
+            spans.append((start, time.perf_counter()))
+
+    worker = threading.Thread(target=resets)
+    ticks = []
+    worker.start()
+    while worker.is_alive():
+        ticks.append(time.perf_counter())
+    worker.join()
+    for start, end in spans:
+        assert end - start > 0.005, "the reset was too short to tell"
+        points = [start] + [t for t in ticks if start < t < end] + [end]
+        longest = max(b - a for a, b in zip(points, points[1:]))
+        assert longest < 0.5 * (end - start), (
+            f"no Python ran for {longest:.3f} s of a {end - start:.3f} s reset"
+        )

@@ -3,6 +3,8 @@
 //! room type, enough objects of each synset (or of a synset below it in the taxonomy) in rooms of
 //! that type. Floors (`floor.n.01`) ask for rooms of the type.
 
+use crate::home::named_homes;
+use crate::library::{AssetError, Library};
 use crate::scene::Scene;
 use behavior_bddl::Taxonomy;
 use behavior_bddl::activity::{Activity, InitLiteral};
@@ -60,6 +62,19 @@ pub fn missing(scene: &Scene, needs: &Requirements, taxonomy: &Taxonomy) -> Vec<
         }
     }
     lacks
+}
+
+/// The first of the named homes that covers `activity` (`None`: none does), generated: the home
+/// an activity runs in when none is asked for.
+pub fn first_covering(
+    activity: &Activity,
+    library: &Library,
+    taxonomy: &Taxonomy,
+) -> Result<Option<Scene>, AssetError> {
+    let homes = named_homes(library)?;
+    Ok(covering(&homes, activity, taxonomy)
+        .first()
+        .map(|h| (*h).clone()))
 }
 
 /// The homes among `homes` that cover `activity`, in the order given: the one place that

@@ -60,6 +60,20 @@ pub const DOORWAY: f32 = 1.0;
 /// Kept free in front of a doorway, on both sides (m).
 pub const DOOR_CLEARANCE: f32 = 1.1;
 
+/// The fifteen [`NAMED_HOMES`], generated in their fixed order.
+pub fn named_homes(library: &Library) -> Result<Vec<Scene>, AssetError> {
+    NAMED_HOMES
+        .iter()
+        .map(|(n, s)| generate(n, *s, library))
+        .collect()
+}
+
+/// The named home called `name`, generated; `None` if no named home is called so.
+pub fn named_home(name: &str, library: &Library) -> Option<Result<Scene, AssetError>> {
+    let (n, seed) = NAMED_HOMES.iter().find(|(n, _)| *n == name)?;
+    Some(generate(n, *seed, library))
+}
+
 /// Generates the home of a seed. Named homes pass their name; any other seed makes a new home.
 pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, AssetError> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);

@@ -35,8 +35,11 @@ mod urdf;
 pub use archetype::{Archetype, Layout, Material, Shape};
 pub use catalog::CATALOG;
 pub use clutter::{ClutterError, clutter};
-pub use coverage::{Requirements, covering, missing, requirements};
-pub use home::{CORRIDOR_WIDTH, DOOR_CLEARANCE, DOORWAY, NAMED_HOMES, WALL_THICKNESS, generate};
+pub use coverage::{Requirements, covering, first_covering, missing, requirements};
+pub use home::{
+    CORRIDOR_WIDTH, DOOR_CLEARANCE, DOORWAY, NAMED_HOMES, WALL_THICKNESS, generate, named_home,
+    named_homes,
+};
 pub use library::{AssetError, Library};
 pub use scene::{
     BuiltScene, ClutterPlan, FLOOR_THICKNESS, ObjectPlan, RoomPlan, Scene, SceneError, WALL_HEIGHT,

@@ -3,7 +3,7 @@
 //! homes.
 
 use anyhow::{Context, Result};
-use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
+use behavior_assets::{Library, Scene};
 use behavior_bddl::load::read_source;
 use behavior_bddl::{Activity, Knowledge, Source};
 use behavior_data::DataDir;
@@ -91,10 +91,7 @@ impl Prelude {
 
 /// The fifteen named homes, generated in their fixed order.
 pub fn named_homes(library: &Library) -> Result<Vec<Scene>> {
-    Ok(NAMED_HOMES
-        .iter()
-        .map(|(n, s)| generate(n, *s, library))
-        .collect::<Result<_, _>>()?)
+    Ok(behavior_assets::named_homes(library)?)
 }
 
 /// A progress bar over `len` items, hidden when the output is JSON.

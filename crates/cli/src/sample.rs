@@ -218,11 +218,8 @@ pub(crate) fn first_covering(
     library: &Library,
     taxonomy: &Taxonomy,
 ) -> Result<Scene> {
-    let homes = named_homes(library)?;
-    let first = covering(&homes, activity, taxonomy)
-        .first()
-        .map(|h| (*h).clone());
-    first.with_context(|| format!("no named home covers {}", activity.name))
+    behavior_assets::first_covering(activity, library, taxonomy)?
+        .with_context(|| format!("no named home covers {}", activity.name))
 }
 
 /// `--out` and `--png`, when asked for.

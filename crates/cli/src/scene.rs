@@ -138,8 +138,8 @@ pub(crate) fn with_clutter(scene: Scene, library: &Library, on: bool) -> Result<
 
 /// A named home, or a scene file.
 pub(crate) fn load_scene(name: &str, library: &Library) -> Result<Scene> {
-    if let Some((n, seed)) = NAMED_HOMES.iter().find(|(n, _)| *n == name) {
-        return Ok(generate(n, *seed, library)?);
+    if let Some(home) = behavior_assets::named_home(name, library) {
+        return Ok(home?);
     }
     let text = std::fs::read_to_string(name).with_context(|| {
         format!(

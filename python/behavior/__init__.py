@@ -12,16 +12,22 @@ Importing the package registers one Gymnasium environment per official activity,
 
 ``behavior.BehaviorEnv`` is the environment class; ``behavior.make_vec(activity, num_envs)``
 (or ``gymnasium.make_vec(id, num_envs, vectorization_mode="vector_entry_point")``) steps several
-in Rust threads; ``behavior.activities()`` lists the activities.
+in Rust threads; ``behavior.activities()`` lists the activities and
+``behavior.covering_homes(activity)`` the homes that hold what one needs; ``behavior.bddl`` checks
+definitions, evaluates goals on states and lists their options. ``behavior.evaluate``
+runs the benchmark's evaluation protocol; ``behavior.baselines`` (the ``baselines`` extra) trains
+the paper's RL baselines; ``behavior.ray`` (the ``ray`` extra) runs on a Ray cluster.
 """
 
 from gymnasium.envs.registration import register, registry
 
-from ._core import activities
+from . import bddl
+from ._core import activities, covering_homes
 from .env import BehaviorEnv
 from .vector import BehaviorVecEnv, make_vec
 
-__all__ = ["BehaviorEnv", "BehaviorVecEnv", "activities", "make_vec", "register_envs"]
+__all__ = ["BehaviorEnv", "BehaviorVecEnv", "activities", "bddl", "covering_homes", "make_vec",
+           "register_envs"]
 
 
 def register_envs():

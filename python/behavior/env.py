@@ -145,6 +145,18 @@ class BehaviorEnv(gymnasium.Env):
         obs, info = self._env.reset(episode_seed)
         return self._observed(obs), info
 
+    def checkpoint(self):
+        """The episode as it is now (an opaque ``behavior._core.Checkpoint``), to come back to
+        with ``restore``."""
+        return self._env.checkpoint()
+
+    def restore(self, checkpoint):
+        """Goes back to ``checkpoint`` (taken from this environment); the episode continues from
+        there bit for bit. Returns ``(obs, info)`` as ``reset`` does: restoring a checkpoint taken
+        just after ``reset(seed=s)`` is that reset without sampling the instance again."""
+        obs, info = self._env.restore(checkpoint)
+        return self._observed(obs), info
+
     def step(self, action: Any):
         """One action step (1/30 s of simulated time), or one primitive run to its end."""
         if self._primitives:

@@ -2,12 +2,16 @@
 //! (fetched from PyPI on first use), the activity's definition loaded, the first of the named
 //! homes that covers it, with its clutter.
 
-use behavior_assets::{Library, NAMED_HOMES, clutter, first_covering, named_home};
-use behavior_bddl::Knowledge;
+use behavior_assets::{
+    Library, NAMED_HOMES, clutter, covering, first_covering, named_home, named_homes,
+};
+use behavior_bddl::activity::Activity;
 use behavior_bddl::load::read_source;
+use behavior_bddl::{Knowledge, Source};
 use behavior_data::DataDir;
 use behavior_env::EnvConfig;
 use behavior_robots::RobotKind;
+use std::path::Path;
 use std::sync::Arc;
 
 /// Why an environment could not be built. Each says which name or file was at fault.
@@ -25,6 +29,9 @@ pub enum BuildError {
     /// Not an official activity.
     #[error("`{0}` is not an official activity (behavior.activities() lists them)")]
     UnknownActivity(String),
+    /// Neither a file nor an official activity.
+    #[error("`{0}` is neither a file nor an official activity")]
+    UnknownDefinition(String),
     /// Not a robot.
     #[error("robot must be one of {known}, not `{given}`")]
     UnknownRobot { given: String, known: String },
@@ -71,16 +78,11 @@ impl Catalog {
 
     /// The configuration of an environment of `spec`, with the defaults of [`EnvConfig::new`].
     pub fn config(&self, spec: &EnvSpec) -> Result<EnvConfig, BuildError> {
-        let known = self.data.activities()?;
-        if !known.contains(&spec.activity) {
-            return Err(BuildError::UnknownActivity(spec.activity.clone()));
-        }
+        let activity = self.activity(&spec.activity)?;
         let robot = RobotKind::from_name(&spec.robot).ok_or_else(|| BuildError::UnknownRobot {
             given: spec.robot.clone(),
             known: names(RobotKind::ALL.iter().map(|k| k.name())),
         })?;
-        let source = read_source(&self.data.problem_path(&spec.activity)?)?;
-        let (activity, _warnings) = self.knowledge.load(&source)?;
         let library = Library::new(&self.knowledge.taxonomy);
         let home = match &spec.scene {
             Some(name) => {
@@ -104,6 +106,45 @@ impl Catalog {
         );
         config.robot = robot;
         Ok(config)
+    }
+
+    /// The named homes that hold what `activity` needs, in the order episodes use them (the
+    /// first is where an environment without a `scene` samples).
+    pub fn covering_homes(&self, activity: &str) -> Result<Vec<String>, BuildError> {
+        let activity = self.activity(activity)?;
+        let homes = named_homes(&Library::new(&self.knowledge.taxonomy))?;
+        Ok(covering(&homes, &activity, &self.knowledge.taxonomy)
+            .into_iter()
+            .map(|h| h.name.clone())
+            .collect())
+    }
+
+    /// The taxonomy and domain definitions are checked against.
+    pub fn knowledge(&self) -> &Knowledge {
+        &self.knowledge
+    }
+
+    /// The text of a definition: the file at `definition` if there is one, else the official
+    /// activity of that name.
+    pub fn source(&self, definition: &str) -> Result<Source, BuildError> {
+        let path = Path::new(definition);
+        if path.exists() {
+            return Ok(read_source(path)?);
+        }
+        if !self.data.activities()?.iter().any(|a| a == definition) {
+            return Err(BuildError::UnknownDefinition(definition.to_string()));
+        }
+        Ok(read_source(&self.data.problem_path(definition)?)?)
+    }
+
+    /// The official activity of this name, loaded.
+    fn activity(&self, name: &str) -> Result<Activity, BuildError> {
+        if !self.data.activities()?.iter().any(|a| a == name) {
+            return Err(BuildError::UnknownActivity(name.to_string()));
+        }
+        let source = read_source(&self.data.problem_path(name)?)?;
+        let (activity, _warnings) = self.knowledge.load(&source)?;
+        Ok(activity)
     }
 }
 

@@ -4,7 +4,7 @@
 
 use crate::options::EnvOptions;
 use crate::primitives::{Done, PrimitiveError, Primitives};
-use behavior_env::{Env, EnvError, Obs, Score};
+use behavior_env::{Checkpoint, Env, EnvError, Obs, Score};
 use behavior_planning::RunError;
 use behavior_render::Pixels;
 use numpy::{AllowTypeChange, IntoPyArray, PyArrayLike1, PyArrayMethods};
@@ -204,6 +204,44 @@ impl PyEnv {
         &self.scene
     }
 
+    /// The episode as it is now, to go back to with `restore`.
+    fn checkpoint(&self) -> PyResult<PyCheckpoint> {
+        let guard = self.lock()?;
+        let checkpoint = guard.env.checkpoint().ok_or_else(|| {
+            PyValueError::new_err("there is no episode to checkpoint: reset first")
+        })?;
+        Ok(PyCheckpoint {
+            checkpoint,
+            owner: self.identity(),
+        })
+    }
+
+    /// Goes back to `checkpoint` (of this environment's activity, robot and home); the episode
+    /// continues from there bit for bit. Returns `(obs, info)` as `reset` does. Restoring a
+    /// checkpoint taken just after `reset(seed)` is that reset without sampling again.
+    fn restore<'py>(
+        &self,
+        py: Python<'py>,
+        checkpoint: &PyCheckpoint,
+    ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
+        if checkpoint.owner != self.identity() {
+            return Err(PyValueError::new_err(format!(
+                "the checkpoint is of {}, not of this environment ({})",
+                checkpoint.owner,
+                self.identity()
+            )));
+        }
+        let mut guard = self.lock()?;
+        let episode: &mut Episode = &mut guard;
+        let obs = py
+            .detach(|| episode.restore(&checkpoint.checkpoint))
+            .map_err(env_error)?;
+        let score = episode.env.score().cloned().unwrap_or_default();
+        let dict = info_dict(py, episode.env.steps(), &score)?;
+        episode.add_mask(py, &dict)?;
+        Ok((obs_dict(py, obs)?, dict))
+    }
+
     /// The episode's metrics so far (the per-episode JSON of `behavior run --json`), as a JSON
     /// string; `None` before the first reset.
     fn metrics_json(&self) -> PyResult<Option<String>> {
@@ -227,6 +265,15 @@ impl Episode {
         Ok(started)
     }
 
+    /// Back to a checkpoint; the primitives find its objects.
+    fn restore(&mut self, checkpoint: &Checkpoint) -> Result<Obs, EnvError> {
+        self.env.restore(checkpoint);
+        if let Some(p) = &mut self.primitives {
+            p.reset(&self.env);
+        }
+        self.env.observe()
+    }
+
     /// The primitive actions' mask (empty without primitives).
     fn mask(&self) -> Vec<bool> {
         self.primitives
@@ -243,7 +290,21 @@ impl Episode {
     }
 }
 
+/// An episode as it was at one step (`Env.checkpoint()`), for `Env.restore`. Opaque; only for
+/// environments of the same activity, robot and home.
+#[pyclass(module = "behavior._core", name = "Checkpoint", frozen)]
+pub struct PyCheckpoint {
+    checkpoint: Checkpoint,
+    /// `activity / robot / home` of the environment it came from.
+    owner: String,
+}
+
 impl PyEnv {
+    /// What a checkpoint must have come from: `activity / robot / home`.
+    fn identity(&self) -> String {
+        format!("{} / {} / {}", self.activity, self.robot, self.scene)
+    }
+
     /// The episode, or an error if a step panicked while holding it (it never should; the
     /// interpreter must not die of it either way).
     fn lock(&self) -> PyResult<MutexGuard<'_, Episode>> {

@@ -11,13 +11,15 @@
 #[global_allocator]
 static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
+mod bddl;
 mod build;
 mod env;
 mod options;
 mod primitives;
 mod vector;
 
-use pyo3::exceptions::PyRuntimeError;
+use behavior_env::EpisodeMetrics;
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 
 /// Every official activity's name, in the manifest's order (the data is fetched from PyPI on
@@ -28,10 +30,42 @@ fn activities(py: Python<'_>) -> PyResult<Vec<String>> {
         .map_err(|e| PyRuntimeError::new_err(e.to_string()))
 }
 
+/// The named homes that hold what `activity` needs, in order: the first is where environments
+/// sample by default; the benchmark protocol's unseen-furniture episodes use the second.
+#[pyfunction]
+fn covering_homes(py: Python<'_>, activity: String) -> PyResult<Vec<String>> {
+    py.detach(|| build::Catalog::load()?.covering_homes(&activity))
+        .map_err(|e| PyValueError::new_err(e.to_string()))
+}
+
+/// The benchmark protocol's summary (reference §6.2) of episodes, each `(activity, metrics)`
+/// with the metrics as `Env.metrics_json()` gives them: a JSON object (success score, its top
+/// 5 per-activity means, and the efficiency metrics' means).
+#[pyfunction]
+fn aggregate(episodes: Vec<(String, String)>) -> PyResult<String> {
+    let parsed = episodes
+        .into_iter()
+        .enumerate()
+        .map(|(i, (activity, json))| {
+            serde_json::from_str::<EpisodeMetrics>(&json)
+                .map(|m| (activity, m))
+                .map_err(|e| PyValueError::new_err(format!("episode {i}'s metrics: {e}")))
+        })
+        .collect::<PyResult<Vec<_>>>()?;
+    serde_json::to_string(&behavior_env::metrics::aggregate(&parsed))
+        .map_err(|e| PyRuntimeError::new_err(e.to_string()))
+}
+
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<env::PyEnv>()?;
+    m.add_class::<env::PyCheckpoint>()?;
     m.add_class::<vector::PyVecEnv>()?;
     m.add_function(wrap_pyfunction!(activities, m)?)?;
+    m.add_function(wrap_pyfunction!(covering_homes, m)?)?;
+    m.add_function(wrap_pyfunction!(aggregate, m)?)?;
+    m.add_function(wrap_pyfunction!(bddl::bddl_check, m)?)?;
+    m.add_function(wrap_pyfunction!(bddl::bddl_evaluate, m)?)?;
+    m.add_function(wrap_pyfunction!(bddl::bddl_options, m)?)?;
     Ok(())
 }

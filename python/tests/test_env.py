@@ -221,3 +221,32 @@ def test_python_runs_on_another_thread_while_rust_works():
         assert longest < 0.5 * (end - start), (
             f"no Python ran for {longest:.3f} s of a {end - start:.3f} s reset"
         )
+
+
+def test_restoring_a_checkpoint_continues_bit_for_bit():
+    env = make(action_space="primitives").unwrapped
+    start_obs, start_info = env.reset(seed=2)
+    start = env.checkpoint()
+    rng = np.random.default_rng(0)
+    actions = []
+    for _ in range(6):
+        actions.append(int(rng.choice(np.flatnonzero(env.action_masks()))))
+        first = env.step(actions[-1])
+    obs, info = env.restore(start)
+    assert info["steps"] == 0 and info["q"] == start_info["q"]
+    for key in start_obs:
+        np.testing.assert_array_equal(obs[key], start_obs[key])
+    np.testing.assert_array_equal(info["action_mask"], start_info["action_mask"])
+    for a in actions:
+        again = env.step(a)
+    for key in first[0]:
+        np.testing.assert_array_equal(again[0][key], first[0][key])
+    assert again[1:4] == first[1:4] and again[4]["steps"] == first[4]["steps"]
+
+
+def test_a_checkpoint_of_another_environment_is_refused():
+    source = make().unwrapped
+    source.reset(seed=0)
+    other = gymnasium.make("behavior/storing_food-v0").unwrapped
+    with pytest.raises(ValueError, match="the checkpoint is of bringing_in_wood"):
+        other.restore(source.checkpoint())

@@ -337,8 +337,9 @@ impl Env {
         })
     }
 
-    /// The observation of the episode's world now.
-    fn observe(&mut self) -> Result<Obs, EnvError> {
+    /// The observation of the episode's world now, as a step gives it: after a [`Env::restore`],
+    /// what the agent sees there (empty outside an episode).
+    pub fn observe(&mut self) -> Result<Obs, EnvError> {
         let Some(episode) = &self.episode else {
             return Ok(Obs::default());
         };

@@ -2,10 +2,14 @@
 //! activity's objects and a set of primitives, action `a` meaning object `a mod n` and primitive
 //! `a div n`, with a mask of the actions whose preconditions hold now (for sb3-contrib's
 //! MaskablePPO).
+//!
+//! PLACE_ONTOP on a room's floor places on the floor (the `onfloor` relation), as the
+//! original's does on a RoomFloor: the paper's six have no other way to put a thing down on a
+//! floor, which `bringing_in_wood` and others ask for.
 
 use crate::primitive::{Call, Primitive};
 use crate::symbolic::check;
-use behavior_core::AGENT_SYNSET;
+use behavior_core::{AGENT_SYNSET, FLOOR_SYNSET};
 use behavior_env::Env;
 use behavior_sim::ObjectId;
 
@@ -69,6 +73,8 @@ impl PrimitiveSet {
 pub struct PrimitiveSpace {
     /// The activity's objects (its floors included, the agent left out), in `:objects` order.
     objects: Vec<ObjectId>,
+    /// Whether each object is a room's floor.
+    floors: Vec<bool>,
     /// The primitives with their hands, in order.
     choices: Vec<(Primitive, usize)>,
 }
@@ -79,15 +85,19 @@ impl PrimitiveSpace {
     pub fn of(env: &Env, set: PrimitiveSet) -> Option<PrimitiveSpace> {
         let (bindings, robot) = (env.bindings()?, env.robot()?);
         let activity = &env.config().activity;
-        let objects = activity
+        let (objects, floors) = activity
             .instances
             .iter()
             .zip(bindings)
-            .filter(|(i, _)| activity.category(i.category).name != AGENT_SYNSET)
-            .filter_map(|(_, b)| *b)
-            .collect();
+            .filter_map(|(i, b)| {
+                let category = &activity.category(i.category).name;
+                let object = (*b)?;
+                (category != AGENT_SYNSET).then_some((object, category == FLOOR_SYNSET))
+            })
+            .unzip();
         Some(PrimitiveSpace {
             objects,
+            floors,
             choices: set.choices(robot.hands()),
         })
     }
@@ -112,14 +122,16 @@ impl PrimitiveSpace {
         self.len() == 0
     }
 
-    /// The call action `a` stands for: object `a mod n`, primitive `a div n`; `None` out of
-    /// range.
+    /// The call action `a` stands for: object `a mod n`, primitive `a div n` (PLACE_ONTOP on a
+    /// floor is PLACE_ONFLOOR); `None` out of range.
     pub fn decode(&self, a: usize) -> Option<Call> {
         let n = self.objects.len();
-        let (&object, &(primitive, hand)) = (
-            self.objects.get(a.checked_rem(n)?)?,
-            self.choices.get(a / n)?,
-        );
+        let i = a.checked_rem(n)?;
+        let (&object, &(primitive, hand)) = (self.objects.get(i)?, self.choices.get(a / n)?);
+        let primitive = match primitive {
+            Primitive::PlaceOnTop if self.floors[i] => Primitive::PlaceOnFloor,
+            p => p,
+        };
         Some(Call {
             primitive,
             object,

@@ -24,6 +24,15 @@ fn actions_decode_as_object_mod_n_and_primitive_div_n() {
         (Primitive::Grasp, paper.objects()[1], 1)
     );
     assert!(paper.decode(18).is_none());
+    // PLACE_ONTOP (k = 2) on the floor (object 2) places on the floor, as the original's does.
+    assert_eq!(
+        paper.decode(2 * 3 + 2).unwrap().primitive,
+        Primitive::PlaceOnFloor
+    );
+    assert_eq!(
+        paper.decode(2 * 3 + 1).unwrap().primitive,
+        Primitive::PlaceOnTop
+    );
     let two = PrimitiveSpace::of(&env, PrimitiveSet::TwoHands).unwrap();
     let names: Vec<(&str, usize)> = two.choices().iter().map(|(p, h)| (p.name(), *h)).collect();
     assert_eq!(
@@ -89,4 +98,31 @@ fn the_mask_is_the_preconditions_and_discrete_actions_solve_an_activity() {
         outcome.result.unwrap();
     }
     assert!(env.score().unwrap().success);
+}
+
+#[test]
+fn the_papers_six_put_things_on_a_floor_by_place_ontop() {
+    // bringing_in_wood: every plywood on the kitchen's floor, which only a placement on a floor
+    // does.
+    let mut env = common::env("bringing_in_wood");
+    env.reset(0).unwrap();
+    let space = PrimitiveSpace::of(&env, PrimitiveSet::Paper).unwrap();
+    let n = space.objects().len();
+    let names: Vec<String> = (space.objects().iter())
+        .map(|&o| env.world().unwrap().object(o).name.clone())
+        .collect();
+    let floor = (0..n).find(|&o| names[o].starts_with("floor_kitchen")).unwrap();
+    let planks: Vec<usize> = (0..n).filter(|&o| names[o].starts_with("plywood")).collect();
+    assert_eq!(planks.len(), 3);
+    // navigate_to = 0, grasp = 1, place_ontop = 2.
+    for &plank in &planks {
+        for a in [plank, n + plank, floor, 2 * n + floor] {
+            let call = space.decode(a).unwrap();
+            let outcome = run(&mut env, call, Mode::Symbolic, None).unwrap();
+            outcome
+                .result
+                .unwrap_or_else(|f| panic!("{call:?} on {}: {f}", names[a % n]));
+        }
+    }
+    assert!(env.score().unwrap().success, "every plank on the floor");
 }

@@ -108,11 +108,17 @@ fn the_papers_six_put_things_on_a_floor_by_place_ontop() {
     env.reset(0).unwrap();
     let space = PrimitiveSpace::of(&env, PrimitiveSet::Paper).unwrap();
     let n = space.objects().len();
-    let names: Vec<String> = (space.objects().iter())
+    let names: Vec<String> = space
+        .objects()
+        .iter()
         .map(|&o| env.world().unwrap().object(o).name.clone())
         .collect();
-    let floor = (0..n).find(|&o| names[o].starts_with("floor_kitchen")).unwrap();
-    let planks: Vec<usize> = (0..n).filter(|&o| names[o].starts_with("plywood")).collect();
+    let floor = (0..n)
+        .find(|&o| names[o].starts_with("floor_kitchen"))
+        .unwrap();
+    let planks: Vec<usize> = (0..n)
+        .filter(|&o| names[o].starts_with("plywood"))
+        .collect();
     assert_eq!(planks.len(), 3);
     // navigate_to = 0, grasp = 1, place_ontop = 2.
     for &plank in &planks {

@@ -45,14 +45,11 @@ pub fn bddl_check(py: Python<'_>, definition: String) -> PyResult<(usize, usize,
 /// `conjuncts` (each top-level conjunct's text and whether it holds).
 #[pyfunction]
 pub fn bddl_evaluate(py: Python<'_>, definition: String, state: String) -> PyResult<String> {
-    py.detach(|| -> Result<String, String> {
-        let catalog = Catalog::load().map_err(|e| e.to_string())?;
-        let source = catalog.source(&definition).map_err(|e| e.to_string())?;
-        let (activity, _warnings) = catalog
-            .knowledge()
-            .load(&source)
-            .map_err(|e| e.to_string())?;
-        let facts = FactSet::from_json(&activity, &state).map_err(|e| format!("the state: {e}"))?;
+    py.detach(|| -> Result<String, BuildError> {
+        let catalog = Catalog::load()?;
+        let source = catalog.source(&definition)?;
+        let (activity, _warnings) = catalog.knowledge().load(&source)?;
+        let facts = FactSet::from_json(&activity, &state)?;
         let goal = GroundGoal::new(&activity);
         let optimizer = Optimizer::with_counting(&goal, Counting::Set);
         let q = optimizer.q(&facts);
@@ -74,8 +71,9 @@ pub fn bddl_evaluate(py: Python<'_>, definition: String, state: String) -> PyRes
     .map_err(value_error)
 }
 
-/// A goal's volume (the fewest literals of an option; `None` if it can never hold) and its first `limit` options, smallest first,
-/// each a list of literals (`(ontop plywood.n.01_1 floor.n.01_1)`, `(not (open door.n.01_1))`).
+/// A goal's volume (the fewest literals of an option; `None` if it can never hold) and its first
+/// `limit` options, smallest first, each a list of literals (`(ontop plywood.n.01_1
+/// floor.n.01_1)`, `(not (open door.n.01_1))`).
 #[pyfunction]
 pub fn bddl_options(
     py: Python<'_>,

@@ -1,6 +1,6 @@
 //! An environment built from names, as `behavior run` builds one: the official data located
 //! (fetched from PyPI on first use), the activity's definition loaded, the first of the named
-//! homes that covers it, with its clutter.
+//! homes that covers it, with its clutter; and the definitions the BDDL tools read.
 
 use behavior_assets::{
     Library, NAMED_HOMES, clutter, covering, first_covering, named_home, named_homes,
@@ -32,6 +32,9 @@ pub enum BuildError {
     /// Neither a file nor an official activity.
     #[error("`{0}` is neither a file nor an official activity")]
     UnknownDefinition(String),
+    /// A state given to evaluate a goal on is not one of the activity's.
+    #[error("the state: {0}")]
+    State(#[from] behavior_bddl::eval::StateError),
     /// Not a robot.
     #[error("robot must be one of {known}, not `{given}`")]
     UnknownRobot { given: String, known: String },

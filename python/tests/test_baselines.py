@@ -84,3 +84,7 @@ def test_the_table_puts_ours_beside_the_papers():
     markdown = table1.table(Args, results)
     assert "| bringing_in_wood | 1.00 | 0.75 | 0.50 1.00 | 15 |" in markdown
     assert "| **mean** | 0.63 | 0.75 | | |" in markdown
+    results["storing_food"] = []
+    partial = table1.table(Args, results)
+    assert "| storing_food | 1.00 | not run yet | | |" in partial
+    assert "| **mean of the 11 run** | 0.60 | 0.75 | | |" in partial

@@ -8,6 +8,8 @@
 - ``curves.png``: per activity the training episodes' final Q against the steps taken, each
   seed's and their mean, the paper's Q dashed.
 
+``--report`` trains nothing: it summarizes the runs already done (while others still run).
+
 ``python -m behavior.baselines.table1 --row ap_nophys_fullobs --seeds 0 1 2 --out runs/table1``
 """
 
@@ -76,11 +78,14 @@ def plot(args: argparse.Namespace, seeds: List[int], path: Path) -> None:
     fig, axes = plt.subplots(3, 4, figsize=(16, 10), sharex=True, sharey=True)
     x = (np.arange(CURVE_BINS) + 0.5) * args.timesteps / CURVE_BINS
     for ax, activity in zip(axes.flat, ACTIVITIES):
-        curves = [curve(run_dir(args.out, activity, s), args.timesteps) for s in seeds]
+        curves = [curve(run_dir(args.out, activity, s), args.timesteps) for s in seeds
+                  if (run_dir(args.out, activity, s) / "result.json").exists()]
         for c in curves:
             ax.plot(x, c, color="tab:blue", alpha=0.3, linewidth=1)
-        with np.errstate(invalid="ignore"):
-            ax.plot(x, np.nanmean(curves, axis=0), color="tab:blue", linewidth=2, label="ours")
+        if curves:
+            with np.errstate(invalid="ignore"):
+                mean = np.nanmean(curves, axis=0)
+            ax.plot(x, mean, color="tab:blue", linewidth=2, label="ours")
         paper = paper_q(args.row, activity)
         if paper is not None:
             ax.axhline(paper, color="tab:red", linestyle="--", label="paper")
@@ -96,24 +101,34 @@ def plot(args: argparse.Namespace, seeds: List[int], path: Path) -> None:
     fig.savefig(path, dpi=80)
 
 
+def _paper(row_name: str, activity: str) -> str:
+    paper = paper_q(row_name, activity)
+    return "—" if paper is None else f"{paper:.2f}"
+
+
 def table(args: argparse.Namespace, results: Dict[str, List[dict]]) -> str:
     lines = [
-        f"| activity | paper | ours (mean of {len(args.seeds)} seeds) | per seed | wall s / run |",
+        "| activity | paper | ours (mean over seeds) | per seed | wall s / run |",
         "|---|---|---|---|---|",
     ]
     means = []
     for activity in ACTIVITIES:
         qs = [r["q"] for r in results[activity]]
+        if not qs:
+            lines.append(f"| {activity} | {_paper(args.row, activity)} | not run yet | | |")
+            continue
         means.append(np.mean(qs))
-        paper = paper_q(args.row, activity)
         lines.append(
-            f"| {activity} | {'—' if paper is None else f'{paper:.2f}'} | {np.mean(qs):.2f} | "
+            f"| {activity} | {_paper(args.row, activity)} | {np.mean(qs):.2f} | "
             f"{' '.join(f'{q:.2f}' for q in qs)} | "
             f"{np.mean([r['wall_s'] for r in results[activity]]):.0f} |"
         )
-    papers = [paper_q(args.row, a) for a in ACTIVITIES]
-    paper_mean = "—" if None in papers else f"{np.mean(papers):.2f}"
-    lines.append(f"| **mean** | {paper_mean} | {np.mean(means):.2f} | | |")
+    run = [a for a in ACTIVITIES if results[a]]
+    papers = [paper_q(args.row, a) for a in run]
+    paper_mean = "—" if None in papers or not run else f"{np.mean(papers):.2f}"
+    ours = f"{np.mean(means):.2f}" if means else "—"
+    label = "**mean**" if len(run) == len(ACTIVITIES) else f"**mean of the {len(run)} run**"
+    lines.append(f"| {label} | {paper_mean} | {ours} | | |")
     return "\n".join(lines) + "\n"
 
 
@@ -126,13 +141,19 @@ def main(argv=None) -> int:
     p.add_argument("--robot", default="behavior", choices=["behavior", "fetch"])
     p.add_argument("--jobs", type=int, default=2, help="runs at a time (one core each)")
     p.add_argument("--out", type=Path, default=Path("runs/table1"))
+    p.add_argument("--report", action="store_true",
+                   help="train nothing; summarize the runs already done")
     p.add_argument("extra", nargs="*", help="more options for each run (after --)")
     args = p.parse_args(argv)
     row(args.row)
     args.out = args.out / args.row
     jobs = [(a, s) for s in args.seeds for a in ACTIVITIES]
-    with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
-        done = list(pool.map(lambda job: train_one(args, *job), jobs))
+    if args.report:
+        done = [json.loads((run_dir(args.out, a, s) / "result.json").read_text())
+                for a, s in jobs if (run_dir(args.out, a, s) / "result.json").exists()]
+    else:
+        with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+            done = list(pool.map(lambda job: train_one(args, *job), jobs))
     results: Dict[str, List[dict]] = {a: [] for a in ACTIVITIES}
     for r in done:
         results[r["activity"]].append(r)

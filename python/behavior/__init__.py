@@ -13,9 +13,10 @@ Importing the package registers one Gymnasium environment per official activity,
 ``behavior.BehaviorEnv`` is the environment class; ``behavior.make_vec(activity, num_envs)``
 (or ``gymnasium.make_vec(id, num_envs, vectorization_mode="vector_entry_point")``) steps several
 in Rust threads; ``behavior.activities()`` lists the activities and
-``behavior.covering_homes(activity)`` the homes that hold what one needs; ``behavior.bddl`` checks
-definitions, evaluates goals on states and lists their options. ``behavior.evaluate``
-runs the benchmark's evaluation protocol; ``behavior.baselines`` (the ``baselines`` extra) trains
+``behavior.covering_homes(activity)`` the homes that hold what one needs; ``behavior.bddl``
+checks definitions, evaluates goals on states and lists their options;
+``env.unwrapped.record(path)`` records an episode and ``behavior.replay(path)`` re-simulates it;
+``behavior.evaluate`` runs the benchmark's evaluation protocol; ``behavior.baselines`` (the ``baselines`` extra) trains
 the paper's RL baselines; ``behavior.ray`` (the ``ray`` extra) runs on a Ray cluster.
 """
 
@@ -24,10 +25,11 @@ from gymnasium.envs.registration import register, registry
 from . import bddl
 from ._core import activities, covering_homes
 from .env import BehaviorEnv
+from .recording import replay
 from .vector import BehaviorVecEnv, make_vec
 
 __all__ = ["BehaviorEnv", "BehaviorVecEnv", "activities", "bddl", "covering_homes", "make_vec",
-           "register_envs"]
+           "register_envs", "replay"]
 
 
 def register_envs():

@@ -1,5 +1,6 @@
 """The Gymnasium environment over the Rust episode loop (``behavior._core.Env``)."""
 
+import os
 from typing import Any, Optional
 
 import gymnasium
@@ -156,6 +157,24 @@ class BehaviorEnv(gymnasium.Env):
         just after ``reset(seed=s)`` is that reset without sampling the instance again."""
         obs, info = self._env.restore(checkpoint)
         return self._observed(obs), info
+
+    def record(self, path, checkpoint_every: int = 30):
+        """Records the episode from now on to ``path`` (MCAP: ``behavior.replay`` and
+        ``behavior replay --verify`` re-simulate it), with a state digest every
+        ``checkpoint_every`` steps, until ``stop_recording()``, the next ``reset`` or ``restore``,
+        or ``close()``. Primitives are recorded as the steps they took and the world's edits
+        the symbolic ones made."""
+        if checkpoint_every < 1:
+            raise ValueError(f"checkpoint_every must be at least 1, not {checkpoint_every}")
+        self._env.record(os.fspath(path), checkpoint_every)
+
+    def stop_recording(self):
+        """Finishes the recording under way (nothing if none is)."""
+        self._env.stop_recording()
+
+    def close(self):
+        self.stop_recording()
+        super().close()
 
     def step(self, action: Any):
         """One action step (1/30 s of simulated time), or one primitive run to its end."""

@@ -4,6 +4,8 @@
 
 use crate::options::EnvOptions;
 use crate::primitives::{Done, PrimitiveError, Primitives};
+use crate::record::{self, record_error};
+use behavior_env::record::Recorder;
 use behavior_env::{Checkpoint, Env, EnvError, Obs, Score};
 use behavior_planning::RunError;
 use behavior_render::Pixels;
@@ -11,13 +13,16 @@ use numpy::{AllowTypeChange, IntoPyArray, PyArrayLike1, PyArrayMethods};
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+use std::path::PathBuf;
 use std::sync::{Mutex, MutexGuard};
 use std::time::{Duration, Instant};
 
-/// The episode and, when actions are primitives, their space over its objects.
+/// The episode, when actions are primitives their space over its objects, and the recording
+/// it is being written to, if any.
 struct Episode {
     env: Env,
     primitives: Option<Primitives>,
+    recorder: Option<Recorder>,
 }
 
 /// A BEHAVIOR environment: `reset` and `step` as Gymnasium's, observations as a dict of numpy
@@ -59,6 +64,7 @@ impl PyEnv {
             let mut episode = Episode {
                 env: Env::new(config),
                 primitives,
+                recorder: None,
             };
             episode.reset(options.seed).map_err(|e| e.to_string())?;
             Ok((episode, scene))
@@ -83,6 +89,7 @@ impl PyEnv {
     ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
         let mut guard = self.lock()?;
         let episode: &mut Episode = &mut guard;
+        episode.stop_recording()?;
         let (obs, info) = py.detach(|| episode.reset(seed)).map_err(env_error)?;
         let dict = info_dict(py, info.steps, &info.score)?;
         episode.add_mask(py, &dict)?;
@@ -101,7 +108,7 @@ impl PyEnv {
             PyValueError::new_err("the action must be a contiguous one-dimensional array")
         })?;
         let mut guard = self.lock()?;
-        let env = &mut guard.env;
+        let Episode { env, recorder, .. } = &mut *guard;
         // Timed inside, so that releasing and taking back the lock counts as the binding's.
         let (step, took) = py.detach(|| {
             let started = Instant::now();
@@ -109,6 +116,11 @@ impl PyEnv {
         });
         self.count(took);
         let step = step.map_err(env_error)?;
+        if let Some(r) = recorder {
+            // `env` goes in as `&mut` (an `Env` is `Send`, not `Sync`).
+            py.detach(move || r.record(env, &action))
+                .map_err(record_error)?;
+        }
         let info = info_dict(py, step.info.steps, &step.info.score)?;
         Ok((
             obs_dict(py, step.obs)?,
@@ -130,12 +142,16 @@ impl PyEnv {
         a: usize,
     ) -> PyResult<(Bound<'py, PyDict>, f64, bool, bool, Bound<'py, PyDict>)> {
         let mut guard = self.lock()?;
-        let Episode { env, primitives } = &mut *guard;
+        let Episode {
+            env,
+            primitives,
+            recorder,
+        } = &mut *guard;
         let primitives = primitives.as_ref().ok_or_else(|| {
             PyValueError::new_err("this environment's actions are continuous, not primitives")
         })?;
         let done = py
-            .detach(|| primitives.step(env, a))
+            .detach(|| primitives.step(env, a, recorder.as_mut()))
             .map_err(primitive_error)?;
         let Done {
             step,
@@ -233,6 +249,7 @@ impl PyEnv {
         }
         let mut guard = self.lock()?;
         let episode: &mut Episode = &mut guard;
+        episode.stop_recording()?;
         let obs = py
             .detach(|| episode.restore(&checkpoint.checkpoint))
             .map_err(env_error)?;
@@ -240,6 +257,32 @@ impl PyEnv {
         let dict = info_dict(py, episode.env.steps(), &score)?;
         episode.add_mask(py, &dict)?;
         Ok((obs_dict(py, obs)?, dict))
+    }
+
+    /// Records the episode from now on to `path` (MCAP; `behavior.replay` and `behavior replay`
+    /// read it), a state digest every `checkpoint_every` steps; until `stop_recording`, the
+    /// next `reset` or `restore`, or the environment's end. A recording under way is finished
+    /// first.
+    #[pyo3(signature = (path, checkpoint_every = 30))]
+    fn record(&self, py: Python<'_>, path: PathBuf, checkpoint_every: u32) -> PyResult<()> {
+        let mut guard = self.lock()?;
+        let episode: &mut Episode = &mut guard;
+        episode.stop_recording()?;
+        let (env, activity) = (&mut episode.env, &self.activity);
+        let recorder = py.detach(move || record::start(&path, env, activity, checkpoint_every))?;
+        episode.recorder = Some(recorder);
+        Ok(())
+    }
+
+    /// Finishes the recording under way (its summary and index written); nothing if none is.
+    fn stop_recording(&self) -> PyResult<()> {
+        self.lock()?.stop_recording()
+    }
+
+    /// Whether a recording is under way.
+    #[getter]
+    fn recording(&self) -> PyResult<bool> {
+        Ok(self.lock()?.recorder.is_some())
     }
 
     /// The episode's metrics so far (the per-episode JSON of `behavior run --json`), as a JSON
@@ -265,6 +308,14 @@ impl Episode {
         Ok(started)
     }
 
+    /// Finishes the recording under way, if any.
+    fn stop_recording(&mut self) -> PyResult<()> {
+        match self.recorder.take() {
+            Some(recorder) => recorder.finish().map_err(record_error),
+            None => Ok(()),
+        }
+    }
+
     /// Back to a checkpoint; the primitives find its objects.
     fn restore(&mut self, checkpoint: &Checkpoint) -> Result<Obs, EnvError> {
         self.env.restore(checkpoint);
@@ -287,6 +338,16 @@ impl Episode {
             info.set_item("action_mask", self.mask().into_pyarray(py))?;
         }
         Ok(())
+    }
+}
+
+impl Drop for Episode {
+    /// A recording still under way is finished when the environment goes; an error there has
+    /// no one to go to, and the file still reads up to its last whole chunk.
+    fn drop(&mut self) {
+        if let Some(recorder) = self.recorder.take() {
+            let _ = recorder.finish();
+        }
     }
 }
 
@@ -339,6 +400,7 @@ pub(crate) fn env_error(e: EnvError) -> PyErr {
 fn primitive_error(e: PrimitiveError) -> PyErr {
     match e {
         PrimitiveError::Run(RunError::Env(e)) => env_error(e),
+        PrimitiveError::Run(RunError::Record(e)) => record_error(e),
         other => PyValueError::new_err(other.to_string()),
     }
 }

@@ -16,6 +16,7 @@ mod build;
 mod env;
 mod options;
 mod primitives;
+mod record;
 mod vector;
 
 use behavior_env::EpisodeMetrics;
@@ -64,6 +65,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(activities, m)?)?;
     m.add_function(wrap_pyfunction!(covering_homes, m)?)?;
     m.add_function(wrap_pyfunction!(aggregate, m)?)?;
+    m.add_function(wrap_pyfunction!(record::replay, m)?)?;
     m.add_function(wrap_pyfunction!(bddl::bddl_check, m)?)?;
     m.add_function(wrap_pyfunction!(bddl::bddl_evaluate, m)?)?;
     m.add_function(wrap_pyfunction!(bddl::bddl_options, m)?)?;

@@ -2,6 +2,7 @@
 //! primitive `a div n`, `behavior-planning`'s [`PrimitiveSpace`]), each action one primitive
 //! run to its end in the episode (symbolic or physical), with the mask of feasible actions.
 
+use behavior_env::record::Recorder;
 use behavior_env::{Env, Step};
 use behavior_planning::{Mode, PrimitiveSet, PrimitiveSpace, RunError, run};
 
@@ -67,8 +68,13 @@ impl Primitives {
         self.space.as_ref().map_or_else(Vec::new, |s| s.mask(env))
     }
 
-    /// Runs action `a` to its end.
-    pub fn step(&self, env: &mut Env, a: usize) -> Result<Done, PrimitiveError> {
+    /// Runs action `a` to its end, recording what it does if `recorder` is given.
+    pub fn step(
+        &self,
+        env: &mut Env,
+        a: usize,
+        recorder: Option<&mut Recorder>,
+    ) -> Result<Done, PrimitiveError> {
         let call =
             self.space
                 .as_ref()
@@ -82,7 +88,7 @@ impl Primitives {
             .world()
             .map(|w| w.object(call.object).name.clone())
             .unwrap_or_default();
-        let outcome = run(env, call, self.mode, None)?;
+        let outcome = run(env, call, self.mode, recorder)?;
         Ok(Done {
             reward: outcome.step.info.score.q - before,
             step: outcome.step,

@@ -1,0 +1,88 @@
+//! Recording episodes from Python and replaying recordings, as `behavior run --record` and
+//! `behavior replay --verify` do: an episode's actions (continuous, or those its primitives
+//! took, with the symbolic primitives' edits of the world) to MCAP, with state digests at
+//! checkpoints; a replay re-simulates it and compares every checkpoint bit for bit.
+
+use crate::build::Catalog;
+use behavior_bddl::Source;
+use behavior_env::Env;
+use behavior_env::record::{ReadError, RecordError, Recorder, read, replay_with};
+use behavior_planning::replay_edit;
+use pyo3::exceptions::{PyOSError, PyValueError};
+use pyo3::prelude::*;
+use serde_json::json;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// Starts recording `env`'s episode of the official `activity`, as it is now, to `path`.
+pub fn start(path: &Path, env: &Env, activity: &str, checkpoint_every: u32) -> PyResult<Recorder> {
+    let catalog = Catalog::load().map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let definition = catalog
+        .source(activity)
+        .map_err(|e| PyValueError::new_err(e.to_string()))?
+        .text;
+    Recorder::create(path, env, &definition, checkpoint_every).map_err(record_error)
+}
+
+/// A recording that could not be written: an `OSError` saying which file and why.
+pub fn record_error(e: RecordError) -> PyErr {
+    match e {
+        RecordError::NoEpisode => PyValueError::new_err(e.to_string()),
+        other => PyOSError::new_err(other.to_string()),
+    }
+}
+
+/// Reads a recording and, with `verify`, re-simulates it: a JSON object with the header's
+/// `activity`, `scene`, `seed`, `robot`, `action_space`, the `frames` (steps) and `checkpoints`
+/// read (replayed, with `verify`), `q` after each step, `identical` and `first_difference`
+/// (with `verify`), `q_final`, and `damage` (where reading stopped in a cut or damaged file).
+#[pyfunction]
+pub fn replay(py: Python<'_>, path: PathBuf, verify: bool) -> PyResult<String> {
+    py.detach(|| -> PyResult<String> {
+        let recording = read(&path).map_err(read_error)?;
+        let h = &recording.header;
+        let mut out = json!({
+            "activity": h.activity,
+            "scene": h.scene,
+            "seed": h.seed,
+            "robot": h.robot,
+            "action_space": h.action_space,
+            "frames": recording.frames.len(),
+            "checkpoints": recording.checkpoints.len(),
+            "q": recording.frames.iter().map(|f| f.q).collect::<Vec<_>>(),
+            "q_final": recording.frames.last().and_then(|f| f.q).or(recording.start_q),
+            "identical": null,
+            "first_difference": null,
+            "damage": recording.damage,
+        });
+        if verify {
+            let catalog = Catalog::load().map_err(|e| PyValueError::new_err(e.to_string()))?;
+            let source = Source::new(&h.activity, &h.definition);
+            let (activity, _warnings) = catalog.knowledge().load(&source).map_err(|e| {
+                PyValueError::new_err(format!("the definition in {}: {e}", path.display()))
+            })?;
+            let taxonomy = Arc::new(catalog.knowledge().taxonomy.clone());
+            let invalid = |e: behavior_env::record::ReplayError| {
+                PyValueError::new_err(format!("replaying {}: {e}", path.display()))
+            };
+            let config = recording
+                .config(Arc::new(activity), taxonomy)
+                .map_err(invalid)?;
+            // Recorded primitives are done again by the planner's code that did them.
+            let report = replay_with(&recording, config, &mut replay_edit).map_err(invalid)?;
+            out["frames"] = json!(report.frames);
+            out["checkpoints"] = json!(report.checkpoints);
+            out["identical"] = json!(report.identical);
+            out["first_difference"] = json!(report.first_difference);
+            out["q_final"] = json!(report.q_final);
+        }
+        Ok(out.to_string())
+    })
+}
+
+fn read_error(e: ReadError) -> PyErr {
+    match e {
+        ReadError::Io { .. } => PyOSError::new_err(e.to_string()),
+        other => PyValueError::new_err(other.to_string()),
+    }
+}

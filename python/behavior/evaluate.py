@@ -207,7 +207,11 @@ def main(argv=None) -> int:
     setup = Setup(row=args.row, robot=args.robot, horizon=args.horizon)
     activities = args.activities or list(ACTIVITIES)
     if args.model is not None:
-        trained = json.loads((args.model.parent / "result.json").read_text())
+        settings = args.model.parent / "result.json"
+        if not args.model.is_file() or not settings.is_file():
+            p.error(f"--model {args.model}: a baseline's model.zip with its result.json beside "
+                    f"it (as behavior.baselines writes them) is needed")
+        trained = json.loads(settings.read_text())
         setup = Setup(row=trained["row"], robot=trained["robot"],
                       image_size=trained["image_size"], horizon=args.horizon or trained["horizon"])
         policy = model_policy(args.model, trained["masked"], trained["algorithm"])

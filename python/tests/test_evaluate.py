@@ -44,6 +44,12 @@ def test_a_random_agent_is_evaluated_and_summarized(tmp_path):
     assert aggregated["By Split"]["seen"]["Success Score"] == pytest.approx(qs[0])
 
 
+def test_a_model_without_its_settings_is_refused(tmp_path, capsys):
+    with pytest.raises(SystemExit):
+        protocol.main(["--model", str(tmp_path / "model.zip")])
+    assert "with its result.json beside it" in capsys.readouterr().err
+
+
 def test_bad_metrics_and_unknown_activities_are_refused():
     good = json.dumps(behavior.BehaviorEnv(ACTIVITY).metrics())
     assert json.loads(_core.aggregate([(ACTIVITY, good)]))["episodes"] == 1

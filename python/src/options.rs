@@ -3,6 +3,7 @@
 
 use crate::build::{Catalog, EnvSpec};
 use behavior_env::{CameraConfig, EnvConfig, FixedCamera, Placement};
+use behavior_planning::Mode;
 use behavior_render::Modality;
 use pyo3::FromPyObject;
 
@@ -55,6 +56,13 @@ impl EnvOptions {
         let mut config = catalog.config(&spec).map_err(|e| e.to_string())?;
         if let Some(max) = self.max_steps {
             config.max_steps = max;
+        }
+        // Primitives drive the robot through the space their mode needs (Fetch's arm joint by
+        // joint when physical); continuous actions are the robot's full space.
+        if self.primitives.is_some() {
+            let mode = Mode::from_name(&self.primitive_mode)
+                .ok_or_else(|| format!("unknown primitive_mode `{}`", self.primitive_mode))?;
+            config.action_space = mode.action_space(config.robot);
         }
         self.observe(&mut config)?;
         Ok(config)

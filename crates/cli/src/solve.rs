@@ -81,9 +81,10 @@ fn mode(name: &str) -> Result<Mode> {
 pub fn solve(args: SolveArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let mode = mode(&args.mode)?;
     let prelude = Prelude::load(data_dir)?;
-    let built = args
-        .episode
-        .build(&prelude, |c| c.max_steps = SOLVE_MAX_STEPS)?;
+    let built = args.episode.build(&prelude, |c| {
+        c.max_steps = SOLVE_MAX_STEPS;
+        c.action_space = mode.action_space(c.robot);
+    })?;
     let mut env = built.env;
     let mut recorder = match &args.record {
         Some(path) => Some(Recorder::create(
@@ -216,7 +217,8 @@ pub fn solve_all(args: SolveAllArgs, data_dir: Option<&Path>) -> Result<ExitCode
         bar.set_message(name.clone());
         let activity = Arc::new(prelude.activity(name)?);
         let homes = all_covering(&activity, &library, &prelude.knowledge.taxonomy)?;
-        let Some(mut env) = first_sampled(&activity, homes, &library, &args.robot, &taxonomy)?
+        let Some(mut env) =
+            first_sampled(&activity, homes, &library, &args.robot, &taxonomy, mode)?
         else {
             unsampled.push(name.clone());
             bar.inc(1);
@@ -269,11 +271,13 @@ fn first_sampled(
     library: &behavior_assets::Library,
     robot: &str,
     taxonomy: &Arc<behavior_bddl::Taxonomy>,
+    mode: Mode,
 ) -> Result<Option<Env>> {
     for home in homes {
         let home = with_clutter(home, library, true)?;
         let mut config = EnvConfig::new(activity.clone(), taxonomy.clone(), vec![home]);
         config.robot = crate::episode::robot_kind(robot)?;
+        config.action_space = mode.action_space(config.robot);
         config.max_steps = SOLVE_MAX_STEPS;
         let mut env = Env::new(config);
         // Sampling fails now and then (0.3 % of attempts): the next seed, then the next home.

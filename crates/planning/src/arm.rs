@@ -13,12 +13,10 @@
 
 use crate::rrt::Space;
 use behavior_core::rng::{SimRng, uniform};
-use behavior_robots::{
-    Fetch, FetchJoint, FetchJoints, FetchLink, WORKSPACE_CENTRE, WORKSPACE_HEIGHT, WORKSPACE_RADIUS,
-};
+use behavior_robots::{Fetch, FetchJoint, FetchJoints, FetchLink};
 use behavior_sim::{ObjectId, Primitive, QueryFilter, World};
 use rapier3d::math::{Pose, Vector};
-use std::f32::consts::PI;
+use std::f32::consts::{PI, TAU};
 
 /// How far apart the checked configurations of an arm motion are, rad (m for the torso).
 pub const ARM_RESOLUTION: f32 = 0.05;
@@ -36,6 +34,20 @@ impl ArmConfig {
             } else {
                 joints.arm[k - 1]
             }
+        }))
+    }
+
+    /// The same configuration with each continuous joint turned by whole turns to within half
+    /// a turn of `from`'s: the same pose of every link, the shorter way there (an IK solution
+    /// may lie a turn away, outside [`ArmSpace`]'s bounds).
+    pub fn near(&self, from: &ArmConfig) -> ArmConfig {
+        ArmConfig(std::array::from_fn(|k| {
+            let q = self.0[k];
+            if joint(k).info().limits.is_some() {
+                return q;
+            }
+            let turns = ((q - from.0[k]) / TAU).round();
+            q - turns * TAU
         }))
     }
 
@@ -152,17 +164,7 @@ impl ArmBody {
     }
 }
 
-/// Whether Fetch's end-effector controller moves to `p` (base frame): it keeps its targets
-/// within [`WORKSPACE_RADIUS`] of [`WORKSPACE_CENTRE`] and between the [`WORKSPACE_HEIGHT`]s,
-/// and a path through a configuration outside would be cut short there.
-pub fn in_workspace(p: Vector) -> bool {
-    let [cx, cy] = WORKSPACE_CENTRE;
-    let [low, high] = WORKSPACE_HEIGHT;
-    (p.x - cx).hypot(p.y - cy) <= WORKSPACE_RADIUS && (low..=high).contains(&p.z)
-}
-
-/// Fetch's arm moving among the world's objects, its base still, its end effector within the
-/// controller's workspace.
+/// Fetch's arm moving among the world's objects, its base still.
 pub struct ArmSpace<'w> {
     world: &'w World,
     body: ArmBody,
@@ -233,9 +235,7 @@ impl Space for ArmSpace<'_> {
     }
 
     fn free(&self, c: &ArmConfig) -> bool {
-        self.within(c)
-            && in_workspace(c.joints(self.body.head).eef().translation)
-            && self.body.clear(self.world, c)
+        self.within(c) && self.body.clear(self.world, c)
     }
 
     fn resolution(&self) -> f32 {

@@ -6,7 +6,8 @@
 use crate::primitive::{Call, Failure, Primitive, WAIT_STEPS};
 use crate::{fetch_manipulate, manipulate, physical, symbolic};
 use behavior_env::record::Recorder;
-use behavior_env::{Env, EnvError, Step};
+use behavior_env::{Env, EnvError, Info, Step};
+use behavior_robots::{ActionSpace, RobotKind};
 use serde::{Deserialize, Serialize};
 
 /// How far across the floor from the base an object's box may be for a physical primitive
@@ -14,8 +15,9 @@ use serde::{Deserialize, Serialize};
 /// floor) and Fetch's arm reach of a table's far side.
 pub const ARM_REACH: f32 = 1.0;
 /// How far across the floor from Fetch's base the box of an object it stands to take may be, m:
-/// its end effector's workspace ends 0.75 m in front of the base
-/// ([`behavior_robots::WORKSPACE_RADIUS`] about a centre 0.25 m ahead).
+/// within it the arm reaches both over a counter and down to the floor (the end-effector
+/// controller's workspace, which the physical primitives no longer go through, ends 0.75 m in
+/// front of the base).
 pub const FETCH_ARM_REACH: f32 = 0.7;
 
 /// How primitives act: setting outcomes, or moving the robot through its controllers.
@@ -44,6 +46,16 @@ impl Mode {
         match self {
             Mode::Symbolic => behavior_robots::REACH_DISTANCE,
             Mode::Physical => ARM_REACH,
+        }
+    }
+
+    /// The action space an environment's robot of `kind` is driven through for primitives of
+    /// this mode: Fetch's [`ActionSpace::Joints`] when physical, so that its arm's plans are
+    /// executed as planned; the robot's full space otherwise.
+    pub fn action_space(self, kind: RobotKind) -> ActionSpace {
+        match (self, kind) {
+            (Mode::Physical, RobotKind::Fetch) => ActionSpace::Joints,
+            _ => ActionSpace::Full,
         }
     }
 
@@ -139,6 +151,15 @@ pub fn run(
     } else {
         1
     };
+    // A physical primitive that ended the episode on its way (the goal reached, or the step
+    // limit) leaves no step to take: its last one stands.
+    if env.is_over() {
+        return Ok(Outcome {
+            result,
+            seconds,
+            step: ended(env)?,
+        });
+    }
     let still = vec![0.0; env.robot().map_or(0, |r| r.action_dim())];
     let mut last = None;
     for _ in 0..steps {
@@ -157,6 +178,22 @@ pub fn run(
         result,
         seconds,
         step,
+    })
+}
+
+/// The step that ended the episode, as it stands after it: terminated if the goal holds,
+/// else truncated; its reward is not given again (0).
+fn ended(env: &mut Env) -> Result<Step, EnvError> {
+    let score = env.score().cloned().ok_or(EnvError::NotReset)?;
+    Ok(Step {
+        obs: env.observe()?,
+        reward: 0.0,
+        terminated: score.success,
+        truncated: !score.success,
+        info: Info {
+            steps: env.steps(),
+            score,
+        },
     })
 }
 

@@ -1,29 +1,33 @@
 //! Physical GRASP and PLACE_* for Fetch: goals for the end effector turned into joint
 //! positions by Fetch's own inverse kinematics ([`behavior_robots::IkSolver`]), the arm planned
-//! to them in its joint space ([`ArmSpace`]) and executed as Fetch's own end-effector actions,
-//! one step of physics each; the grasp made by the assisted grasp as the gripper closes, the
-//! placement by opening it above a pose the world's sampler found, then settling.
+//! to them in its joint space ([`ArmSpace`]) and executed joint by joint through Fetch's
+//! [`ActionSpace::Joints`] (iGibson 2.1+'s joint controller), one step of physics each; the
+//! grasp made by the assisted grasp as the gripper closes, the placement by opening it above a
+//! pose the world's sampler found, then settling.
 //!
 //! - GRASP: the gripper pointing down at the top of the object's box, its fingers across the
 //!   box's narrower side (other headings after; then tilted toward it from the base's side),
-//!   the fingertips [`FETCH_APPROACH`] short of it; on until the palm or a finger touches the
-//!   object (at most [`FETCH_DESCENT_STEPS`]),
-//!   closed until it holds (at most [`CLOSE_STEPS`]; touching and not held, the grasp is
-//!   forced as the BehaviorRobot's is), straight back up, then the arm planned back to where
-//!   it was, with what it holds.
+//!   the fingertips [`FETCH_APPROACH`] short of it; on in a straight line until the palm or a
+//!   finger touches the object (at most [`FETCH_DESCENT`]), closed until it holds (at most
+//!   [`CLOSE_STEPS`]; touching and not held, the grasp is forced as the BehaviorRobot's is),
+//!   straight back up, then the arm planned back to where it was, with what it holds.
 //! - PLACE_*: poses for the held object by the world's sampler (in a copy of the world where the
 //!   gripper let go), the arm planned with it to [`crate::PLACE_HEIGHT`] above one, the gripper
 //!   opened, [`SETTLE_STEPS`] steps to settle, straight up and back.
 //!
-//! Executing through an end-effector controller: each way's end-effector poses are the
-//! targets, and the action asks for what the controller's gain ([`ARM_GAIN`]) turns into that
-//! move in one step, within the action's range. The controller's IK pulls the arm toward its
-//! rest pose in the null space, so it does not follow a joint-space plan joint for joint: every
-//! way is first predicted step by step with the robot's own joint update
-//! ([`Fetch::joints_after`]) and each predicted configuration checked free; only a way that
-//! arrives free is executed, and the execution then is exactly the prediction.
+//! Executing joint by joint, each step's configuration is what the robot's own joint update
+//! ([`Fetch::joints_after`]) makes of the action, so every configuration the arm will pass is
+//! known before it moves: each is checked free (the plan re-validated a step, at most 0.04 rad
+//! a joint, apart), and after each step the arm is compared with it — one that is not there
+//! was stopped by something fixed. Straight lines of the end effector (the descent, the lift,
+//! the leave) are IK solutions [`LINE_STEP`] apart, each from the last.
+//!
+//! Before, the arm went through the end-effector controller, whose IK pulls the arm toward its
+//! rest pose: it did not follow joint-space plans joint for joint, got stuck between the tucked
+//! arm and a grasp pose, and its workspace floor (0.2 m above the base) kept things on the
+//! floor out of reach. Fetch solved none of Table 1's activities that way.
 
-use crate::arm::{ArmBody, ArmConfig, ArmSpace, in_workspace};
+use crate::arm::{ArmBody, ArmConfig, ArmSpace};
 use crate::execute::RunError;
 use crate::manipulate::{
     CLOSE_STEPS, GRASP_JITTER, RELEASE_STEPS, SETTLE_STEPS, grasp_point, placement_goals, rng_seed,
@@ -35,8 +39,10 @@ use crate::symbolic::check;
 use behavior_core::rng::{SimRng, seeded, uniform};
 use behavior_env::Env;
 use behavior_env::record::Recorder;
-use behavior_robots::{ARM_GAIN, ActionSpace, EEF_STEP, EEF_TURN, Fetch, FetchAction, Robot};
-use behavior_sim::{BodyRef, ObjectId, Relation, STEP_SECONDS, World};
+use behavior_robots::{
+    ActionSpace, FETCH_JOINT_ACTION_DIM, Fetch, FetchCommand, FetchJointAction, FetchJoints, Robot,
+};
+use behavior_sim::{BodyRef, ObjectId, Relation, World};
 use rapier3d::math::{Pose, Rotation, Vector};
 use std::f32::consts::{FRAC_PI_2, PI};
 
@@ -45,18 +51,21 @@ pub const FETCH_APPROACH: f32 = 0.05;
 /// How far the fingertips reach beyond the end effector's frame along its x, m (the pads'
 /// ends).
 const TIP: f32 = 0.031;
-/// The most steps of descent onto the object, at the controller's full speed (≈ 3 mm each).
-pub const FETCH_DESCENT_STEPS: u32 = 40;
+/// The longest descent onto the object, m, [`DESCENT_STEP`] a step.
+pub const FETCH_DESCENT: f32 = 0.12;
+/// How far the gripper moves a step in its descent, m.
+const DESCENT_STEP: f32 = 0.004;
+/// How far apart the IK solutions of an end effector's straight line are, m.
+pub const LINE_STEP: f32 = 0.01;
+/// The largest change of a joint between two solutions of a straight line, rad (m for the
+/// torso): a bigger one is the IK jumping to another branch, and the line is not followed.
+const LINE_JUMP: f32 = 0.25;
 /// Headings of the fingers tried: across the box's narrower side, its other side, and these
 /// many more at random.
 const MORE_HEADINGS: usize = 4;
-/// Steps the arm has to reach each configuration's end-effector pose before the execution is
-/// given up as blocked.
-const ARM_STEPS_PER_WAYPOINT: u32 = 40;
-/// How close to a configuration's end-effector pose counts as passing it, m and rad; the last
-/// one must be reached within [`ARRIVED`].
-const PASSING: (f32, f32) = (0.01, 0.05);
-const ARRIVED: (f32, f32) = (0.003, 0.02);
+/// How close to each configuration of a path the arm must be, rad (m for the torso): the joint
+/// controller moves a joint exactly as asked, so any gap is a block.
+const ON_PATH: f32 = 1e-4;
 /// How high the arm may lift its torso more to carry what it took back, m each.
 const LIFT: f32 = 0.1;
 const LIFTS: usize = 4;
@@ -91,9 +100,7 @@ pub fn grasp(env: &mut Env, call: &Call, recorder: Option<&mut Recorder>) -> Att
     close(&mut steps, call)?;
     let held = fetch(steps.env).is_some_and(|(_, f)| f.is_holding(call.object));
     let hold = if held { CLOSED } else { OPEN };
-    let mut up = eef_now(steps.env);
-    up.translation.z += LIFT_OFF;
-    attempt!(move_to(&mut steps, &[up], hold, false, &mut path.after));
+    attempt!(straight_up(&mut steps, LIFT_OFF, hold, &mut path.after));
     attempt!(come_back(&mut steps, start, hold, &mut path.after));
     if !held {
         return Ok(Err(Failure::Missed));
@@ -125,9 +132,7 @@ pub fn place(
     let mut path = attempt!(reach(&mut steps, &goals, CLOSED, &mut rng));
     attempt!(open(&mut steps));
     attempt!(wait(&mut steps, SETTLE_STEPS));
-    let mut up = eef_now(steps.env);
-    up.translation.z += LEAVE;
-    attempt!(move_to(&mut steps, &[up], OPEN, false, &mut path.after));
+    attempt!(straight_up(&mut steps, LEAVE, OPEN, &mut path.after));
     attempt!(come_back(&mut steps, start, OPEN, &mut path.after));
     Ok(Ok(path))
 }
@@ -171,15 +176,15 @@ pub(crate) fn reaches(env: &Env, object: ObjectId, placement: Option<&Call>) -> 
 const OPEN: f32 = 1.0;
 const CLOSED: f32 = -1.0;
 
-/// The primitive's preconditions, and that the robot is a Fetch driven through its full
-/// action space with its one hand.
+/// The primitive's preconditions, and that the robot is a Fetch driven joint by joint with its
+/// one hand.
 fn precondition(env: &Env, call: &Call) -> Result<(), Failure> {
     let (Some(world), Some(robot)) = (env.world(), env.robot()) else {
         return Err(Failure::Unavailable("no episode"));
     };
-    if robot.space() != ActionSpace::Full {
+    if robot.space() != ActionSpace::Joints {
         return Err(Failure::Unavailable(
-            "physical primitives drive the full action space",
+            "Fetch's physical primitives drive its arm joint by joint: the `joints` action space",
         ));
     }
     if call.hand != 0 {
@@ -188,10 +193,10 @@ fn precondition(env: &Env, call: &Call) -> Result<(), Failure> {
     check(world, robot, call)
 }
 
-/// The episode's world and Fetch.
+/// The episode's world and Fetch, if it drives one joint by joint.
 fn fetch(env: &Env) -> Option<(&World, &Fetch)> {
     match (env.world(), env.robot()) {
-        (Some(world), Some(Robot::Fetch(fetch, ActionSpace::Full))) => Some((world, fetch)),
+        (Some(world), Some(Robot::Fetch(fetch, ActionSpace::Joints))) => Some((world, fetch)),
         _ => None,
     }
 }
@@ -230,6 +235,23 @@ fn grasp_goals(world: &World, fetch: &Fetch, object: ObjectId, rng: &mut SimRng)
         .collect()
 }
 
+/// Where what the gripper holds (`grip`: its pose in the gripper's frame) is with the gripper
+/// pointing down toward `target` from the base, straight down and at each of [`PITCHES`]: the
+/// ways a placement sets it down. The sampler keeps an object's turn, and the gripper as it
+/// comes back from a grasp (tucked, or turned on the way back) points anywhere; a placement as
+/// it is held asks the wrist for a turn the arm has not got (traced: every goal for a pad over
+/// an ash can was 0.7–1 m out of reach of Fetch's IK).
+pub(crate) fn held_below(world: &World, fetch: &Fetch, target: ObjectId, grip: &Pose) -> Vec<Pose> {
+    let base = fetch.base_pose(world).translation;
+    let at = world.aabb(target).center();
+    let facing = (at.y - base.y).atan2(at.x - base.x);
+    let eef = fetch.eef_pose(world).translation;
+    std::iter::once(FRAC_PI_2)
+        .chain(PITCHES)
+        .map(|pitch| Pose::from_parts(eef, pointing(facing, pitch)) * *grip)
+        .collect()
+}
+
 /// Pitches below the floor of the tilted approaches, rad, steepest first.
 const PITCHES: [f32; 3] = [PI / 3.0, PI / 4.0, PI / 6.0];
 
@@ -243,28 +265,29 @@ fn pointing(heading: f32, pitch: f32) -> Rotation {
 /// from where the arm is.
 fn solve(world: &World, fetch: &Fetch, body: &ArmBody, goal: &Pose) -> Option<ArmConfig> {
     let local = body.base.inverse() * *goal;
-    if !in_workspace(local.translation) {
-        return None;
-    }
     let joints = fetch.ik().solve(&fetch.joints(), &local).ok()?;
-    let c = ArmConfig::of(&joints);
+    let c = ArmConfig::of(&joints).near(&ArmConfig::of(&fetch.joints()));
     body.clear(world, &c).then_some(c)
 }
 
 /// Fetch's arm folded over its base before it drives, as the real robot's `tuck_arm` folds
 /// it (reference: robots §1.6, iGibson's tucked joints), the torso where it is: unfolded, the
 /// BEHAVIOR start pose holds the gripper 0.55 m ahead at a counter's height, and every stand
-/// found with it left a hamburger on a counter 0.9 m from the base. Planned with what the gripper holds; where no plan
-/// gets there, the arm stays.
+/// found with it left a hamburger on a counter 0.9 m from the base. Planned with what the
+/// gripper holds; where no plan gets there, the arm stays.
 pub(crate) fn tuck(steps: &mut Stepper<'_>) -> Attempt<()> {
     let Some((world, fetch)) = fetch(steps.env) else {
         return Ok(Ok(()));
     };
-    let mut tucked = ArmConfig::of(&fetch.joints());
+    let now = ArmConfig::of(&fetch.joints());
+    let mut tucked = now;
     tucked.0[1..].copy_from_slice(&TUCKED);
-    // The controller gets the gripper there, not every joint.
-    let there = tucked.joints(fetch.joints().head).eef().translation;
-    if (fetch.joints().eef().translation - there).length() <= TUCK_TOLERANCE {
+    if now
+        .0
+        .iter()
+        .zip(tucked.0)
+        .all(|(a, b)| (a - b).abs() <= ON_PATH)
+    {
         return Ok(Ok(()));
     }
     let body = ArmBody::of(world, fetch);
@@ -277,20 +300,15 @@ pub(crate) fn tuck(steps: &mut Stepper<'_>) -> Attempt<()> {
     let Ok(planned) = plan_arm_to(world, fetch, body, tucked, &mut rng) else {
         return Ok(Ok(()));
     };
-    let targets = eef_targets(steps.env, &planned);
-    move_to(steps, &targets, gripper, true, &mut Vec::new())
+    follow(steps, &planned, gripper, Check::Free, &mut Vec::new())
 }
 
-/// How near its tucked place the gripper counts as tucked, m.
-const TUCK_TOLERANCE: f32 = 0.05;
 /// iGibson's tucked arm joints (robots reference §1.6).
 const TUCKED: [f32; 7] = [1.1708, 1.4708, -0.4, 1.6708, 0.0, FRAC_PI_2, 0.0];
 
-/// The arm taken to the first of `goals` (in the world) with a free IK solution that one of
-/// its ways gets to, the gripper held at `gripper`: straight (as the controller moves), by a
-/// point [`OVER`] above the goal, or along a plan in the arm's joint space — each predicted as
-/// the controller will execute it and checked free ([`prepare`]). Stopped on the way, the arm
-/// is brought back.
+/// The arm taken to the first of `goals` (in the world) with a free IK solution that a plan in
+/// its joint space gets to, the gripper held at `gripper`, every step of the way checked free
+/// ([`follow`]). Stopped on the way, the arm is brought back.
 fn reach(
     steps: &mut Stepper<'_>,
     goals: &[Pose],
@@ -312,41 +330,35 @@ fn reach(
             break;
         }
         tried += 1;
-        let local = body.base.inverse() * *goal;
-        let mut over = local;
-        over.translation.z += OVER;
-        let mut ways = vec![vec![local], vec![over, local]];
-        let planned = plan_arm_to(world, fetch, body, config, rng);
-        if let Ok(planned) = &planned {
-            ways.push(eef_targets(steps.env, planned));
-        }
-        let Some((targets, actions)) = ways.into_iter().find_map(|targets| {
-            let actions = prepare(steps.env, &targets, gripper, true)?;
-            Some((targets, actions))
-        }) else {
-            // No way is followed free: the plan's failure if there was none, else the block.
-            last = planned.err().unwrap_or(Failure::HandBlocked);
-            continue;
+        let planned = match plan_arm_to(world, fetch, body, config, rng) {
+            Ok(planned) => planned,
+            Err(failure) => {
+                last = failure;
+                continue;
+            }
         };
         let mut path = ArmPath {
             planned: vec![start, config],
             ..ArmPath::default()
         };
-        let end = targets.last().copied().unwrap_or(local);
-        if let Err(failure) = execute(steps, &actions, &end, &mut path.executed)? {
-            // Best effort: an arm left out would be in the base's way.
-            let _ = come_back(steps, start, gripper, &mut path.after)?;
-            return Ok(Err(failure));
+        match follow(steps, &planned, gripper, Check::Free, &mut path.executed)? {
+            Ok(()) => return Ok(Ok(path)),
+            // Refused before a step: another goal.
+            Err(Failure::HandBlocked) if path.executed.is_empty() => {
+                last = Failure::HandBlocked;
+            }
+            Err(failure) => {
+                // Best effort: an arm left out would be in the base's way.
+                let _ = come_back(steps, start, gripper, &mut path.after)?;
+                return Ok(Err(failure));
+            }
         }
-        return Ok(Ok(path));
     }
     Ok(Err(last))
 }
 
 /// Goals with a free IK solution tried before the arm gives up.
 const GOAL_TRIES: usize = 4;
-/// How far above its goal the end effector's second way passes, m.
-const OVER: f32 = 0.15;
 
 /// A planned arm path, densified, from where the arm is to `goal`.
 fn plan_arm_to(
@@ -357,6 +369,7 @@ fn plan_arm_to(
     rng: &mut SimRng,
 ) -> Result<Vec<ArmConfig>, Failure> {
     let start = ArmConfig::of(&fetch.joints());
+    let goal = goal.near(&start);
     let space = ArmSpace::new(world, body, &start);
     let params = PlanParams {
         seed: rng_seed(rng),
@@ -368,140 +381,151 @@ fn plan_arm_to(
     Ok(dense)
 }
 
-/// The end effector's poses in the base frame along a planned path, after its start: the
-/// targets the controller is given.
-fn eef_targets(env: &Env, planned: &[ArmConfig]) -> Vec<Pose> {
-    let head = fetch(env).map_or([0.0; 2], |(_, f)| f.joints().head);
-    planned
-        .iter()
-        .skip(1)
-        .map(|c| c.joints(head).eef())
-        .collect()
-}
-
-/// The end effector's pose in the base frame now.
-fn eef_now(env: &Env) -> Pose {
-    fetch(env).map_or(Pose::IDENTITY, |(_, f)| f.joints().eef())
-}
-
 /// The arm's configuration now.
 fn arm_now(env: &Env) -> ArmConfig {
     fetch(env).map_or(ArmConfig([0.0; 8]), |(_, f)| ArmConfig::of(&f.joints()))
 }
 
-/// The action that moves the end effector from `now` toward `target` (both in the base frame)
-/// as far as one step allows, the gripper at `gripper`; `None` within `tolerance`.
-fn arm_action(now: &Pose, target: &Pose, gripper: f32, tolerance: (f32, f32)) -> Option<Vec<f32>> {
-    let dp = target.translation - now.translation;
-    let mut turn = target.rotation * now.rotation.inverse();
-    if turn.w < 0.0 {
-        turn = -turn;
-    }
-    let dr = turn.to_scaled_axis();
-    if dp.length() <= tolerance.0 && dr.length() <= tolerance.1 {
+/// The joint action that moves the arm from `now` toward `target` as far as one step allows,
+/// the gripper at `gripper`; `None` once within [`ON_PATH`] of it.
+fn joint_action(now: &ArmConfig, target: &ArmConfig, gripper: f32) -> Option<FetchJointAction> {
+    let delta: [f32; 8] = std::array::from_fn(|k| target.0[k] - now.0[k]);
+    if delta.iter().all(|d| d.abs() <= ON_PATH) {
         return None;
     }
-    // The joints close a fraction ARM_GAIN · dt of the way to the IK solution each step: ask
-    // for the move divided by it.
-    let boost = 1.0 / (ARM_GAIN * STEP_SECONDS);
-    let mut action = vec![0.0; behavior_robots::FETCH_ACTION_DIM];
-    for k in 0..3 {
-        action[FetchAction::EEF_POSITION.start + k] = (dp[k] * boost / EEF_STEP).clamp(-1.0, 1.0);
-        action[FetchAction::EEF_ROTATION.start + k] = (dr[k] * boost / EEF_TURN).clamp(-1.0, 1.0);
+    let mut values = [0.0; FETCH_JOINT_ACTION_DIM];
+    for (k, d) in delta.into_iter().enumerate() {
+        values[FetchJointAction::JOINTS.start + k] = FetchJointAction::value_for(k, d);
     }
-    action[FetchAction::GRIPPER] = gripper;
-    Some(action)
+    values[FetchJointAction::GRIPPER] = gripper;
+    FetchJointAction::new(&values).ok()
 }
 
-/// The steps the controller needs at full speed to take the end effector from `now` to
-/// `target`: it moves a fraction [`ARM_GAIN`]` · dt` of the action's range a step.
-fn steps_to(now: &Pose, target: &Pose) -> u32 {
-    let rate = ARM_GAIN * STEP_SECONDS;
-    let far = (target.translation - now.translation).length() / (EEF_STEP * rate);
-    let turn = target.rotation.angle_between(now.rotation) / (EEF_TURN * rate);
-    far.max(turn).ceil() as u32
-}
+/// The steps a joint moves at most to close one step's gap: the controller covers a gap within
+/// its range in one step and a longer one at full speed.
+const STEPS_PER_CONFIG: usize = 64;
 
-/// The actions that take the end effector through `targets` (base frame), the last one
-/// closely, and the arm's configuration after each, as Fetch's controller will move it
-/// ([`Fetch::joints_after`]); `None` where the controller does not get there.
+/// The actions that take the arm through `path` from `joints`, and the joints after each, as
+/// Fetch's joint update ([`Fetch::joints_after`]) will move them; `None` where it does not get
+/// there (a target beyond a joint's limit).
 fn predict(
     fetch: &Fetch,
-    targets: &[Pose],
+    mut joints: FetchJoints,
+    path: &[ArmConfig],
     gripper: f32,
-) -> Option<(Vec<Vec<f32>>, Vec<ArmConfig>)> {
-    let mut joints = fetch.joints();
-    let (mut actions, mut configs) = (Vec::new(), Vec::new());
-    for (k, target) in targets.iter().enumerate() {
-        let tolerance = if k + 1 == targets.len() {
-            ARRIVED
-        } else {
-            PASSING
-        };
+) -> Option<Vec<(FetchJointAction, ArmConfig)>> {
+    let mut out = Vec::new();
+    for target in path {
         let mut there = false;
-        for _ in 0..ARM_STEPS_PER_WAYPOINT + steps_to(&joints.eef(), target) {
-            let Some(action) = arm_action(&joints.eef(), target, gripper, tolerance) else {
+        for _ in 0..STEPS_PER_CONFIG {
+            let Some(action) = joint_action(&ArmConfig::of(&joints), target, gripper) else {
                 there = true;
                 break;
             };
-            joints = fetch.joints_after(&joints, &FetchAction::new(&action).ok()?);
-            actions.push(action);
-            configs.push(ArmConfig::of(&joints));
+            joints = fetch.joints_after(&joints, &FetchCommand::Joints(action));
+            out.push((action, ArmConfig::of(&joints)));
         }
-        if !there && arm_action(&joints.eef(), target, gripper, tolerance).is_some() {
+        if !there && joint_action(&ArmConfig::of(&joints), target, gripper).is_some() {
             return None;
         }
     }
-    Some((actions, configs))
+    Some(out)
 }
 
-/// The actions that take the end effector through `targets` (base frame), the controller's
-/// motion predicted ([`predict`]) and, if `checked`, every configuration of it free with what
-/// the gripper holds: the arm's plan re-validated as it will be executed, a step (at most
-/// 0.04 rad a joint) apart. `None` where the controller does not get there or hits something.
-fn prepare(env: &Env, targets: &[Pose], gripper: f32, checked: bool) -> Option<Vec<Vec<f32>>> {
-    let (world, fetch) = fetch(env)?;
-    let (actions, configs) = predict(fetch, targets, gripper)?;
-    let body = ArmBody::of(world, fetch);
-    let free = !checked || configs.iter().all(|c| body.clear(world, c));
-    free.then_some(actions)
+/// Which configurations of a motion [`follow`] checks before it moves.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Check {
+    /// Every one, free of everything but the robot and what it holds.
+    Free,
+    /// None: a descent onto the object, a lift off the table it stood on.
+    Touching,
 }
 
-/// Takes `actions`; the arm's configuration after each goes to `executed`. Stopped short of
-/// `last` (base frame), the hand was blocked.
-fn execute(
+/// The arm taken through `path` joint by joint with the gripper at `gripper`, every step's
+/// configuration predicted ([`predict`]) and, with [`Check::Free`], checked free first; each
+/// configuration reached goes to `executed`. A step that leaves the arm short of its
+/// prediction was stopped by something fixed: [`Failure::HandBlocked`].
+fn follow(
     steps: &mut Stepper<'_>,
-    actions: &[Vec<f32>],
-    last: &Pose,
+    path: &[ArmConfig],
+    gripper: f32,
+    check: Check,
     executed: &mut Vec<ArmConfig>,
 ) -> Attempt<()> {
-    let gripper = actions.first().map_or(OPEN, |a| a[FetchAction::GRIPPER]);
-    for action in actions {
-        attempt!(steps.act(action));
-        executed.push(arm_now(steps.env));
-    }
-    if arm_action(&eef_now(steps.env), last, gripper, ARRIVED).is_some() {
+    follow_until(steps, path, gripper, check, executed, |_| false)
+}
+
+/// [`follow`], stopping before a step once `done` holds.
+fn follow_until(
+    steps: &mut Stepper<'_>,
+    path: &[ArmConfig],
+    gripper: f32,
+    check: Check,
+    executed: &mut Vec<ArmConfig>,
+    done: impl Fn(&Env) -> bool,
+) -> Attempt<()> {
+    let Some((world, fetch)) = fetch(steps.env) else {
+        return Ok(Err(Failure::Unavailable("no episode")));
+    };
+    let Some(predicted) = predict(fetch, fetch.joints(), path, gripper) else {
+        return Ok(Err(Failure::NoHandPose));
+    };
+    let body = ArmBody::of(world, fetch);
+    if check == Check::Free && !predicted.iter().all(|(_, c)| body.clear(world, c)) {
         return Ok(Err(Failure::HandBlocked));
+    }
+    for (action, expected) in &predicted {
+        if done(steps.env) {
+            break;
+        }
+        attempt!(steps.act(action.values()));
+        let now = arm_now(steps.env);
+        executed.push(now);
+        if joint_action(&now, expected, gripper).is_some() {
+            return Ok(Err(Failure::HandBlocked));
+        }
     }
     Ok(Ok(()))
 }
 
-/// The end effector taken through `targets` (base frame), [`prepare`]d and executed. A lift
-/// off a table is not `checked`: what the gripper takes still touches it.
-fn move_to(
+/// The arm's configurations that take the end effector from where it is along `offset` (base
+/// frame, m) in a straight line, `step` apart, each an IK solution from the last, as far as
+/// the arm gets (a torso at the bottom of its travel stops a descent to the floor); `None`
+/// where not one step is reached.
+fn line(fetch: &Fetch, offset: Vector, step: f32) -> Option<Vec<ArmConfig>> {
+    let mut joints = fetch.joints();
+    let from = joints.eef();
+    let n = (offset.length() / step).ceil().max(1.0) as usize;
+    let mut out = Vec::with_capacity(n);
+    for i in 1..=n {
+        let mut target = from;
+        target.translation += offset * (i as f32 / n as f32);
+        let Ok(next) = fetch.ik().solve(&joints, &target) else {
+            break;
+        };
+        let a = ArmConfig::of(&joints);
+        let b = ArmConfig::of(&next).near(&a);
+        if a.0.iter().zip(b.0).any(|(x, y)| (x - y).abs() > LINE_JUMP) {
+            break;
+        }
+        out.push(b);
+        joints = b.joints(joints.head);
+    }
+    (!out.is_empty()).then_some(out)
+}
+
+/// The gripper straight up by `height`, m, not checked: what it takes still touches the table.
+fn straight_up(
     steps: &mut Stepper<'_>,
-    targets: &[Pose],
+    height: f32,
     gripper: f32,
-    checked: bool,
     executed: &mut Vec<ArmConfig>,
 ) -> Attempt<()> {
-    let (Some(actions), Some(last)) = (
-        prepare(steps.env, targets, gripper, checked),
-        targets.last(),
-    ) else {
-        return Ok(Err(Failure::HandBlocked));
+    let path = fetch(steps.env).and_then(|(_, f)| line(f, Vector::Z * height, LINE_STEP));
+    let Some(path) = path else {
+        return Ok(Err(Failure::NoHandPose));
     };
-    execute(steps, &actions, last, executed)
+    follow(steps, &path, gripper, Check::Touching, executed)
 }
 
 /// Still steps with the gripper at `gripper` (a still Fetch action closes it).
@@ -511,8 +535,8 @@ fn hold(
     gripper: f32,
     mut done: impl FnMut(&Env) -> bool,
 ) -> Attempt<()> {
-    let mut action = vec![0.0; behavior_robots::FETCH_ACTION_DIM];
-    action[FetchAction::GRIPPER] = gripper;
+    let mut action = [0.0; FETCH_JOINT_ACTION_DIM];
+    action[FetchJointAction::GRIPPER] = gripper;
     for _ in 0..n {
         if done(steps.env) {
             break;
@@ -532,20 +556,20 @@ fn descend(
     object: ObjectId,
     executed: &mut Vec<ArmConfig>,
 ) -> Attempt<()> {
-    for _ in 0..FETCH_DESCENT_STEPS {
-        if touches(steps.env, object) {
-            break;
-        }
-        let ahead = eef_now(steps.env).rotation * Vector::X;
-        let mut action = vec![0.0; behavior_robots::FETCH_ACTION_DIM];
-        for k in 0..3 {
-            action[FetchAction::EEF_POSITION.start + k] = ahead[k];
-        }
-        action[FetchAction::GRIPPER] = OPEN;
-        attempt!(steps.act(&action));
-        executed.push(arm_now(steps.env));
+    let path = fetch(steps.env).and_then(|(_, f)| {
+        let ahead = f.joints().eef().rotation * Vector::X;
+        line(f, ahead * FETCH_DESCENT, DESCENT_STEP)
+    });
+    // Not a step further: the gripper closes where it is.
+    let Some(path) = path else {
+        return Ok(Ok(()));
+    };
+    let touching = |env: &Env| touches(env, object);
+    match follow_until(steps, &path, OPEN, Check::Touching, executed, touching)? {
+        // Stopped by what it is to take, or by what that lies on: the gripper closes there.
+        Err(Failure::HandBlocked) => Ok(Ok(())),
+        other => Ok(other),
     }
-    Ok(Ok(()))
 }
 
 /// Closes the gripper until it holds the object; touching it and not holding it once closed,
@@ -594,12 +618,10 @@ fn come_back(
         }
         None => Err(Failure::Unavailable("no episode")),
     };
-    let planned = match planned {
-        Ok(planned) => planned,
-        Err(failure) => return Ok(Err(failure)),
-    };
-    let targets = eef_targets(steps.env, &planned);
-    move_to(steps, &targets, gripper, true, executed)
+    match planned {
+        Ok(planned) => follow(steps, &planned, gripper, Check::Free, executed),
+        Err(failure) => Ok(Err(failure)),
+    }
 }
 
 /// Whether the gripper's palm or a finger touches the object.

@@ -736,8 +736,32 @@ pub(crate) fn placement_goals(
     let grip = world.pose(holder).inverse() * world.pose(held);
     let mut let_go = world.clone();
     robot.clone().release_now(&mut let_go, call.hand);
-    let poses = poses_above_places(&let_go, held, call.object, relation, rng)?;
-    Ok(poses.into_iter().map(|p| p * grip.inverse()).collect())
+    // The BehaviorRobot's hand sets it down as it holds it; Fetch's gripper pointing down.
+    let turns: Vec<Option<Pose>> = match robot {
+        Robot::Behavior(..) => vec![None],
+        Robot::Fetch(fetch, _) => {
+            crate::fetch_manipulate::held_below(world, fetch, call.object, &grip)
+                .into_iter()
+                .map(Some)
+                .collect()
+        }
+    };
+    let mut poses = Vec::new();
+    let mut last = Failure::NoHandPose;
+    for turned in turns {
+        if let Some(turned) = turned {
+            // A finite pose turned by a finite rotation: the teleport cannot fail.
+            let _ = let_go.set_pose(held, turned);
+        }
+        match poses_above_places(&let_go, held, call.object, relation, rng) {
+            Ok(found) => poses.extend(found.into_iter().map(|p| p * grip.inverse())),
+            Err(failure) => last = failure,
+        }
+    }
+    if poses.is_empty() {
+        return Err(last);
+    }
+    Ok(poses)
 }
 
 /// Poses of `held` above the places the world's sampler finds for it (in `let_go`, a copy of

@@ -7,7 +7,7 @@
 
 use crate::base::{BaseConfig, BaseSpace, home_extent};
 use crate::error::PlanError;
-use crate::execute::{ARM_REACH, FETCH_ARM_REACH, RecordedCall, RunError};
+use crate::execute::{ARM_REACH, FETCH_ARM_REACH, Mode, RecordedCall, RunError};
 use crate::lattice::{LATTICE_EXPANSIONS, lattice_plan};
 use crate::navigate::Standing;
 use crate::primitive::{Call, Failure};
@@ -16,9 +16,7 @@ use crate::symbolic::{call_seed, stand_for};
 use behavior_core::rng::{SimRng, seeded};
 use behavior_env::Env;
 use behavior_env::record::Recorder;
-use behavior_robots::{
-    ACTION_SCALE, ActionSpace, FetchAction, MAX_ANGULAR_SPEED, MAX_LINEAR_SPEED, Robot,
-};
+use behavior_robots::{ACTION_SCALE, FetchAction, MAX_ANGULAR_SPEED, MAX_LINEAR_SPEED, Robot};
 use behavior_sim::{BodyRef, STEP_SECONDS, World};
 use std::f32::consts::{FRAC_PI_2, PI};
 
@@ -195,9 +193,9 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
         (Some(w), Some(r)) => (w, r),
         _ => return Err(Failure::Unavailable("no episode")),
     };
-    if !matches!(robot.space(), ActionSpace::Full) {
+    if robot.space() != Mode::Physical.action_space(robot.kind()) {
         return Err(Failure::Unavailable(
-            "physical primitives drive the full action space",
+            "physical primitives drive the BehaviorRobot's full action space and Fetch's `joints`",
         ));
     }
     let seed = call_seed(env.start().map_or(0, |s| s.seed), env.steps(), call);

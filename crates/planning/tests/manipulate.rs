@@ -20,6 +20,7 @@ const ACTIVITY: &str = "re-shelving_library_books";
 fn episode(robot: RobotKind) -> Env {
     let mut config = common::config(ACTIVITY);
     config.robot = robot;
+    config.action_space = Mode::Physical.action_space(robot);
     let mut env = Env::new(config);
     env.reset(0).unwrap();
     env
@@ -165,6 +166,16 @@ fn refused_physical_primitives_say_why_and_move_nothing() {
     let second = Call { hand: 1, ..gripper };
     let one_hand = fetch_grasp(&mut fetch, &second, None).unwrap();
     assert!(matches!(one_hand, Err(Failure::NoHand(1))), "{one_hand:?}");
+    // Fetch's arm is driven joint by joint: through the end-effector controller it is refused.
+    let mut config = common::config(ACTIVITY);
+    config.robot = RobotKind::Fetch;
+    let mut through_ik = Env::new(config);
+    through_ik.reset(0).unwrap();
+    let refused = fetch_grasp(&mut through_ik, &gripper, None).unwrap();
+    assert!(
+        matches!(refused, Err(Failure::Unavailable(_))),
+        "{refused:?}"
+    );
 }
 
 #[test]

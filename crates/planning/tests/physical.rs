@@ -8,13 +8,15 @@ mod common;
 use behavior_env::Env;
 use behavior_env::record::{Recorder, read, replay};
 use behavior_planning::{
-    BaseConfig, BaseSpace, Call, Primitive, Space, Standing, base_config, drive_to, within_reach,
+    BaseConfig, BaseSpace, Call, Mode, Primitive, Space, Standing, base_config, drive_to,
+    within_reach,
 };
 use behavior_robots::RobotKind;
 
 fn episode(activity: &str, robot: RobotKind, seed: u64) -> Env {
     let mut config = common::config(activity);
     config.robot = robot;
+    config.action_space = Mode::Physical.action_space(robot);
     let mut env = Env::new(config);
     env.reset(seed).unwrap();
     env
@@ -160,4 +162,22 @@ fn a_robot_put_into_furniture_backs_out_and_stands_clear_by_it() {
             assert_eq!(c.yaw, start.yaw, "{robot:?} turned inside the furniture");
         }
     }
+}
+
+#[test]
+fn a_primitive_that_uses_up_the_episode_ends_it_truncated_rather_than_failing() {
+    let mut config = common::config("bringing_in_wood");
+    config.max_steps = 10;
+    let mut env = Env::new(config);
+    env.reset(0).unwrap();
+    let call = Call {
+        primitive: Primitive::NavigateTo,
+        object: object(&env, "plywood.n.01_1"),
+        hand: 0,
+    };
+    let outcome = behavior_planning::run(&mut env, call, Mode::Physical, None).unwrap();
+    assert!(env.is_over());
+    assert!(outcome.result.is_err(), "the drive was cut short");
+    assert!(outcome.step.truncated && !outcome.step.terminated);
+    assert_eq!(outcome.step.info.steps, 10);
 }

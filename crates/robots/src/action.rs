@@ -48,6 +48,32 @@ pub enum ActionError {
         /// The value.
         value: f32,
     },
+    /// The robot has no such action space.
+    #[error("the {robot} robot cannot be driven through the `{space}` action space")]
+    Unsupported {
+        /// The robot's name.
+        robot: &'static str,
+        /// The space's name.
+        space: &'static str,
+    },
+}
+
+/// N values checked: an error if there are not N or one is not finite; clipped to [−1, 1].
+pub(crate) fn checked<const N: usize>(values: &[f32]) -> Result<[f32; N], ActionError> {
+    if values.len() != N {
+        return Err(ActionError::WrongLength {
+            expected: N,
+            got: values.len(),
+        });
+    }
+    let mut action = [0.0; N];
+    for (index, (&value, slot)) in values.iter().zip(&mut action).enumerate() {
+        if !value.is_finite() {
+            return Err(ActionError::NotFinite { index, value });
+        }
+        *slot = value.clamp(-1.0, 1.0);
+    }
+    Ok(action)
 }
 
 /// A valid BehaviorRobot action: 26 finite values in [−1, 1] (see the module docs for the
@@ -94,20 +120,7 @@ impl Action {
     /// An action from 26 values: an error if there are not 26 or one is not finite; values
     /// beyond [−1, 1] are clipped to it.
     pub fn new(values: &[f32]) -> Result<Action, ActionError> {
-        if values.len() != ACTION_DIM {
-            return Err(ActionError::WrongLength {
-                expected: ACTION_DIM,
-                got: values.len(),
-            });
-        }
-        let mut action = [0.0; ACTION_DIM];
-        for (index, (&value, slot)) in values.iter().zip(&mut action).enumerate() {
-            if !value.is_finite() {
-                return Err(ActionError::NotFinite { index, value });
-            }
-            *slot = value.clamp(-1.0, 1.0);
-        }
-        Ok(Action(action))
+        checked(values).map(Action)
     }
 
     /// The 26 values, clipped to [−1, 1].
@@ -169,26 +182,38 @@ pub enum ActionSpace {
     MobileManipulation,
     /// 7 values: the right hand's Δ pose and trigger.
     TabletopManipulation,
+    /// Fetch only: its whole action with the arm driven joint by joint instead of through
+    /// inverse kinematics (iGibson 2.1+'s `JointController` on the arm), 13 values
+    /// (`fetch_action.rs`). A motion planned in the arm's joint space is executed exactly as
+    /// planned. The BehaviorRobot's hands have no joints: [`crate::Robot::add`] refuses it.
+    Joints,
 }
 
 impl ActionSpace {
     /// Every space.
-    pub const ALL: [ActionSpace; 4] = [
+    pub const ALL: [ActionSpace; 5] = [
         ActionSpace::Full,
         ActionSpace::Navigation,
         ActionSpace::MobileManipulation,
         ActionSpace::TabletopManipulation,
+        ActionSpace::Joints,
     ];
 
     /// Its name in files and on the command line: `full`, `navigation`,
-    /// `mobile_manipulation` or `tabletop_manipulation`.
+    /// `mobile_manipulation`, `tabletop_manipulation` or `joints`.
     pub fn name(self) -> &'static str {
         match self {
             ActionSpace::Full => "full",
             ActionSpace::Navigation => "navigation",
             ActionSpace::MobileManipulation => "mobile_manipulation",
             ActionSpace::TabletopManipulation => "tabletop_manipulation",
+            ActionSpace::Joints => "joints",
         }
+    }
+
+    /// Whether a robot of `kind` can be driven through it.
+    pub fn fits(self, kind: crate::RobotKind) -> bool {
+        self != ActionSpace::Joints || kind == crate::RobotKind::Fetch
     }
 
     /// The space with that [`ActionSpace::name`].
@@ -196,18 +221,26 @@ impl ActionSpace {
         ActionSpace::ALL.into_iter().find(|s| s.name() == name)
     }
 
-    /// How many values a BehaviorRobot action of this space has (Fetch's: [`ActionSpace::fetch_dim`]).
+    /// How many values a BehaviorRobot action of this space has (Fetch's: [`ActionSpace::fetch_dim`]);
+    /// 0 for [`ActionSpace::Joints`], which it has not.
     pub fn dim(self) -> usize {
         match self {
             ActionSpace::Full => ACTION_DIM,
             ActionSpace::Navigation => 3,
             ActionSpace::MobileManipulation => 17,
             ActionSpace::TabletopManipulation => 7,
+            ActionSpace::Joints => 0,
         }
     }
 
     /// The full action a vector of this space stands for; the same checks as [`Action::new`].
     pub fn action(self, values: &[f32]) -> Result<Action, ActionError> {
+        if !self.fits(crate::RobotKind::Behavior) {
+            return Err(ActionError::Unsupported {
+                robot: crate::RobotKind::Behavior.name(),
+                space: self.name(),
+            });
+        }
         if values.len() != self.dim() {
             return Err(ActionError::WrongLength {
                 expected: self.dim(),
@@ -235,6 +268,7 @@ impl ActionSpace {
             ActionSpace::Navigation => &[(0..2, 0..2), (2..3, 5..6)],
             ActionSpace::MobileManipulation => &[(0..2, 0..2), (2..3, 5..6), (3..17, 12..26)],
             ActionSpace::TabletopManipulation => &[(0..7, 19..26)],
+            ActionSpace::Joints => &[],
         }
     }
 

@@ -92,6 +92,12 @@ impl Robot {
         world: &mut World,
         pose: Pose,
     ) -> Result<Robot, RobotError> {
+        if !space.fits(kind) {
+            return Err(RobotError::Space(ActionError::Unsupported {
+                robot: kind.name(),
+                space: space.name(),
+            }));
+        }
         match kind {
             RobotKind::Behavior => Ok(Robot::Behavior(BehaviorRobot::add(world, pose)?, space)),
             RobotKind::Fetch => Ok(Robot::Fetch(Fetch::add(world, pose)?, space)),

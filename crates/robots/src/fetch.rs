@@ -1,7 +1,7 @@
 //! Fetch: adding it to a world, stepping it, and reading it.
 
 use crate::action::ActionError;
-use crate::fetch_action::FetchAction;
+use crate::fetch_action::{FetchAction, FetchCommand};
 use crate::fetch_body::{
     FETCH_LINKS, FINGER_LINKS, FINGER_OPEN, FetchJoint, FetchJoints, FetchLink, GRIPPER_CENTRE,
     WHEEL_RADIUS, WHEEL_SEPARATION, blocking_parts, link_centre, link_mass, link_spec, pad_face,
@@ -144,7 +144,7 @@ pub struct Fetch {
     gripper: f32,
     grasp: Option<FetchGrasp>,
     releases: Vec<Release>,
-    pending: FetchAction,
+    pending: FetchCommand,
     /// Why the last end-effector command could not be followed exactly.
     ik_error: Option<IkError>,
     /// Whether the kinematic parts have a velocity set.
@@ -185,7 +185,7 @@ impl Fetch {
             gripper: 1.0,
             grasp: None,
             releases: Vec::new(),
-            pending: FetchAction::ZERO,
+            pending: FetchCommand::default(),
             ik_error: None,
             moving: false,
             ik: IkSolver::default(),
@@ -199,9 +199,10 @@ impl Fetch {
         Ok(fetch)
     }
 
-    /// The action for the next step (replacing one set before).
-    pub fn set_action(&mut self, action: FetchAction) {
-        self.pending = action;
+    /// The action for the next step (replacing one set before): a [`FetchAction`] through
+    /// the end-effector controller or a [`crate::FetchJointAction`] joint by joint.
+    pub fn set_action(&mut self, action: impl Into<FetchCommand>) {
+        self.pending = action.into();
     }
 
     /// Checks `values` as a [`FetchAction`] and, if it is one, takes a step of the world with it.
@@ -377,20 +378,32 @@ fn wheel_limited((v, w): (f32, f32)) -> ([f32; 2], (f32, f32)) {
 }
 
 /// A base-frame end-effector position kept in the workspace (iGibson's clips).
-/// The head's and arm's positions after one step of `action` from `now`: the head at its
-/// commanded rates, the torso and arm toward the IK solution for the action's end-effector
-/// target (or the closest found, with why it is not exact), each within its maximum velocity.
+/// The head's and arm's positions after one step of `command` from `now`: the head at its
+/// commanded rates; the torso and arm at theirs ([`FetchCommand::Joints`]), or toward the IK
+/// solution for the end-effector target (or the closest found, with why it is not exact),
+/// each within its maximum velocity and its limits.
 fn step_joints(
     ik: &IkSolver,
     now: &FetchJoints,
-    action: &FetchAction,
+    command: &FetchCommand,
 ) -> (FetchJoints, Option<IkError>) {
     let mut joints = *now;
-    let [pan, tilt] = action.head();
+    let [pan, tilt] = command.head();
     joints.head = [
         joints.head[0] + pan * STEP_SECONDS,
         joints.head[1] + tilt * STEP_SECONDS,
     ];
+    let action = match command {
+        FetchCommand::EndEffector(action) => action,
+        FetchCommand::Joints(action) => {
+            let rates = action.rates();
+            joints.torso += rates[0] * STEP_SECONDS;
+            for (q, rate) in joints.arm.iter_mut().zip(&rates[1..]) {
+                *q += rate * STEP_SECONDS;
+            }
+            return (joints.clamped(), None);
+        }
+    };
     let mut error = None;
     if action.moves_eef() {
         let eef = now.eef();
@@ -503,11 +516,12 @@ impl Fetch {
         }
     }
 
-    /// The head's and arm's positions at the end of the step the action asks for.
-    fn joint_targets(&mut self, action: &FetchAction) -> FetchJoints {
-        let (joints, error) = step_joints(&self.ik, &self.now.joints, action);
-        if action.moves_eef() {
-            self.ik_error = error;
+    /// The head's and arm's positions at the end of the step the command asks for.
+    fn joint_targets(&mut self, command: &FetchCommand) -> FetchJoints {
+        let (joints, error) = step_joints(&self.ik, &self.now.joints, command);
+        match command {
+            FetchCommand::EndEffector(action) if !action.moves_eef() => {}
+            _ => self.ik_error = error,
         }
         joints
     }
@@ -515,8 +529,8 @@ impl Fetch {
     /// Where one step of `action` takes the torso, head and arm from `joints` if nothing fixed
     /// is in their way: what the controller does, without a world, for planners that predict
     /// an executed path.
-    pub fn joints_after(&self, joints: &FetchJoints, action: &FetchAction) -> FetchJoints {
-        step_joints(&self.ik, joints, action).0
+    pub fn joints_after(&self, joints: &FetchJoints, command: &FetchCommand) -> FetchJoints {
+        step_joints(&self.ik, joints, command).0
     }
 
     /// `wanted` as far as fixed bodies let it be: all of it, or the joints' motion without the
@@ -927,7 +941,7 @@ mod tests {
         values[FetchAction::GRIPPER] = 1.0;
         let action = FetchAction::new(&values).unwrap();
         for _ in 0..5 {
-            let predicted = fetch.joints_after(&fetch.joints(), &action);
+            let predicted = fetch.joints_after(&fetch.joints(), &action.into());
             fetch.step(&mut world, &values).unwrap();
             assert_eq!(fetch.joints(), predicted);
         }

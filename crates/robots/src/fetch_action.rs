@@ -18,8 +18,23 @@
 //! - [`ActionSpace::MobileManipulation`]: 9 values, the base's 2, the end effector's 6 and the
 //!   gripper (the head stays);
 //! - [`ActionSpace::TabletopManipulation`]: 7 values, the end effector's 6 and the gripper.
+//!
+//! [`ActionSpace::Joints`] drives the arm joint by joint instead ([`FetchJointAction`], as
+//! iGibson 2.1+'s `JointController` in velocity mode), 13 values:
+//!
+//! | index | meaning | 1.0 means |
+//! |---|---|---|
+//! | 0–3 | base and head, as above | |
+//! | 4 | torso lift velocity | its maximum, 0.1 m/s |
+//! | 5–11 | arm joint velocities, shoulder pan to wrist roll | each joint's maximum (1.26–2.27 rad/s) |
+//! | 12 | gripper, as above | |
+//!
+//! The first four and the last have the same meaning in both, so [`FetchCommand`] reads them
+//! alike.
 
-use crate::action::{ActionError, ActionSpace};
+use crate::action::{ActionError, ActionSpace, checked};
+use crate::fetch_body::FetchJoint;
+use behavior_sim::STEP_SECONDS;
 use rapier3d::math::{Rotation, Vector};
 use std::f32::consts::PI;
 use std::ops::Range;
@@ -62,38 +77,12 @@ impl FetchAction {
     /// An action from 11 values: an error if there are not 11 or one is not finite; values
     /// beyond [−1, 1] are clipped to it.
     pub fn new(values: &[f32]) -> Result<FetchAction, ActionError> {
-        if values.len() != FETCH_ACTION_DIM {
-            return Err(ActionError::WrongLength {
-                expected: FETCH_ACTION_DIM,
-                got: values.len(),
-            });
-        }
-        let mut action = [0.0; FETCH_ACTION_DIM];
-        for (index, (&value, slot)) in values.iter().zip(&mut action).enumerate() {
-            if !value.is_finite() {
-                return Err(ActionError::NotFinite { index, value });
-            }
-            *slot = value.clamp(-1.0, 1.0);
-        }
-        Ok(FetchAction(action))
+        checked(values).map(FetchAction)
     }
 
     /// The 11 values, clipped to [−1, 1].
     pub fn values(&self) -> &[f32; FETCH_ACTION_DIM] {
         &self.0
-    }
-
-    /// The base's commanded linear (m/s) and angular (rad/s) velocity.
-    pub fn base(&self) -> (f32, f32) {
-        (
-            self.0[Self::LINEAR] * MAX_LINEAR_SPEED,
-            self.0[Self::ANGULAR] * MAX_ANGULAR_SPEED,
-        )
-    }
-
-    /// The head's commanded pan and tilt velocities, rad/s.
-    pub fn head(&self) -> [f32; 2] {
-        [self.0[2] * HEAD_SPEED, self.0[3] * HEAD_SPEED]
     }
 
     /// The end effector's Δ position (m) and Δ rotation for this step, in the base frame.
@@ -107,10 +96,110 @@ impl FetchAction {
     pub fn moves_eef(&self) -> bool {
         self.0[4..10].iter().any(|&x| x != 0.0)
     }
+}
+
+/// How many numbers a Fetch action of [`ActionSpace::Joints`] has.
+pub const FETCH_JOINT_ACTION_DIM: usize = 13;
+
+/// A valid Fetch action of [`ActionSpace::Joints`]: the arm driven joint by joint (see the
+/// module docs for the layout). It acts for one step.
+#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq)]
+pub struct FetchJointAction([f32; FETCH_JOINT_ACTION_DIM]);
+
+impl FetchJointAction {
+    /// Index of the torso lift's velocity.
+    pub const TORSO: usize = 4;
+    /// Indices of the torso's and the seven arm joints' velocities (the planner's order).
+    pub const JOINTS: Range<usize> = 4..12;
+    /// Index of the gripper's command.
+    pub const GRIPPER: usize = 12;
+
+    /// An action from 13 values, checked as [`FetchAction::new`] checks 11.
+    pub fn new(values: &[f32]) -> Result<FetchJointAction, ActionError> {
+        checked(values).map(FetchJointAction)
+    }
+
+    /// The 13 values, clipped to [−1, 1].
+    pub fn values(&self) -> &[f32; FETCH_JOINT_ACTION_DIM] {
+        &self.0
+    }
+
+    /// The torso's (m/s) and the arm joints' (rad/s) commanded velocities, torso first.
+    pub fn rates(&self) -> [f32; 8] {
+        std::array::from_fn(|k| self.0[Self::TORSO + k] * arm_joint(k).info().max_velocity)
+    }
+
+    /// The value that asks joint `k` of [`FetchJointAction::rates`] (0 the torso) to move by
+    /// `delta` (m or rad) in one step, within [−1, 1].
+    pub fn value_for(k: usize, delta: f32) -> f32 {
+        (delta / (arm_joint(k).info().max_velocity * STEP_SECONDS)).clamp(-1.0, 1.0)
+    }
+}
+
+/// The joint of [`FetchJointAction::rates`]'s entry `k`: the torso, then the arm's.
+fn arm_joint(k: usize) -> FetchJoint {
+    match k {
+        0 => FetchJoint::TorsoLift,
+        _ => FetchJoint::ARM[k - 1],
+    }
+}
+
+/// What Fetch is told for a step, through either of its arm's controllers.
+#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq)]
+pub enum FetchCommand {
+    /// The end effector's motion, through inverse kinematics.
+    EndEffector(FetchAction),
+    /// The torso's and arm joints' velocities.
+    Joints(FetchJointAction),
+}
+
+impl Default for FetchCommand {
+    /// Nothing moves and the gripper closes.
+    fn default() -> Self {
+        FetchCommand::EndEffector(FetchAction::ZERO)
+    }
+}
+
+impl From<FetchAction> for FetchCommand {
+    fn from(action: FetchAction) -> Self {
+        FetchCommand::EndEffector(action)
+    }
+}
+
+impl From<FetchJointAction> for FetchCommand {
+    fn from(action: FetchJointAction) -> Self {
+        FetchCommand::Joints(action)
+    }
+}
+
+impl FetchCommand {
+    /// The values: both layouts begin with the base's and head's four and end with the
+    /// gripper's.
+    pub fn values(&self) -> &[f32] {
+        match self {
+            FetchCommand::EndEffector(a) => a.values(),
+            FetchCommand::Joints(a) => a.values(),
+        }
+    }
+
+    /// The base's commanded linear (m/s) and angular (rad/s) velocity.
+    pub fn base(&self) -> (f32, f32) {
+        let v = self.values();
+        (
+            v[FetchAction::LINEAR] * MAX_LINEAR_SPEED,
+            v[FetchAction::ANGULAR] * MAX_ANGULAR_SPEED,
+        )
+    }
+
+    /// The head's commanded pan and tilt velocities, rad/s.
+    pub fn head(&self) -> [f32; 2] {
+        let v = self.values();
+        [v[2] * HEAD_SPEED, v[3] * HEAD_SPEED]
+    }
 
     /// The gripper's command: > 0 opens, otherwise closes.
     pub fn gripper(&self) -> f32 {
-        self.0[Self::GRIPPER]
+        self.values().last().copied().unwrap_or(0.0)
     }
 }
 
@@ -122,13 +211,17 @@ impl ActionSpace {
             ActionSpace::Navigation => 2,
             ActionSpace::MobileManipulation => 9,
             ActionSpace::TabletopManipulation => 7,
+            ActionSpace::Joints => FETCH_JOINT_ACTION_DIM,
         }
     }
 
-    /// The full Fetch action a vector of this space stands for, the other entries zero (the
+    /// The full Fetch command a vector of this space stands for, the other entries zero (the
     /// head still; the gripper closing, in [`ActionSpace::Navigation`]); the same checks as
     /// [`FetchAction::new`], errors naming the caller's index.
-    pub fn fetch_action(self, values: &[f32]) -> Result<FetchAction, ActionError> {
+    pub fn fetch_action(self, values: &[f32]) -> Result<FetchCommand, ActionError> {
+        if self == ActionSpace::Joints {
+            return FetchJointAction::new(values).map(FetchCommand::Joints);
+        }
         if values.len() != self.fetch_dim() {
             return Err(ActionError::WrongLength {
                 expected: self.fetch_dim(),
@@ -136,7 +229,7 @@ impl ActionSpace {
             });
         }
         let offset = match self {
-            ActionSpace::Full | ActionSpace::Navigation => 0,
+            ActionSpace::Full | ActionSpace::Navigation | ActionSpace::Joints => 0,
             ActionSpace::MobileManipulation => 2,
             ActionSpace::TabletopManipulation => 4,
         };
@@ -146,13 +239,14 @@ impl ActionSpace {
             let to = if k < 2 && offset != 4 { k } else { k + offset };
             full[to] = value;
         }
-        FetchAction::new(&full).map_err(|e| match e {
+        let action = FetchAction::new(&full).map_err(|e| match e {
             ActionError::NotFinite { index, value } => ActionError::NotFinite {
                 index: if index < 2 { index } else { index - offset },
                 value,
             },
             other => other,
-        })
+        })?;
+        Ok(FetchCommand::EndEffector(action))
     }
 }
 

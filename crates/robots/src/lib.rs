@@ -8,7 +8,8 @@
 //! - the [`BehaviorRobot`], the bimanual humanoid of the VR demonstrations (26-d [`Action`],
 //!   22-d [`Proprioception`]);
 //! - [`Fetch`], the mobile manipulator (11-d [`FetchAction`] with an end-effector controller
-//!   through inverse kinematics, [`IkSolver`]; 49-d [`FetchProprioception`]).
+//!   through inverse kinematics, [`IkSolver`], or 13-d [`FetchJointAction`] driving the arm
+//!   joint by joint; 49-d [`FetchProprioception`]).
 //!
 //! [`Robot`] is either, for code that does not care which; [`ActionSpace`] names the original's
 //! reduced action spaces, which each kind reads its own way (see `fetch_action.rs` for Fetch's).
@@ -100,8 +101,8 @@ pub use fetch::{
     ARM_GAIN, Fetch, FetchParts, WORKSPACE_CENTRE, WORKSPACE_HEIGHT, WORKSPACE_RADIUS,
 };
 pub use fetch_action::{
-    EEF_STEP, EEF_TURN, FETCH_ACTION_DIM, FetchAction, HEAD_SPEED, MAX_ANGULAR_SPEED,
-    MAX_LINEAR_SPEED,
+    EEF_STEP, EEF_TURN, FETCH_ACTION_DIM, FETCH_JOINT_ACTION_DIM, FetchAction, FetchCommand,
+    FetchJointAction, HEAD_SPEED, MAX_ANGULAR_SPEED, MAX_LINEAR_SPEED,
 };
 pub use fetch_body::{
     BASE_RADIUS, CAMERA_OFFSET, DIAGONAL30, FETCH_FINGER_MASS, FETCH_JOINTS, FETCH_LINKS,

@@ -27,6 +27,9 @@ pub enum RobotError {
     /// The world refused one of the robot's parts.
     #[error("the world refused a robot part: {0}")]
     World(#[from] WorldError),
+    /// The robot cannot be driven through the action space asked for.
+    #[error(transparent)]
+    Space(#[from] ActionError),
 }
 
 /// The world objects a BehaviorRobot is made of.

@@ -4,8 +4,9 @@
 mod common;
 
 use behavior_robots::{
-    ActionSpace, EEF_STEP, FETCH_ACTION_DIM, Fetch, FetchAction, FetchJoint, FetchJoints,
-    FetchProprioception, IkError, IkSolver, Robot, RobotKind, WHEEL_RADIUS,
+    ActionSpace, EEF_STEP, FETCH_ACTION_DIM, FETCH_JOINT_ACTION_DIM, Fetch, FetchAction,
+    FetchJoint, FetchJointAction, FetchJoints, FetchProprioception, IkError, IkSolver, Robot,
+    RobotKind, WHEEL_RADIUS,
 };
 use behavior_sim::World;
 use common::*;
@@ -393,4 +394,60 @@ fn the_table_stops_the_gripper_pressed_down_into_it() {
     let gripper = robot.parts().gripper();
     let table_top = 0.75;
     assert!(world.aabb(gripper).mins.z > table_top - 0.01);
+}
+
+#[test]
+fn the_joint_space_moves_each_joint_at_its_commanded_rate_and_only_fetch_has_it() {
+    let mut world = World::default();
+    floor(&mut world);
+    let pose = Robot::standing_pose(RobotKind::Fetch, Vector::ZERO, 0.0);
+    let mut robot = Robot::add(RobotKind::Fetch, ActionSpace::Joints, &mut world, pose).unwrap();
+    assert_eq!(robot.action_dim(), FETCH_JOINT_ACTION_DIM);
+    let Robot::Fetch(fetch, _) = &robot else {
+        panic!("a Fetch was added");
+    };
+    let before = fetch.joints();
+    // Shoulder pan at half its maximum, the torso down at a quarter, the rest still.
+    let mut values = [0.0; FETCH_JOINT_ACTION_DIM];
+    values[FetchJointAction::TORSO] = -0.25;
+    values[FetchJointAction::JOINTS.start + 1] = 0.5;
+    values[FetchJointAction::GRIPPER] = 1.0;
+    robot.set_action(&values).unwrap();
+    world.step_with(&mut robot);
+    let Robot::Fetch(fetch, _) = &robot else {
+        panic!("a Fetch was added");
+    };
+    let after = fetch.joints();
+    let dt = behavior_sim::STEP_SECONDS;
+    let pan = FetchJoint::ShoulderPan.info().max_velocity;
+    let lift = FetchJoint::TorsoLift.info().max_velocity;
+    assert!((after.arm[0] - before.arm[0] - 0.5 * pan * dt).abs() < 1e-6);
+    assert!((after.torso - before.torso + 0.25 * lift * dt).abs() < 1e-6);
+    assert_eq!(after.arm[1..], before.arm[1..]);
+    assert_eq!(after.head, before.head);
+    // Asking for 0.01 rad at the elbow moves it by 0.01 rad.
+    let mut values = [0.0; FETCH_JOINT_ACTION_DIM];
+    values[FetchJointAction::JOINTS.start + 4] = FetchJointAction::value_for(4, 0.01);
+    robot.set_action(&values).unwrap();
+    world.step_with(&mut robot);
+    let Robot::Fetch(fetch, _) = &robot else {
+        panic!("a Fetch was added");
+    };
+    assert!((fetch.joints().arm[3] - after.arm[3] - 0.01).abs() < 1e-6);
+    // Wrong lengths and NaN are refused.
+    assert!(robot.set_action(&[0.0; FETCH_ACTION_DIM]).is_err());
+    let mut nan = [0.0; FETCH_JOINT_ACTION_DIM];
+    nan[7] = f32::NAN;
+    assert!(matches!(
+        robot.set_action(&nan),
+        Err(behavior_robots::ActionError::NotFinite { index: 7, .. })
+    ));
+    // The BehaviorRobot has no arm joints.
+    let b = Robot::standing_pose(RobotKind::Behavior, v(3.0, 0.0, 0.0), 0.0);
+    let refused = Robot::add(RobotKind::Behavior, ActionSpace::Joints, &mut world, b);
+    assert!(
+        matches!(&refused, Err(behavior_robots::RobotError::Space(_))),
+        "{refused:?}"
+    );
+    assert_eq!(ActionSpace::from_name("joints"), Some(ActionSpace::Joints));
 }

@@ -152,11 +152,8 @@ class Setup:
 
     def make(self, episode: Episode):
         spec = row_named(self.row)
-        env = BehaviorEnv(
-            episode.activity, robot=self.robot, scene=episode.home, seed=episode.seed,
-            action_space=spec.action_space, primitive_mode=spec.primitive_mode,
-            observations=spec.observations, image_size=self.image_size,
-        )
+        env = spec.env(episode.activity, robot=self.robot, scene=episode.home,
+                       seed=episode.seed, image_size=self.image_size)
         horizon = self.horizon
         if horizon is None and spec.action_space == "primitives":
             horizon = PRIMITIVE_HORIZON

@@ -134,20 +134,25 @@ impl Catalog {
         if path.exists() {
             return Ok(read_source(path)?);
         }
-        if !self.data.activities()?.iter().any(|a| a == definition) {
-            return Err(BuildError::UnknownDefinition(definition.to_string()));
-        }
-        Ok(read_source(&self.data.problem_path(definition)?)?)
+        self.official_source(definition)?
+            .ok_or_else(|| BuildError::UnknownDefinition(definition.to_string()))
     }
 
     /// The official activity of this name, loaded.
     fn activity(&self, name: &str) -> Result<Activity, BuildError> {
-        if !self.data.activities()?.iter().any(|a| a == name) {
-            return Err(BuildError::UnknownActivity(name.to_string()));
-        }
-        let source = read_source(&self.data.problem_path(name)?)?;
+        let source = self
+            .official_source(name)?
+            .ok_or_else(|| BuildError::UnknownActivity(name.to_string()))?;
         let (activity, _warnings) = self.knowledge.load(&source)?;
         Ok(activity)
+    }
+
+    /// The text of the official activity of this name; `None` if there is none.
+    fn official_source(&self, name: &str) -> Result<Option<Source>, BuildError> {
+        if !self.data.activities()?.iter().any(|a| a == name) {
+            return Ok(None);
+        }
+        Ok(Some(read_source(&self.data.problem_path(name)?)?))
     }
 }
 

@@ -40,7 +40,7 @@ use behavior_core::rng::{SimRng, seeded, uniform};
 use behavior_env::Env;
 use behavior_env::record::Recorder;
 use behavior_robots::{
-    ActionSpace, FETCH_JOINT_ACTION_DIM, Fetch, FetchCommand, FetchJointAction, FetchJoints, Robot,
+    ActionSpace, FETCH_JOINT_ACTION_DIM, Fetch, FetchCommand, FetchJointAction, Robot,
 };
 use behavior_sim::{BodyRef, ObjectId, Relation, World};
 use rapier3d::math::{Pose, Rotation, Vector};
@@ -56,7 +56,7 @@ pub const FETCH_DESCENT: f32 = 0.12;
 /// How far the gripper moves a step in its descent, m.
 const DESCENT_STEP: f32 = 0.004;
 /// How far apart the IK solutions of an end effector's straight line are, m.
-pub const LINE_STEP: f32 = 0.01;
+const LINE_STEP: f32 = 0.01;
 /// The largest change of a joint between two solutions of a straight line, rad (m for the
 /// torso): a bigger one is the IK jumping to another branch, and the line is not followed.
 const LINE_JUMP: f32 = 0.25;
@@ -401,19 +401,19 @@ fn joint_action(now: &ArmConfig, target: &ArmConfig, gripper: f32) -> Option<Fet
     FetchJointAction::new(&values).ok()
 }
 
-/// The steps a joint moves at most to close one step's gap: the controller covers a gap within
-/// its range in one step and a longer one at full speed.
+/// The most steps taken toward one configuration of a path: a gap within a joint's range of a
+/// step closes in one, a longer one at full speed.
 const STEPS_PER_CONFIG: usize = 64;
 
-/// The actions that take the arm through `path` from `joints`, and the joints after each, as
+/// The actions that take the arm through `path` from where it is, and the joints after each, as
 /// Fetch's joint update ([`Fetch::joints_after`]) will move them; `None` where it does not get
 /// there (a target beyond a joint's limit).
 fn predict(
     fetch: &Fetch,
-    mut joints: FetchJoints,
     path: &[ArmConfig],
     gripper: f32,
 ) -> Option<Vec<(FetchJointAction, ArmConfig)>> {
+    let mut joints = fetch.joints();
     let mut out = Vec::new();
     for target in path {
         let mut there = false;
@@ -467,7 +467,7 @@ fn follow_until(
     let Some((world, fetch)) = fetch(steps.env) else {
         return Ok(Err(Failure::Unavailable("no episode")));
     };
-    let Some(predicted) = predict(fetch, fetch.joints(), path, gripper) else {
+    let Some(predicted) = predict(fetch, path, gripper) else {
         return Ok(Err(Failure::NoHandPose));
     };
     let body = ArmBody::of(world, fetch);

@@ -37,6 +37,16 @@ class Row:
     # "ppo" or "sac".
     algorithm: str
 
+    def env(self, activity: str, *, robot: str, seed: int, image_size: int,
+            scene: Optional[str] = None):
+        """A ``BehaviorEnv`` of `activity` set up as this row: its action space, how primitives
+        run and what the agent sees."""
+        from ..env import BehaviorEnv
+
+        return BehaviorEnv(activity, robot=robot, scene=scene, seed=seed,
+                           action_space=self.action_space, primitive_mode=self.primitive_mode,
+                           observations=self.observations, image_size=image_size)
+
 
 ROWS: Dict[str, Row] = {
     "ca": Row("Q^ca", "continuous", "physical", IMAGES, "sac"),

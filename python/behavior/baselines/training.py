@@ -90,16 +90,8 @@ class FixedInstance(gymnasium.Wrapper):
 def make_env(config: TrainConfig) -> gymnasium.Env:
     """The environment of a run: the row's action space and observations, the horizon, the
     instance (sampled runs draw each episode's from the seeds the algorithm gives)."""
-    spec = row_named(config.row)
-    env = BehaviorEnv(
-        config.activity,
-        robot=config.robot,
-        seed=config.instance,
-        action_space=spec.action_space,
-        primitive_mode=spec.primitive_mode,
-        observations=spec.observations,
-        image_size=config.image_size,
-    )
+    env = row_named(config.row).env(config.activity, robot=config.robot, seed=config.instance,
+                                    image_size=config.image_size)
     if not config.sampled:
         env = FixedInstance(env, config.instance)
     return Monitor(TimeLimit(env, max_episode_steps=config.episode_horizon()))

@@ -8,18 +8,24 @@
 //! the torso), samples within the joint limits (a continuous joint within half a turn either
 //! way of where it starts). The arm's links do not collide with the robot's own base and torso
 //! in the robot model (its parts are kinematic bodies, placed by forward kinematics), so the
-//! planner does not check that either; what the gripper holds is kept clear of the base, which
-//! it would hit.
+//! planner does not check that either; what the gripper holds is kept clear of the rest of the
+//! robot, which it would hit (the assisted grasp turns off its contacts with the gripper only).
 
+use crate::navigate::inflated;
 use crate::rrt::Space;
 use behavior_core::rng::{SimRng, uniform};
 use behavior_robots::{Fetch, FetchJoint, FetchJoints, FetchLink};
-use behavior_sim::{ObjectId, Primitive, QueryFilter, World};
+use behavior_sim::{ObjectId, Primitive, QueryFilter, Solid, World};
 use rapier3d::math::{Pose, Vector};
 use std::f32::consts::{PI, TAU};
 
 /// How far apart the checked configurations of an arm motion are, rad (m for the torso).
 pub const ARM_RESOLUTION: f32 = 0.05;
+
+/// How much larger what the gripper holds is checked against the world than it is, m: held
+/// by a joint of finite stiffness, it lags the arm (a tile planned past a wall grazed it and
+/// its grasp broke).
+pub const HELD_MARGIN: f32 = 0.02;
 
 /// Fetch's torso lift, m, and its seven arm joints, rad, shoulder pan first.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -83,6 +89,15 @@ fn finger_sweep() -> (Primitive, Pose) {
     )
 }
 
+/// Shapes built for tests against each other; one that cannot be built (not finite) is left
+/// out, as the world's queries refuse it.
+fn solids(shapes: &[(Primitive, Pose)]) -> Vec<Solid> {
+    shapes
+        .iter()
+        .filter_map(|(shape, offset)| Solid::new(shape, *offset).ok())
+        .collect()
+}
+
 /// Fetch's moving links and what the gripper holds, as the arm planner moves them.
 #[derive(Clone, Debug)]
 pub struct ArmBody {
@@ -92,13 +107,15 @@ pub struct ArmBody {
     pub head: [f32; 2],
     /// Each moving link's shapes in its own frame, in [`FetchLink::ALL`] order from the torso.
     pub links: Vec<Vec<(Primitive, Pose)>>,
-    /// What the gripper holds, in the gripper's frame.
+    /// What the gripper holds, in the gripper's frame, grown by [`HELD_MARGIN`].
     pub held: Vec<(Primitive, Pose)>,
-    /// What the links' checks ignore: the robot and what it holds.
+    /// What the links' and the held object's checks against the world ignore: the robot and
+    /// what it holds.
     pub filter: QueryFilter,
-    /// What the held object's checks ignore: itself and the robot's moving links (not its
-    /// base, which it would hit).
-    pub held_filter: QueryFilter,
+    /// The same shapes built for tests against each other: what the gripper holds (gripper
+    /// frame), and each link but the gripper (its own frame), in [`FetchLink::ALL`] order.
+    held_solids: Vec<Solid>,
+    robot_solids: Vec<Vec<Solid>>,
 }
 
 impl ArmBody {
@@ -116,46 +133,102 @@ impl ArmBody {
         }
         let held = fetch.holding().map(|b| b.object);
         let gripper = world.pose(parts.gripper()).inverse();
+        let held = crate::navigate::shapes_in(world, held, gripper);
         let mut ignored = parts.all().to_vec();
-        ignored.extend(held);
-        let moving: Vec<ObjectId> = MOVING
-            .map(|k| parts.link(FetchLink::ALL[k]))
-            .chain(held)
+        ignored.extend(fetch.holding().map(|b| b.object));
+        // The assisted grasp turns off what it holds' contacts with the gripper only: against
+        // the rest of the robot it collides (a tile swung against the forearm as the arm came
+        // back broke its grasp). Not needed while it holds nothing.
+        let robot_solids = if held.is_empty() {
+            Vec::new()
+        } else {
+            FetchLink::ALL[..FetchLink::Gripper as usize]
+                .iter()
+                .map(|&link| solids(&shapes(parts.link(link))))
+                .collect()
+        };
+        let held_solids = solids(&held);
+        let held = held
+            .into_iter()
+            .map(|(shape, offset)| (inflated(&shape, HELD_MARGIN), offset))
             .collect();
         ArmBody {
             base: fetch.base_pose(world),
             head: fetch.joints().head,
             links,
-            held: crate::navigate::shapes_in(world, held, gripper),
+            held_solids,
+            held,
             filter: QueryFilter::excluding(&ignored),
-            held_filter: QueryFilter::excluding(&moving),
+            robot_solids,
         }
     }
 
     /// Whether the moving links and what the gripper holds touch nothing at `c`, and what it
-    /// holds keeps clear of the base.
+    /// holds touches no part of the robot but the gripper.
     pub fn clear(&self, world: &World, c: &ArmConfig) -> bool {
         if !c.0.iter().all(|x| x.is_finite()) {
             return false;
         }
         let poses = c.joints(self.head).link_poses();
         let core = world.core();
-        let free = |shape: &Primitive, pose: Pose, filter: &QueryFilter| {
-            core.overlaps(shape, pose, filter)
+        let free = |shape: &Primitive, pose: Pose| {
+            core.overlaps(shape, pose, &self.filter)
                 .is_ok_and(|hits| hits.is_empty())
         };
         let links = self.links.iter().zip(MOVING).all(|(shapes, k)| {
             let at = self.base * poses[k];
-            shapes
-                .iter()
-                .all(|(s, offset)| free(s, at * *offset, &self.filter))
+            shapes.iter().all(|(s, offset)| free(s, at * *offset))
         });
         let gripper = self.base * poses[FetchLink::Gripper as usize];
         links
             && self
                 .held
                 .iter()
-                .all(|(s, offset)| free(s, gripper * *offset, &self.held_filter))
+                .all(|(s, offset)| free(s, gripper * *offset))
+            && !self.held_touches_robot(&poses)
+    }
+
+    /// The centre of what the gripper holds in the gripper's frame (of its box), if it holds
+    /// anything.
+    pub fn held_centre(&self) -> Option<Vector> {
+        let boxes = self.held_solids.iter().map(|s| s.aabb(Pose::IDENTITY));
+        boxes
+            .reduce(|(a, b), (c, d)| (a.min(c), b.max(d)))
+            .map(|(lo, hi)| (lo + hi) / 2.0)
+    }
+
+    /// How far the arm and what it holds reach out from the base's vertical axis at `c`, m,
+    /// over the floor: how big the base's footprint is as it drives with the arm there.
+    pub fn spread(&self, c: &ArmConfig) -> f32 {
+        let poses = c.joints(self.head).link_poses();
+        let gripper = poses[FetchLink::Gripper as usize];
+        let links = self.links.iter().zip(MOVING).flat_map(|(shapes, k)| {
+            shapes
+                .iter()
+                .filter_map(move |(s, offset)| Solid::new(s, *offset).ok().map(|s| (s, poses[k])))
+        });
+        let held = self.held_solids.iter().map(|s| (s.clone(), gripper));
+        links
+            .chain(held)
+            .map(|(solid, at)| {
+                let (lo, hi) = solid.aabb(at);
+                let x = lo.x.abs().max(hi.x.abs());
+                let y = lo.y.abs().max(hi.y.abs());
+                x.hypot(y)
+            })
+            .fold(0.0, f32::max)
+    }
+
+    /// Whether what the gripper holds touches a link other than the gripper, the links posed
+    /// at `poses` (base frame).
+    fn held_touches_robot(&self, poses: &[Pose]) -> bool {
+        let gripper = poses[FetchLink::Gripper as usize];
+        self.held_solids.iter().any(|h| {
+            self.robot_solids
+                .iter()
+                .zip(poses)
+                .any(|(link, &at)| link.iter().any(|s| h.intersects(gripper, s, at)))
+        })
     }
 
     /// The end effector's pose in the world at `c`.
@@ -276,6 +349,47 @@ mod tests {
         world.add(spec).unwrap();
         let body = ArmBody::of(&world, &fetch);
         assert!(!body.clear(&world, &start));
+    }
+
+    #[test]
+    fn what_the_gripper_holds_may_not_pass_through_the_rest_of_the_robot() {
+        use behavior_robots::{ActionSpace, Robot, RobotKind};
+        let mut world = World::default();
+        let space = ActionSpace::Joints;
+        let mut robot = Robot::add(RobotKind::Fetch, space, &mut world, Pose::IDENTITY).unwrap();
+        let board = ObjectSpec::new(
+            "board",
+            "plywood.n.01",
+            vec![Part::new(Primitive::Box {
+                half_extents: Vector::new(0.2, 0.04, 0.01),
+            })],
+        )
+        .at(Vector::new(3.0, 0.0, 0.5));
+        let board = world.add(board).unwrap();
+        let Robot::Fetch(empty, _) = &robot else {
+            unreachable!()
+        };
+        let empty = ArmBody::of(&world, empty);
+        robot.grasp_now(&mut world, 0, board).unwrap();
+        let Robot::Fetch(fetch, _) = &robot else {
+            unreachable!()
+        };
+        let holding = ArmBody::of(&world, fetch);
+        let start = ArmConfig::of(&fetch.joints());
+        assert!(
+            holding.clear(&world, &start),
+            "held out ahead, it touches nothing"
+        );
+        // Folded over the base, a board 0.4 m long crosses the torso or the base.
+        let mut folded = start;
+        folded.0[1..].copy_from_slice(&[1.32, 1.4, -0.2, 1.72, 0.0, 1.66, 0.0]);
+        assert!(empty.clear(&world, &folded), "the folded arm alone is free");
+        assert!(!holding.clear(&world, &folded));
+        // Its centre, in the gripper's frame, is where it hangs: within its half length.
+        let centre = holding.held_centre().unwrap();
+        assert!(centre.length() < 0.6, "{centre:?}");
+        assert!(empty.held_centre().is_none());
+        assert!(holding.spread(&start) > empty.spread(&start));
     }
 
     #[test]

@@ -10,7 +10,9 @@
 //!   the fingertips [`FETCH_APPROACH`] short of it; on in a straight line until the palm or a
 //!   finger touches the object (at most [`FETCH_DESCENT`]), closed until it holds (at most
 //!   [`CLOSE_STEPS`]; touching and not held, the grasp is forced as the BehaviorRobot's is),
-//!   straight back up, then the arm planned back to where it was, with what it holds.
+//!   straight back up, then the arm planned back to where it was, with what it holds (where
+//!   that is not free — a tile does not fit the folded arm — it stays, and the next drive's
+//!   [`tuck`] finds a way to carry it).
 //! - PLACE_*: poses for the held object by the world's sampler (in a copy of the world where the
 //!   gripper let go), the arm planned with it to [`crate::PLACE_HEIGHT`] above one, the gripper
 //!   opened, [`SETTLE_STEPS`] steps to settle, straight up and back.
@@ -40,7 +42,7 @@ use behavior_core::rng::{SimRng, seeded, uniform};
 use behavior_env::Env;
 use behavior_env::record::Recorder;
 use behavior_robots::{
-    ActionSpace, FETCH_JOINT_ACTION_DIM, Fetch, FetchCommand, FetchJointAction, Robot,
+    ActionSpace, FETCH_JOINT_ACTION_DIM, Fetch, FetchCommand, FetchJoint, FetchJointAction, Robot,
 };
 use behavior_sim::{BodyRef, ObjectId, Relation, World};
 use rapier3d::math::{Pose, Rotation, Vector};
@@ -101,11 +103,14 @@ pub fn grasp(env: &mut Env, call: &Call, recorder: Option<&mut Recorder>) -> Att
     let held = fetch(steps.env).is_some_and(|(_, f)| f.is_holding(call.object));
     let hold = if held { CLOSED } else { OPEN };
     attempt!(straight_up(&mut steps, LIFT_OFF, hold, &mut path.after));
-    attempt!(come_back(&mut steps, start, hold, &mut path.after));
-    if !held {
-        return Ok(Err(Failure::Missed));
+    let back = come_back(&mut steps, start, hold, &mut path.after)?;
+    let holds = fetch(steps.env).is_some_and(|(_, f)| f.is_holding(call.object));
+    match back {
+        // Held, an arm that finds no way back carries it where it is.
+        Err(failure) if !holds || !held => Ok(Err(failure)),
+        _ if !holds => Ok(Err(Failure::Missed)),
+        _ => Ok(Ok(path)),
     }
-    Ok(Ok(path))
 }
 
 /// PLACE_* with Fetch's arm and physics (see the module docs).
@@ -271,10 +276,14 @@ fn solve(world: &World, fetch: &Fetch, body: &ArmBody, goal: &Pose) -> Option<Ar
 }
 
 /// Fetch's arm folded over its base before it drives, as the real robot's `tuck_arm` folds
-/// it (reference: robots §1.6, iGibson's tucked joints), the torso where it is: unfolded, the
-/// BEHAVIOR start pose holds the gripper 0.55 m ahead at a counter's height, and every stand
-/// found with it left a hamburger on a counter 0.9 m from the base. Planned with what the
-/// gripper holds; where no plan gets there, the arm stays.
+/// it (reference: robots §1.6, iGibson's tucked joints), the torso where it is or higher:
+/// unfolded, the BEHAVIOR start pose holds the gripper 0.55 m ahead at a counter's height, and
+/// every stand found with it left a hamburger on a counter 0.9 m from the base. Holding
+/// something that does not fit the folded arm (a tile, a pad), it is carried over the front of
+/// the base ([`CARRY`]) the way that keeps the footprint smallest: left where it took the
+/// thing, low and ahead, the arm made the base's footprint too big for most ways through the
+/// home. Planned with what the gripper holds; where no plan gets to any of these, the arm
+/// stays.
 pub(crate) fn tuck(steps: &mut Stepper<'_>) -> Attempt<()> {
     let Some((world, fetch)) = fetch(steps.env) else {
         return Ok(Ok(()));
@@ -297,11 +306,75 @@ pub(crate) fn tuck(steps: &mut Stepper<'_>) -> Attempt<()> {
     } else {
         OPEN
     };
-    let Ok(planned) = plan_arm_to(world, fetch, body, tucked, &mut rng) else {
+    let goals = carry_goals(world, fetch, &body, tucked);
+    let planned = goals
+        .into_iter()
+        .take(CARRY_TRIES)
+        .find_map(|goal| plan_arm_to(world, fetch, body.clone(), goal, &mut rng).ok());
+    let Some(planned) = planned else {
         return Ok(Ok(()));
     };
     follow(steps, &planned, gripper, Check::Free, &mut Vec::new())
 }
+
+/// Where [`tuck`] may take the arm, each free, the smallest footprint first
+/// ([`ArmBody::spread`]): the folded arm with the torso where it is, then higher by [`LIFT`]
+/// steps; the gripper pointing down or ahead at each of [`CARRY`] (base frame), by IK.
+fn carry_goals(world: &World, fetch: &Fetch, body: &ArmBody, tucked: ArmConfig) -> Vec<ArmConfig> {
+    let top = FetchJoint::TorsoLift
+        .info()
+        .limits
+        .map_or(tucked.0[0], |l| l[1]);
+    let folded = (0..LIFTS).map(|k| {
+        let mut c = tucked;
+        c.0[0] = (c.0[0] + LIFT * k as f32).min(top);
+        c
+    });
+    let now = ArmConfig::of(&fetch.joints());
+    let ways = [FRAC_PI_2, 0.0].into_iter().flat_map(|pitch| {
+        [0.0, FRAC_PI_2].map(|roll| pointing(0.0, pitch) * Rotation::from_rotation_x(roll))
+    });
+    let ways: Vec<Rotation> = ways.collect();
+    // What it holds is carried centred on the base's axis: held by its edge, a tile held
+    // with the gripper there stuck 0.37 m out to one side, and no door let it through.
+    let centre = body.held_centre();
+    let carried = CARRY.iter().flat_map(|&[x, z]| {
+        ways.iter().filter_map(move |&way| {
+            let mut at = Vector::new(x, 0.0, z);
+            if let Some(centre) = centre {
+                at.y -= (way * centre).y;
+            }
+            let goal = Pose::from_parts(at, way);
+            let joints = fetch.ik().solve(&fetch.joints(), &goal).ok()?;
+            Some(ArmConfig::of(&joints).near(&now))
+        })
+    });
+    let mut goals: Vec<(f32, ArmConfig)> = Vec::new();
+    for c in folded.chain(carried) {
+        if !goals.iter().any(|(_, g)| *g == c) && body.clear(world, &c) {
+            goals.push((body.spread(&c), c));
+        }
+    }
+    // Ties (a torso lifted) keep their order.
+    goals.sort_by(|a, b| a.0.total_cmp(&b.0));
+    goals.into_iter().map(|(_, c)| c).collect()
+}
+
+/// Where the gripper carries what does not fit the folded arm, pointing down or ahead (each
+/// turned about its axis both ways: a tile held flat or on its edge, across or along the way):
+/// (ahead of the base's centre, height), m, in the base's frame.
+const CARRY: [[f32; 2]; 8] = [
+    [0.2, 1.1],
+    [0.25, 1.0],
+    [0.3, 1.2],
+    [0.35, 1.1],
+    [0.45, 1.1],
+    [0.35, 0.9],
+    [0.45, 0.9],
+    [0.55, 1.0],
+];
+/// Carrying goals planned to before the arm stays as it is.
+const CARRY_TRIES: usize = 3;
 
 /// iGibson's tucked arm joints (robots reference §1.6).
 const TUCKED: [f32; 7] = [1.1708, 1.4708, -0.4, 1.6708, 0.0, FRAC_PI_2, 0.0];
@@ -500,7 +573,7 @@ fn line(fetch: &Fetch, offset: Vector, step: f32) -> Option<Vec<ArmConfig>> {
     for i in 1..=n {
         let mut target = from;
         target.translation += offset * (i as f32 / n as f32);
-        let Ok(next) = fetch.ik().solve(&joints, &target) else {
+        let Ok(next) = fetch.ik().solve_near(&joints, &target) else {
             break;
         };
         let a = ArmConfig::of(&joints);

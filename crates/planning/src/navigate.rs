@@ -198,7 +198,7 @@ pub(crate) fn floor_gap(min: [f32; 2], max: [f32; 2], x: f32, y: f32) -> f32 {
 
 /// `shape` grown by `margin` on every side (a convex hull, each point pushed out from its
 /// centre).
-fn inflated(shape: &Primitive, margin: f32) -> Primitive {
+pub(crate) fn inflated(shape: &Primitive, margin: f32) -> Primitive {
     match shape {
         Primitive::Box { half_extents } => Primitive::Box {
             half_extents: *half_extents + Vector::splat(margin),

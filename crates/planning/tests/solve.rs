@@ -1,11 +1,13 @@
-//! The task planner end to end: activities solved with symbolic primitives, one with physical
-//! primitives, and their recordings replayed bit for bit with the edits done again.
+//! The task planner end to end: activities solved with symbolic primitives, some with physical
+//! primitives (the BehaviorRobot and Fetch), and their recordings replayed bit for bit with the
+//! edits done again.
 
 #[path = "../../env/tests/common/mod.rs"]
 mod common;
 
 use behavior_env::record::{Recorder, read, replay, replay_with};
 use behavior_planning::{Limits, Mode, Solution, Solver, replay_edit};
+use behavior_robots::RobotKind;
 
 fn solve(
     activity: &str,
@@ -98,12 +100,16 @@ fn solving_before_a_reset_is_an_error() {
     );
 }
 
-/// Solves `activity` (seed `seed`) with physical primitives in the episode `behavior solve`
-/// makes — the first covering home with its clutter, every navigation driven, every grasp and
+/// Solves `activity` (seed `seed`) with `robot` and physical primitives in the episode
+/// `behavior solve` makes — the first covering home with its clutter, every navigation driven, every grasp and
 /// placement planned and executed with physics — checks that `placement` was done
 /// physically, and replays the recording bit for bit.
-fn solved_physically(activity: &str, seed: u64, placement: &str) {
-    let dir = std::env::temp_dir().join(format!("behavior-{activity}-{}", std::process::id()));
+fn solved_physically(activity: &str, seed: u64, placement: &str, robot: RobotKind) {
+    let dir = std::env::temp_dir().join(format!(
+        "behavior-{activity}-{}-{}",
+        robot.name(),
+        std::process::id()
+    ));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("solution.mcap");
     let config = || {
@@ -111,6 +117,8 @@ fn solved_physically(activity: &str, seed: u64, placement: &str) {
         let home = common::home(&a, true);
         let mut c = behavior_env::EnvConfig::new(a, common::taxonomy(), vec![home]);
         c.max_steps = 20_000; // as `behavior solve`'s
+        c.robot = robot;
+        c.action_space = Mode::Physical.action_space(robot);
         c
     };
     let mut env = behavior_env::Env::new(config());
@@ -156,24 +164,56 @@ fn solved_physically(activity: &str, seed: u64, placement: &str) {
 #[test]
 fn laying_tile_floors_is_solved_with_physical_primitives_and_replays_bit_for_bit() {
     // Tiles carried to the bathroom floor.
-    solved_physically("laying_tile_floors", 1, "place_onfloor");
+    solved_physically(
+        "laying_tile_floors",
+        1,
+        "place_onfloor",
+        RobotKind::Behavior,
+    );
 }
 
 #[test]
 fn re_shelving_library_books_is_solved_with_physical_primitives_and_replays_bit_for_bit() {
     // Books carried from the tables onto a shelf.
-    solved_physically("re-shelving_library_books", 2, "place_ontop");
+    solved_physically(
+        "re-shelving_library_books",
+        2,
+        "place_ontop",
+        RobotKind::Behavior,
+    );
 }
 
 #[test]
 fn throwing_away_leftovers_is_solved_with_physical_primitives_and_replays_bit_for_bit() {
     // Hamburgers taken off plates and put into an ashcan.
-    solved_physically("throwing_away_leftovers", 0, "place_inside");
+    solved_physically(
+        "throwing_away_leftovers",
+        0,
+        "place_inside",
+        RobotKind::Behavior,
+    );
 }
 
 #[test]
 fn organizing_file_cabinet_is_solved_with_physical_primitives_and_replays_bit_for_bit() {
     // Documents and folders put into a file cabinet's drawer: a folder held by its cover keeps
     // its other half off the palm, and where one place in the drawer has no way in, the next.
-    solved_physically("organizing_file_cabinet", 1, "place_inside");
+    solved_physically(
+        "organizing_file_cabinet",
+        1,
+        "place_inside",
+        RobotKind::Behavior,
+    );
+}
+
+#[test]
+fn fetch_solves_throwing_away_leftovers_with_physical_primitives_and_replays_bit_for_bit() {
+    // Fetch's arm driven joint by joint: hamburgers taken off plates with the gripper pointing
+    // down, carried over the base, and let go above the ashcan.
+    solved_physically(
+        "throwing_away_leftovers",
+        2,
+        "place_inside",
+        RobotKind::Fetch,
+    );
 }

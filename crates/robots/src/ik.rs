@@ -184,7 +184,7 @@ impl IkSolver {
             return Err(IkError::NotFinite);
         }
         let target = Pose::from_parts(target.translation, target.rotation.normalize());
-        let first = self.attempt(start.clamped(), &target);
+        let first = self.attempt(start.clamped(), &target, REST_PULL);
         if self.reached(&first) {
             return Ok(first.q);
         }
@@ -197,7 +197,7 @@ impl IkSolver {
             head: start.head,
             arm: self.rest.arm,
         };
-        let second = self.attempt(rest.clamped(), &target);
+        let second = self.attempt(rest.clamped(), &target, REST_PULL);
         if self.reached(&second) {
             return Ok(second.q);
         }
@@ -213,12 +213,35 @@ impl IkSolver {
         })
     }
 
+    /// The torso and arm positions nearest `start` that put the end effector at `target` (in
+    /// the base frame): one attempt from `start`, with no pull toward the rest pose. For small
+    /// moves along a path (a straight line a centimetre at a time), where [`IkSolver::solve`]'s
+    /// pull, iterated, carries a redundant arm to another branch (traced: a 4 mm descent asked
+    /// the elbow and wrist to turn by 0.5–1.4 rad).
+    pub fn solve_near(&self, start: &FetchJoints, target: &Pose) -> Result<FetchJoints, IkError> {
+        let unit = (target.rotation.length() - 1.0).abs() < 1e-3;
+        if !(start.is_finite() && target.is_finite() && unit) {
+            return Err(IkError::NotFinite);
+        }
+        let target = Pose::from_parts(target.translation, target.rotation.normalize());
+        let only = self.attempt(start.clamped(), &target, 0.0);
+        if self.reached(&only) {
+            return Ok(only.q);
+        }
+        Err(IkError::Unreachable {
+            position_error: only.position_error,
+            rotation_error: only.rotation_error,
+            closest: only.q,
+        })
+    }
+
     fn reached(&self, a: &Attempt) -> bool {
         a.position_error <= self.position_tolerance && a.rotation_error <= self.rotation_tolerance
     }
 
-    /// Damped least squares from `q` (see the module docs).
-    fn attempt(&self, mut q: FetchJoints, target: &Pose) -> Attempt {
+    /// Damped least squares from `q`, pulled toward the rest pose by `rest_pull` of the way per
+    /// iteration (see the module docs).
+    fn attempt(&self, mut q: FetchJoints, target: &Pose, rest_pull: f64) -> Attempt {
         let rest = to_vec(&self.rest);
         for _ in 0..self.max_iterations {
             let (eef, mut j) = jacobian(&q);
@@ -236,7 +259,7 @@ impl IkSolver {
             // The pull toward rest, less what would move the end effector.
             let now = to_vec(&q);
             let mut pull: [f64; IK_JOINTS] =
-                std::array::from_fn(|k| REST_PULL * (rest[k] - now[k]));
+                std::array::from_fn(|k| rest_pull * (rest[k] - now[k]));
             if !self.with_trunk {
                 pull[0] = 0.0;
             }
@@ -291,6 +314,39 @@ mod tests {
                 assert!((f64::from(x) - row[k]).abs() < 2e-3, "joint {k} row {r}");
             }
         }
+    }
+
+    #[test]
+    fn a_small_move_solved_near_the_start_stays_near_it() {
+        // An arm reaching down to the floor (traced in a grasp of a tile): 4 mm further down.
+        let c = [
+            0.0712, -0.165, 0.4038, -0.0251, 1.1981, -0.6542, -0.0384, 1.7148,
+        ];
+        let start = FetchJoints {
+            torso: c[0],
+            head: [0.0, 0.0],
+            arm: std::array::from_fn(|k| c[k + 1]),
+        };
+        let mut target = start.eef();
+        target.translation.z -= 0.004;
+        let solver = IkSolver::default();
+        let near = solver.solve_near(&start, &target).unwrap();
+        let moved = |q: &FetchJoints| {
+            (0..7)
+                .map(|k| (q.arm[k] - start.arm[k]).abs())
+                .fold((q.torso - start.torso).abs(), f32::max)
+        };
+        assert!(moved(&near) < 0.05, "moved {} rad", moved(&near));
+        assert!((near.eef().translation - target.translation).length() <= 0.005);
+        // The solver with the pull toward rest ends on another branch of the redundant arm.
+        let pulled = solver.solve(&start, &target).unwrap();
+        assert!(moved(&pulled) > 0.25, "moved {} rad", moved(&pulled));
+        // Out of reach, it says how close it came.
+        target.translation.z -= 2.0;
+        assert!(matches!(
+            solver.solve_near(&start, &target),
+            Err(IkError::Unreachable { .. })
+        ));
     }
 
     #[test]

@@ -84,7 +84,7 @@ pub use placement::{
     DROP_GAP, Heading, LEVEL_SPACING, NEXTTO_GAP, PLACEMENT_ATTEMPTS, PlacementError,
     PlacementFailure, Relation, SUPPORT_NORMAL_Z, TOUCH_GAP,
 };
-pub use query::{Proximity, QueryFilter, RayHit};
+pub use query::{Proximity, QueryFilter, RayHit, Solid};
 pub use room::Room;
 pub use states::StateError;
 pub use states::dirt::{

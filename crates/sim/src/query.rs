@@ -284,6 +284,41 @@ fn checked_ray(origin: Vector, direction: Vector, max_distance: f32) -> Result<R
 }
 
 /// A free collider for a query shape at a pose.
+/// A collision primitive built once, for tests between shapes that are not where the world
+/// has them: a robot's links against what its gripper holds, at configurations the arm has not
+/// taken.
+#[derive(Clone, Debug)]
+pub struct Solid {
+    collider: Collider,
+}
+
+impl Solid {
+    /// `shape`, placed at `offset` in the frame it will be posed by.
+    pub fn new(shape: &Primitive, offset: Pose) -> Result<Solid, WorldError> {
+        Ok(Solid {
+            collider: probe(shape, offset)?,
+        })
+    }
+
+    /// The solid's box with its frame at `at`: its lowest and highest corners.
+    pub fn aabb(&self, at: Pose) -> (Vector, Vector) {
+        let b = self
+            .collider
+            .shape()
+            .compute_aabb(&(at * *self.collider.position()));
+        (b.mins, b.maxs)
+    }
+
+    /// Whether this solid with its frame at `at` overlaps `other` with its frame at
+    /// `other_at` (touching counts; unknown pairs of shapes count as overlapping).
+    pub fn intersects(&self, at: Pose, other: &Solid, other_at: Pose) -> bool {
+        let a = at * *self.collider.position();
+        let b = other_at * *other.collider.position();
+        query::intersection_test(&a, self.collider.shape(), &b, other.collider.shape())
+            .map_or(true, |i| i.intersecting)
+    }
+}
+
 fn probe(shape: &Primitive, pose: Pose) -> Result<Collider, WorldError> {
     let bad = || WorldError::BadObject {
         name: "query shape".into(),

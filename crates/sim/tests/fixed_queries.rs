@@ -63,3 +63,35 @@ fn fixed_only_queries_see_fixed_bodies_and_follow_their_changes() {
     assert_eq!(hits(&world, at(5.0, 0.0)), vec![wall]);
     assert_eq!(hits(&world, at(0.0, 3.0)), vec![table]);
 }
+
+#[test]
+fn solids_test_shapes_against_each_other_where_the_world_does_not_have_them() {
+    use behavior_sim::Solid;
+    // A 0.2 m cube offset 0.5 m along x in its frame, and a long thin box.
+    let cube = Solid::new(
+        &cube(0.1),
+        Pose::from_translation(Vector::new(0.5, 0.0, 0.0)),
+    )
+    .unwrap();
+    let rod = Solid::new(
+        &Primitive::Box {
+            half_extents: Vector::new(1.0, 0.02, 0.02),
+        },
+        Pose::IDENTITY,
+    )
+    .unwrap();
+    let at = |x: f32, y: f32| Pose::from_translation(Vector::new(x, y, 0.0));
+    assert!(cube.intersects(at(0.0, 0.0), &rod, at(0.0, 0.0)));
+    assert!(cube.intersects(at(0.0, 0.0), &rod, at(1.5, 0.1)));
+    assert!(!cube.intersects(at(0.0, 0.0), &rod, at(0.0, 0.2)));
+    assert!(!cube.intersects(at(0.0, 0.3), &rod, at(0.0, 0.0)));
+    let (lo, hi) = cube.aabb(at(1.0, 0.0));
+    assert!(
+        (lo - Vector::new(1.4, -0.1, -0.1)).length() < 1e-5,
+        "{lo:?}"
+    );
+    assert!((hi - Vector::new(1.6, 0.1, 0.1)).length() < 1e-5, "{hi:?}");
+    // A shape that cannot be built is an error, not a panic.
+    let bad = Primitive::Sphere { radius: f32::NAN };
+    assert!(Solid::new(&bad, Pose::IDENTITY).is_err());
+}

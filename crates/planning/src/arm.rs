@@ -15,7 +15,7 @@ use crate::navigate::inflated;
 use crate::rrt::Space;
 use behavior_core::rng::{SimRng, uniform};
 use behavior_robots::{Fetch, FetchJoint, FetchJoints, FetchLink};
-use behavior_sim::{ObjectId, Primitive, QueryFilter, Solid, World};
+use behavior_sim::{Primitive, QueryFilter, Solid, World};
 use rapier3d::math::{Pose, Vector};
 use std::f32::consts::{PI, TAU};
 
@@ -113,40 +113,31 @@ pub struct ArmBody {
     /// what it holds.
     pub filter: QueryFilter,
     /// The same shapes built for tests against each other: what the gripper holds (gripper
-    /// frame), and each link but the gripper (its own frame), in [`FetchLink::ALL`] order.
+    /// frame), and every link's (its own frame), in [`FetchLink::ALL`] order.
     held_solids: Vec<Solid>,
-    robot_solids: Vec<Vec<Solid>>,
+    link_solids: Vec<Vec<Solid>>,
 }
 
 impl ArmBody {
     /// Fetch's arm as it stands in `world`, holding what it holds.
     pub fn of(world: &World, fetch: &Fetch) -> ArmBody {
         let parts = fetch.parts();
-        let shapes =
-            |id: ObjectId| crate::navigate::shapes_in(world, [id], world.pose(id).inverse());
-        let mut links: Vec<_> = MOVING
-            .map(|k| shapes(parts.link(FetchLink::ALL[k])))
-            .collect();
+        let mut all: Vec<_> = FetchLink::ALL
+            .map(|link| {
+                let id = parts.link(link);
+                crate::navigate::shapes_in(world, [id], world.pose(id).inverse())
+            })
+            .into();
         // The robot keeps the fingers' whole travel out of fixed bodies, open or closed.
-        if let Some(gripper) = links.last_mut() {
+        if let Some(gripper) = all.last_mut() {
             gripper.push(finger_sweep());
         }
+        let links = all[MOVING].to_vec();
         let held = fetch.holding().map(|b| b.object);
         let gripper = world.pose(parts.gripper()).inverse();
         let held = crate::navigate::shapes_in(world, held, gripper);
         let mut ignored = parts.all().to_vec();
         ignored.extend(fetch.holding().map(|b| b.object));
-        // The assisted grasp turns off what it holds' contacts with the gripper only: against
-        // the rest of the robot it collides (a tile swung against the forearm as the arm came
-        // back broke its grasp). Not needed while it holds nothing.
-        let robot_solids = if held.is_empty() {
-            Vec::new()
-        } else {
-            FetchLink::ALL[..FetchLink::Gripper as usize]
-                .iter()
-                .map(|&link| solids(&shapes(parts.link(link))))
-                .collect()
-        };
         let held_solids = solids(&held);
         let held = held
             .into_iter()
@@ -159,7 +150,7 @@ impl ArmBody {
             held_solids,
             held,
             filter: QueryFilter::excluding(&ignored),
-            robot_solids,
+            link_solids: all.iter().map(|shapes| solids(shapes)).collect(),
         }
     }
 
@@ -202,12 +193,11 @@ impl ArmBody {
     pub fn spread(&self, c: &ArmConfig) -> f32 {
         let poses = c.joints(self.head).link_poses();
         let gripper = poses[FetchLink::Gripper as usize];
-        let links = self.links.iter().zip(MOVING).flat_map(|(shapes, k)| {
-            shapes
-                .iter()
-                .filter_map(move |(s, offset)| Solid::new(s, *offset).ok().map(|s| (s, poses[k])))
-        });
-        let held = self.held_solids.iter().map(|s| (s.clone(), gripper));
+        let links = self.link_solids[MOVING]
+            .iter()
+            .zip(&poses[MOVING])
+            .flat_map(|(solids, &at)| solids.iter().map(move |s| (s, at)));
+        let held = self.held_solids.iter().map(|s| (s, gripper));
         links
             .chain(held)
             .map(|(solid, at)| {
@@ -220,11 +210,14 @@ impl ArmBody {
     }
 
     /// Whether what the gripper holds touches a link other than the gripper, the links posed
-    /// at `poses` (base frame).
+    /// at `poses` (base frame). The assisted grasp turns off what it holds' contacts with the
+    /// gripper only: against the rest of the robot it collides (a tile swung against the
+    /// forearm as the arm came back broke its grasp).
     fn held_touches_robot(&self, poses: &[Pose]) -> bool {
         let gripper = poses[FetchLink::Gripper as usize];
+        let others = &self.link_solids[..FetchLink::Gripper as usize];
         self.held_solids.iter().any(|h| {
-            self.robot_solids
+            others
                 .iter()
                 .zip(poses)
                 .any(|(link, &at)| link.iter().any(|s| h.intersects(gripper, s, at)))

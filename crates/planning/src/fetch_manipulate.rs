@@ -107,7 +107,7 @@ pub fn grasp(env: &mut Env, call: &Call, recorder: Option<&mut Recorder>) -> Att
     let holds = fetch(steps.env).is_some_and(|(_, f)| f.is_holding(call.object));
     match back {
         // Held, an arm that finds no way back carries it where it is.
-        Err(failure) if !holds || !held => Ok(Err(failure)),
+        Err(failure) if !holds => Ok(Err(failure)),
         _ if !holds => Ok(Err(Failure::Missed)),
         _ => Ok(Ok(path)),
     }

@@ -175,15 +175,35 @@ struct Attempt {
     rotation_error: f32,
 }
 
+impl Attempt {
+    /// The error of a solver whose best attempt this was.
+    fn unreachable(self) -> IkError {
+        IkError::Unreachable {
+            position_error: self.position_error,
+            rotation_error: self.rotation_error,
+            closest: self.q,
+        }
+    }
+}
+
+/// The target with its rotation normalized, if it and the start are finite and its rotation
+/// a unit quaternion.
+fn checked(start: &FetchJoints, target: &Pose) -> Result<Pose, IkError> {
+    let unit = (target.rotation.length() - 1.0).abs() < 1e-3;
+    if !(start.is_finite() && target.is_finite() && unit) {
+        return Err(IkError::NotFinite);
+    }
+    Ok(Pose::from_parts(
+        target.translation,
+        target.rotation.normalize(),
+    ))
+}
+
 impl IkSolver {
     /// The torso and arm positions that put the end effector at `target` (in the base frame),
     /// starting from `start`; the head keeps `start`'s positions. See the module docs.
     pub fn solve(&self, start: &FetchJoints, target: &Pose) -> Result<FetchJoints, IkError> {
-        let unit = (target.rotation.length() - 1.0).abs() < 1e-3;
-        if !(start.is_finite() && target.is_finite() && unit) {
-            return Err(IkError::NotFinite);
-        }
-        let target = Pose::from_parts(target.translation, target.rotation.normalize());
+        let target = checked(start, target)?;
         let first = self.attempt(start.clamped(), &target, REST_PULL);
         if self.reached(&first) {
             return Ok(first.q);
@@ -206,11 +226,7 @@ impl IkSolver {
         } else {
             first
         };
-        Err(IkError::Unreachable {
-            position_error: best.position_error,
-            rotation_error: best.rotation_error,
-            closest: best.q,
-        })
+        Err(best.unreachable())
     }
 
     /// The torso and arm positions nearest `start` that put the end effector at `target` (in
@@ -219,20 +235,12 @@ impl IkSolver {
     /// pull, iterated, carries a redundant arm to another branch (traced: a 4 mm descent asked
     /// the elbow and wrist to turn by 0.5–1.4 rad).
     pub fn solve_near(&self, start: &FetchJoints, target: &Pose) -> Result<FetchJoints, IkError> {
-        let unit = (target.rotation.length() - 1.0).abs() < 1e-3;
-        if !(start.is_finite() && target.is_finite() && unit) {
-            return Err(IkError::NotFinite);
-        }
-        let target = Pose::from_parts(target.translation, target.rotation.normalize());
+        let target = checked(start, target)?;
         let only = self.attempt(start.clamped(), &target, 0.0);
         if self.reached(&only) {
             return Ok(only.q);
         }
-        Err(IkError::Unreachable {
-            position_error: only.position_error,
-            rotation_error: only.rotation_error,
-            closest: only.q,
-        })
+        Err(only.unreachable())
     }
 
     fn reached(&self, a: &Attempt) -> bool {

@@ -16,6 +16,8 @@ mod replay;
 mod run;
 mod sample;
 mod scene;
+#[cfg(feature = "web")]
+mod serve;
 mod solve;
 mod video;
 
@@ -64,6 +66,10 @@ enum Command {
     SolveAll(solve::SolveAllArgs),
     /// Read a recording; with --verify, re-simulate it and check it bit for bit.
     Replay(replay::ReplayArgs),
+    /// The browser viewer: the home in 3-D, live, with the goal's checklist and the metrics;
+    /// drive the BehaviorRobot from the keyboard or a gamepad; every episode recorded.
+    #[cfg(feature = "web")]
+    Serve(serve::ServeArgs),
     /// Benchmarks of the whole system.
     #[command(subcommand)]
     Bench(BenchCommand),
@@ -97,6 +103,8 @@ fn main() -> ExitCode {
         Command::Solve(args) => solve::solve(args, cli.data_dir.as_deref()),
         Command::SolveAll(args) => solve::solve_all(args, cli.data_dir.as_deref()),
         Command::Replay(args) => replay::run(args, cli.data_dir.as_deref()),
+        #[cfg(feature = "web")]
+        Command::Serve(args) => serve::serve(args, cli.data_dir.as_deref()),
         Command::Bench(BenchCommand::Env(args)) => bench_env::run(args, cli.data_dir.as_deref()),
         Command::Bench(BenchCommand::Plan(args)) => bench_plan::run(args, cli.data_dir.as_deref()),
     };

@@ -13,7 +13,7 @@
 //! drops show through the world's geometry, not through colour.
 
 use behavior_core::Predicate;
-use behavior_sim::{Material, ObjectId, World};
+use behavior_sim::{Material, ObjectId, Visual, World};
 
 /// sRGB of a roast brown.
 const COOKED: [f32; 3] = [0.45, 0.25, 0.10];
@@ -29,12 +29,16 @@ pub(crate) const STAIN: [u8; 3] = [70, 45, 25];
 /// Water drops: blue.
 pub(crate) const WATER: [u8; 3] = [60, 120, 220];
 
-/// What the shader needs of a surface: linear albedo, how strongly it glows, how shiny it is.
+/// What a shader needs of a surface: linear albedo, how strongly it glows, how shiny it is.
+/// Public so that other drawers of the world (the browser viewer) show states as cameras do.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Look {
-    pub(crate) albedo: [f32; 3],
-    pub(crate) emission: f32,
-    pub(crate) shine: f32,
+pub struct Look {
+    /// Linear-sRGB colour, 0–1.
+    pub albedo: [f32; 3],
+    /// 0 (no glow) to 1.
+    pub emission: f32,
+    /// Specular strength, 0–1.
+    pub shine: f32,
 }
 
 fn mix(a: [f32; 3], b: [f32; 3], t: f32) -> [f32; 3] {
@@ -70,6 +74,11 @@ impl Shown {
             on: is(Predicate::ToggledOn),
         }
     }
+}
+
+/// How a surface of `object` with appearance `visual` looks in the object's states now.
+pub fn state_look(world: &World, object: ObjectId, visual: Visual) -> Look {
+    look(visual.color, visual.material, Shown::of(world, object))
 }
 
 /// The look of a surface of sRGB `color` and `material` in these states.

@@ -1,0 +1,176 @@
+//! The websocket protocol between the page and the server.
+//!
+//! Client → server: JSON text messages, [`ClientMessage`]. Each is parsed and checked before it
+//! reaches the simulation; one that is not valid JSON, not a known message, too large, binary,
+//! or carries a bad number is answered with `{"type": "error", "message": …}` and changes
+//! nothing.
+//!
+//! Server → client, text (JSON): `role` on joining (driving or watching), `scene` when a client joins and at each new
+//! episode (what to draw, the goal's literals), `status` after every step (Q, the metrics, which
+//! literals hold, recoloured surfaces), `ended` when an episode ends (its recording), `error`.
+//! Binary: one frame of poses per step — little-endian `u32` step, then for every node of the
+//! scene, in the scene's order, position (x, y, z) and rotation quaternion (x, y, z, w) as `f32`
+//! (a node whose object left the world has NaN position).
+
+use crate::checklist::ChecklistStatus;
+use crate::scene::{Recolor, SceneDescription};
+use crate::teleop::{BadRate, Drive};
+use behavior_env::EpisodeMetrics;
+use serde::{Deserialize, Serialize};
+
+/// The largest client message accepted, bytes (a drive command is about 200).
+pub const MAX_CLIENT_MESSAGE: usize = 16 * 1024;
+
+/// What a client may say.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum ClientMessage {
+    /// Drive the robot at these rates from the next step on (the driver only).
+    Drive(Drive),
+    /// End the episode now: its recording is closed and a new episode waits (the driver only).
+    End,
+}
+
+/// Why a client message was refused.
+#[derive(Debug, thiserror::Error)]
+pub enum ProtocolError {
+    /// Not JSON, or not a message of the protocol.
+    #[error("not a message of the protocol: {0}")]
+    Malformed(#[from] serde_json::Error),
+    /// A number out of range.
+    #[error(transparent)]
+    BadRate(#[from] BadRate),
+    /// Larger than [`MAX_CLIENT_MESSAGE`].
+    #[error("a message of {0} bytes; at most {MAX_CLIENT_MESSAGE} are accepted")]
+    TooLarge(usize),
+    /// A binary message: the client speaks JSON text.
+    #[error("binary messages are not part of the protocol; send JSON text")]
+    Binary,
+    /// A command that only the driving client may give.
+    #[error("this client is watching; only the driving client may send `{0}`")]
+    NotDriver(&'static str),
+}
+
+impl ClientMessage {
+    /// Parses and checks a text message.
+    pub fn parse(text: &str) -> Result<ClientMessage, ProtocolError> {
+        if text.len() > MAX_CLIENT_MESSAGE {
+            return Err(ProtocolError::TooLarge(text.len()));
+        }
+        let message: ClientMessage = serde_json::from_str(text)?;
+        if let ClientMessage::Drive(drive) = &message {
+            drive.check()?;
+        }
+        Ok(message)
+    }
+
+    /// The message's `type`, for error replies.
+    pub(crate) fn name(&self) -> &'static str {
+        match self {
+            ClientMessage::Drive(_) => "drive",
+            ClientMessage::End => "end",
+        }
+    }
+}
+
+/// What the server says in text.
+#[derive(Debug, Serialize)]
+#[serde(tag = "type", rename_all = "snake_case")]
+pub(crate) enum ServerMessage<'a> {
+    /// Whether this client drives the robot or watches; sent on joining.
+    Role {
+        /// It drives.
+        driving: bool,
+    },
+    /// What to draw and what the goal is; sent on joining and at each new episode.
+    Scene(&'a SceneDescription),
+    /// How the episode stands after a step.
+    Status(Status<'a>),
+    /// An episode ended.
+    Ended(Ended),
+    /// A message was refused.
+    Error {
+        /// Why.
+        message: String,
+    },
+}
+
+/// How the episode stands after a step.
+#[derive(Debug, Serialize)]
+pub(crate) struct Status<'a> {
+    /// Action steps taken.
+    pub(crate) step: u32,
+    /// The success score.
+    pub(crate) q: f64,
+    /// Whether the goal holds.
+    pub(crate) success: bool,
+    /// The efficiency metrics so far.
+    pub(crate) metrics: &'a EpisodeMetrics,
+    /// Which of the goal's literals hold, and the option closest to holding.
+    pub(crate) checklist: &'a ChecklistStatus,
+    /// Surfaces whose colour changed since the last status.
+    pub(crate) recolor: &'a [Recolor],
+}
+
+/// An episode that ended.
+#[derive(Clone, Debug, Serialize)]
+pub(crate) struct Ended {
+    /// Steps taken.
+    pub(crate) steps: u32,
+    /// Whether the goal held at the end.
+    pub(crate) success: bool,
+    /// Q at the end.
+    pub(crate) q: f64,
+    /// Where the episode was recorded (none for an episode of no steps).
+    pub(crate) recording: Option<String>,
+    /// Why it ended: `goal`, `time limit`, `ended by the driver`, `driver left`, `server stopped`.
+    pub(crate) reason: &'static str,
+}
+
+impl ServerMessage<'_> {
+    /// The message as JSON text.
+    pub(crate) fn to_text(&self) -> String {
+        serde_json::to_string(self).unwrap_or_else(|e| {
+            format!(r#"{{"type":"error","message":"the server could not encode a reply: {e}"}}"#)
+        })
+    }
+}
+
+/// An error reply's text.
+pub(crate) fn error_text(error: &dyn std::error::Error) -> String {
+    ServerMessage::Error {
+        message: error.to_string(),
+    }
+    .to_text()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_drive_command_parses_with_missing_parts_at_rest() {
+        let m = ClientMessage::parse(r#"{"type":"drive","body":[1,0,0,0,0,0.5]}"#).unwrap();
+        let ClientMessage::Drive(d) = m else {
+            panic!("{m:?}")
+        };
+        assert_eq!(d.body[5], 0.5);
+        assert_eq!(d.right, [0.0; 6]);
+        assert_eq!(
+            ClientMessage::parse(r#"{"type":"end"}"#).unwrap(),
+            ClientMessage::End
+        );
+    }
+
+    #[test]
+    fn hostile_messages_are_refused_with_the_reason() {
+        let refused = |text: &str| ClientMessage::parse(text).unwrap_err().to_string();
+        assert!(refused("{").contains("not a message"));
+        assert!(refused(r#"{"type":"explode"}"#).contains("unknown variant"));
+        assert!(refused(r#"{"type":"drive","body":[1,2]}"#).contains("not a message"));
+        assert!(refused(r#"{"type":"drive","body":[0,0,0,0,0,7]}"#).contains("body[5]"));
+        assert!(refused(r#"{"type":"drive","nose":[0]}"#).contains("unknown field"));
+        let huge = format!(r#"{{"type":"drive","pad":"{}"}}"#, "x".repeat(20_000));
+        assert!(refused(&huge).contains("at most"));
+    }
+}

@@ -1,0 +1,293 @@
+//! What the page is told about the world: what to draw once per episode, the poses every step.
+//!
+//! The world's visual description (`World::visual_parts`) is regrouped into *nodes*, one per
+//! rigid body (an object's base or one of its links): each node carries its parts (a shape, its
+//! pose in the node's frame, a colour) and moves as one, so a step needs only one pose per
+//! node. Convex hulls are sent as triangles (parry's hull), everything else as its primitive.
+//! Colours are linear sRGB as the cameras' appearance gives them for the object's states.
+
+use crate::checklist::Checklist;
+use behavior_render::state_look;
+use behavior_sim::{ObjectId, Primitive, Visual, VisualShape, World};
+use rapier3d::math::{Pose, Vector};
+use serde::Serialize;
+
+/// A shape as the page builds it: in its own frame, z up.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub(crate) enum Shape {
+    Box {
+        half_extents: [f32; 3],
+    },
+    Cylinder {
+        radius: f32,
+        half_height: f32,
+    },
+    Sphere {
+        radius: f32,
+    },
+    Capsule {
+        radius: f32,
+        half_height: f32,
+    },
+    Mesh {
+        vertices: Vec<f32>,
+        triangles: Vec<u32>,
+    },
+}
+
+/// One drawn part of a node.
+#[derive(Clone, Debug, Serialize)]
+pub(crate) struct DrawnPart {
+    pub(crate) shape: Shape,
+    /// Position and quaternion (x, y, z, w) in the node's frame.
+    pub(crate) offset: [f32; 7],
+    /// Linear sRGB, 0–1, as the object's states show.
+    pub(crate) color: [f32; 3],
+    /// 0–1: how much it glows (toggled on).
+    pub(crate) emission: f32,
+    /// 0–1: how shiny the material is.
+    pub(crate) shine: f32,
+}
+
+/// A rigid body: an object's base or one of its links.
+#[derive(Clone, Debug, Serialize)]
+pub(crate) struct Node {
+    /// The object's name in the world.
+    pub(crate) object: String,
+    /// Its category (synset or furniture kind).
+    pub(crate) category: String,
+    /// The link's index, or none for the base.
+    pub(crate) link: Option<usize>,
+    pub(crate) parts: Vec<DrawnPart>,
+}
+
+/// Everything the page needs to draw an episode, sent on joining and at each new episode.
+#[derive(Clone, Debug, Serialize)]
+pub(crate) struct SceneDescription {
+    pub(crate) activity: String,
+    pub(crate) scene: String,
+    pub(crate) seed: u64,
+    /// Episodes started since the server did, this one included.
+    pub(crate) episode: u32,
+    /// Node names of the robot's parts, for the page's camera to follow.
+    pub(crate) robot: Vec<String>,
+    pub(crate) nodes: Vec<Node>,
+    /// The goal's ground literals, as text.
+    pub(crate) literals: Vec<String>,
+    /// The action steps an episode may take.
+    pub(crate) max_steps: u32,
+}
+
+/// A part's new colour: `[node, part, r, g, b, emission]`.
+pub(crate) type Recolor = [f32; 6];
+
+/// The server's side of a scene: which body each node is and how each part looked last.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct SceneView {
+    bodies: Vec<(ObjectId, Option<usize>)>,
+    /// The objects present when it was made.
+    present: Vec<ObjectId>,
+    /// Per node, per part: its appearance and the look last sent.
+    looks: Vec<Vec<(Visual, [f32; 4])>>,
+}
+
+/// The world's current parts, grouped into nodes.
+pub(crate) fn describe(world: &World) -> (SceneView, Vec<Node>) {
+    let core = world.core();
+    let mut bodies = Vec::new();
+    let mut looks = Vec::new();
+    let mut nodes = Vec::new();
+    for (id, object) in core.objects() {
+        let parts = core.visual_parts(id);
+        let links = std::iter::once(None).chain((0..object.links.len()).map(Some));
+        for link in links {
+            let frame = node_pose(world, id, link);
+            let inverse = frame.inverse();
+            let mine: Vec<_> = parts.iter().filter(|p| p.link == link).collect();
+            if mine.is_empty() {
+                continue;
+            }
+            let drawn: Vec<DrawnPart> = mine
+                .iter()
+                .map(|p| drawn(world, id, p.visual, &p.shape, inverse * p.pose))
+                .collect();
+            looks.push(
+                drawn
+                    .iter()
+                    .zip(&mine)
+                    .map(|(d, p)| (p.visual, look_key(d)))
+                    .collect(),
+            );
+            bodies.push((id, link));
+            nodes.push(Node {
+                object: object.name.clone(),
+                category: object.category.clone(),
+                link,
+                parts: drawn,
+            });
+        }
+    }
+    let present = present(world);
+    (
+        SceneView {
+            bodies,
+            present,
+            looks,
+        },
+        nodes,
+    )
+}
+
+fn present(world: &World) -> Vec<ObjectId> {
+    let core = world.core();
+    core.objects()
+        .filter(|(_, o)| o.is_present())
+        .map(|(id, _)| id)
+        .collect()
+}
+
+fn node_pose(world: &World, id: ObjectId, link: Option<usize>) -> Pose {
+    match link {
+        None => world.core().pose(id),
+        Some(l) => world.core().link_pose(id, l),
+    }
+}
+
+fn drawn(world: &World, id: ObjectId, visual: Visual, shape: &VisualShape, at: Pose) -> DrawnPart {
+    let look = state_look(world, id, visual);
+    DrawnPart {
+        shape: shape_of(shape),
+        offset: pose_values(at),
+        color: look.albedo,
+        emission: look.emission,
+        shine: look.shine,
+    }
+}
+
+fn look_key(d: &DrawnPart) -> [f32; 4] {
+    [d.color[0], d.color[1], d.color[2], d.emission]
+}
+
+fn shape_of(shape: &VisualShape) -> Shape {
+    match shape {
+        VisualShape::Primitive(p) => match p {
+            Primitive::Box { half_extents: h } => Shape::Box {
+                half_extents: [h.x, h.y, h.z],
+            },
+            &&Primitive::Cylinder {
+                radius,
+                half_height,
+            } => Shape::Cylinder {
+                radius,
+                half_height,
+            },
+            &&Primitive::Sphere { radius } => Shape::Sphere { radius },
+            &&Primitive::Capsule {
+                radius,
+                half_height,
+            } => Shape::Capsule {
+                radius,
+                half_height,
+            },
+            Primitive::ConvexHull { points } => {
+                let (vertices, triangles) =
+                    rapier3d::parry::transformation::convex_hull(points.as_slice());
+                mesh(&vertices, &triangles)
+            }
+        },
+        VisualShape::Mesh(m) => mesh(&m.vertices, &m.triangles),
+    }
+}
+
+fn mesh(vertices: &[Vector], triangles: &[[u32; 3]]) -> Shape {
+    Shape::Mesh {
+        vertices: vertices.iter().flat_map(|v| [v.x, v.y, v.z]).collect(),
+        triangles: triangles.iter().flatten().copied().collect(),
+    }
+}
+
+fn pose_values(p: Pose) -> [f32; 7] {
+    let (t, r) = (p.translation, p.rotation);
+    [t.x, t.y, t.z, r.x, r.y, r.z, r.w]
+}
+
+impl SceneView {
+    /// Whether the world still has the objects this view was made for (slicing replaces an
+    /// object by new ones; then the page needs a new scene).
+    pub(crate) fn matches(&self, world: &World) -> bool {
+        present(world) == self.present
+    }
+
+    /// One binary frame: the step, then every node's pose (NaN position once it has gone).
+    pub(crate) fn frame(&self, world: &World, step: u32) -> Vec<u8> {
+        let mut out = Vec::with_capacity(4 + self.bodies.len() * 28);
+        out.extend_from_slice(&step.to_le_bytes());
+        for &(id, link) in &self.bodies {
+            let mut values = pose_values(node_pose(world, id, link));
+            if !world.core().object(id).is_present() {
+                values[..3].fill(f32::NAN);
+            }
+            for v in values {
+                out.extend_from_slice(&v.to_le_bytes());
+            }
+        }
+        out
+    }
+
+    /// The parts whose colour changed since the last call (states: cooked, soaked, on…).
+    pub(crate) fn recolor(&mut self, world: &World) -> Vec<Recolor> {
+        let mut changed = Vec::new();
+        for (node, (&(id, _), parts)) in self.bodies.iter().zip(&mut self.looks).enumerate() {
+            for (part, (visual, last)) in parts.iter_mut().enumerate() {
+                let look = state_look(world, id, *visual);
+                let key = [
+                    look.albedo[0],
+                    look.albedo[1],
+                    look.albedo[2],
+                    look.emission,
+                ];
+                if key != *last {
+                    *last = key;
+                    changed.push([node as f32, part as f32, key[0], key[1], key[2], key[3]]);
+                }
+            }
+        }
+        changed
+    }
+}
+
+/// The scene's description for an episode.
+pub(crate) struct Describe<'a> {
+    pub(crate) world: &'a World,
+    pub(crate) robot: Vec<ObjectId>,
+    pub(crate) checklist: &'a Checklist,
+    pub(crate) activity: String,
+    pub(crate) scene: String,
+    pub(crate) seed: u64,
+    pub(crate) episode: u32,
+    pub(crate) max_steps: u32,
+}
+
+impl Describe<'_> {
+    pub(crate) fn build(self) -> (SceneView, SceneDescription) {
+        let (view, nodes) = describe(self.world);
+        let core = self.world.core();
+        let robot = self
+            .robot
+            .iter()
+            .map(|&id| core.object(id).name.clone())
+            .collect();
+        let description = SceneDescription {
+            activity: self.activity,
+            scene: self.scene,
+            seed: self.seed,
+            episode: self.episode,
+            robot,
+            nodes,
+            literals: self.checklist.texts().to_vec(),
+            max_steps: self.max_steps,
+        };
+        (view, description)
+    }
+}

@@ -1,0 +1,239 @@
+//! The HTTP side: the embedded page at `/`, its files, and the websocket at `/ws`.
+//!
+//! Each websocket gets a task that parses what the client says (a bad message is answered with
+//! an error and goes no further) and forwards what the simulation thread sends it. The server
+//! never trusts a client with anything but the messages of `protocol.rs`.
+
+use crate::assets::asset;
+use crate::protocol::{ClientMessage, ProtocolError, error_text};
+use crate::session::{self, Outgoing, Session, ToSim};
+use axum::Router;
+use axum::extract::ws::{Message, WebSocket, WebSocketUpgrade};
+use axum::extract::{Query, State};
+use axum::http::{StatusCode, Uri, header};
+use axum::response::{IntoResponse, Response};
+use axum::routing::get;
+use serde::Deserialize;
+use std::future::Future;
+use std::net::SocketAddr;
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::mpsc;
+use std::sync::{Arc, Mutex};
+use tokio::net::TcpListener;
+
+/// Where to listen.
+#[derive(Clone, Debug)]
+pub struct ServeOptions {
+    /// The address: 127.0.0.1 by default (`behavior serve --host` to open it to others).
+    pub addr: SocketAddr,
+}
+
+/// Why the server could not run.
+#[derive(Debug, thiserror::Error)]
+pub enum WebError {
+    /// The address could not be bound (in use, or not this machine's).
+    #[error("cannot listen on {addr}: {source}")]
+    Bind {
+        /// The address.
+        addr: SocketAddr,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// The server failed while running.
+    #[error("the server failed: {0}")]
+    Io(#[from] std::io::Error),
+    /// Teleoperation drives the BehaviorRobot, the embodiment of the paper's demonstrations.
+    #[error("`behavior serve` drives the BehaviorRobot: build the environment with it")]
+    NotBehaviorRobot,
+    /// The environment has no episode (a reset failed earlier).
+    #[error("the environment has no episode")]
+    NoEpisode,
+    /// The environment failed to reset or step.
+    #[error(transparent)]
+    Env(#[from] behavior_env::EnvError),
+    /// A recording could not be written.
+    #[error(transparent)]
+    Record(#[from] behavior_env::record::RecordError),
+    /// The folder for recordings could not be made.
+    #[error("cannot make the recordings' folder {dir}: {source}")]
+    RecordDir {
+        /// The folder.
+        dir: PathBuf,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// The simulation thread stopped unexpectedly.
+    #[error("the simulation thread panicked")]
+    SimulationPanicked,
+}
+
+/// Largest websocket message the connection takes at all; below it, the protocol's own limit
+/// answers an oversized message with an error instead of closing the connection.
+const MAX_FRAME: usize = 1 << 20;
+
+/// Messages waiting for one client before frames are skipped for it.
+const CLIENT_QUEUE: usize = 256;
+
+struct Shared {
+    to_sim: Mutex<mpsc::Sender<ToSim>>,
+    next_client: AtomicU64,
+}
+
+impl Shared {
+    fn tell(&self, message: ToSim) {
+        if let Ok(tx) = self.to_sim.lock() {
+            // A send fails only once the simulation has stopped; the client's socket ends soon.
+            let _ = tx.send(message);
+        }
+    }
+}
+
+/// A server bound to its address, ready to run.
+pub struct Server {
+    listener: TcpListener,
+}
+
+impl Server {
+    /// Binds the address.
+    pub async fn bind(options: &ServeOptions) -> Result<Server, WebError> {
+        let listener = TcpListener::bind(options.addr)
+            .await
+            .map_err(|source| WebError::Bind {
+                addr: options.addr,
+                source,
+            })?;
+        Ok(Server { listener })
+    }
+
+    /// The address bound (the port chosen when port 0 was asked for).
+    pub fn local_addr(&self) -> Result<SocketAddr, WebError> {
+        Ok(self.listener.local_addr()?)
+    }
+
+    /// Serves the session until `shutdown` completes; ends the running episode (keeping its
+    /// recording) and returns every recording written.
+    pub async fn run(
+        self,
+        session: Session,
+        shutdown: impl Future<Output = ()> + Send + 'static,
+    ) -> Result<Vec<PathBuf>, WebError> {
+        let (to_sim, inbox) = mpsc::channel();
+        let simulation = std::thread::Builder::new()
+            .name("simulation".into())
+            .spawn(move || session::run(session, inbox))?;
+        let shared = Arc::new(Shared {
+            to_sim: Mutex::new(to_sim),
+            next_client: AtomicU64::new(1),
+        });
+        let app = Router::new()
+            .route("/ws", get(websocket))
+            .fallback(get(file))
+            .with_state(shared.clone());
+        let served = axum::serve(self.listener, app)
+            .with_graceful_shutdown(shutdown)
+            .await;
+        shared.tell(ToSim::Stop);
+        let written = tokio::task::spawn_blocking(move || simulation.join())
+            .await
+            .map_err(|_| WebError::SimulationPanicked)?
+            .map_err(|_| WebError::SimulationPanicked)??;
+        served?;
+        Ok(written)
+    }
+}
+
+/// Serves `session` until Ctrl-C, on a runtime of its own; `ready` is told the address once it
+/// listens. Returns the recordings written.
+pub fn serve(
+    session: Session,
+    options: &ServeOptions,
+    ready: impl FnOnce(SocketAddr),
+) -> Result<Vec<PathBuf>, WebError> {
+    let runtime = tokio::runtime::Builder::new_multi_thread()
+        .worker_threads(2)
+        .enable_all()
+        .build()?;
+    runtime.block_on(async {
+        let server = Server::bind(options).await?;
+        ready(server.local_addr()?);
+        let ctrl_c = async {
+            // Without a Ctrl-C handler the server runs until it is killed.
+            if tokio::signal::ctrl_c().await.is_err() {
+                std::future::pending::<()>().await;
+            }
+        };
+        server.run(session, ctrl_c).await
+    })
+}
+
+async fn file(uri: Uri) -> Response {
+    match asset(uri.path()) {
+        Some((mime, bytes)) => ([(header::CONTENT_TYPE, mime)], bytes).into_response(),
+        // Browsers ask for an icon unprompted; there is none, and that is no error.
+        None if uri.path() == "/favicon.ico" => StatusCode::NO_CONTENT.into_response(),
+        None => (StatusCode::NOT_FOUND, "no such file").into_response(),
+    }
+}
+
+#[derive(Deserialize)]
+struct WsQuery {
+    /// Present: this client only watches.
+    watch: Option<String>,
+}
+
+async fn websocket(
+    upgrade: WebSocketUpgrade,
+    Query(query): Query<WsQuery>,
+    State(shared): State<Arc<Shared>>,
+) -> Response {
+    let watch = query.watch.is_some();
+    upgrade
+        .max_message_size(MAX_FRAME)
+        .on_upgrade(move |socket| client(socket, shared, watch))
+}
+
+/// One client's connection, until it closes.
+async fn client(mut socket: WebSocket, shared: Arc<Shared>, watch: bool) {
+    let id = shared.next_client.fetch_add(1, Ordering::Relaxed);
+    let (tx, mut rx) = tokio::sync::mpsc::channel(CLIENT_QUEUE);
+    shared.tell(ToSim::Joined {
+        client: id,
+        watch,
+        tx,
+    });
+    loop {
+        tokio::select! {
+            out = rx.recv() => {
+                let Some(out) = out else { break };
+                let message = match out {
+                    Outgoing::Text(text) => Message::Text(text.into()),
+                    Outgoing::Binary(bytes) => Message::Binary(bytes),
+                };
+                if socket.send(message).await.is_err() {
+                    break;
+                }
+            }
+            incoming = socket.recv() => {
+                let reply = match incoming {
+                    Some(Ok(Message::Text(text))) => match ClientMessage::parse(&text) {
+                        Ok(message) => {
+                            shared.tell(ToSim::Said { client: id, message });
+                            None
+                        }
+                        Err(e) => Some(error_text(&e)),
+                    },
+                    Some(Ok(Message::Binary(_))) => Some(error_text(&ProtocolError::Binary)),
+                    Some(Ok(Message::Ping(_) | Message::Pong(_))) => None,
+                    Some(Ok(Message::Close(_)) | Err(_)) | None => break,
+                };
+                if let Some(reply) = reply
+                    && socket.send(Message::Text(reply.into())).await.is_err()
+                {
+                    break;
+                }
+            }
+        }
+    }
+    shared.tell(ToSim::Left { client: id });
+}

@@ -1,0 +1,341 @@
+//! The simulation thread: it owns the episode, steps it at 30 Hz while someone drives, records
+//! it, and tells every connected page what happened.
+//!
+//! The server's tasks only pass messages: a client joined, said something (already parsed and
+//! checked), or left. Everything that touches the world happens here, on one thread, in the
+//! order messages arrive, so the recorded actions are exactly the actions stepped and a
+//! recording replays bit for bit.
+
+use crate::checklist::Checklist;
+use crate::protocol::{ClientMessage, Ended, ProtocolError, ServerMessage, Status, error_text};
+use crate::scene::{Describe, SceneView};
+use crate::server::WebError;
+use crate::teleop::Drive;
+use axum::body::Bytes;
+use behavior_env::Env;
+use behavior_env::record::Recorder;
+use behavior_robots::RobotKind;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::sync::mpsc::{Receiver, RecvTimeoutError};
+use std::time::{Duration, Instant};
+use tokio::sync::mpsc::Sender;
+use tokio::sync::mpsc::error::TrySendError;
+
+/// One action step: 30 Hz, as the paper's agents and people act.
+pub(crate) const TICK: Duration = Duration::from_nanos(1_000_000_000 / 30);
+
+/// What the server runs: an environment with the BehaviorRobot, and where to keep recordings.
+pub struct Session {
+    /// The environment (its robot must be the BehaviorRobot); it is reset here.
+    pub env: Env,
+    /// The activity's BDDL text, written into every recording.
+    pub definition: String,
+    /// The first episode's seed; each later episode takes the next.
+    pub seed: u64,
+    /// Where recordings go, one MCAP file per episode with steps.
+    pub record_dir: PathBuf,
+    /// Full-state checkpoints in a recording every this many steps.
+    pub checkpoint_every: u32,
+}
+
+/// A message to a client: JSON text or a binary frame.
+#[derive(Clone, Debug)]
+pub(crate) enum Outgoing {
+    Text(String),
+    Binary(Bytes),
+}
+
+/// What the server's tasks tell the simulation thread.
+pub(crate) enum ToSim {
+    Joined {
+        client: u64,
+        watch: bool,
+        tx: Sender<Outgoing>,
+    },
+    Said {
+        client: u64,
+        message: ClientMessage,
+    },
+    Left {
+        client: u64,
+    },
+    Stop,
+}
+
+struct Client {
+    tx: Sender<Outgoing>,
+}
+
+/// The episode being played and what the pages were told about it.
+struct Running {
+    session: Session,
+    checklist: Checklist,
+    view: SceneView,
+    scene_text: String,
+    recorder: Option<Recorder>,
+    recording: Option<PathBuf>,
+    episodes: u32,
+    seed: u64,
+    drive: Drive,
+    clients: BTreeMap<u64, Client>,
+    driver: Option<u64>,
+    written: Vec<PathBuf>,
+}
+
+/// Runs the simulation until [`ToSim::Stop`] or until every sender is gone; returns the
+/// recordings written.
+pub(crate) fn run(session: Session, inbox: Receiver<ToSim>) -> Result<Vec<PathBuf>, WebError> {
+    let mut running = Running::start(session)?;
+    let mut next = Instant::now() + TICK;
+    loop {
+        let wait = next.saturating_duration_since(Instant::now());
+        match inbox.recv_timeout(wait) {
+            Ok(ToSim::Stop) | Err(RecvTimeoutError::Disconnected) => {
+                running.end("server stopped")?;
+                return Ok(running.written);
+            }
+            Ok(message) => {
+                running.handle(message)?;
+                continue;
+            }
+            Err(RecvTimeoutError::Timeout) => {}
+        }
+        // A late tick is not made up for: the simulation never runs ahead in bursts.
+        next = (next + TICK).max(Instant::now());
+        if running.driver.is_some() {
+            running.step()?;
+        }
+    }
+}
+
+impl Running {
+    fn start(mut session: Session) -> Result<Running, WebError> {
+        let seed = session.seed;
+        session.env.reset(seed)?;
+        let kind = session.env.robot().map(|r| r.kind());
+        if kind != Some(RobotKind::Behavior) {
+            return Err(WebError::NotBehaviorRobot);
+        }
+        let checklist = Checklist::new(&session.env.config().activity);
+        let mut running = Running {
+            session,
+            checklist,
+            view: SceneView::default(),
+            scene_text: String::new(),
+            recorder: None,
+            recording: None,
+            episodes: 1,
+            seed,
+            drive: Drive::default(),
+            clients: BTreeMap::new(),
+            driver: None,
+            written: Vec::new(),
+        };
+        running.describe();
+        Ok(running)
+    }
+
+    /// Rebuilds what the pages draw from the world as it is now.
+    fn describe(&mut self) {
+        let env = &self.session.env;
+        let (Some(world), Some(robot), Some(start)) = (env.world(), env.robot(), env.start())
+        else {
+            return;
+        };
+        let (view, description) = Describe {
+            world,
+            robot: robot.objects(),
+            checklist: &self.checklist,
+            activity: env.config().activity.name.clone(),
+            scene: start.instance.scene.name.clone(),
+            seed: self.seed,
+            episode: self.episodes,
+            max_steps: env.config().max_steps,
+        }
+        .build();
+        self.view = view;
+        self.scene_text = ServerMessage::Scene(&description).to_text();
+    }
+
+    fn handle(&mut self, message: ToSim) -> Result<(), WebError> {
+        match message {
+            ToSim::Joined { client, watch, tx } => self.join(client, watch, tx),
+            ToSim::Said { client, message } => self.said(client, message)?,
+            ToSim::Left { client } => self.left(client)?,
+            ToSim::Stop => {}
+        }
+        Ok(())
+    }
+
+    fn join(&mut self, client: u64, watch: bool, tx: Sender<Outgoing>) {
+        let driving = !watch && self.driver.is_none();
+        if driving {
+            self.driver = Some(client);
+        }
+        let role = ServerMessage::Role { driving }.to_text();
+        let sent = [
+            Outgoing::Text(role),
+            Outgoing::Text(self.scene_text.clone()),
+        ]
+        .into_iter()
+        .all(|m| tx.try_send(m).is_ok());
+        if sent {
+            self.clients.insert(client, Client { tx });
+            self.send_frame();
+        }
+    }
+
+    fn said(&mut self, client: u64, message: ClientMessage) -> Result<(), WebError> {
+        if self.driver != Some(client) {
+            let error = ProtocolError::NotDriver(message.name());
+            self.send_to(client, Outgoing::Text(error_text(&error)));
+            return Ok(());
+        }
+        match message {
+            ClientMessage::Drive(drive) => self.drive = drive,
+            ClientMessage::End => self.end("ended by the driver")?,
+        }
+        Ok(())
+    }
+
+    fn left(&mut self, client: u64) -> Result<(), WebError> {
+        self.clients.remove(&client);
+        if self.driver == Some(client) {
+            self.driver = None;
+            self.end("driver left")?;
+        }
+        Ok(())
+    }
+
+    /// One action step with the driver's latest rates.
+    fn step(&mut self) -> Result<(), WebError> {
+        let action = self.drive.action();
+        if self.recorder.is_none() {
+            let path = fresh_path(&self.session.record_dir, &self.file_stem())?;
+            let s = &self.session;
+            self.recorder = Some(Recorder::create(
+                &path,
+                &s.env,
+                &s.definition,
+                s.checkpoint_every,
+            )?);
+            self.recording = Some(path);
+        }
+        let step = self.session.env.step(&action)?;
+        if let Some(recorder) = &mut self.recorder {
+            recorder.record(&self.session.env, &action)?;
+        }
+        let world = self.session.env.world().ok_or(WebError::NoEpisode)?;
+        if !self.view.matches(world) {
+            self.describe();
+            self.broadcast(Outgoing::Text(self.scene_text.clone()));
+        }
+        self.send_frame();
+        if step.terminated {
+            self.end("goal")?;
+        } else if step.truncated {
+            self.end("time limit")?;
+        }
+        Ok(())
+    }
+
+    /// Sends every client the poses and the status.
+    fn send_frame(&mut self) {
+        let env = &self.session.env;
+        let (Some(world), Some(bindings), Some(score), Some(metrics)) =
+            (env.world(), env.bindings(), env.score(), env.metrics())
+        else {
+            return;
+        };
+        let frame = Bytes::from(self.view.frame(world, env.steps()));
+        let recolor = self.view.recolor(world);
+        let checklist = self.checklist.status(world, bindings);
+        let status = ServerMessage::Status(Status {
+            step: env.steps(),
+            q: score.q,
+            success: score.success,
+            metrics: &metrics,
+            checklist: &checklist,
+            recolor: &recolor,
+        })
+        .to_text();
+        self.broadcast(Outgoing::Binary(frame));
+        self.broadcast(Outgoing::Text(status));
+    }
+
+    /// Ends the episode (keeping its recording) and resets to the next seed's.
+    fn end(&mut self, reason: &'static str) -> Result<(), WebError> {
+        let env = &self.session.env;
+        let steps = env.steps();
+        if steps == 0 {
+            return Ok(());
+        }
+        let score = env.score().cloned().unwrap_or_default();
+        if let Some(recorder) = self.recorder.take() {
+            recorder.finish()?;
+        }
+        let recording = self.recording.take();
+        self.written.extend(recording.clone());
+        let ended = ServerMessage::Ended(Ended {
+            steps,
+            success: score.success,
+            q: score.q,
+            recording: recording.map(|p| p.display().to_string()),
+            reason,
+        });
+        self.broadcast(Outgoing::Text(ended.to_text()));
+        if reason == "server stopped" {
+            return Ok(());
+        }
+        self.seed += 1;
+        self.episodes += 1;
+        self.drive = Drive::default();
+        self.session.env.reset(self.seed)?;
+        self.describe();
+        self.broadcast(Outgoing::Text(self.scene_text.clone()));
+        self.send_frame();
+        Ok(())
+    }
+
+    fn file_stem(&self) -> String {
+        let activity = &self.session.env.config().activity.name;
+        format!("{activity}-seed{}", self.seed)
+    }
+
+    fn send_to(&mut self, client: u64, message: Outgoing) {
+        if let Some(c) = self.clients.get(&client)
+            && let Err(TrySendError::Closed(_)) = c.tx.try_send(message)
+        {
+            self.clients.remove(&client);
+        }
+    }
+
+    /// Sends to every client. A client too slow to take a frame skips it; one too slow to take
+    /// a text message (a scene, an ending) is let go, as its page would be wrong from then on.
+    fn broadcast(&mut self, message: Outgoing) {
+        let must_arrive = matches!(message, Outgoing::Text(_));
+        self.clients
+            .retain(|_, c| match c.tx.try_send(message.clone()) {
+                Ok(()) => true,
+                Err(TrySendError::Full(_)) => !must_arrive,
+                Err(TrySendError::Closed(_)) => false,
+            });
+    }
+}
+
+/// `dir/stem-N.mcap` for the first N whose file does not exist: no recording overwrites another.
+fn fresh_path(dir: &Path, stem: &str) -> Result<PathBuf, WebError> {
+    std::fs::create_dir_all(dir).map_err(|source| WebError::RecordDir {
+        dir: dir.to_path_buf(),
+        source,
+    })?;
+    let mut n = 1;
+    loop {
+        let path = dir.join(format!("{stem}-{n:03}.mcap"));
+        if !path.exists() {
+            return Ok(path);
+        }
+        n += 1;
+    }
+}

@@ -1,0 +1,71 @@
+// The page's entry: one websocket to the server, its messages handed to the 3-D view, the
+// panel and the controls. `window.behavior` exposes what the page knows, for tests and for the
+// browser's console.
+import { View } from '/scene.js';
+import { Panel } from '/panel.js';
+import { Controls } from '/controls.js';
+
+const state = {
+  connected: false, driving: false, scene: null, step: 0, q: 0, success: false,
+  checklist: null, frames: 0, errors: [], ended: [],
+};
+window.behavior = state;
+
+const view = new View(document.getElementById('view'));
+const panel = new Panel();
+const watching = new URLSearchParams(location.search).has('watch');
+const socket = new WebSocket(
+  `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws${watching ? '?watch' : ''}`);
+socket.binaryType = 'arraybuffer';
+const controls = new Controls((message) => {
+  if (state.driving && socket.readyState === WebSocket.OPEN) socket.send(JSON.stringify(message));
+}, (hand) => panel.hand(hand));
+state.send = (message) => socket.send(typeof message === 'string' ? message : JSON.stringify(message));
+// Where a node is in the world (z up), and how many triangles the last frame drew: for tests.
+state.position = (name) => {
+  const node = view.nodes.find((n) => n.name === name);
+  return node && node.visible ? [...node.position.toArray(), ...node.quaternion.toArray()] : null;
+};
+state.triangles = () => view.renderer.info.render.triangles;
+
+socket.onopen = () => { state.connected = true; panel.connection('connected'); };
+socket.onclose = () => { state.connected = false; panel.connection('disconnected: reload to join again'); };
+socket.onmessage = (event) => {
+  if (event.data instanceof ArrayBuffer) {
+    state.step = view.frame(event.data);
+    state.frames += 1;
+    return;
+  }
+  const message = JSON.parse(event.data);
+  switch (message.type) {
+    case 'role':
+      state.driving = message.driving;
+      panel.connection(message.driving ? 'connected: you drive the robot' : 'connected: watching');
+      break;
+    case 'scene':
+      state.scene = message;
+      view.build(message);
+      panel.scene(message);
+      break;
+    case 'status':
+      Object.assign(state, { q: message.q, success: message.success, checklist: message.checklist,
+        metrics: message.metrics });
+      view.recolor(message.recolor);
+      panel.status(message);
+      break;
+    case 'ended':
+      state.ended.push(message);
+      panel.ended(message);
+      break;
+    case 'error':
+      state.errors.push(message.message);
+      console.warn('server:', message.message);
+      break;
+  }
+};
+
+function animate() {
+  controls.poll();
+  view.render();
+}
+view.renderer.setAnimationLoop(animate);

@@ -1,0 +1,149 @@
+// The 3-D view: the scene's nodes built once per episode from the server's description, posed
+// from each binary frame. The world is z-up; a root group turns it into three.js's y-up.
+import * as THREE from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+
+const FLOATS_PER_NODE = 7;
+
+export class View {
+  constructor(element) {
+    this.element = element;
+    this.renderer = new THREE.WebGLRenderer({ antialias: true });
+    this.renderer.setPixelRatio(devicePixelRatio);
+    this.renderer.xr.enabled = true;
+    element.appendChild(this.renderer.domElement);
+    this.scene = new THREE.Scene();
+    this.scene.background = new THREE.Color(0x1d2025);
+    this.scene.add(new THREE.HemisphereLight(0xffffff, 0x404040, 1.6));
+    const sun = new THREE.DirectionalLight(0xffffff, 1.4);
+    sun.position.set(3, 10, 4);
+    this.scene.add(sun);
+    this.root = new THREE.Group();
+    this.root.rotation.x = -Math.PI / 2;
+    this.scene.add(this.root);
+    this.camera = new THREE.PerspectiveCamera(55, 1, 0.05, 200);
+    this.camera.position.set(0, 8, 8);
+    this.orbit = new OrbitControls(this.camera, this.renderer.domElement);
+    this.orbit.enableDamping = true;
+    this.nodes = [];
+    this.robot = null;
+    addEventListener('resize', () => this.resize());
+    this.resize();
+  }
+
+  resize() {
+    const { clientWidth: w, clientHeight: h } = this.element;
+    this.renderer.setSize(w, h);
+    this.camera.aspect = w / Math.max(h, 1);
+    this.camera.updateProjectionMatrix();
+  }
+
+  // A new episode (or a world whose objects changed): every node rebuilt.
+  build(description) {
+    for (const node of this.nodes) this.root.remove(node);
+    this.nodes = description.nodes.map((node) => {
+      const group = new THREE.Group();
+      group.name = node.link === null ? node.object : `${node.object}/${node.link}`;
+      for (const part of node.parts) group.add(mesh(part));
+      this.root.add(group);
+      return group;
+    });
+    const first = description.nodes.findIndex((n) => n.object === description.robot[0] && n.link === null);
+    this.robot = first >= 0 ? this.nodes[first] : null;
+    this.centred = false;
+  }
+
+  // One frame of poses; returns its step.
+  frame(buffer) {
+    const view = new DataView(buffer);
+    const step = view.getUint32(0, true);
+    const count = Math.min(this.nodes.length, (buffer.byteLength - 4) / (4 * FLOATS_PER_NODE));
+    for (let i = 0; i < count; i++) {
+      const at = 4 + i * 4 * FLOATS_PER_NODE;
+      const f = (k) => view.getFloat32(at + 4 * k, true);
+      const node = this.nodes[i];
+      node.visible = !Number.isNaN(f(0));
+      if (!node.visible) continue;
+      node.position.set(f(0), f(1), f(2));
+      node.quaternion.set(f(3), f(4), f(5), f(6));
+    }
+    this.follow();
+    return step;
+  }
+
+  // The orbit's centre follows the robot. At an episode's first frame the camera goes above
+  // and a little behind it: homes have no ceilings, so from above every room is open.
+  follow() {
+    if (!this.robot) return;
+    const at = this.robot.getWorldPosition(new THREE.Vector3());
+    if (!this.centred) {
+      const ahead = new THREE.Vector3(1, 0, 0).applyQuaternion(this.robot.getWorldQuaternion(new THREE.Quaternion()));
+      ahead.y = 0;
+      ahead.normalize();
+      this.camera.position.copy(at).addScaledVector(ahead, -1.5).add(new THREE.Vector3(0, 4.5, 0));
+      this.orbit.target.copy(at);
+      this.centred = true;
+    }
+    this.camera.position.add(at.clone().sub(this.orbit.target));
+    this.orbit.target.copy(at);
+  }
+
+  // [node, part, r, g, b, emission] for each surface whose states changed its colour.
+  recolor(changes) {
+    for (const [node, part, r, g, b, glow] of changes) {
+      const material = this.nodes[node]?.children[part]?.material;
+      if (!material) continue;
+      material.color.setRGB(r, g, b, THREE.LinearSRGBColorSpace);
+      material.emissive.setRGB(r * glow, g * glow, b * glow, THREE.LinearSRGBColorSpace);
+    }
+  }
+
+  render() {
+    this.orbit.update();
+    this.renderer.render(this.scene, this.camera);
+  }
+}
+
+function mesh(part) {
+  const [r, g, b] = part.color;
+  const color = new THREE.Color().setRGB(r, g, b, THREE.LinearSRGBColorSpace);
+  const material = new THREE.MeshStandardMaterial({
+    color,
+    emissive: color.clone().multiplyScalar(part.emission),
+    roughness: 1 - 0.8 * part.shine,
+    metalness: 0,
+  });
+  const m = new THREE.Mesh(geometry(part.shape), material);
+  const o = part.offset;
+  m.position.set(o[0], o[1], o[2]);
+  m.quaternion.set(o[3], o[4], o[5], o[6]);
+  return m;
+}
+
+// Shapes in their own z-up frames (three's cylinders and capsules stand along y: turned).
+function geometry(shape) {
+  switch (shape.kind) {
+    case 'box': {
+      const [x, y, z] = shape.half_extents;
+      return new THREE.BoxGeometry(2 * x, 2 * y, 2 * z);
+    }
+    case 'sphere':
+      return new THREE.SphereGeometry(shape.radius, 24, 16);
+    case 'cylinder':
+      return new THREE.CylinderGeometry(shape.radius, shape.radius, 2 * shape.half_height, 24)
+        .rotateX(Math.PI / 2);
+    case 'capsule':
+      return new THREE.CapsuleGeometry(shape.radius, 2 * shape.half_height, 6, 16)
+        .rotateX(Math.PI / 2);
+    case 'mesh': {
+      const g = new THREE.BufferGeometry();
+      g.setAttribute('position', new THREE.Float32BufferAttribute(shape.vertices, 3));
+      g.setIndex(shape.triangles);
+      const flat = g.toNonIndexed();
+      flat.computeVertexNormals();
+      return flat;
+    }
+    default:
+      return new THREE.BufferGeometry();
+  }
+}

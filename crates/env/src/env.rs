@@ -18,6 +18,12 @@ use std::time::Instant;
 /// Steps of settling after a reset, at most (the original's `SIMULATOR_SETTLE_TIME`).
 pub const SETTLE_STEPS: usize = 150;
 
+/// Sampling seeds a reset tries before it gives up. About 0.3 % of sampling attempts fail (a
+/// goal placement that does not fit, say); a training run resets thousands of times, so a
+/// reset whose seed does not sample tries the seeds derived from it, in a fixed order, and the
+/// same seed always gives the same instance.
+pub const SAMPLE_TRIES: u32 = 5;
+
 /// Why a reset or a step could not be done. A refused step changes nothing; a failed reset
 /// leaves no episode (step refuses until a reset succeeds).
 #[derive(Debug, thiserror::Error)]
@@ -38,15 +44,17 @@ pub enum EnvError {
     #[error("the environment has no {0} to start episodes from")]
     Empty(&'static str),
     /// No instance could be sampled.
-    #[error("sampling {activity} in {scene} (seed {seed}): {source}")]
+    #[error("sampling {activity} in {scene} (seed {seed}, {tries} sampling seeds tried): {source}")]
     Sample {
         /// The activity.
         activity: String,
         /// The home.
         scene: String,
-        /// The seed.
+        /// The reset's seed.
         seed: u64,
-        /// Why.
+        /// How many sampling seeds were tried ([`SAMPLE_TRIES`]).
+        tries: u32,
+        /// Why the last one failed.
         source: Box<SampleError>,
     },
     /// A saved instance does not load.
@@ -270,14 +278,26 @@ impl Env {
             Instances::Sampled => {
                 let scene = &c.scenes[(seed % c.scenes.len() as u64) as usize];
                 let library = Library::new(&c.taxonomy);
-                let instance = instantiate(&c.activity, scene, seed, &library, &c.taxonomy)
-                    .map_err(|source| EnvError::Sample {
-                        activity: c.activity.name.clone(),
-                        scene: scene.name.clone(),
-                        seed,
-                        source: Box::new(source),
-                    })?;
-                Ok(instance.save())
+                let mut sampling_seed = seed;
+                let mut tries = 0;
+                loop {
+                    tries += 1;
+                    match instantiate(&c.activity, scene, sampling_seed, &library, &c.taxonomy) {
+                        Ok(instance) => return Ok(instance.save()),
+                        Err(_) if tries < SAMPLE_TRIES => {
+                            sampling_seed = derived_seed(sampling_seed)
+                        }
+                        Err(source) => {
+                            return Err(EnvError::Sample {
+                                activity: c.activity.name.clone(),
+                                scene: scene.name.clone(),
+                                seed,
+                                tries,
+                                source: Box::new(source),
+                            });
+                        }
+                    }
+                }
             }
         }
     }
@@ -480,4 +500,13 @@ impl Env {
             steps: episode.steps,
         }))
     }
+}
+
+/// The sampling seed tried after `seed` fails: SplitMix64's step, so that the retries of
+/// neighbouring seeds do not run into each other.
+fn derived_seed(seed: u64) -> u64 {
+    let mut z = seed.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
 }

@@ -10,7 +10,7 @@ use crate::session::{self, Outgoing, Session, ToSim};
 use axum::Router;
 use axum::extract::ws::{Message, WebSocket, WebSocketUpgrade};
 use axum::extract::{Query, State};
-use axum::http::{StatusCode, Uri, header};
+use axum::http::{HeaderMap, StatusCode, Uri, header};
 use axum::response::{IntoResponse, Response};
 use axum::routing::get;
 use serde::Deserialize;
@@ -119,9 +119,16 @@ impl Server {
         shutdown: impl Future<Output = ()> + Send + 'static,
     ) -> Result<Vec<PathBuf>, WebError> {
         let (to_sim, inbox) = mpsc::channel();
+        // The simulation failing (an episode that cannot reset, a disk full) stops the server
+        // too, and `run` returns its error.
+        let (failed, simulation_ended) = tokio::sync::oneshot::channel::<()>();
         let simulation = std::thread::Builder::new()
             .name("simulation".into())
-            .spawn(move || session::run(session, inbox))?;
+            .spawn(move || {
+                let result = session::run(session, inbox);
+                let _ = failed.send(());
+                result
+            })?;
         let shared = Arc::new(Shared {
             to_sim: Mutex::new(to_sim),
             next_client: AtomicU64::new(1),
@@ -130,8 +137,14 @@ impl Server {
             .route("/ws", get(websocket))
             .fallback(get(file))
             .with_state(shared.clone());
+        let stop = async move {
+            tokio::select! {
+                () = shutdown => {}
+                _ = simulation_ended => {}
+            }
+        };
         let served = axum::serve(self.listener, app)
-            .with_graceful_shutdown(shutdown)
+            .with_graceful_shutdown(stop)
             .await;
         shared.tell(ToSim::Stop);
         let written = tokio::task::spawn_blocking(move || simulation.join())
@@ -184,13 +197,38 @@ struct WsQuery {
 
 async fn websocket(
     upgrade: WebSocketUpgrade,
+    headers: HeaderMap,
     Query(query): Query<WsQuery>,
     State(shared): State<Arc<Shared>>,
 ) -> Response {
+    if !same_origin(&headers) {
+        return (
+            StatusCode::FORBIDDEN,
+            "the websocket admits only pages served by this server",
+        )
+            .into_response();
+    }
     let watch = query.watch.is_some();
     upgrade
         .max_message_size(MAX_FRAME)
         .on_upgrade(move |socket| client(socket, shared, watch))
+}
+
+/// Whether a browser's websocket comes from a page of ours. Browsers send `Origin` with every
+/// websocket and let any page open one to any address, so without this check a web site the
+/// person visits could drive the robot through a server on 127.0.0.1. Clients that are not
+/// browsers send no `Origin` and are admitted.
+fn same_origin(headers: &HeaderMap) -> bool {
+    let Some(origin) = headers.get(header::ORIGIN) else {
+        return true;
+    };
+    let host = headers.get(header::HOST).and_then(|h| h.to_str().ok());
+    let origin_host = origin
+        .to_str()
+        .ok()
+        .and_then(|o| o.split_once("://"))
+        .map(|(_, rest)| rest.trim_end_matches('/'));
+    matches!((origin_host, host), (Some(o), Some(h)) if o.eq_ignore_ascii_case(h))
 }
 
 /// One client's connection, until it closes.

@@ -1,5 +1,5 @@
-//! The server through its websocket, as a page uses it: a driver and a watcher join, hostile
-//! messages are refused and change nothing, driving moves the robot, the driver leaving ends
+//! The server through its websocket, as a page uses it: another site's page is refused, a
+//! driver and a watcher join, hostile messages are refused and change nothing, driving moves the robot, the driver leaving ends
 //! the episode and keeps its recording, and the recording replays bit for bit.
 
 #[path = "../../env/tests/common/mod.rs"]
@@ -12,6 +12,7 @@ use serde_json::Value;
 use std::time::Duration;
 use tokio::net::TcpStream;
 use tokio_tungstenite::tungstenite::Message;
+use tokio_tungstenite::tungstenite::client::IntoClientRequest;
 use tokio_tungstenite::{MaybeTlsStream, WebSocketStream, connect_async};
 
 type Socket = WebSocketStream<MaybeTlsStream<TcpStream>>;
@@ -75,6 +76,13 @@ async fn a_driven_episode_is_refused_bad_input_moves_the_robot_and_replays_bit_f
     let running = tokio::spawn(server.run(session, async {
         let _ = stopped.await;
     }));
+
+    // A page of another site may not open the websocket (the browser says where it came from).
+    let mut foreign = format!("ws://{addr}/ws").into_client_request().unwrap();
+    let origin = "http://elsewhere.example".parse().unwrap();
+    foreign.headers_mut().insert("origin", origin);
+    let refused = connect_async(foreign).await.unwrap_err().to_string();
+    assert!(refused.contains("403"), "{refused}");
 
     let (mut driver, _) = connect_async(format!("ws://{addr}/ws")).await.unwrap();
     assert_eq!(next_of(&mut driver, "role").await["driving"], true);

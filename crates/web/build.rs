@@ -17,6 +17,7 @@ const OWN: &[(&str, &str)] = &[
     ("scene.js", "text/javascript; charset=utf-8"),
     ("controls.js", "text/javascript; charset=utf-8"),
     ("panel.js", "text/javascript; charset=utf-8"),
+    ("xr.js", "text/javascript; charset=utf-8"),
     ("style.css", "text/css; charset=utf-8"),
 ];
 
@@ -25,7 +26,6 @@ const THREE: &[&str] = &[
     "build/three.module.js",
     "build/three.core.js",
     "examples/jsm/controls/OrbitControls.js",
-    "examples/jsm/webxr/VRButton.js",
 ];
 
 fn main() {

@@ -7,6 +7,7 @@ use behavior_bddl::Source;
 use behavior_env::record::{read, replay_with};
 use behavior_planning::replay_edit;
 use serde::Serialize;
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::sync::Arc;
@@ -38,6 +39,9 @@ struct ReplayOutput {
     first_difference: Option<u32>,
     /// Where reading stopped on a damaged or cut file.
     damage: Option<String>,
+    /// Teleoperated steps by the device that drove them (`xr`, `keys`), from the recording's
+    /// device reports; empty for an agent's episode.
+    devices: BTreeMap<String, usize>,
 }
 
 pub fn run(args: ReplayArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
@@ -53,6 +57,7 @@ pub fn run(args: ReplayArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         identical: None,
         first_difference: None,
         damage: recording.damage.clone(),
+        devices: devices(&recording.devices),
     };
     if args.verify {
         let prelude = Prelude::load(data_dir)?;
@@ -93,7 +98,28 @@ fn print(out: &ReplayOutput) {
         (Some(false), None) => println!("  replay: differs"),
         (None, _) => println!("  (re-simulate with --verify)"),
     }
+    if !out.devices.is_empty() {
+        let by: Vec<String> = out
+            .devices
+            .iter()
+            .map(|(device, steps)| format!("{steps} from {device}"))
+            .collect();
+        println!("  teleoperated steps: {}", by.join(", "));
+    }
     if let Some(damage) = &out.damage {
         eprintln!("error: {damage}");
     }
+}
+
+/// How many steps each kind of device drove: a report is `{"<kind>": ...}`.
+fn devices(reports: &[(u32, serde_json::Value)]) -> BTreeMap<String, usize> {
+    let mut by = BTreeMap::new();
+    for (_, report) in reports {
+        let kind = match report.as_object().and_then(|o| o.keys().next()) {
+            Some(kind) => kind.clone(),
+            None => "unknown".to_string(),
+        };
+        *by.entry(kind).or_insert(0) += 1;
+    }
+    by
 }

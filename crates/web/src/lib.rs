@@ -5,14 +5,15 @@
 //! (a binary frame), and a status message with Q, the efficiency metrics, the goal as a
 //! checklist of ground literals and the colours states give surfaces (as the cameras show them).
 //! The person at the page drives the BehaviorRobot — the embodiment people used for the paper's
-//! demonstrations — from the keyboard or a gamepad; the server turns each command into the
+//! demonstrations — from the keyboard, a gamepad or a WebXR headset and its controllers; the server turns each command into the
 //! robot's 26-number action, steps the episode at 30 Hz with its physics, and records every
 //! episode to MCAP, so a demonstration is an action sequence that replays bit for bit.
 //!
 //! It owns the HTTP server, the websocket protocol (`protocol.rs`: every client message is
 //! checked, and a bad one gets an error reply and changes nothing), the simulation thread that
 //! owns the episode (`session.rs`), what the page is sent about the world (`scene.rs`), the goal
-//! checklist (`checklist.rs`) and teleoperation commands (`teleop.rs`). It knows nothing of the
+//! checklist (`checklist.rs`), keyboard and gamepad commands (`teleop.rs`) and headset poses
+//! (`xr.rs`). It knows nothing of the
 //! command line: its caller builds the environment ([`Session`]) and says where to listen
 //! ([`ServeOptions`]).
 //!
@@ -29,8 +30,10 @@ mod scene;
 mod server;
 mod session;
 mod teleop;
+mod xr;
 
 pub use protocol::{ClientMessage, ProtocolError};
 pub use server::{ServeOptions, Server, WebError, serve};
 pub use session::Session;
 pub use teleop::Drive;
+pub use xr::{BadDevice, STICK_DEAD_ZONE, Targets, XrController, XrInput, XrPose, XrRig};

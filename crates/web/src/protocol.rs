@@ -1,13 +1,16 @@
 //! The websocket protocol between the page and the server.
 //!
-//! Client → server: JSON text messages, [`ClientMessage`]. Each is parsed and checked before it
+//! Client → server: JSON text messages, [`ClientMessage`]: `drive` (keyboard or gamepad rates),
+//! `xr` (a headset's poses, see `xr.rs`), `end`. Each is parsed and checked before it
 //! reaches the simulation; one that is not valid JSON, not a known message, too large, binary,
 //! or carries a bad number is answered with `{"type": "error", "message": …}` and changes
 //! nothing.
 //!
 //! Server → client, text (JSON): `role` on joining (driving or watching), `scene` when a client joins and at each new
 //! episode (what to draw, the goal's literals), `status` after every step (Q, the metrics, which
-//! literals hold, recoloured surfaces), `ended` when an episode ends (its recording), `error`.
+//! literals hold, recoloured surfaces), `ended` when an episode ends (its recording), `xr_rig`
+//! when an `xr` message recentered the rig (so that the page draws the world around the
+//! headset as the server maps the headset into the world), `error`.
 //! Binary: one frame of poses per step — little-endian `u32` step, then for every node of the
 //! scene, in the scene's order, position (x, y, z) and rotation quaternion (x, y, z, w) as `f32`
 //! (a node whose object left the world has NaN position).
@@ -15,10 +18,11 @@
 use crate::checklist::ChecklistStatus;
 use crate::scene::{Recolor, SceneDescription};
 use crate::teleop::{BadRate, Drive};
+use crate::xr::{BadDevice, XrInput, XrRig};
 use behavior_env::EpisodeMetrics;
 use serde::{Deserialize, Serialize};
 
-/// The largest client message accepted, bytes (a drive command is about 200).
+/// The largest client message accepted, bytes (a drive command is about 200, an `xr` one 400).
 pub const MAX_CLIENT_MESSAGE: usize = 16 * 1024;
 
 /// What a client may say.
@@ -27,6 +31,8 @@ pub const MAX_CLIENT_MESSAGE: usize = 16 * 1024;
 pub enum ClientMessage {
     /// Drive the robot at these rates from the next step on (the driver only).
     Drive(Drive),
+    /// Drive the robot from a headset's poses from the next step on (the driver only).
+    Xr(XrInput),
     /// End the episode now: its recording is closed and a new episode waits (the driver only).
     End,
 }
@@ -40,6 +46,9 @@ pub enum ProtocolError {
     /// A number out of range.
     #[error(transparent)]
     BadRate(#[from] BadRate),
+    /// A device value no headset reports.
+    #[error(transparent)]
+    BadDevice(#[from] BadDevice),
     /// Larger than [`MAX_CLIENT_MESSAGE`].
     #[error("a message of {0} bytes; at most {MAX_CLIENT_MESSAGE} are accepted")]
     TooLarge(usize),
@@ -58,8 +67,10 @@ impl ClientMessage {
             return Err(ProtocolError::TooLarge(text.len()));
         }
         let message: ClientMessage = serde_json::from_str(text)?;
-        if let ClientMessage::Drive(drive) = &message {
-            drive.check()?;
+        match &message {
+            ClientMessage::Drive(drive) => drive.check()?,
+            ClientMessage::Xr(input) => input.check()?,
+            ClientMessage::End => {}
         }
         Ok(message)
     }
@@ -68,6 +79,7 @@ impl ClientMessage {
     pub(crate) fn name(&self) -> &'static str {
         match self {
             ClientMessage::Drive(_) => "drive",
+            ClientMessage::Xr(_) => "xr",
             ClientMessage::End => "end",
         }
     }
@@ -88,6 +100,8 @@ pub(crate) enum ServerMessage<'a> {
     Status(Status<'a>),
     /// An episode ended.
     Ended(Ended),
+    /// How headset poses are carried into the body frame from now on.
+    XrRig(&'a XrRig),
     /// A message was refused.
     Error {
         /// Why.
@@ -170,6 +184,8 @@ mod tests {
         assert!(refused(r#"{"type":"drive","body":[1,2]}"#).contains("not a message"));
         assert!(refused(r#"{"type":"drive","body":[0,0,0,0,0,7]}"#).contains("body[5]"));
         assert!(refused(r#"{"type":"drive","nose":[0]}"#).contains("unknown field"));
+        let xr = r#"{"type":"xr","head":[0,1.6,0,0,0,0,1],"right":{"pose":[0,1,0,0,0,0,1],"trigger":2}}"#;
+        assert!(refused(xr).contains("right.trigger[0]"), "{}", refused(xr));
         let huge = format!(r#"{{"type":"drive","pad":"{}"}}"#, "x".repeat(20_000));
         assert!(refused(&huge).contains("at most"));
     }

@@ -11,10 +11,12 @@ use crate::protocol::{ClientMessage, Ended, ProtocolError, ServerMessage, Status
 use crate::scene::{Describe, SceneView};
 use crate::server::WebError;
 use crate::teleop::Drive;
+use crate::xr::{Targets, XrInput, XrRig};
 use axum::body::Bytes;
 use behavior_env::Env;
 use behavior_env::record::Recorder;
-use behavior_robots::RobotKind;
+use behavior_robots::{ACTION_DIM, Robot, RobotKind};
+use serde::Serialize;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::mpsc::{Receiver, RecvTimeoutError};
@@ -67,6 +69,17 @@ struct Client {
     tx: Sender<Outgoing>,
 }
 
+/// The driver's latest command, applied to every step until the next; recorded with each step
+/// as the device's report.
+#[derive(Clone, Copy, Debug, Serialize)]
+#[serde(rename_all = "snake_case")]
+enum Control {
+    /// Keyboard or gamepad rates.
+    Keys(Drive),
+    /// A headset's poses.
+    Xr(XrInput),
+}
+
 /// The episode being played and what the pages were told about it.
 struct Running {
     session: Session,
@@ -77,7 +90,8 @@ struct Running {
     recording: Option<PathBuf>,
     episodes: u32,
     seed: u64,
-    drive: Drive,
+    control: Control,
+    rig: Option<XrRig>,
     clients: BTreeMap<u64, Client>,
     driver: Option<u64>,
     written: Vec<PathBuf>,
@@ -127,7 +141,8 @@ impl Running {
             recording: None,
             episodes: 1,
             seed,
-            drive: Drive::default(),
+            control: Control::Keys(Drive::default()),
+            rig: None,
             clients: BTreeMap::new(),
             driver: None,
             written: Vec::new(),
@@ -193,10 +208,44 @@ impl Running {
             return Ok(());
         }
         match message {
-            ClientMessage::Drive(drive) => self.drive = drive,
+            ClientMessage::Drive(drive) => self.control = Control::Keys(drive),
+            ClientMessage::Xr(input) => self.xr(client, input),
             ClientMessage::End => self.end("ended by the driver")?,
         }
         Ok(())
+    }
+
+    /// Headset poses: the rig tied to the eye first if asked (or never done), and the page
+    /// told how.
+    fn xr(&mut self, client: u64, input: XrInput) {
+        if input.recenter || self.rig.is_none() {
+            let Some(targets) = self.targets() else {
+                return;
+            };
+            let rig = XrRig::recentered(&input.head, &targets.eye);
+            self.rig = Some(rig);
+            let told = ServerMessage::XrRig(&rig).to_text();
+            self.send_to(client, Outgoing::Text(told));
+        }
+        self.control = Control::Xr(input);
+    }
+
+    /// Where the robot's eye and hands are told to be now.
+    fn targets(&self) -> Option<Targets> {
+        let env = &self.session.env;
+        match (env.robot(), env.world()) {
+            (Some(Robot::Behavior(robot, _)), Some(world)) => Some(Targets::of(robot, world)),
+            _ => None,
+        }
+    }
+
+    /// This step's action from the driver's latest command.
+    fn action(&self) -> [f32; ACTION_DIM] {
+        match (&self.control, self.rig, self.targets()) {
+            (Control::Xr(input), Some(rig), Some(now)) => rig.action(input, &now),
+            (Control::Keys(drive), ..) => drive.action(),
+            _ => [0.0; ACTION_DIM],
+        }
     }
 
     fn left(&mut self, client: u64) -> Result<(), WebError> {
@@ -208,9 +257,9 @@ impl Running {
         Ok(())
     }
 
-    /// One action step with the driver's latest rates.
+    /// One action step with the driver's latest command.
     fn step(&mut self) -> Result<(), WebError> {
-        let action = self.drive.action();
+        let action = self.action();
         if self.recorder.is_none() {
             let path = fresh_path(&self.session.record_dir, &self.file_stem())?;
             let s = &self.session;
@@ -221,6 +270,9 @@ impl Running {
                 s.checkpoint_every,
             )?);
             self.recording = Some(path);
+        }
+        if let Some(recorder) = &mut self.recorder {
+            recorder.record_device(&self.session.env, &self.control)?;
         }
         let step = self.session.env.step(&action)?;
         if let Some(recorder) = &mut self.recorder {
@@ -290,7 +342,7 @@ impl Running {
         }
         self.seed += 1;
         self.episodes += 1;
-        self.drive = Drive::default();
+        self.control = Control::Keys(Drive::default());
         self.session.env.reset(self.seed)?;
         self.describe();
         self.broadcast(Outgoing::Text(self.scene_text.clone()));

@@ -4,6 +4,7 @@
 import { View } from '/scene.js';
 import { Panel } from '/panel.js';
 import { Controls } from '/controls.js';
+import { Xr } from '/xr.js';
 
 const state = {
   connected: false, driving: false, scene: null, step: 0, q: 0, success: false,
@@ -20,6 +21,10 @@ socket.binaryType = 'arraybuffer';
 const controls = new Controls((message) => {
   if (state.driving && socket.readyState === WebSocket.OPEN) socket.send(JSON.stringify(message));
 }, (hand) => panel.hand(hand));
+const xr = new Xr(view, (message) => {
+  if (state.driving && socket.readyState === WebSocket.OPEN) socket.send(JSON.stringify(message));
+}, state);
+xr.offer(document.getElementById('enter-vr'));
 state.send = (message) => socket.send(typeof message === 'string' ? message : JSON.stringify(message));
 // Where a node is in the world (z up), and how many triangles the last frame drew: for tests.
 state.position = (name) => {
@@ -57,6 +62,9 @@ socket.onmessage = (event) => {
       state.ended.push(message);
       panel.ended(message);
       break;
+    case 'xr_rig':
+      xr.rigged(message);
+      break;
     case 'error':
       state.errors.push(message.message);
       console.warn('server:', message.message);
@@ -64,8 +72,10 @@ socket.onmessage = (event) => {
   }
 };
 
-function animate() {
-  controls.poll();
+// Every display frame (the headset's, in VR): input, then the view.
+function animate(time, frame) {
+  if (frame) xr.frame(time, frame);
+  else controls.poll();
   view.render();
 }
 view.renderer.setAnimationLoop(animate);

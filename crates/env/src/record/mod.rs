@@ -12,6 +12,7 @@
 //! | `/score` | every step | `{"step", "q", "success", "conjuncts"}` after the step |
 //! | `/checkpoint` | step 0 and every `checkpoint_every` steps | `{"step", "digest"}`: SHA-256 of the full state (see `digest.rs`) |
 //! | `/edit` | after a step (or the reset) when the world was edited before the next ([`crate::Env::edit`]) | `{"step", "edit"}`: what was done, in its doer's words (a symbolic primitive: `{"primitive", "object"}`) |
+//! | `/device` | before a teleoperated step | `{"step", "device"}`: what the person's device reported for that step (a headset's raw poses, keyboard rates), in the teleoperator's words; a replay does not need it |
 //! | `/state` | with each checkpoint | the full state as bytes (encoding [`STATE_ENCODING`], no schema): the world (`World::to_bytes`), the robot, the bindings, the running metrics; an episode resumes from it |
 //!
 //! Chunks are zstd-compressed and appended as they fill ([`CHUNK_BYTES`]), and the file is

@@ -64,6 +64,8 @@ pub struct Recording {
     /// The edits of the world between steps, in order: (the step after which each was made,
     /// what was done).
     pub edits: Vec<(u32, serde_json::Value)>,
+    /// What a teleoperation device reported for each step it drove: (step, report).
+    pub devices: Vec<(u32, serde_json::Value)>,
     /// Where and why reading stopped early, for a damaged or cut file; the frames before it
     /// are usable.
     pub damage: Option<String>,
@@ -91,6 +93,12 @@ struct ScoreMsg {
 struct EditMsg {
     step: u32,
     edit: serde_json::Value,
+}
+
+#[derive(Deserialize)]
+struct DeviceMsg {
+    step: u32,
+    device: serde_json::Value,
 }
 
 #[derive(Deserialize)]
@@ -149,6 +157,7 @@ struct Reading {
     checkpoints: Vec<(u32, String)>,
     states: Vec<(u32, Vec<u8>)>,
     edits: Vec<(u32, serde_json::Value)>,
+    devices: Vec<(u32, serde_json::Value)>,
     damage: Option<String>,
 }
 
@@ -207,6 +216,13 @@ impl Reading {
                 }
                 self.edits.push((m.step, m.edit));
             }
+            "/device" => {
+                let m: DeviceMsg = serde_json::from_slice(data).map_err(bad)?;
+                if m.step != self.last_step() + 1 {
+                    return Err(format!("device report for step {} out of order", m.step));
+                }
+                self.devices.push((m.step, m.device));
+            }
             _ => {}
         }
         Ok(())
@@ -230,6 +246,7 @@ impl Reading {
             checkpoints: self.checkpoints,
             states: self.states,
             edits: self.edits,
+            devices: self.devices,
             damage: self.damage,
         })
     }

@@ -36,24 +36,25 @@ pub enum RecordError {
 }
 
 /// The topics, in the order their channels are added.
-const TOPICS: [&str; 7] = [
+const TOPICS: [&str; 8] = [
     "/header",
     "/action",
     "/poses",
     "/score",
     "/checkpoint",
     "/edit",
+    "/device",
     "/state",
 ];
 
 /// The index in [`TOPICS`] of `/state`, the one channel without a JSON schema.
-const STATE: usize = 6;
+const STATE: usize = 7;
 
 /// An episode being recorded.
 pub struct Recorder {
     writer: Writer<File>,
     path: PathBuf,
-    channels: [u16; 7],
+    channels: [u16; 8],
     sequence: u32,
     checkpoint_every: u32,
 }
@@ -84,7 +85,7 @@ impl Recorder {
             .chunk_size(Some(CHUNK_BYTES))
             .profile("behavior");
         let mut writer = options.create(file).map_err(mcap)?;
-        let mut channels = [0; 7];
+        let mut channels = [0; 8];
         for (k, topic) in TOPICS.iter().enumerate().take(STATE) {
             let schema = writer
                 .add_schema(topic, "jsonschema", schema_of(topic).as_bytes())
@@ -139,6 +140,14 @@ impl Recorder {
     pub fn record_edit(&mut self, env: &Env, edit: &impl Serialize) -> Result<(), RecordError> {
         let step = env.steps();
         self.write(5, step, &json!({ "step": step, "edit": edit }))
+    }
+
+    /// Records what a teleoperation device reported for the step `env` is about to take (raw
+    /// headset poses, keyboard rates): not needed to replay, kept so that a demonstration says
+    /// what the person did as well as what the robot was told.
+    pub fn record_device(&mut self, env: &Env, device: &impl Serialize) -> Result<(), RecordError> {
+        let step = env.steps() + 1;
+        self.write(6, step, &json!({ "step": step, "device": device }))
     }
 
     /// Closes the file with MCAP's summary and index.
@@ -235,6 +244,8 @@ fn schema_of(topic: &str) -> String {
             "conjuncts": { "type": "array", "items": { "type": "boolean" } } } }),
         "/edit" => json!({ "type": "object", "properties": {
             "step": step, "edit": { "description": "what was done between this step and the next" } } }),
+        "/device" => json!({ "type": "object", "properties": {
+            "step": step, "device": { "description": "what the teleoperation device reported for this step" } } }),
         _ => json!({ "type": "object", "properties": {
             "step": step, "digest": { "type": "string", "description": "SHA-256, hex" } } }),
     };

@@ -5,48 +5,25 @@
 // `behavior replay --verify`, and a closed tab's episode kept.
 //
 //   BEHAVIOR_BIN=target/release/behavior node crates/web/ui/tests/e2e.mjs [SCREENSHOT.png]
-import { chromium } from 'playwright-core';
-import { spawn, execFileSync } from 'node:child_process';
+import { BIN, launchBrowser, startServer } from './harness.mjs';
+import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readdirSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join, resolve } from 'node:path';
+import { join } from 'node:path';
 import assert from 'node:assert/strict';
 
-const BIN = resolve(process.env.BEHAVIOR_BIN ?? 'target/release/behavior');
-const CHROMIUM = process.env.CHROMIUM ?? '/usr/bin/chromium';
 const screenshot = process.argv[2];
 const demos = mkdtempSync(join(tmpdir(), 'behavior-e2e-'));
 
 function log(...args) { console.log('e2e:', ...args); }
 
-// The server, on a free port; resolves to its address once it listens.
-function startServer() {
-  const server = spawn(BIN, ['serve', 'bringing_in_wood', '--seed', '1', '--port', '0',
-    '--record-dir', demos], { stdio: ['ignore', 'pipe', 'inherit'] });
-  let out = '';
-  const address = new Promise((ok, fail) => {
-    server.stdout.on('data', (chunk) => {
-      out += chunk;
-      const found = out.match(/on (http:\/\/[\d.:]+\/)/);
-      if (found) ok(found[1]);
-    });
-    server.on('exit', (code) => fail(new Error(`behavior serve exited (${code}): ${out}`)));
-  });
-  const stopped = new Promise((ok) => server.on('exit', (code) => ok({ code, out })));
-  return { server, address, stopped, output: () => out };
-}
-
 const distance = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1]);
 
 async function main() {
-  const { server, address, stopped } = startServer();
+  const { server, address, stopped } = startServer(demos);
   const url = await address;
   log('server at', url);
-  const browser = await chromium.launch({
-    executablePath: CHROMIUM,
-    args: ['--no-sandbox', '--use-gl=angle', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run'],
-  });
+  const browser = await launchBrowser();
   try {
     const page = await browser.newPage({ viewport: { width: 1280, height: 720 } });
     const pageErrors = [];

@@ -1,0 +1,35 @@
+// What both browser tests need: `behavior serve` on a free port, and Debian's headless
+// Chromium launched by Playwright through `executablePath` (browser downloads do not work
+// here), drawing with SwiftShader.
+import { chromium } from 'playwright-core';
+import { spawn } from 'node:child_process';
+import { resolve } from 'node:path';
+
+export const BIN = resolve(process.env.BEHAVIOR_BIN ?? 'target/release/behavior');
+const CHROMIUM = process.env.CHROMIUM ?? '/usr/bin/chromium';
+
+// `behavior serve ACTIVITY --seed 1` recording into `demos`. `address` resolves to the page's
+// URL once the server listens; `stopped` to its exit code and output.
+export function startServer(demos, activity = 'bringing_in_wood') {
+  const server = spawn(BIN, ['serve', activity, '--seed', '1', '--port', '0',
+    '--record-dir', demos], { stdio: ['ignore', 'pipe', 'inherit'] });
+  let out = '';
+  const address = new Promise((ok, fail) => {
+    server.stdout.on('data', (chunk) => {
+      out += chunk;
+      const found = out.match(/on (http:\/\/[\d.:]+\/)/);
+      if (found) ok(found[1]);
+    });
+    server.on('exit', (code) => fail(new Error(`behavior serve exited (${code}): ${out}`)));
+  });
+  const stopped = new Promise((ok) => server.on('exit', (code) => ok({ code, out })));
+  return { server, address, stopped };
+}
+
+export function launchBrowser() {
+  return chromium.launch({
+    executablePath: CHROMIUM,
+    args: ['--no-sandbox', '--use-gl=angle', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+      '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run'],
+  });
+}

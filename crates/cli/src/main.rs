@@ -9,6 +9,7 @@ mod bench_plan;
 mod episode;
 mod facts;
 mod map;
+mod metrics;
 mod plot;
 mod prelude;
 mod render;
@@ -66,8 +67,12 @@ enum Command {
     SolveAll(solve::SolveAllArgs),
     /// Read a recording; with --verify, re-simulate it and check it bit for bit.
     Replay(replay::ReplayArgs),
+    /// The efficiency metrics of recorded episodes, each also as a fraction of the best human
+    /// demonstration's (--reference).
+    Metrics(metrics::MetricsArgs),
     /// The browser viewer: the home in 3-D, live, with the goal's checklist and the metrics;
-    /// drive the BehaviorRobot from the keyboard or a gamepad; every episode recorded.
+    /// drive the BehaviorRobot from the keyboard, a gamepad or a WebXR headset; every episode
+    /// recorded.
     #[cfg(feature = "web")]
     Serve(serve::ServeArgs),
     /// Benchmarks of the whole system.
@@ -103,6 +108,9 @@ fn main() -> ExitCode {
         Command::Solve(args) => solve::solve(args, cli.data_dir.as_deref()),
         Command::SolveAll(args) => solve::solve_all(args, cli.data_dir.as_deref()),
         Command::Replay(args) => replay::run(args, cli.data_dir.as_deref()),
+        Command::Metrics(args) => {
+            metrics::run(args, cli.data_dir.as_deref()).map(|()| ExitCode::SUCCESS)
+        }
         #[cfg(feature = "web")]
         Command::Serve(args) => serve::serve(args, cli.data_dir.as_deref()),
         Command::Bench(BenchCommand::Env(args)) => bench_env::run(args, cli.data_dir.as_deref()),

@@ -4,7 +4,7 @@
 use crate::prelude::Prelude;
 use anyhow::{Context, Result};
 use behavior_bddl::Source;
-use behavior_env::record::{read, replay_with};
+use behavior_env::record::{Recording, ReplayReport, read, replay_with};
 use behavior_planning::replay_edit;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -61,14 +61,7 @@ pub fn run(args: ReplayArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     };
     if args.verify {
         let prelude = Prelude::load(data_dir)?;
-        let source = Source::new(&h.activity, &h.definition);
-        let activity = prelude
-            .load_activity(&source)
-            .with_context(|| format!("the definition in {}", args.file.display()))?;
-        let taxonomy = Arc::new(prelude.knowledge.taxonomy.clone());
-        let config = recording.config(Arc::new(activity), taxonomy)?;
-        // Recorded primitives are done again by the planner's code that did them.
-        let report = replay_with(&recording, config, &mut replay_edit)?;
+        let report = resimulate(&args.file, &recording, &prelude)?;
         out.frames = report.frames as usize;
         out.checkpoints = report.checkpoints as usize;
         out.identical = Some(report.identical);
@@ -111,8 +104,26 @@ fn print(out: &ReplayOutput) {
     }
 }
 
+/// Re-simulates a recording read from `file` in the environment its header describes; recorded
+/// primitives are done again by the planner's code that did them.
+pub(crate) fn resimulate(
+    file: &Path,
+    recording: &Recording,
+    prelude: &Prelude,
+) -> Result<ReplayReport> {
+    let h = &recording.header;
+    let source = Source::new(&h.activity, &h.definition);
+    let activity = prelude
+        .load_activity(&source)
+        .with_context(|| format!("the definition in {}", file.display()))?;
+    let taxonomy = Arc::new(prelude.knowledge.taxonomy.clone());
+    let config = recording.config(Arc::new(activity), taxonomy)?;
+    replay_with(recording, config, &mut replay_edit)
+        .with_context(|| format!("replaying {}", file.display()))
+}
+
 /// How many steps each kind of device drove: a report is `{"<kind>": ...}`.
-fn devices(reports: &[(u32, serde_json::Value)]) -> BTreeMap<String, usize> {
+pub(crate) fn devices(reports: &[(u32, serde_json::Value)]) -> BTreeMap<String, usize> {
     let mut by = BTreeMap::new();
     for (_, report) in reports {
         let kind = match report.as_object().and_then(|o| o.keys().next()) {

@@ -2,42 +2,14 @@
 
 #[path = "../../bddl/tests/common/mod.rs"]
 mod common;
+mod support;
 
 use behavior_bddl::activity::InitLiteral;
 use behavior_bddl::{Activity, Atom, Counting};
 use behavior_data::DataDir;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn behavior(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_behavior"))
-        .args(args)
-        .output()
-        .expect("the behavior binary runs")
-}
-
-/// Runs the binary and requires success, showing its stderr otherwise.
-fn behavior_ok(args: &[&str]) -> Output {
-    let output = behavior(args);
-    assert!(
-        output.status.success(),
-        "behavior {}: {}",
-        args.join(" "),
-        String::from_utf8_lossy(&output.stderr)
-    );
-    output
-}
-
-fn stdout(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stdout).into_owned()
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli-tests");
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
-}
+use support::{behavior, behavior_ok, scratch, stdout};
 
 fn conformance() -> Value {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))

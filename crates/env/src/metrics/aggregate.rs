@@ -10,7 +10,13 @@
 //! (reference §6.2), so ours is: agent value / best (smallest) human value, per metric, where
 //! the demonstrations' values come from the same metric code run on their recordings. 1 is as
 //! efficient as the best person; 2 twice as wasteful. A metric whose best human value is 0 is
-//! 1 when the agent's is 0 too and undefined (`None`) otherwise.
+//! 1 when the agent's is 0 too and undefined (`None`) otherwise. Where no person did that
+//! instance, [`HumanReference::normalize_by_activity`] compares with the best person on any
+//! instance of the activity, and says so.
+//!
+//! Per-activity statistics of the demonstrations ([`HumanStatistics`]): how many, how many
+//! succeeded, their mean length, and the episode limit the original derives from it (twice the
+//! mean).
 
 use super::EpisodeMetrics;
 use serde::{Deserialize, Serialize};
@@ -99,6 +105,21 @@ fn efficiency(m: &EpisodeMetrics) -> [f64; 5] {
 pub struct HumanReference {
     /// Activity → instance → the best values.
     best: BTreeMap<String, BTreeMap<String, [f64; 5]>>,
+    /// Activity → each demonstration's (steps, success).
+    episodes: BTreeMap<String, Vec<(u32, bool)>>,
+}
+
+/// What the demonstrations of one activity say about it.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct HumanStatistics {
+    /// Demonstrations of the activity.
+    pub demonstrations: usize,
+    /// How many ended with the goal holding.
+    pub successes: usize,
+    /// Their mean length, action steps.
+    pub mean_steps: f64,
+    /// The episode limit the original sets from them: twice the mean, rounded up, steps.
+    pub step_limit: u32,
 }
 
 impl HumanReference {
@@ -110,6 +131,10 @@ impl HumanReference {
     /// Adds a human demonstration's metrics for an activity and instance (any label: a saved
     /// instance's file name, the original's instance id).
     pub fn add(&mut self, activity: &str, instance: &str, human: &EpisodeMetrics) {
+        self.episodes
+            .entry(activity.to_string())
+            .or_default()
+            .push((human.steps, human.success));
         let values = efficiency(human);
         self.best
             .entry(activity.to_string())
@@ -131,22 +156,57 @@ impl HumanReference {
         instance: &str,
         agent: &EpisodeMetrics,
     ) -> Option<Normalized> {
-        let best = self.best.get(activity)?.get(instance)?;
-        let ratio = |k: usize| {
-            let (a, h) = (efficiency(agent)[k], best[k]);
-            match (a, h) {
-                (a, h) if h > 0.0 => Some(a / h),
-                (0.0, _) => Some(1.0),
-                _ => None,
-            }
-        };
-        Some(Normalized {
-            simulated_time: ratio(0),
-            kinematic_disarrangement: ratio(1),
-            logical_disarrangement: ratio(2),
-            distance_navigated: ratio(3),
-            displacement_of_hands: ratio(4),
+        Some(relative(self.best.get(activity)?.get(instance)?, agent))
+    }
+
+    /// An agent's episode relative to the best person on any instance of the activity (each
+    /// metric's smallest human value over them); `None` without a demonstration of it.
+    pub fn normalize_by_activity(
+        &self,
+        activity: &str,
+        agent: &EpisodeMetrics,
+    ) -> Option<Normalized> {
+        let instances = self.best.get(activity)?;
+        let best = instances
+            .values()
+            .fold([f64::INFINITY; 5], |mut best, values| {
+                for (b, v) in best.iter_mut().zip(values) {
+                    *b = b.min(*v);
+                }
+                best
+            });
+        (!instances.is_empty()).then(|| relative(&best, agent))
+    }
+
+    /// The demonstrations' statistics for an activity; `None` without one.
+    pub fn statistics(&self, activity: &str) -> Option<HumanStatistics> {
+        let episodes = self.episodes.get(activity).filter(|e| !e.is_empty())?;
+        let mean_steps = mean(episodes.iter().map(|(steps, _)| f64::from(*steps)));
+        Some(HumanStatistics {
+            demonstrations: episodes.len(),
+            successes: episodes.iter().filter(|(_, success)| *success).count(),
+            mean_steps,
+            step_limit: (2.0 * mean_steps).ceil() as u32,
         })
+    }
+}
+
+/// Each efficiency metric of `agent` over the best human value `best` (see the module docs).
+fn relative(best: &[f64; 5], agent: &EpisodeMetrics) -> Normalized {
+    let ratio = |k: usize| {
+        let (a, h) = (efficiency(agent)[k], best[k]);
+        match (a, h) {
+            (a, h) if h > 0.0 => Some(a / h),
+            (0.0, _) => Some(1.0),
+            _ => None,
+        }
+    };
+    Normalized {
+        simulated_time: ratio(0),
+        kinematic_disarrangement: ratio(1),
+        logical_disarrangement: ratio(2),
+        distance_navigated: ratio(3),
+        displacement_of_hands: ratio(4),
     }
 }
 
@@ -214,5 +274,38 @@ mod tests {
             .normalize("b", "0", &episode(1.0, 10.0, (1.0, 0.0)))
             .unwrap();
         assert_eq!(n.displacement_of_hands, None);
+    }
+
+    #[test]
+    fn without_that_instance_the_best_person_on_any_instance_is_the_reference() {
+        let mut humans = HumanReference::new();
+        let mut quick = episode(1.0, 30.0, (3.0, 0.0));
+        quick.steps = 900;
+        quick.success = true;
+        let mut tidy = episode(0.5, 60.0, (1.0, 0.0));
+        tidy.steps = 1800;
+        humans.add("a", "0", &quick);
+        humans.add("a", "1", &tidy);
+        let agent = episode(0.5, 90.0, (2.0, 0.0));
+        let n = humans.normalize_by_activity("a", &agent).unwrap();
+        assert_eq!(
+            n.simulated_time,
+            Some(3.0),
+            "90 s against 30 s on instance 0"
+        );
+        assert_eq!(
+            n.displacement_of_hands,
+            Some(2.0),
+            "2 m against 1 m on instance 1"
+        );
+        assert_eq!(humans.normalize_by_activity("b", &agent), None);
+        let stats = humans.statistics("a").unwrap();
+        assert_eq!((stats.demonstrations, stats.successes), (2, 1));
+        assert_eq!(stats.mean_steps, 1350.0);
+        assert_eq!(
+            stats.step_limit, 2700,
+            "twice the mean, as the original's limit"
+        );
+        assert_eq!(humans.statistics("b"), None);
     }
 }

@@ -12,7 +12,7 @@ mod kinematic;
 mod logical;
 
 pub use agent::{MAX_STEP_DISTANCE, PartTotals};
-pub use aggregate::{Aggregate, HumanReference, Normalized, aggregate};
+pub use aggregate::{Aggregate, HumanReference, HumanStatistics, Normalized, aggregate};
 
 use crate::score::Score;
 use agent::AgentMetrics;

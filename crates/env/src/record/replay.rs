@@ -6,6 +6,7 @@ use super::state_digest;
 use crate::config::{EnvConfig, Instances};
 use crate::env::{Env, EnvError};
 use crate::episode::Start;
+use crate::metrics::EpisodeMetrics;
 use behavior_robots::{ActionSpace, RobotKind};
 use behavior_sim::Substeps;
 use serde::Serialize;
@@ -69,6 +70,9 @@ pub struct ReplayReport {
     pub first_difference: Option<u32>,
     /// Q at the end of the replay.
     pub q_final: f64,
+    /// The episode's metrics at the end of the replay (those of the recorded episode when the
+    /// replay is identical): what `behavior metrics` reports.
+    pub metrics: Option<EpisodeMetrics>,
 }
 
 impl Recording {
@@ -165,6 +169,7 @@ pub fn replay_with(
         check(&env, &mut report);
     }
     report.q_final = env.score().map_or(0.0, |s| s.q);
+    report.metrics = env.metrics();
     Ok(report)
 }
 

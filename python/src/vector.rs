@@ -6,12 +6,12 @@
 //! observation, reward 0, neither terminated nor truncated.
 //!
 //! Seeds: `reset(seed)` starts environment k with `seed + k` (Gymnasium's convention); the
-//! e-th episode environment k starts by itself after that has the seed [`next_seed`] of its
+//! e-th episode environment k starts by itself after that has the seed [`derived_seed`] of its
 //! last reset seed and e, so a run is the same for the same seed and actions.
 
 use crate::env::env_error;
 use crate::options::EnvOptions;
-use behavior_env::{Env, EnvError, Obs, Score};
+use behavior_env::{Env, EnvError, Obs, Score, derived_seed};
 use behavior_render::Pixels;
 use numpy::{AllowTypeChange, IntoPyArray, PyArrayLike2, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
@@ -226,7 +226,7 @@ fn step_one(slot: &mut Slot, action: &[f32]) -> Result<Outcome, EnvError> {
     if slot.ended {
         slot.ended = false;
         slot.episodes += 1;
-        let seed = next_seed(slot.seed, slot.episodes);
+        let seed = derived_seed(slot.seed, slot.episodes);
         return restart(slot, seed);
     }
     let step = slot.env.step(action)?;
@@ -252,17 +252,6 @@ fn restart(slot: &mut Slot, seed: u64) -> Result<Outcome, EnvError> {
         steps: info.steps,
         score: info.score,
     })
-}
-
-/// The seed of the `episode`-th episode an environment starts by itself after a reset with
-/// `seed`: SplitMix64 of the two, so that neighbouring environments' seeds do not collide.
-fn next_seed(seed: u64, episode: u64) -> u64 {
-    let mut z = seed
-        .wrapping_add(episode.wrapping_mul(0x9E37_79B9_7F4A_7C15))
-        .wrapping_add(0x9E37_79B9_7F4A_7C15);
-    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-    z ^ (z >> 31)
 }
 
 fn available_cores() -> usize {

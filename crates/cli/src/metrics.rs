@@ -11,7 +11,7 @@ use crate::prelude::Prelude;
 use crate::replay::{devices, resimulate};
 use anyhow::{Result, bail};
 use behavior_env::metrics::{EpisodeMetrics, HumanReference, HumanStatistics, Normalized};
-use behavior_env::record::{Recording, read};
+use behavior_env::record::read;
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -106,7 +106,7 @@ pub fn run(args: MetricsArgs, data_dir: Option<&Path>) -> Result<()> {
 
 /// Reads and re-simulates one recording; its metrics are those at the end of the replay.
 fn measure(file: &Path, prelude: &Prelude) -> Result<Measured> {
-    let recording: Recording = read(file)?;
+    let recording = read(file)?;
     if let Some(damage) = &recording.damage {
         bail!("{}: {damage}", file.display());
     }

@@ -285,7 +285,7 @@ impl Env {
                     match instantiate(&c.activity, scene, sampling_seed, &library, &c.taxonomy) {
                         Ok(instance) => return Ok(instance.save()),
                         Err(_) if tries < SAMPLE_TRIES => {
-                            sampling_seed = derived_seed(sampling_seed)
+                            sampling_seed = derived_seed(sampling_seed, 0)
                         }
                         Err(source) => {
                             return Err(EnvError::Sample {
@@ -502,10 +502,13 @@ impl Env {
     }
 }
 
-/// The sampling seed tried after `seed` fails: SplitMix64's step, so that the retries of
-/// neighbouring seeds do not run into each other.
-fn derived_seed(seed: u64) -> u64 {
-    let mut z = seed.wrapping_add(0x9E37_79B9_7F4A_7C15);
+/// The `k`-th seed derived from `seed` (SplitMix64's (k + 1)-th output from the state
+/// `seed`): the sampling seed a reset tries after `seed` fails (`k` = 0), and the seeds of the
+/// episodes a vector environment starts by itself. Neighbouring seeds' derived seeds do not run
+/// into each other.
+pub fn derived_seed(seed: u64, k: u64) -> u64 {
+    const GAMMA: u64 = 0x9E37_79B9_7F4A_7C15;
+    let mut z = seed.wrapping_add(k.wrapping_mul(GAMMA)).wrapping_add(GAMMA);
     z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
     z ^ (z >> 31)

@@ -53,7 +53,9 @@ mod timing;
 
 pub use agent::Agent;
 pub use config::{DEFAULT_MAX_STEPS, EnvConfig, Instances, Observations, Reward};
-pub use env::{Checkpoint, Edit, Env, EnvError, Info, SAMPLE_TRIES, SETTLE_STEPS, Step};
+pub use env::{
+    Checkpoint, Edit, Env, EnvError, Info, SAMPLE_TRIES, SETTLE_STEPS, Step, derived_seed,
+};
 pub use episode::{CHECKPOINT_FORMAT_VERSION, CheckpointError, Start};
 pub use metrics::{EpisodeMetrics, Series};
 pub use observation::{

@@ -7,7 +7,7 @@
 //! Colours are linear sRGB as the cameras' appearance gives them for the object's states.
 
 use crate::checklist::Checklist;
-use behavior_render::state_look;
+use behavior_render::{Look, state_look};
 use behavior_sim::{ObjectId, Primitive, Visual, VisualShape, World};
 use rapier3d::math::{Pose, Vector};
 use serde::Serialize;
@@ -108,17 +108,20 @@ pub(crate) fn describe(world: &World) -> (SceneView, Vec<Node>) {
             if mine.is_empty() {
                 continue;
             }
-            let drawn: Vec<DrawnPart> = mine
-                .iter()
-                .map(|p| drawn(world, id, p.visual, &p.shape, inverse * p.pose))
-                .collect();
-            looks.push(
-                drawn
-                    .iter()
-                    .zip(&mine)
-                    .map(|(d, p)| (p.visual, look_key(d)))
-                    .collect(),
-            );
+            let mut drawn = Vec::with_capacity(mine.len());
+            let mut node_looks = Vec::with_capacity(mine.len());
+            for p in mine {
+                let look = state_look(world, id, p.visual);
+                node_looks.push((p.visual, look_key(&look)));
+                drawn.push(DrawnPart {
+                    shape: shape_of(&p.shape),
+                    offset: pose_values(inverse * p.pose),
+                    color: look.albedo,
+                    emission: look.emission,
+                    shine: look.shine,
+                });
+            }
+            looks.push(node_looks);
             bodies.push((id, link));
             nodes.push(Node {
                 object: object.name.clone(),
@@ -154,19 +157,14 @@ fn node_pose(world: &World, id: ObjectId, link: Option<usize>) -> Pose {
     }
 }
 
-fn drawn(world: &World, id: ObjectId, visual: Visual, shape: &VisualShape, at: Pose) -> DrawnPart {
-    let look = state_look(world, id, visual);
-    DrawnPart {
-        shape: shape_of(shape),
-        offset: pose_values(at),
-        color: look.albedo,
-        emission: look.emission,
-        shine: look.shine,
-    }
-}
-
-fn look_key(d: &DrawnPart) -> [f32; 4] {
-    [d.color[0], d.color[1], d.color[2], d.emission]
+/// What a part's recolouring compares: its colour and glow.
+fn look_key(look: &Look) -> [f32; 4] {
+    [
+        look.albedo[0],
+        look.albedo[1],
+        look.albedo[2],
+        look.emission,
+    ]
 }
 
 fn shape_of(shape: &VisualShape) -> Shape {
@@ -240,13 +238,7 @@ impl SceneView {
         let mut changed = Vec::new();
         for (node, (&(id, _), parts)) in self.bodies.iter().zip(&mut self.looks).enumerate() {
             for (part, (visual, last)) in parts.iter_mut().enumerate() {
-                let look = state_look(world, id, *visual);
-                let key = [
-                    look.albedo[0],
-                    look.albedo[1],
-                    look.albedo[2],
-                    look.emission,
-                ];
+                let key = look_key(&state_look(world, id, *visual));
                 if key != *last {
                     *last = key;
                     changed.push([node as f32, part as f32, key[0], key[1], key[2], key[3]]);

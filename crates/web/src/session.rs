@@ -260,24 +260,20 @@ impl Running {
     /// One action step with the driver's latest command.
     fn step(&mut self) -> Result<(), WebError> {
         let action = self.action();
-        if self.recorder.is_none() {
-            let path = fresh_path(&self.session.record_dir, &self.file_stem())?;
-            let s = &self.session;
-            self.recorder = Some(Recorder::create(
-                &path,
-                &s.env,
-                &s.definition,
-                s.checkpoint_every,
-            )?);
-            self.recording = Some(path);
-        }
-        if let Some(recorder) = &mut self.recorder {
-            recorder.record_device(&self.session.env, &self.control)?;
-        }
+        let recorder = match self.recorder.take() {
+            Some(recorder) => recorder,
+            None => {
+                let path = fresh_path(&self.session.record_dir, &self.file_stem())?;
+                let s = &self.session;
+                let recorder = Recorder::create(&path, &s.env, &s.definition, s.checkpoint_every)?;
+                self.recording = Some(path);
+                recorder
+            }
+        };
+        let recorder = self.recorder.insert(recorder);
+        recorder.record_device(&self.session.env, &self.control)?;
         let step = self.session.env.step(&action)?;
-        if let Some(recorder) = &mut self.recorder {
-            recorder.record(&self.session.env, &action)?;
-        }
+        recorder.record(&self.session.env, &action)?;
         let world = self.session.env.world().ok_or(WebError::NoEpisode)?;
         if !self.view.matches(world) {
             self.describe();

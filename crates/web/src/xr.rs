@@ -85,13 +85,12 @@ impl XrInput {
     /// quaternion far from unit length, a trigger outside [0, 1], a stick outside [−1, 1].
     pub fn check(&self) -> Result<(), BadDevice> {
         check_pose("head", &self.head)?;
-        let sides = [("left", &self.left), ("right", &self.right)];
-        for (side, controller) in sides {
+        let controllers = [
+            (["left.pose", "left.trigger", "left.stick"], &self.left),
+            (["right.pose", "right.trigger", "right.stick"], &self.right),
+        ];
+        for ([pose, trigger, stick], controller) in controllers {
             let Some(c) = controller else { continue };
-            let [pose, trigger, stick] = match side {
-                "left" => ["left.pose", "left.trigger", "left.stick"],
-                _ => ["right.pose", "right.trigger", "right.stick"],
-            };
             check_pose(pose, &c.pose)?;
             check_range(trigger, &[c.trigger], 0.0, "a trigger value in [0, 1]")?;
             check_range(stick, &c.stick, -1.0, "a stick value in [-1, 1]")?;
@@ -149,6 +148,27 @@ fn basis() -> Rotation {
     ))
 }
 
+/// Where the robot's eye and hands are told to be now, body frame: what a step's action moves
+/// them from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Targets {
+    /// The eye.
+    pub eye: Pose,
+    /// The hands, left then right.
+    pub hands: [Pose; 2],
+}
+
+impl Targets {
+    /// The robot's targets now.
+    pub fn of(robot: &BehaviorRobot, world: &World) -> Targets {
+        let body = robot.body_pose(world);
+        Targets {
+            eye: body.inverse() * robot.eye_pose(world),
+            hands: Side::BOTH.map(|side| robot.hand_target(side)),
+        }
+    }
+}
+
 /// How device poses are carried into the robot's body frame: WebXR's axes turned into the
 /// body's, then the heading at the last recenter turned away and the head moved onto the eye.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -179,38 +199,7 @@ impl XrRig {
         let rotation = turn * quat(pose) * basis().inverse();
         Pose::from_parts(translation, rotation.normalize())
     }
-}
 
-fn position(pose: &XrPose) -> Vector {
-    Vector::new(pose[0], pose[1], pose[2])
-}
-
-fn quat(pose: &XrPose) -> Rotation {
-    Rotation::from_xyzw(pose[3], pose[4], pose[5], pose[6]).normalize()
-}
-
-/// Where the robot's eye and hands are told to be now, body frame, and its triggers: what a
-/// step's action moves from.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Targets {
-    /// The eye.
-    pub eye: Pose,
-    /// The hands, left then right.
-    pub hands: [Pose; 2],
-}
-
-impl Targets {
-    /// The robot's targets now.
-    pub fn of(robot: &BehaviorRobot, world: &World) -> Targets {
-        let body = robot.body_pose(world);
-        Targets {
-            eye: body.inverse() * robot.eye_pose(world),
-            hands: Side::BOTH.map(|side| robot.hand_target(side)),
-        }
-    }
-}
-
-impl XrRig {
     /// The action of one step that moves the robot towards `input` (see the module docs).
     pub fn action(&self, input: &XrInput, now: &Targets) -> [f32; ACTION_DIM] {
         let mut a = [0.0; ACTION_DIM];
@@ -232,6 +221,14 @@ impl XrRig {
         a[Action::BODY.start + 5] = -stick(input.right, 0);
         a
     }
+}
+
+fn position(pose: &XrPose) -> Vector {
+    Vector::new(pose[0], pose[1], pose[2])
+}
+
+fn quat(pose: &XrPose) -> Rotation {
+    Rotation::from_xyzw(pose[3], pose[4], pose[5], pose[6]).normalize()
 }
 
 /// The six rates (Δx, Δy, Δz, roll, pitch, yaw, each in [−1, 1]) that move `from` towards `to`

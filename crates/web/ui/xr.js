@@ -18,6 +18,9 @@ const BODY_TO_XR = new THREE.Matrix4().set(
   -1, 0, 0, 0,
   0, 0, 0, 1);
 
+// A device value kept in [lo, 1] (a gamepad may report NaN for an absent axis).
+const clamp = (v, lo) => Math.max(lo, Math.min(1, Number.isFinite(v) ? v : 0));
+
 const pose = (t) => [t.position.x, t.position.y, t.position.z,
   t.orientation.x, t.orientation.y, t.orientation.z, t.orientation.w];
 
@@ -75,7 +78,6 @@ export class Xr {
       const grip = frame.getPose(source.gripSpace, space);
       if (!grip) continue;
       const pad = source.gamepad;
-      const clamp = (v, lo) => Math.max(lo, Math.min(1, Number.isFinite(v) ? v : 0));
       report[side] = {
         pose: pose(grip.transform),
         trigger: clamp(pad?.buttons[TRIGGER]?.value ?? 0, 0),

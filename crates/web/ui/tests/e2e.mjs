@@ -1,63 +1,88 @@
-// The viewer end to end in a real browser: `behavior serve` started, the page opened in
-// Debian's headless Chromium (Playwright drives it through `executablePath`; browser downloads
-// do not work here), the home drawn, the robot driven with the keyboard, a hostile message
-// refused, the episode ended with Enter and its recording replayed bit for bit by
-// `behavior replay --verify`, and a closed tab's episode kept.
+// The viewer end to end in a real browser: `behavior serve` started on a small activity (an
+// apple on a kitchen table, `pick_up_apple.bddl`), the page opened in Debian's headless
+// Chromium (Playwright drives it through `executablePath`; browser downloads do not work here),
+// the home drawn, the robot driven with the keyboard to the apple, the apple grasped and lifted
+// with the keys (`pilot.mjs`), the checklist seen ticking, a hostile message refused, the
+// episode ended with Enter and its recording replayed bit for bit by `behavior replay
+// --verify`, and a closed tab's episode kept.
 //
 //   BEHAVIOR_BIN=target/release/behavior node crates/web/ui/tests/e2e.mjs [SCREENSHOT.png]
 import { BIN, launchBrowser, startServer } from './harness.mjs';
+import { Pilot } from './pilot.mjs';
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readdirSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join } from 'node:path';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
 import assert from 'node:assert/strict';
 
 const screenshot = process.argv[2];
 const demos = mkdtempSync(join(tmpdir(), 'behavior-e2e-'));
+const ACTIVITY = join(dirname(fileURLToPath(import.meta.url)), 'pick_up_apple.bddl');
+// Seed 8 stands the robot in reach of the apple's table, with nothing between.
+const SEED = 8;
+const APPLE = 'apple.n.01_1';
+const LIFTED = `(not (ontop ${APPLE} table.n.02_1))`;
 
 function log(...args) { console.log('e2e:', ...args); }
 
 const distance = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1]);
+const yaw = (p) => 2 * Math.atan2(p[5], p[6]);
+const turn = (from, to) => Math.abs(Math.atan2(Math.sin(yaw(to) - yaw(from)), Math.cos(yaw(to) - yaw(from))));
 
 async function main() {
-  const { server, address, stopped } = startServer(demos);
+  const { server, address, stopped } = startServer(demos,
+    { activity: ACTIVITY, seed: SEED, args: ['--no-clutter'] });
   const url = await address;
   log('server at', url);
   const browser = await launchBrowser();
   try {
-    const page = await browser.newPage({ viewport: { width: 1280, height: 720 } });
+    // A small view while driving: SwiftShader draws a 1280×720 frame in about 50 ms, which the
+    // key loop would wait for each time it looks.
+    const page = await browser.newPage({ viewport: { width: 480, height: 270 } });
     const pageErrors = [];
     page.on('pageerror', (e) => pageErrors.push(e.message));
     await page.goto(url);
     await page.waitForFunction(() => behavior.scene && behavior.frames > 2 && behavior.checklist,
       null, { timeout: 60_000 });
     const scene = await page.evaluate(() => ({
-      driving: behavior.driving, nodes: behavior.scene.nodes.length, robot: behavior.scene.robot[0],
-      literals: behavior.scene.literals, triangles: behavior.triangles(),
+      driving: behavior.driving, nodes: behavior.scene.nodes.length,
+      robot: behavior.scene.robot, literals: behavior.scene.literals, triangles: behavior.triangles(),
     }));
     log(`scene: ${scene.nodes} nodes, ${scene.triangles} triangles drawn, robot ${scene.robot}`);
     assert.equal(scene.driving, true);
     assert.ok(scene.triangles > 1000, `only ${scene.triangles} triangles drawn`);
-    const items = await page.locator('#checklist li').allTextContents();
-    assert.ok(items.length > 0 && items.every((t) => scene.literals.includes(t)), `checklist ${items}`);
-    log('checklist:', items.join(' '));
+    const checklist = () => page.evaluate(() => [...document.querySelectorAll('#checklist li')]
+      .map((li) => ({ text: li.textContent, holds: li.classList.contains('holds') })));
+    const items = await checklist();
+    log('checklist:', items.map((i) => `${i.text}${i.holds ? ' ✓' : ''}`).join(' '));
+    assert.ok(items.length > 0 && items.every((i) => scene.literals.includes(i.text)), `checklist ${items}`);
+    assert.deepEqual(items.find((i) => i.text === LIFTED), { text: LIFTED, holds: false });
 
-    // The keyboard drives: W ahead, then Q turns.
-    const where = () => page.evaluate((name) => behavior.position(name), scene.robot);
-    const before = await where();
-    await page.keyboard.down('KeyW');
-    await page.waitForTimeout(800);
-    await page.keyboard.up('KeyW');
-    await page.keyboard.down('KeyQ');
-    await page.waitForTimeout(500);
-    await page.keyboard.up('KeyQ');
-    await page.waitForTimeout(300);
-    const after = await where();
-    const yaw = (p) => 2 * Math.atan2(p[5], p[6]);
-    log(`robot moved ${distance(before, after).toFixed(2)} m, turned ${(yaw(after) - yaw(before)).toFixed(2)} rad`);
-    assert.ok(distance(before, after) > 0.3, 'W moves the robot ahead');
-    assert.ok(Math.abs(yaw(after) - yaw(before)) > 0.2, 'Q turns it');
+    // The keyboard drives: Q/E turn the body toward the apple, W walks to it, the hand keys
+    // carry the right hand onto it, Space grips, U lifts.
+    const [body, , right] = scene.robot;
+    const pilot = new Pilot(page, { body, hand: right, object: APPLE }, log);
+    const start = await pilot.look();
+    const faced = await pilot.face();
+    const turned = turn(start.body, faced.body);
+    log(`turned ${turned.toFixed(2)} rad`);
+    assert.ok(turned > 0.2, 'Q/E turn the robot');
+    await pilot.approach();
+    const onto = await pilot.handOnto();
+    log(`right hand moved ${distance(start.hand, onto.hand).toFixed(2)} m, rests on the apple`);
+    assert.ok(distance(start.hand, onto.hand) > 0.1, 'the hand keys move the hand');
+    const lifted = await pilot.gripAndLift();
+    const rise = lifted.object[2] - onto.object[2];
+    log(`lifted: the apple rose ${rise.toFixed(3)} m with the hand (${(lifted.hand[2] - onto.hand[2]).toFixed(3)} m)`);
+    assert.ok(rise > 0.15, `the apple rose only ${rise.toFixed(3)} m: not grasped`);
+    await page.waitForFunction((text) => [...document.querySelectorAll('#checklist li.holds')]
+      .some((li) => li.textContent === text), LIFTED, { timeout: 10_000 });
+    const ticked = await checklist();
+    log('checklist:', ticked.map((i) => `${i.text}${i.holds ? ' ✓' : ''}`).join(' '));
     if (screenshot) {
+      await page.setViewportSize({ width: 1280, height: 720 });
+      await page.waitForTimeout(500);
       await page.screenshot({ path: screenshot });
       log('screenshot', screenshot);
     }
@@ -72,8 +97,9 @@ async function main() {
     log('refused:', refusal);
     assert.match(refusal, /body\[0\]/);
 
-    // Enter ends the episode; its recording replays bit for bit.
+    // Enter ends the episode (the apple still held); its recording replays bit for bit.
     await page.keyboard.press('Enter');
+    await pilot.hold(new Set());
     await page.waitForFunction(() => behavior.ended.length > 0, null, { timeout: 10_000 });
     const ended = await page.evaluate(() => behavior.ended[0]);
     log(`ended (${ended.reason}) after ${ended.steps} steps: ${ended.recording}`);

@@ -8,11 +8,11 @@ import { resolve } from 'node:path';
 export const BIN = resolve(process.env.BEHAVIOR_BIN ?? 'target/release/behavior');
 const CHROMIUM = process.env.CHROMIUM ?? '/usr/bin/chromium';
 
-// `behavior serve ACTIVITY --seed 1` recording into `demos`. `address` resolves to the page's
-// URL once the server listens; `stopped` to its exit code and output.
-export function startServer(demos, activity = 'bringing_in_wood') {
-  const server = spawn(BIN, ['serve', activity, '--seed', '1', '--port', '0',
-    '--record-dir', demos], { stdio: ['ignore', 'pipe', 'inherit'] });
+// `behavior serve ACTIVITY --seed SEED [ARGS...]` recording into `demos`. `address` resolves
+// to the page's URL once the server listens; `stopped` to its exit code and output.
+export function startServer(demos, { activity = 'bringing_in_wood', seed = 1, args = [] } = {}) {
+  const server = spawn(BIN, ['serve', activity, '--seed', String(seed), '--port', '0',
+    '--record-dir', demos, ...args], { stdio: ['ignore', 'pipe', 'inherit'] });
   let out = '';
   const address = new Promise((ok, fail) => {
     server.stdout.on('data', (chunk) => {

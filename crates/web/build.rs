@@ -18,6 +18,7 @@ const OWN: &[(&str, &str)] = &[
     ("controls.js", "text/javascript; charset=utf-8"),
     ("panel.js", "text/javascript; charset=utf-8"),
     ("xr.js", "text/javascript; charset=utf-8"),
+    ("timeline.js", "text/javascript; charset=utf-8"),
     ("style.css", "text/css; charset=utf-8"),
 ];
 

@@ -75,6 +75,10 @@ enum Command {
     /// recorded.
     #[cfg(feature = "web")]
     Serve(serve::ServeArgs),
+    /// A recording played in the browser viewer with a timeline: play, pause, scrub; the
+    /// checklist, Q and the metrics at every step.
+    #[cfg(feature = "web")]
+    View(serve::ViewArgs),
     /// Benchmarks of the whole system.
     #[command(subcommand)]
     Bench(BenchCommand),
@@ -113,6 +117,8 @@ fn main() -> ExitCode {
         }
         #[cfg(feature = "web")]
         Command::Serve(args) => serve::serve(args, cli.data_dir.as_deref()),
+        #[cfg(feature = "web")]
+        Command::View(args) => serve::view(args, cli.data_dir.as_deref()),
         Command::Bench(BenchCommand::Env(args)) => bench_env::run(args, cli.data_dir.as_deref()),
         Command::Bench(BenchCommand::Plan(args)) => bench_plan::run(args, cli.data_dir.as_deref()),
     };

@@ -8,7 +8,7 @@
 //! episode for human data.
 
 use crate::prelude::Prelude;
-use crate::replay::{devices, resimulate};
+use crate::replay::resimulate;
 use anyhow::{Result, bail};
 use behavior_env::metrics::{EpisodeMetrics, HumanReference, HumanStatistics, Normalized};
 use behavior_env::record::read;
@@ -127,7 +127,7 @@ fn measure(file: &Path, prelude: &Prelude) -> Result<Measured> {
         file: file.to_path_buf(),
         activity: h.activity.clone(),
         instance: format!("{} seed {}", h.scene, h.seed),
-        teleoperated: devices(&recording.devices),
+        teleoperated: recording.device_steps(),
         metrics,
     })
 }

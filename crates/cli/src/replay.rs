@@ -4,6 +4,7 @@
 use crate::prelude::Prelude;
 use anyhow::{Context, Result};
 use behavior_bddl::Source;
+use behavior_env::EnvConfig;
 use behavior_env::record::{Recording, ReplayReport, read, replay_with};
 use behavior_planning::replay_edit;
 use serde::Serialize;
@@ -57,7 +58,7 @@ pub fn run(args: ReplayArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         identical: None,
         first_difference: None,
         damage: recording.damage.clone(),
-        devices: devices(&recording.devices),
+        devices: recording.device_steps(),
     };
     if args.verify {
         let prelude = Prelude::load(data_dir)?;
@@ -111,26 +112,23 @@ pub(crate) fn resimulate(
     recording: &Recording,
     prelude: &Prelude,
 ) -> Result<ReplayReport> {
+    let config = recorded_config(file, recording, prelude)?;
+    replay_with(recording, config, &mut replay_edit)
+        .with_context(|| format!("replaying {}", file.display()))
+}
+
+/// The environment a recording read from `file` was made in: its activity parsed from the
+/// definition it carries.
+pub(crate) fn recorded_config(
+    file: &Path,
+    recording: &Recording,
+    prelude: &Prelude,
+) -> Result<EnvConfig> {
     let h = &recording.header;
     let source = Source::new(&h.activity, &h.definition);
     let activity = prelude
         .load_activity(&source)
         .with_context(|| format!("the definition in {}", file.display()))?;
     let taxonomy = Arc::new(prelude.knowledge.taxonomy.clone());
-    let config = recording.config(Arc::new(activity), taxonomy)?;
-    replay_with(recording, config, &mut replay_edit)
-        .with_context(|| format!("replaying {}", file.display()))
-}
-
-/// How many steps each kind of device drove: a report is `{"<kind>": ...}`.
-pub(crate) fn devices(reports: &[(u32, serde_json::Value)]) -> BTreeMap<String, usize> {
-    let mut by = BTreeMap::new();
-    for (_, report) in reports {
-        let kind = match report.as_object().and_then(|o| o.keys().next()) {
-            Some(kind) => kind.clone(),
-            None => "unknown".to_string(),
-        };
-        *by.entry(kind).or_insert(0) += 1;
-    }
-    by
+    Ok(recording.config(Arc::new(activity), taxonomy)?)
 }

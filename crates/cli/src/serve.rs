@@ -1,18 +1,21 @@
-//! `behavior serve`: the browser viewer and teleoperation server (crate `behavior-web`).
+//! `behavior serve` and `behavior view`: the browser viewer, teleoperation server and recording
+//! player (crate `behavior-web`).
 
 use crate::episode::{Built, EpisodeArgs};
 use crate::prelude::Prelude;
+use crate::replay::recorded_config;
 use anyhow::{Context, Result, bail};
-use behavior_env::record::CHECKPOINT_EVERY;
-use behavior_web::{ServeOptions, Session, serve as run_server};
+use behavior_env::Env;
+use behavior_env::record::{CHECKPOINT_EVERY, read};
+use behavior_planning::replay_edit;
+use behavior_web::{Playback, ServeOptions, Session, serve as run_server, view as run_viewer};
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+/// Where the page is served.
 #[derive(clap::Args)]
-pub struct ServeArgs {
-    #[command(flatten)]
-    episode: EpisodeArgs,
+struct Listen {
     /// The port to listen on (0: any free port).
     #[arg(long, default_value_t = 8080)]
     port: u16,
@@ -20,6 +23,22 @@ pub struct ServeArgs {
     /// admits every network this machine is on (a headset on the same Wi-Fi, say).
     #[arg(long, default_value_t = IpAddr::V4(Ipv4Addr::LOCALHOST))]
     host: IpAddr,
+}
+
+impl Listen {
+    fn options(&self) -> ServeOptions {
+        ServeOptions {
+            addr: SocketAddr::new(self.host, self.port),
+        }
+    }
+}
+
+#[derive(clap::Args)]
+pub struct ServeArgs {
+    #[command(flatten)]
+    episode: EpisodeArgs,
+    #[command(flatten)]
+    listen: Listen,
     /// Where each episode's recording goes (one MCAP file per episode with steps).
     #[arg(long, default_value = "demos")]
     record_dir: PathBuf,
@@ -45,10 +64,7 @@ pub fn serve(args: ServeArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         record_dir: args.record_dir.clone(),
         checkpoint_every: CHECKPOINT_EVERY,
     };
-    let options = ServeOptions {
-        addr: SocketAddr::new(args.host, args.port),
-    };
-    let written = run_server(session, &options, |addr| {
+    let written = run_server(session, &args.listen.options(), |addr| {
         println!(
             "serving {} on http://{addr}/ (Ctrl-C to stop)",
             args.episode.activity
@@ -60,5 +76,47 @@ pub fn serve(args: ServeArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     for path in written {
         println!("  {}", path.display());
     }
+    Ok(ExitCode::SUCCESS)
+}
+
+#[derive(clap::Args)]
+pub struct ViewArgs {
+    /// A recording: `behavior serve`'s, `run --record`'s or `solve --record`'s.
+    file: PathBuf,
+    #[command(flatten)]
+    listen: Listen,
+}
+
+/// `behavior view`: the recording re-simulated and played in the page, with a timeline.
+pub fn view(args: ViewArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
+    let recording = read(&args.file)?;
+    if let Some(damage) = &recording.damage {
+        eprintln!("warning: {damage}; playing the steps before it");
+    }
+    let prelude = Prelude::load(data_dir)?;
+    let config = recorded_config(&args.file, &recording, &prelude)?;
+    let name = args.file.file_name().map_or_else(
+        || args.file.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    let h = &recording.header;
+    let summary = format!(
+        "{} in {} (seed {}), {} robot, {} steps",
+        h.activity,
+        h.scene,
+        h.seed,
+        h.robot,
+        recording.frames.len()
+    );
+    let playback = Playback {
+        env: Env::new(config),
+        recording,
+        editor: Box::new(replay_edit),
+        name,
+    };
+    run_viewer(playback, &args.listen.options(), |addr| {
+        println!("playing {summary} on http://{addr}/ (Ctrl-C to stop)");
+    })
+    .context("behavior view")?;
     Ok(ExitCode::SUCCESS)
 }

@@ -17,6 +17,9 @@
 //! command line: its caller builds the environment ([`Session`]) and says where to listen
 //! ([`ServeOptions`]).
 //!
+//! `behavior view` plays a recording in the same page instead (`playback.rs`): re-simulated
+//! as `behavior replay` does, with a timeline to play, pause and scrub.
+//!
 //! One client drives at a time (the first to connect without `?watch`); others watch. When the
 //! driver's tab closes, the episode ends, its recording is closed, and the next episode waits
 //! for the next driver.
@@ -25,6 +28,7 @@
 
 mod assets;
 mod checklist;
+mod playback;
 mod protocol;
 mod scene;
 mod server;
@@ -32,8 +36,9 @@ mod session;
 mod teleop;
 mod xr;
 
+pub use playback::{Playback, PlaybackEditor};
 pub use protocol::{ClientMessage, ProtocolError};
-pub use server::{ServeOptions, Server, WebError, serve};
+pub use server::{ServeOptions, Server, WebError, serve, view};
 pub use session::Session;
 pub use teleop::Drive;
 pub use xr::{BadDevice, STICK_DEAD_ZONE, Targets, XrController, XrInput, XrPose, XrRig};

@@ -1,7 +1,8 @@
 //! The websocket protocol between the page and the server.
 //!
 //! Client → server: JSON text messages, [`ClientMessage`]: `drive` (keyboard or gamepad rates),
-//! `xr` (a headset's poses, see `xr.rs`), `end`. Each is parsed and checked before it
+//! `xr` (a headset's poses, see `xr.rs`), `end` for a live episode; `play`, `pause`, `rate`,
+//! `seek` for a recording played back (`playback.rs`). Each is parsed and checked before it
 //! reaches the simulation; one that is not valid JSON, not a known message, too large, binary,
 //! or carries a bad number is answered with `{"type": "error", "message": …}` and changes
 //! nothing.
@@ -10,12 +11,14 @@
 //! episode (what to draw, the goal's literals), `status` after every step (Q, the metrics, which
 //! literals hold, recoloured surfaces), `ended` when an episode ends (its recording), `xr_rig`
 //! when an `xr` message recentered the rig (so that the page draws the world around the
-//! headset as the server maps the headset into the world), `error`.
+//! headset as the server maps the headset into the world), `timeline` when a recording is
+//! played (where playback stands, how much is re-simulated), `error`.
 //! Binary: one frame of poses per step — little-endian `u32` step, then for every node of the
 //! scene, in the scene's order, position (x, y, z) and rotation quaternion (x, y, z, w) as `f32`
 //! (a node whose object left the world has NaN position).
 
 use crate::checklist::ChecklistStatus;
+use crate::playback::{RATES, Timeline};
 use crate::scene::{Recolor, SceneDescription};
 use crate::teleop::{BadRate, Drive};
 use crate::xr::{BadDevice, XrInput, XrRig};
@@ -35,6 +38,20 @@ pub enum ClientMessage {
     Xr(XrInput),
     /// End the episode now: its recording is closed and a new episode waits (the driver only).
     End,
+    /// Play the recording from the step shown (from the start once at the end).
+    Play,
+    /// Stop playing.
+    Pause,
+    /// Play at this many times real time.
+    Rate {
+        /// In [0.05, 16].
+        rate: f32,
+    },
+    /// Show this step of the recording (0: the start), and stop playing.
+    Seek {
+        /// The step.
+        step: u32,
+    },
 }
 
 /// Why a client message was refused.
@@ -58,6 +75,25 @@ pub enum ProtocolError {
     /// A command that only the driving client may give.
     #[error("this client is watching; only the driving client may send `{0}`")]
     NotDriver(&'static str),
+    /// A command of the other kind of server (a live episode's, or a recording's).
+    #[error("`{message}` needs {needs}")]
+    NotHere {
+        /// The message's type.
+        message: &'static str,
+        /// What serves it.
+        needs: &'static str,
+    },
+    /// A playback rate outside [`RATES`].
+    #[error("a rate of {0}; it must lie in [{min}, {max}]", min = RATES.0, max = RATES.1)]
+    BadPlayRate(f32),
+    /// A step after the recording's last.
+    #[error("step {step} is past the recording's last step, {steps}")]
+    PastTheEnd {
+        /// The step asked for.
+        step: u32,
+        /// The recording's steps.
+        steps: u32,
+    },
 }
 
 impl ClientMessage {
@@ -70,7 +106,10 @@ impl ClientMessage {
         match &message {
             ClientMessage::Drive(drive) => drive.check()?,
             ClientMessage::Xr(input) => input.check()?,
-            ClientMessage::End => {}
+            ClientMessage::Rate { rate } if !(RATES.0..=RATES.1).contains(rate) => {
+                return Err(ProtocolError::BadPlayRate(*rate));
+            }
+            _ => {}
         }
         Ok(message)
     }
@@ -81,6 +120,10 @@ impl ClientMessage {
             ClientMessage::Drive(_) => "drive",
             ClientMessage::Xr(_) => "xr",
             ClientMessage::End => "end",
+            ClientMessage::Play => "play",
+            ClientMessage::Pause => "pause",
+            ClientMessage::Rate { .. } => "rate",
+            ClientMessage::Seek { .. } => "seek",
         }
     }
 }
@@ -102,6 +145,8 @@ pub(crate) enum ServerMessage<'a> {
     Ended(Ended),
     /// How headset poses are carried into the body frame from now on.
     XrRig(&'a XrRig),
+    /// Where a recording's playback stands.
+    Timeline(&'a Timeline),
     /// A message was refused.
     Error {
         /// Why.
@@ -186,6 +231,9 @@ mod tests {
         assert!(refused(r#"{"type":"drive","nose":[0]}"#).contains("unknown field"));
         let xr = r#"{"type":"xr","head":[0,1.6,0,0,0,0,1],"right":{"pose":[0,1,0,0,0,0,1],"trigger":2}}"#;
         assert!(refused(xr).contains("right.trigger[0]"), "{}", refused(xr));
+        assert!(refused(r#"{"type":"rate","rate":"NaN"}"#).contains("not a message"));
+        assert!(refused(r#"{"type":"rate","rate":100}"#).contains("[0.05, 16]"));
+        assert!(refused(r#"{"type":"seek","step":-1}"#).contains("not a message"));
         let huge = format!(r#"{{"type":"drive","pad":"{}"}}"#, "x".repeat(20_000));
         assert!(refused(&huge).contains("at most"));
     }

@@ -5,6 +5,7 @@
 //! never trusts a client with anything but the messages of `protocol.rs`.
 
 use crate::assets::asset;
+use crate::playback::{self, Playback};
 use crate::protocol::{ClientMessage, ProtocolError, error_text};
 use crate::session::{self, Outgoing, Session, ToSim};
 use axum::Router;
@@ -17,6 +18,7 @@ use serde::Deserialize;
 use std::future::Future;
 use std::net::SocketAddr;
 use std::path::PathBuf;
+use std::pin::Pin;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::mpsc;
 use std::sync::{Arc, Mutex};
@@ -118,6 +120,27 @@ impl Server {
         session: Session,
         shutdown: impl Future<Output = ()> + Send + 'static,
     ) -> Result<Vec<PathBuf>, WebError> {
+        self.run_with(move |inbox| session::run(session, inbox), shutdown)
+            .await
+    }
+
+    /// Plays the recording to every page that connects until `shutdown` completes.
+    pub async fn play(
+        self,
+        playback: Playback,
+        shutdown: impl Future<Output = ()> + Send + 'static,
+    ) -> Result<(), WebError> {
+        self.run_with(move |inbox| playback::run(playback, inbox), shutdown)
+            .await
+            .map(|_| ())
+    }
+
+    /// Serves the page with `simulate` running on a thread of its own, fed the pages' messages.
+    async fn run_with(
+        self,
+        simulate: impl FnOnce(mpsc::Receiver<ToSim>) -> Result<Vec<PathBuf>, WebError> + Send + 'static,
+        shutdown: impl Future<Output = ()> + Send + 'static,
+    ) -> Result<Vec<PathBuf>, WebError> {
         let (to_sim, inbox) = mpsc::channel();
         // The simulation failing (an episode that cannot reset, a disk full) stops the server
         // too, and `run` returns its error.
@@ -125,7 +148,7 @@ impl Server {
         let simulation = std::thread::Builder::new()
             .name("simulation".into())
             .spawn(move || {
-                let result = session::run(session, inbox);
+                let result = simulate(inbox);
                 let _ = failed.send(());
                 result
             })?;
@@ -163,6 +186,24 @@ pub fn serve(
     options: &ServeOptions,
     ready: impl FnOnce(SocketAddr),
 ) -> Result<Vec<PathBuf>, WebError> {
+    until_ctrl_c(options, ready, |server, stop| server.run(session, stop))
+}
+
+/// Plays `playback` to every page that connects until Ctrl-C, on a runtime of its own; `ready`
+/// is told the address once it listens.
+pub fn view(
+    playback: Playback,
+    options: &ServeOptions,
+    ready: impl FnOnce(SocketAddr),
+) -> Result<(), WebError> {
+    until_ctrl_c(options, ready, |server, stop| server.play(playback, stop))
+}
+
+fn until_ctrl_c<T, F: Future<Output = Result<T, WebError>>>(
+    options: &ServeOptions,
+    ready: impl FnOnce(SocketAddr),
+    run: impl FnOnce(Server, Pin<Box<dyn Future<Output = ()> + Send>>) -> F,
+) -> Result<T, WebError> {
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .worker_threads(2)
         .enable_all()
@@ -170,13 +211,13 @@ pub fn serve(
     runtime.block_on(async {
         let server = Server::bind(options).await?;
         ready(server.local_addr()?);
-        let ctrl_c = async {
+        let ctrl_c = Box::pin(async {
             // Without a Ctrl-C handler the server runs until it is killed.
             if tokio::signal::ctrl_c().await.is_err() {
                 std::future::pending::<()>().await;
             }
-        };
-        server.run(session, ctrl_c).await
+        });
+        run(server, ctrl_c).await
     })
 }
 

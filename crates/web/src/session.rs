@@ -211,6 +211,13 @@ impl Running {
             ClientMessage::Drive(drive) => self.control = Control::Keys(drive),
             ClientMessage::Xr(input) => self.xr(client, input),
             ClientMessage::End => self.end("ended by the driver")?,
+            other => {
+                let error = ProtocolError::NotHere {
+                    message: other.name(),
+                    needs: "`behavior view`: this server runs a live episode",
+                };
+                self.send_to(client, Outgoing::Text(error_text(&error)));
+            }
         }
         Ok(())
     }

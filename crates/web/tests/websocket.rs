@@ -4,57 +4,17 @@
 
 #[path = "../../env/tests/common/mod.rs"]
 mod common;
+mod support;
 
 use behavior_env::record::{read, replay};
 use behavior_web::{ServeOptions, Server, Session};
-use futures_util::{SinkExt, StreamExt};
-use serde_json::Value;
-use std::time::Duration;
-use tokio::net::TcpStream;
+use futures_util::SinkExt;
+use support::{next_frame, next_of, send};
+use tokio_tungstenite::connect_async;
 use tokio_tungstenite::tungstenite::Message;
 use tokio_tungstenite::tungstenite::client::IntoClientRequest;
-use tokio_tungstenite::{MaybeTlsStream, WebSocketStream, connect_async};
-
-type Socket = WebSocketStream<MaybeTlsStream<TcpStream>>;
 
 const ACTIVITY: &str = "bringing_in_wood";
-
-/// The next text message of `kind`, skipping others (frames, statuses).
-async fn next_of(socket: &mut Socket, kind: &str) -> Value {
-    let wait = async {
-        loop {
-            let message = socket.next().await.expect("open").expect("readable");
-            if let Message::Text(text) = message {
-                let value: Value = serde_json::from_str(&text).expect("JSON from the server");
-                if value["type"] == kind {
-                    return value;
-                }
-            }
-        }
-    };
-    tokio::time::timeout(Duration::from_secs(60), wait)
-        .await
-        .unwrap_or_else(|_| panic!("no `{kind}` message within 60 s"))
-}
-
-/// The next binary frame: its step and the pose of node `node`.
-async fn next_frame(socket: &mut Socket, node: usize) -> (u32, [f32; 3]) {
-    loop {
-        let message = socket.next().await.expect("open").expect("readable");
-        if let Message::Binary(bytes) = message {
-            let step = u32::from_le_bytes(bytes[..4].try_into().unwrap());
-            let at = 4 + node * 28;
-            let f = |k: usize| {
-                f32::from_le_bytes(bytes[at + 4 * k..at + 4 * k + 4].try_into().unwrap())
-            };
-            return (step, [f(0), f(1), f(2)]);
-        }
-    }
-}
-
-async fn send(socket: &mut Socket, text: &str) {
-    socket.send(Message::Text(text.into())).await.unwrap();
-}
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_driven_episode_is_refused_bad_input_moves_the_robot_and_replays_bit_for_bit() {

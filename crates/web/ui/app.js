@@ -5,6 +5,7 @@ import { View } from '/scene.js';
 import { Panel } from '/panel.js';
 import { Controls } from '/controls.js';
 import { Xr } from '/xr.js';
+import { Timeline } from '/timeline.js';
 
 const state = {
   connected: false, driving: false, scene: null, step: 0, q: 0, success: false,
@@ -25,6 +26,10 @@ const xr = new Xr(view, (message) => {
   if (state.driving && socket.readyState === WebSocket.OPEN) socket.send(JSON.stringify(message));
 }, state);
 xr.offer(document.getElementById('enter-vr'));
+// `behavior view`: the recording's timeline; any page may move it.
+const timeline = new Timeline((message) => {
+  if (socket.readyState === WebSocket.OPEN) socket.send(JSON.stringify(message));
+});
 state.send = (message) => socket.send(typeof message === 'string' ? message : JSON.stringify(message));
 // Where a node is in the world (z up), and how many triangles the last frame drew: for tests.
 state.position = (name) => {
@@ -54,13 +59,18 @@ socket.onmessage = (event) => {
       break;
     case 'status':
       Object.assign(state, { q: message.q, success: message.success, checklist: message.checklist,
-        metrics: message.metrics });
+        metrics: message.metrics, statusStep: message.step });
       view.recolor(message.recolor);
       panel.status(message);
       break;
     case 'ended':
       state.ended.push(message);
       panel.ended(message);
+      break;
+    case 'timeline':
+      if (!state.timeline) panel.connection('connected: playing a recording');
+      state.timeline = message;
+      timeline.update(message);
       break;
     case 'xr_rig':
       xr.rigged(message);

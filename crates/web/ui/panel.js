@@ -28,14 +28,17 @@ export class Panel {
     $('where').textContent =
       `${description.scene} · seed ${description.seed} · episode ${description.episode}`;
     this.literals = description.literals;
-    this.qs = [];
+    // Q by step; kept when the same episode's scene comes again (a recording scrubbed back).
+    const episode = `${description.activity} ${description.seed} ${description.episode}`;
+    if (episode !== this.episode) this.qs = [];
+    this.episode = episode;
     $('ended').hidden = true;
   }
 
   status(status) {
     $('q').textContent = status.q.toFixed(3);
     $('step').textContent = `step ${status.step}${status.success ? ' · done' : ''}`;
-    this.qs.push(status.q);
+    this.qs[status.step] = status.q;
     this.plot();
     const list = $('checklist');
     const items = status.checklist.option.map((i) => {

@@ -107,6 +107,22 @@ struct CheckpointMsg {
     digest: String,
 }
 
+impl Recording {
+    /// How many steps each kind of teleoperation device drove (`keys`, `xr`: a report is
+    /// `{"<kind>": …}`); empty for an agent's or a planner's episode.
+    pub fn device_steps(&self) -> std::collections::BTreeMap<String, usize> {
+        let mut by = std::collections::BTreeMap::new();
+        for (_, report) in &self.devices {
+            let kind = match report.as_object().and_then(|o| o.keys().next()) {
+                Some(kind) => kind.clone(),
+                None => "unknown".to_string(),
+            };
+            *by.entry(kind).or_insert(0) += 1;
+        }
+        by
+    }
+}
+
 /// Reads a recording. A file cut or damaged after its header reads up to the last whole
 /// chunk, with [`Recording::damage`] saying where it stopped.
 pub fn read(path: &Path) -> Result<Recording, ReadError> {

@@ -4,10 +4,11 @@
 // the home drawn, the robot driven with the keyboard to the apple, the apple grasped and lifted
 // with the keys (`pilot.mjs`), the checklist seen ticking, a hostile message refused, the
 // episode ended with Enter and its recording replayed bit for bit by `behavior replay
-// --verify`, and a closed tab's episode kept.
+// --verify`, a closed tab's episode kept; then the recording played by `behavior view` and
+// scrubbed on its timeline, the apple and the checklist as they were at each step.
 //
 //   BEHAVIOR_BIN=target/release/behavior node crates/web/ui/tests/e2e.mjs [SCREENSHOT.png]
-import { BIN, launchBrowser, startServer } from './harness.mjs';
+import { BIN, launchBrowser, startServer, startViewer } from './harness.mjs';
 import { Pilot } from './pilot.mjs';
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readdirSync } from 'node:fs';
@@ -30,7 +31,15 @@ const distance = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1]);
 const yaw = (p) => 2 * Math.atan2(p[5], p[6]);
 const turn = (from, to) => Math.abs(Math.atan2(Math.sin(yaw(to) - yaw(from)), Math.cos(yaw(to) - yaw(from))));
 
+let recorded;
+
 async function main() {
+  await drive();
+  await view();
+  log('passed');
+}
+
+async function drive() {
   const { server, address, stopped } = startServer(demos,
     { activity: ACTIVITY, seed: SEED, args: ['--no-clutter'] });
   const url = await address;
@@ -105,6 +114,7 @@ async function main() {
     log(`ended (${ended.reason}) after ${ended.steps} steps: ${ended.recording}`);
     assert.equal(ended.reason, 'ended by the driver');
     const replay = JSON.parse(execFileSync(BIN, ['replay', '--verify', '--json', ended.recording]));
+    recorded = { path: ended.recording, steps: ended.steps };
     log(`replay: ${replay.frames ?? replay.steps} steps, identical ${replay.identical}`);
     assert.equal(replay.identical, true);
     await page.waitForFunction(() => behavior.scene.episode === 2);
@@ -126,7 +136,40 @@ async function main() {
   const { code, out } = await stopped;
   assert.equal(code, 0, out);
   assert.match(out, /2 recording\(s\) written/);
-  log('passed');
+}
+
+// The first episode's recording in `behavior view`: re-simulated, scrubbed to the step the
+// apple was lifted at and back to the start.
+async function view() {
+  const { server, address } = startViewer(recorded.path);
+  const browser = await launchBrowser();
+  try {
+    const page = await browser.newPage({ viewport: { width: 640, height: 360 } });
+    await page.goto(await address);
+    await page.waitForFunction((steps) => behavior.timeline?.computed === steps, recorded.steps,
+      { timeout: 60_000 });
+    const timeline = await page.evaluate(() => behavior.timeline);
+    log(`view: ${timeline.steps} steps re-simulated, teleoperated ${JSON.stringify(timeline.devices)}, ` +
+      `differs from ${timeline.differs_from}`);
+    assert.equal(timeline.differs_from, null);
+    assert.equal(timeline.devices.keys, recorded.steps);
+    assert.match(await page.locator('#recording').textContent(), /teleoperated/);
+    const at = async (step) => {
+      await page.locator('#scrub').fill(String(step));
+      await page.waitForFunction((s) => behavior.step === s && behavior.statusStep === s, step);
+      return page.evaluate((apple) => ({ apple: behavior.position(apple),
+        ticked: [...document.querySelectorAll('#checklist li.holds')].map((li) => li.textContent) }), APPLE);
+    };
+    const end = await at(recorded.steps);
+    const start = await at(0);
+    log(`view: apple at z ${start.apple[2].toFixed(3)} at step 0 (${start.ticked.length} ticked), ` +
+      `${end.apple[2].toFixed(3)} at step ${recorded.steps} (ticked: ${end.ticked})`);
+    assert.ok(end.apple[2] - start.apple[2] > 0.15, 'the apple is up at the end');
+    assert.ok(end.ticked.includes(LIFTED) && !start.ticked.includes(LIFTED));
+  } finally {
+    await browser.close();
+    server.kill('SIGINT');
+  }
 }
 
 main().catch((error) => {

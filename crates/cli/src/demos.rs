@@ -115,17 +115,23 @@ fn export(args: &ExportArgs, prelude: &Prelude, dir: &Path) -> Result<(usize, us
         }
         let image = (!args.no_images).then_some(args.image_size);
         let (episode, shapes) = resimulate(file, &recording, prelude, image)?;
-        let robot = recording.header.robot.clone();
+        let robot = &recording.header.robot;
         let dataset = match &mut dataset {
             Some(d) => d,
-            None => dataset.insert(Dataset::create(dir, &robot, shapes)?),
+            None => dataset.insert(Dataset::create(dir, robot, shapes)?),
         };
-        dataset.add(&episode).with_context(|| {
-            format!(
-                "{}: its shapes differ from the dataset's first episode",
-                file.display()
-            )
-        })?;
+        if dataset.shapes() != shapes || dataset.robot() != robot {
+            bail!(
+                "{}: a {robot} robot's episode with {shapes:?}; the dataset's first episode is a \
+                 {} robot's with {:?} (one dataset, one robot and one set of shapes)",
+                file.display(),
+                dataset.robot(),
+                dataset.shapes()
+            );
+        }
+        dataset
+            .add(&episode)
+            .with_context(|| format!("{}", file.display()))?;
         teleoperated += usize::from(!recording.devices.is_empty());
         eprintln!("  {}: {} frames", file.display(), episode.action.len());
     }

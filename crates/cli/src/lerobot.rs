@@ -86,6 +86,16 @@ impl Dataset {
         })
     }
 
+    /// The robot every episode must be of.
+    pub fn robot(&self) -> &str {
+        &self.robot
+    }
+
+    /// The sizes every episode must have.
+    pub fn shapes(&self) -> Shapes {
+        self.shapes
+    }
+
     /// Writes one episode's Parquet file.
     pub fn add(&mut self, episode: &Episode) -> Result<()> {
         let n = episode.action.len();
@@ -215,76 +225,19 @@ impl Columns {
             fields.push(field);
             c.arrays.push(array);
         }
-        if shapes.image.is_some() {
+        if let Some(side) = shapes.image {
             if episode.images.len() != n {
                 bail!(
                     "episode {index}: {} images for {n} frames",
                     episode.images.len()
                 );
             }
-            let (field, array, image_stats) = images(&episode.images, shapes.image.unwrap_or(0))?;
+            let (field, array, image_stats) = images(&episode.images, side)?;
             c.stats.insert(IMAGE.into(), image_stats);
             fields.push(field);
             c.arrays.push(array);
         }
-        let time: Vec<f32> = (0..n).map(|k| k as f32 / FPS as f32).collect();
-        let done: Vec<bool> = (0..n).map(|k| k + 1 == n).collect();
-        let frame: Vec<i64> = (0..n as i64).collect();
-        let global: Vec<i64> = (0..n).map(|k| (first + k) as i64).collect();
-        let scalars: Vec<(&str, ArrayRef, DataType, Vec<f64>)> = vec![
-            (
-                "next.reward",
-                Arc::new(Float32Array::from(episode.reward.clone())),
-                DataType::Float32,
-                episode.reward.iter().map(|&v| f64::from(v)).collect(),
-            ),
-            (
-                "next.done",
-                Arc::new(BooleanArray::from(done.clone())),
-                DataType::Boolean,
-                done.iter().map(|&v| f64::from(u8::from(v))).collect(),
-            ),
-            (
-                "next.success",
-                Arc::new(BooleanArray::from(episode.success.clone())),
-                DataType::Boolean,
-                episode
-                    .success
-                    .iter()
-                    .map(|&v| f64::from(u8::from(v)))
-                    .collect(),
-            ),
-            (
-                "timestamp",
-                Arc::new(Float32Array::from(time.clone())),
-                DataType::Float32,
-                time.iter().map(|&v| f64::from(v)).collect(),
-            ),
-            (
-                "frame_index",
-                Arc::new(Int64Array::from(frame.clone())),
-                DataType::Int64,
-                frame.iter().map(|&v| v as f64).collect(),
-            ),
-            (
-                "episode_index",
-                Arc::new(Int64Array::from(vec![index as i64; n])),
-                DataType::Int64,
-                vec![index as f64; n],
-            ),
-            (
-                "index",
-                Arc::new(Int64Array::from(global.clone())),
-                DataType::Int64,
-                global.iter().map(|&v| v as f64).collect(),
-            ),
-            (
-                "task_index",
-                Arc::new(Int64Array::from(vec![task_index as i64; n])),
-                DataType::Int64,
-                vec![task_index as f64; n],
-            ),
-        ];
+        let scalars = scalar_columns(episode, index, task_index, first);
         for (name, array, dtype, values) in scalars {
             if array.len() != n {
                 bail!(
@@ -321,6 +274,74 @@ impl Columns {
             .with_context(|| format!("cannot write {}", path.display()))?;
         Ok(())
     }
+}
+
+/// One column per scalar feature: its name, values, type, and the values as numbers for the
+/// statistics.
+type Scalar = (&'static str, ArrayRef, DataType, Vec<f64>);
+
+/// The scalar columns of an episode's `n` frames: what followed each action, and where the
+/// frame lies (its time, its index in the episode and in the dataset).
+fn scalar_columns(episode: &Episode, index: usize, task_index: usize, first: usize) -> Vec<Scalar> {
+    let n = episode.action.len();
+    let time: Vec<f32> = (0..n).map(|k| k as f32 / FPS as f32).collect();
+    let done: Vec<bool> = (0..n).map(|k| k + 1 == n).collect();
+    let frame: Vec<i64> = (0..n as i64).collect();
+    let global: Vec<i64> = (0..n).map(|k| (first + k) as i64).collect();
+    vec![
+        (
+            "next.reward",
+            Arc::new(Float32Array::from(episode.reward.clone())),
+            DataType::Float32,
+            episode.reward.iter().map(|&v| f64::from(v)).collect(),
+        ),
+        (
+            "next.done",
+            Arc::new(BooleanArray::from(done.clone())),
+            DataType::Boolean,
+            done.iter().map(|&v| f64::from(u8::from(v))).collect(),
+        ),
+        (
+            "next.success",
+            Arc::new(BooleanArray::from(episode.success.clone())),
+            DataType::Boolean,
+            episode
+                .success
+                .iter()
+                .map(|&v| f64::from(u8::from(v)))
+                .collect(),
+        ),
+        (
+            "timestamp",
+            Arc::new(Float32Array::from(time.clone())),
+            DataType::Float32,
+            time.iter().map(|&v| f64::from(v)).collect(),
+        ),
+        (
+            "frame_index",
+            Arc::new(Int64Array::from(frame.clone())),
+            DataType::Int64,
+            frame.iter().map(|&v| v as f64).collect(),
+        ),
+        (
+            "episode_index",
+            Arc::new(Int64Array::from(vec![index as i64; n])),
+            DataType::Int64,
+            vec![index as f64; n],
+        ),
+        (
+            "index",
+            Arc::new(Int64Array::from(global.clone())),
+            DataType::Int64,
+            global.iter().map(|&v| v as f64).collect(),
+        ),
+        (
+            "task_index",
+            Arc::new(Int64Array::from(vec![task_index as i64; n])),
+            DataType::Int64,
+            vec![task_index as f64; n],
+        ),
+    ]
 }
 
 /// A column of fixed-length float32 vectors (Hugging Face `Sequence(float32, length=size)`).

@@ -159,7 +159,8 @@ fn episode(dir: &Path, k: usize) -> RecordBatch {
 }
 
 #[test]
-fn an_export_refuses_a_used_folder_and_a_cut_recording_and_leaves_them_as_they_were() {
+fn an_export_refuses_a_used_folder_a_cut_recording_and_mixed_robots_and_leaves_things_as_they_were()
+{
     let run = scratch("demos-refused.mcap");
     behavior_ok(&[
         "run",
@@ -204,6 +205,29 @@ fn an_export_refuses_a_used_folder_and_a_cut_recording_and_leaves_them_as_they_w
     let error = String::from_utf8_lossy(&output.stderr);
     assert!(
         error.contains("demos-cut.mcap") && error.contains("whole episodes"),
+        "{error}"
+    );
+    assert!(!fresh.exists(), "nothing is left of a failed export");
+
+    // One dataset holds one robot's episodes.
+    let fetch = scratch("demos-fetch.mcap");
+    let fetch_s = fetch.to_str().unwrap();
+    behavior_ok(&[
+        "run", "--robot", "fetch", "--agent", "idle", "--steps", "6", "--record", fetch_s,
+    ]);
+    let args = [
+        "demos",
+        "export",
+        "--lerobot",
+        fresh.to_str().unwrap(),
+        run.to_str().unwrap(),
+        fetch_s,
+    ];
+    let output = behavior(&args);
+    assert!(!output.status.success());
+    let error = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        error.contains("demos-fetch.mcap") && error.contains("one robot"),
         "{error}"
     );
     assert!(!fresh.exists(), "nothing is left of a failed export");

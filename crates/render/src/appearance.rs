@@ -22,12 +22,12 @@ const BURNT: [f32; 3] = [0.08, 0.06, 0.05];
 /// sRGB of frost.
 const FROST: [f32; 3] = [0.85, 0.92, 1.0];
 
-/// Dust particles: grey.
-pub(crate) const DUST: [u8; 3] = [150, 140, 125];
+/// Dust particles: grey (sRGB, as the cameras and the browser viewer draw them).
+pub const DUST: [u8; 3] = [150, 140, 125];
 /// Stain particles: a dark brown.
-pub(crate) const STAIN: [u8; 3] = [70, 45, 25];
+pub const STAIN: [u8; 3] = [70, 45, 25];
 /// Water drops: blue.
-pub(crate) const WATER: [u8; 3] = [60, 120, 220];
+pub const WATER: [u8; 3] = [60, 120, 220];
 
 /// What a shader needs of a surface: linear albedo, how strongly it glows, how shiny it is.
 /// Public so that other drawers of the world (the browser viewer) show states as cameras do.

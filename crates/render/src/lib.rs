@@ -37,7 +37,7 @@ mod pipeline;
 mod renderer;
 mod targets;
 
-pub use appearance::{Look, state_look};
+pub use appearance::{DUST, Look, STAIN, WATER, state_look};
 pub use camera::{Camera, EYE_FOV, EYE_SIZE, FAR, NEAR};
 pub use categories::{CategoryTable, DUST_CATEGORY, STAIN_CATEGORY, WATER_CATEGORY};
 pub use error::RenderError;

@@ -12,7 +12,7 @@
 
 use crate::checklist::{Checklist, ChecklistStatus};
 use crate::protocol::{ClientMessage, ProtocolError, ServerMessage, Status, error_text};
-use crate::scene::{Describe, Recolor, SceneView};
+use crate::scene::{Describe, Particles, Recolor, SceneView};
 use crate::server::WebError;
 use crate::session::{Outgoing, TICK, ToSim};
 use axum::body::Bytes;
@@ -60,6 +60,8 @@ struct Snapshot {
     checklist: ChecklistStatus,
     /// Surfaces whose colour changed at this step.
     recolor: Vec<Recolor>,
+    /// Its particles (an index into `Viewer::particles`).
+    particles: usize,
 }
 
 /// Where playback stands, as the page's timeline shows it.
@@ -89,6 +91,8 @@ struct Viewer {
     checklist: Checklist,
     view: SceneView,
     scenes: Vec<String>,
+    /// Each different set of particles, in the order they appeared.
+    particles: Vec<Particles>,
     snapshots: Vec<Snapshot>,
     /// Index of the next recorded frame to re-simulate.
     next: usize,
@@ -149,6 +153,7 @@ impl Viewer {
             checklist,
             view: SceneView::default(),
             scenes: Vec::new(),
+            particles: Vec::new(),
             snapshots: Vec::new(),
             next: 0,
             timeline,
@@ -196,8 +201,13 @@ impl Viewer {
         else {
             return;
         };
+        let particles = Particles::of(world);
+        if self.particles.last() != Some(&particles) {
+            self.particles.push(particles);
+        }
         let snapshot = Snapshot {
             scene: self.scenes.len() - 1,
+            particles: self.particles.len() - 1,
             frame: Bytes::from(self.view.frame(world, env.steps())),
             q: score.q,
             success: score.success,
@@ -391,6 +401,8 @@ impl Viewer {
             return Vec::new();
         };
         let mut out = Vec::new();
+        let before = from.and_then(|f| self.snapshots.get(f as usize));
+        let same_particles = before.is_some_and(|s| s.particles == target.particles);
         let forward = from
             .and_then(|f| self.snapshots.get(f as usize).map(|s| (f, s.scene)))
             .filter(|&(f, scene)| f <= to && scene == target.scene);
@@ -415,6 +427,7 @@ impl Viewer {
             metrics: &target.metrics,
             checklist: &target.checklist,
             recolor: &recolor,
+            particles: (!same_particles).then(|| &self.particles[target.particles]),
         });
         out.push(Outgoing::Binary(target.frame.clone()));
         out.push(Outgoing::Text(status.to_text()));

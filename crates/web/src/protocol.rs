@@ -19,7 +19,7 @@
 
 use crate::checklist::ChecklistStatus;
 use crate::playback::{RATES, Timeline};
-use crate::scene::{Recolor, SceneDescription};
+use crate::scene::{Particles, Recolor, SceneDescription};
 use crate::teleop::{BadRate, Drive};
 use crate::xr::{BadDevice, XrInput, XrRig};
 use behavior_env::EpisodeMetrics;
@@ -169,6 +169,9 @@ pub(crate) struct Status<'a> {
     pub(crate) checklist: &'a ChecklistStatus,
     /// Surfaces whose colour changed since the last status.
     pub(crate) recolor: &'a [Recolor],
+    /// Every particle, when they changed since the last status (absent otherwise).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(crate) particles: Option<&'a Particles>,
 }
 
 /// An episode that ended.

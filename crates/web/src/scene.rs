@@ -7,7 +7,8 @@
 //! Colours are linear sRGB as the cameras' appearance gives them for the object's states.
 
 use crate::checklist::Checklist;
-use behavior_render::{Look, state_look};
+use behavior_core::Predicate;
+use behavior_render::{DUST, Look, STAIN, WATER, state_look};
 use behavior_sim::{ObjectId, Primitive, Visual, VisualShape, World};
 use rapier3d::math::{Pose, Vector};
 use serde::Serialize;
@@ -77,6 +78,62 @@ pub(crate) struct SceneDescription {
     pub(crate) literals: Vec<String>,
     /// The action steps an episode may take.
     pub(crate) max_steps: u32,
+    /// The colours of dust, stains and water drops (linear sRGB, 0–1), as the cameras draw them.
+    pub(crate) particle_colors: ParticleColors,
+}
+
+/// What colour each kind of particle is drawn in.
+#[derive(Clone, Debug, Serialize)]
+pub(crate) struct ParticleColors {
+    dust: [f32; 3],
+    stain: [f32; 3],
+    water: [f32; 3],
+}
+
+impl Default for ParticleColors {
+    fn default() -> Self {
+        let linear = |c: [u8; 3]| c.map(|v| f32::from(v) / 255.0);
+        ParticleColors {
+            dust: linear(DUST),
+            stain: linear(STAIN),
+            water: linear(WATER),
+        }
+    }
+}
+
+/// Dust and stain particles on surfaces and water drops in flight, as world positions (x, y, z
+/// after one another): the states the cameras draw as particles rather than as colours.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub(crate) struct Particles {
+    dust: Vec<f32>,
+    stain: Vec<f32>,
+    water: Vec<f32>,
+}
+
+impl Particles {
+    /// The world's particles now.
+    pub(crate) fn of(world: &World) -> Particles {
+        let mut particles = Particles::default();
+        for (id, object) in world.core().objects() {
+            if !object.is_present() {
+                continue;
+            }
+            flatten(
+                &mut particles.dust,
+                &world.particle_positions(id, Predicate::Dusty),
+            );
+            flatten(
+                &mut particles.stain,
+                &world.particle_positions(id, Predicate::Stained),
+            );
+        }
+        flatten(&mut particles.water, &world.drops());
+        particles
+    }
+}
+
+fn flatten(out: &mut Vec<f32>, points: &[Vector]) {
+    out.extend(points.iter().flat_map(|p| [p.x, p.y, p.z]));
 }
 
 /// A part's new colour: `[node, part, r, g, b, emission]`.
@@ -279,6 +336,7 @@ impl Describe<'_> {
             nodes,
             literals: self.checklist.texts().to_vec(),
             max_steps: self.max_steps,
+            particle_colors: ParticleColors::default(),
         };
         (view, description)
     }

@@ -8,7 +8,7 @@
 
 use crate::checklist::Checklist;
 use crate::protocol::{ClientMessage, Ended, ProtocolError, ServerMessage, Status, error_text};
-use crate::scene::{Describe, SceneView};
+use crate::scene::{Describe, Particles, SceneView};
 use crate::server::WebError;
 use crate::teleop::Drive;
 use crate::xr::{Targets, XrInput, XrRig};
@@ -92,6 +92,9 @@ struct Running {
     seed: u64,
     control: Control,
     rig: Option<XrRig>,
+    /// The particles the pages were last sent, and whether a page needs them all again.
+    particles: Particles,
+    resend_particles: bool,
     clients: BTreeMap<u64, Client>,
     driver: Option<u64>,
     written: Vec<PathBuf>,
@@ -143,6 +146,8 @@ impl Running {
             seed,
             control: Control::Keys(Drive::default()),
             rig: None,
+            particles: Particles::default(),
+            resend_particles: true,
             clients: BTreeMap::new(),
             driver: None,
             written: Vec::new(),
@@ -197,6 +202,7 @@ impl Running {
         .all(|m| tx.try_send(m).is_ok());
         if sent {
             self.clients.insert(client, Client { tx });
+            self.resend_particles = true;
             self.send_frame();
         }
     }
@@ -306,6 +312,10 @@ impl Running {
         let frame = Bytes::from(self.view.frame(world, env.steps()));
         let recolor = self.view.recolor(world);
         let checklist = self.checklist.status(world, bindings);
+        let particles = Particles::of(world);
+        let changed = self.resend_particles || particles != self.particles;
+        self.resend_particles = false;
+        self.particles = particles;
         let status = ServerMessage::Status(Status {
             step: env.steps(),
             q: score.q,
@@ -313,6 +323,7 @@ impl Running {
             metrics: &metrics,
             checklist: &checklist,
             recolor: &recolor,
+            particles: changed.then_some(&self.particles),
         })
         .to_text();
         self.broadcast(Outgoing::Binary(frame));

@@ -159,3 +159,47 @@ async fn a_driven_episode_is_refused_bad_input_moves_the_robot_and_replays_bit_f
     assert!(report.identical, "{report:?}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn dust_and_stains_reach_the_page_as_the_cameras_draw_them() {
+    let dir = std::env::temp_dir().join(format!("behavior-web-dust-{}", std::process::id()));
+    let session = Session {
+        env: common::env("cleaning_barbecue_grill"),
+        definition: String::new(),
+        seed: 0,
+        record_dir: dir.clone(),
+        checkpoint_every: 10,
+    };
+    let options = ServeOptions {
+        addr: "127.0.0.1:0".parse().unwrap(),
+    };
+    let server = Server::bind(&options).await.unwrap();
+    let addr = server.local_addr().unwrap();
+    let (stop, stopped) = tokio::sync::oneshot::channel::<()>();
+    let running = tokio::spawn(server.run(session, async {
+        let _ = stopped.await;
+    }));
+    let (mut page, _) = connect_async(format!("ws://{addr}/ws?watch"))
+        .await
+        .unwrap();
+    let scene = next_of(&mut page, "scene").await;
+    let dust = &scene["particle_colors"]["dust"];
+    assert!(
+        (dust[0].as_f64().unwrap() - 150.0 / 255.0).abs() < 1e-6,
+        "{dust}"
+    );
+    let status = next_of(&mut page, "status").await;
+    let particles = &status["particles"];
+    for kind in ["dust", "stain"] {
+        let flat = particles[kind].as_array().unwrap();
+        assert!(
+            !flat.is_empty() && flat.len() % 3 == 0,
+            "{kind}: {}",
+            flat.len()
+        );
+    }
+    assert!(particles["water"].as_array().unwrap().is_empty());
+    stop.send(()).unwrap();
+    running.await.unwrap().unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+}

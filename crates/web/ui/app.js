@@ -61,6 +61,11 @@ socket.onmessage = (event) => {
       Object.assign(state, { q: message.q, success: message.success, checklist: message.checklist,
         metrics: message.metrics, statusStep: message.step });
       view.recolor(message.recolor);
+      if (message.particles) {
+        view.particles(message.particles);
+        state.particles = Object.fromEntries(
+          Object.entries(message.particles).map(([kind, flat]) => [kind, flat.length / 3]));
+      }
       panel.status(message);
       break;
     case 'ended':

@@ -27,6 +27,7 @@ export class View {
     this.orbit.enableDamping = true;
     this.nodes = [];
     this.robot = null;
+    this.dots = {};
     addEventListener('resize', () => this.resize());
     this.resize();
   }
@@ -51,6 +52,32 @@ export class View {
     const first = description.nodes.findIndex((n) => n.object === description.robot[0] && n.link === null);
     this.robot = first >= 0 ? this.nodes[first] : null;
     this.centred = false;
+    this.particleColors = description.particle_colors;
+  }
+
+  // Dust, stains and water drops where the server says they are now ({kind: [x, y, z, ...]}),
+  // drawn as the cameras draw them: small grey balls, flat dark discs, blue drops.
+  particles(particles) {
+    for (const [kind, flat] of Object.entries(particles)) {
+      const count = flat.length / 3;
+      let dots = this.dots[kind];
+      if (!dots || dots.capacity < count) {
+        if (dots) this.root.remove(dots.mesh);
+        const [r, g, b] = this.particleColors?.[kind] ?? [0.5, 0.5, 0.5];
+        const color = new THREE.Color().setRGB(r, g, b, THREE.LinearSRGBColorSpace);
+        const capacity = Math.max(64, 2 * count);
+        const mesh = new THREE.InstancedMesh(DOT_SHAPES[kind](), new THREE.MeshStandardMaterial({ color }), capacity);
+        mesh.frustumCulled = false;
+        this.root.add(mesh);
+        dots = this.dots[kind] = { mesh, capacity };
+      }
+      const matrix = new THREE.Matrix4();
+      for (let i = 0; i < count; i++) {
+        dots.mesh.setMatrixAt(i, matrix.makeTranslation(flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]));
+      }
+      dots.mesh.count = count;
+      dots.mesh.instanceMatrix.needsUpdate = true;
+    }
   }
 
   // One frame of poses; returns its step.
@@ -103,6 +130,14 @@ export class View {
     this.renderer.render(this.scene, this.camera);
   }
 }
+
+// The particles' shapes, sized as the renderer sizes them (crates/render/src/instances.rs), in
+// the z-up world frame.
+const DOT_SHAPES = {
+  dust: () => new THREE.SphereGeometry(0.008, 6, 4),
+  stain: () => new THREE.CylinderGeometry(0.02, 0.02, 0.004, 12).rotateX(Math.PI / 2),
+  water: () => new THREE.SphereGeometry(0.009, 6, 4),
+};
 
 function mesh(part) {
   const [r, g, b] = part.color;

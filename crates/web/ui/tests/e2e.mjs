@@ -60,6 +60,8 @@ async function drive() {
     }));
     log(`scene: ${scene.nodes} nodes, ${scene.triangles} triangles drawn, robot ${scene.robot}`);
     assert.equal(scene.driving, true);
+    // The page was sent the particles (none in this kitchen: nothing dusty, no water running).
+    assert.deepEqual(await page.evaluate(() => behavior.particles), { dust: 0, stain: 0, water: 0 });
     assert.ok(scene.triangles > 1000, `only ${scene.triangles} triangles drawn`);
     const checklist = () => page.evaluate(() => [...document.querySelectorAll('#checklist li')]
       .map((li) => ({ text: li.textContent, holds: li.classList.contains('holds') })));

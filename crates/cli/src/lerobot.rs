@@ -284,64 +284,47 @@ type Scalar = (&'static str, ArrayRef, DataType, Vec<f64>);
 /// frame lies (its time, its index in the episode and in the dataset).
 fn scalar_columns(episode: &Episode, index: usize, task_index: usize, first: usize) -> Vec<Scalar> {
     let n = episode.action.len();
-    let time: Vec<f32> = (0..n).map(|k| k as f32 / FPS as f32).collect();
-    let done: Vec<bool> = (0..n).map(|k| k + 1 == n).collect();
-    let frame: Vec<i64> = (0..n as i64).collect();
-    let global: Vec<i64> = (0..n).map(|k| (first + k) as i64).collect();
+    let indices = |from: usize| (from..from + n).map(|k| k as i64).collect();
     vec![
-        (
-            "next.reward",
-            Arc::new(Float32Array::from(episode.reward.clone())),
-            DataType::Float32,
-            episode.reward.iter().map(|&v| f64::from(v)).collect(),
-        ),
-        (
-            "next.done",
-            Arc::new(BooleanArray::from(done.clone())),
-            DataType::Boolean,
-            done.iter().map(|&v| f64::from(u8::from(v))).collect(),
-        ),
-        (
-            "next.success",
-            Arc::new(BooleanArray::from(episode.success.clone())),
-            DataType::Boolean,
-            episode
-                .success
-                .iter()
-                .map(|&v| f64::from(u8::from(v)))
-                .collect(),
-        ),
-        (
-            "timestamp",
-            Arc::new(Float32Array::from(time.clone())),
-            DataType::Float32,
-            time.iter().map(|&v| f64::from(v)).collect(),
-        ),
-        (
-            "frame_index",
-            Arc::new(Int64Array::from(frame.clone())),
-            DataType::Int64,
-            frame.iter().map(|&v| v as f64).collect(),
-        ),
-        (
-            "episode_index",
-            Arc::new(Int64Array::from(vec![index as i64; n])),
-            DataType::Int64,
-            vec![index as f64; n],
-        ),
-        (
-            "index",
-            Arc::new(Int64Array::from(global.clone())),
-            DataType::Int64,
-            global.iter().map(|&v| v as f64).collect(),
-        ),
-        (
-            "task_index",
-            Arc::new(Int64Array::from(vec![task_index as i64; n])),
-            DataType::Int64,
-            vec![task_index as f64; n],
-        ),
+        floats("next.reward", episode.reward.clone()),
+        booleans("next.done", (0..n).map(|k| k + 1 == n).collect()),
+        booleans("next.success", episode.success.clone()),
+        floats("timestamp", (0..n).map(|k| k as f32 / FPS as f32).collect()),
+        integers("frame_index", indices(0)),
+        integers("episode_index", vec![index as i64; n]),
+        integers("index", indices(first)),
+        integers("task_index", vec![task_index as i64; n]),
     ]
+}
+
+fn floats(name: &'static str, values: Vec<f32>) -> Scalar {
+    let numbers = values.iter().map(|&v| f64::from(v)).collect();
+    (
+        name,
+        Arc::new(Float32Array::from(values)),
+        DataType::Float32,
+        numbers,
+    )
+}
+
+fn booleans(name: &'static str, values: Vec<bool>) -> Scalar {
+    let numbers = values.iter().map(|&v| f64::from(u8::from(v))).collect();
+    (
+        name,
+        Arc::new(BooleanArray::from(values)),
+        DataType::Boolean,
+        numbers,
+    )
+}
+
+fn integers(name: &'static str, values: Vec<i64>) -> Scalar {
+    let numbers = values.iter().map(|&v| v as f64).collect();
+    (
+        name,
+        Arc::new(Int64Array::from(values)),
+        DataType::Int64,
+        numbers,
+    )
 }
 
 /// A column of fixed-length float32 vectors (Hugging Face `Sequence(float32, length=size)`).

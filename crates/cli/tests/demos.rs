@@ -16,6 +16,15 @@ use serde_json::Value;
 use std::path::Path;
 use support::{behavior, behavior_ok, scratch};
 
+/// Runs an export that must fail; returns what it said.
+fn refused_export(dir: &Path, recordings: &[&Path]) -> String {
+    let mut args = vec!["demos", "export", "--lerobot", dir.to_str().unwrap()];
+    args.extend(recordings.iter().map(|r| r.to_str().unwrap()));
+    let output = behavior(&args);
+    assert!(!output.status.success(), "{args:?} succeeded");
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
 fn json_file(path: &Path) -> Value {
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
 }
@@ -174,15 +183,7 @@ fn an_export_refuses_a_used_folder_a_cut_recording_and_mixed_robots_and_leaves_t
     let used = scratch("demos-used");
     std::fs::create_dir_all(&used).unwrap();
     std::fs::write(used.join("keep.txt"), "mine").unwrap();
-    let output = behavior(&[
-        "demos",
-        "export",
-        "--lerobot",
-        used.to_str().unwrap(),
-        run.to_str().unwrap(),
-    ]);
-    assert!(!output.status.success());
-    let error = String::from_utf8_lossy(&output.stderr);
+    let error = refused_export(&used, &[&run]);
     assert!(error.contains("not empty"), "{error}");
     assert_eq!(
         std::fs::read_to_string(used.join("keep.txt")).unwrap(),
@@ -194,15 +195,7 @@ fn an_export_refuses_a_used_folder_a_cut_recording_and_mixed_robots_and_leaves_t
     std::fs::write(&cut, &bytes[..bytes.len() / 2]).unwrap();
     let fresh = scratch("demos-never");
     let _ = std::fs::remove_dir_all(&fresh);
-    let output = behavior(&[
-        "demos",
-        "export",
-        "--lerobot",
-        fresh.to_str().unwrap(),
-        cut.to_str().unwrap(),
-    ]);
-    assert!(!output.status.success());
-    let error = String::from_utf8_lossy(&output.stderr);
+    let error = refused_export(&fresh, &[&cut]);
     assert!(
         error.contains("demos-cut.mcap") && error.contains("whole episodes"),
         "{error}"
@@ -215,17 +208,7 @@ fn an_export_refuses_a_used_folder_a_cut_recording_and_mixed_robots_and_leaves_t
     behavior_ok(&[
         "run", "--robot", "fetch", "--agent", "idle", "--steps", "6", "--record", fetch_s,
     ]);
-    let args = [
-        "demos",
-        "export",
-        "--lerobot",
-        fresh.to_str().unwrap(),
-        run.to_str().unwrap(),
-        fetch_s,
-    ];
-    let output = behavior(&args);
-    assert!(!output.status.success());
-    let error = String::from_utf8_lossy(&output.stderr);
+    let error = refused_export(&fresh, &[&run, &fetch]);
     assert!(
         error.contains("demos-fetch.mcap") && error.contains("one robot"),
         "{error}"

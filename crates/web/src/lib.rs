@@ -11,7 +11,8 @@
 //!
 //! It owns the HTTP server, the websocket protocol (`protocol.rs`: every client message is
 //! checked, and a bad one gets an error reply and changes nothing), the simulation thread that
-//! owns the episode (`session.rs`), what the page is sent about the world (`scene.rs`), the goal
+//! owns the episode (`session.rs`), the connected pages (`clients.rs`), what the page is sent
+//! about the world (`scene.rs`), the goal
 //! checklist (`checklist.rs`), keyboard and gamepad commands (`teleop.rs`) and headset poses
 //! (`xr.rs`). It knows nothing of the
 //! command line: its caller builds the environment ([`Session`]) and says where to listen
@@ -28,6 +29,7 @@
 
 mod assets;
 mod checklist;
+mod clients;
 mod playback;
 mod protocol;
 mod scene;

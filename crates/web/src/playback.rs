@@ -11,10 +11,11 @@
 //! follow. Nothing a page says can change the recording or the episode.
 
 use crate::checklist::{Checklist, ChecklistStatus};
+use crate::clients::{Clients, Outgoing};
 use crate::protocol::{ClientMessage, ProtocolError, ServerMessage, Status, error_text};
 use crate::scene::{Describe, Particles, Recolor, SceneView};
 use crate::server::WebError;
-use crate::session::{Outgoing, TICK, ToSim};
+use crate::session::{TICK, ToSim};
 use axum::body::Bytes;
 use behavior_env::record::{Recording, state_digest};
 use behavior_env::{Env, EpisodeMetrics, Start};
@@ -24,7 +25,6 @@ use std::path::PathBuf;
 use std::sync::mpsc::{Receiver, RecvTimeoutError};
 use std::time::{Duration, Instant};
 use tokio::sync::mpsc::Sender;
-use tokio::sync::mpsc::error::TrySendError;
 
 /// Does a recorded edit of the world again (a planner's primitive): see
 /// [`behavior_env::record::Editor`].
@@ -106,7 +106,7 @@ struct Viewer {
     /// The computed steps the pages were last told of, and ticks since.
     told_computed: u32,
     progress_ticks: u32,
-    clients: BTreeMap<u64, Sender<Outgoing>>,
+    clients: Clients,
 }
 
 /// Plays the recording until [`ToSim::Stop`] or until every sender is gone.
@@ -162,7 +162,7 @@ impl Viewer {
             shown: 0,
             told_computed: 0,
             progress_ticks: 0,
-            clients: BTreeMap::new(),
+            clients: Clients::default(),
         };
         viewer.describe();
         viewer.snapshot();
@@ -173,24 +173,13 @@ impl Viewer {
     /// A new scene description from the world as it is now.
     fn describe(&mut self) {
         let env = &self.playback.env;
-        let (Some(world), Some(robot), Some(start)) = (env.world(), env.robot(), env.start())
-        else {
-            return;
-        };
-        let (view, description) = Describe {
-            world,
-            robot: robot.objects(),
-            checklist: &self.checklist,
-            activity: env.config().activity.name.clone(),
-            scene: start.instance.scene.name.clone(),
-            seed: start.seed,
-            episode: 1,
-            max_steps: env.config().max_steps,
+        let seed = self.playback.recording.header.seed;
+        let described = Describe::episode(env, &self.checklist, seed, 1);
+        if let Some((view, description)) = described.map(Describe::build) {
+            self.view = view;
+            self.scenes
+                .push(ServerMessage::Scene(&description).to_text());
         }
-        .build();
-        self.view = view;
-        self.scenes
-            .push(ServerMessage::Scene(&description).to_text());
     }
 
     /// Keeps what the page needs at the step just simulated.
@@ -296,10 +285,9 @@ impl Viewer {
         // Progress alone is told twice a second (and when it is complete); anything else at once.
         self.progress_ticks += 1;
         let finished = self.next >= self.playback.recording.frames.len();
-        if before != self.timeline
-            || self.told_computed != self.timeline.computed
-                && (self.progress_ticks >= 15 || finished)
-        {
+        let progressed = self.told_computed != self.timeline.computed;
+        let progress_due = progressed && (self.progress_ticks >= 15 || finished);
+        if before != self.timeline || progress_due {
             self.tell_timeline();
         }
     }
@@ -308,16 +296,14 @@ impl Viewer {
         self.progress_ticks = 0;
         self.told_computed = self.timeline.computed;
         let text = ServerMessage::Timeline(&self.timeline).to_text();
-        self.broadcast(Outgoing::Text(text));
+        self.clients.broadcast(Outgoing::Text(text));
     }
 
     fn handle(&mut self, message: ToSim) {
         match message {
             ToSim::Joined { client, tx, .. } => self.join(client, tx),
             ToSim::Said { client, message } => self.said(client, message),
-            ToSim::Left { client } => {
-                self.clients.remove(&client);
-            }
+            ToSim::Left { client } => self.clients.leave(client),
             ToSim::Stop => {}
         }
     }
@@ -330,9 +316,7 @@ impl Viewer {
         messages.push(Outgoing::Text(
             ServerMessage::Timeline(&self.timeline).to_text(),
         ));
-        if messages.into_iter().all(|m| tx.try_send(m).is_ok()) {
-            self.clients.insert(client, tx);
-        }
+        self.clients.join(client, tx, messages);
     }
 
     fn said(&mut self, client: u64, message: ClientMessage) {
@@ -373,7 +357,9 @@ impl Viewer {
             }),
         };
         match refused {
-            Some(error) => self.send_to(client, Outgoing::Text(error_text(&error))),
+            Some(error) => self
+                .clients
+                .send_to(client, Outgoing::Text(error_text(&error))),
             None => {
                 self.show();
                 self.tell_timeline();
@@ -388,7 +374,7 @@ impl Viewer {
             return;
         }
         for message in self.messages(Some(self.shown), step) {
-            self.broadcast(message);
+            self.clients.broadcast(message);
         }
         self.shown = step;
     }
@@ -401,11 +387,9 @@ impl Viewer {
             return Vec::new();
         };
         let mut out = Vec::new();
-        let before = from.and_then(|f| self.snapshots.get(f as usize));
-        let same_particles = before.is_some_and(|s| s.particles == target.particles);
-        let forward = from
-            .and_then(|f| self.snapshots.get(f as usize).map(|s| (f, s.scene)))
-            .filter(|&(f, scene)| f <= to && scene == target.scene);
+        let before = from.and_then(|f| self.snapshots.get(f as usize).map(|s| (f, s)));
+        let same_particles = before.is_some_and(|(_, s)| s.particles == target.particles);
+        let forward = before.filter(|&(f, s)| f <= to && s.scene == target.scene);
         let first = match forward {
             Some((f, _)) => f as usize + 1,
             None => {
@@ -432,24 +416,5 @@ impl Viewer {
         out.push(Outgoing::Binary(target.frame.clone()));
         out.push(Outgoing::Text(status.to_text()));
         out
-    }
-
-    fn send_to(&mut self, client: u64, message: Outgoing) {
-        if let Some(tx) = self.clients.get(&client)
-            && let Err(TrySendError::Closed(_)) = tx.try_send(message)
-        {
-            self.clients.remove(&client);
-        }
-    }
-
-    /// Sends to every page; one too slow to take a text message is let go (see `session.rs`).
-    fn broadcast(&mut self, message: Outgoing) {
-        let must_arrive = matches!(message, Outgoing::Text(_));
-        self.clients
-            .retain(|_, tx| match tx.try_send(message.clone()) {
-                Ok(()) => true,
-                Err(TrySendError::Full(_)) => !must_arrive,
-                Err(TrySendError::Closed(_)) => false,
-            });
     }
 }

@@ -8,6 +8,7 @@
 
 use crate::checklist::Checklist;
 use behavior_core::Predicate;
+use behavior_env::Env;
 use behavior_render::{DUST, Look, STAIN, WATER, state_look};
 use behavior_sim::{ObjectId, Primitive, Visual, VisualShape, World};
 use rapier3d::math::{Pose, Vector};
@@ -318,7 +319,28 @@ pub(crate) struct Describe<'a> {
     pub(crate) max_steps: u32,
 }
 
-impl Describe<'_> {
+impl<'a> Describe<'a> {
+    /// What describes `env`'s episode as it is now: `seed` and `episode` as the page shows them
+    /// (none outside an episode).
+    pub(crate) fn episode(
+        env: &'a Env,
+        checklist: &'a Checklist,
+        seed: u64,
+        episode: u32,
+    ) -> Option<Describe<'a>> {
+        let (world, robot, start) = (env.world()?, env.robot()?, env.start()?);
+        Some(Describe {
+            world,
+            robot: robot.objects(),
+            checklist,
+            activity: env.config().activity.name.clone(),
+            scene: start.instance.scene.name.clone(),
+            seed,
+            episode,
+            max_steps: env.config().max_steps,
+        })
+    }
+
     pub(crate) fn build(self) -> (SceneView, SceneDescription) {
         let (view, nodes) = describe(self.world);
         let core = self.world.core();

@@ -5,9 +5,10 @@
 //! never trusts a client with anything but the messages of `protocol.rs`.
 
 use crate::assets::asset;
+use crate::clients::Outgoing;
 use crate::playback::{self, Playback};
 use crate::protocol::{ClientMessage, ProtocolError, error_text};
-use crate::session::{self, Outgoing, Session, ToSim};
+use crate::session::{self, Session, ToSim};
 use axum::Router;
 use axum::extract::ws::{Message, WebSocket, WebSocketUpgrade};
 use axum::extract::{Query, State};

@@ -7,6 +7,7 @@
 //! recording replays bit for bit.
 
 use crate::checklist::Checklist;
+use crate::clients::{Clients, Outgoing};
 use crate::protocol::{ClientMessage, Ended, ProtocolError, ServerMessage, Status, error_text};
 use crate::scene::{Describe, Particles, SceneView};
 use crate::server::WebError;
@@ -17,12 +18,10 @@ use behavior_env::Env;
 use behavior_env::record::Recorder;
 use behavior_robots::{ACTION_DIM, Robot, RobotKind};
 use serde::Serialize;
-use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::mpsc::{Receiver, RecvTimeoutError};
 use std::time::{Duration, Instant};
 use tokio::sync::mpsc::Sender;
-use tokio::sync::mpsc::error::TrySendError;
 
 /// One action step: 30 Hz, as the paper's agents and people act.
 pub(crate) const TICK: Duration = Duration::from_nanos(1_000_000_000 / 30);
@@ -41,13 +40,6 @@ pub struct Session {
     pub checkpoint_every: u32,
 }
 
-/// A message to a client: JSON text or a binary frame.
-#[derive(Clone, Debug)]
-pub(crate) enum Outgoing {
-    Text(String),
-    Binary(Bytes),
-}
-
 /// What the server's tasks tell the simulation thread.
 pub(crate) enum ToSim {
     Joined {
@@ -63,10 +55,6 @@ pub(crate) enum ToSim {
         client: u64,
     },
     Stop,
-}
-
-struct Client {
-    tx: Sender<Outgoing>,
 }
 
 /// The driver's latest command, applied to every step until the next; recorded with each step
@@ -95,7 +83,7 @@ struct Running {
     /// The particles the pages were last sent, and whether a page needs them all again.
     particles: Particles,
     resend_particles: bool,
-    clients: BTreeMap<u64, Client>,
+    clients: Clients,
     driver: Option<u64>,
     written: Vec<PathBuf>,
 }
@@ -148,7 +136,7 @@ impl Running {
             rig: None,
             particles: Particles::default(),
             resend_particles: true,
-            clients: BTreeMap::new(),
+            clients: Clients::default(),
             driver: None,
             written: Vec::new(),
         };
@@ -159,21 +147,10 @@ impl Running {
     /// Rebuilds what the pages draw from the world as it is now.
     fn describe(&mut self) {
         let env = &self.session.env;
-        let (Some(world), Some(robot), Some(start)) = (env.world(), env.robot(), env.start())
-        else {
+        let described = Describe::episode(env, &self.checklist, self.seed, self.episodes);
+        let Some((view, description)) = described.map(Describe::build) else {
             return;
         };
-        let (view, description) = Describe {
-            world,
-            robot: robot.objects(),
-            checklist: &self.checklist,
-            activity: env.config().activity.name.clone(),
-            scene: start.instance.scene.name.clone(),
-            seed: self.seed,
-            episode: self.episodes,
-            max_steps: env.config().max_steps,
-        }
-        .build();
         self.view = view;
         self.scene_text = ServerMessage::Scene(&description).to_text();
     }
@@ -194,14 +171,11 @@ impl Running {
             self.driver = Some(client);
         }
         let role = ServerMessage::Role { driving }.to_text();
-        let sent = [
+        let first = vec![
             Outgoing::Text(role),
             Outgoing::Text(self.scene_text.clone()),
-        ]
-        .into_iter()
-        .all(|m| tx.try_send(m).is_ok());
-        if sent {
-            self.clients.insert(client, Client { tx });
+        ];
+        if self.clients.join(client, tx, first) {
             self.resend_particles = true;
             self.send_frame();
         }
@@ -210,7 +184,8 @@ impl Running {
     fn said(&mut self, client: u64, message: ClientMessage) -> Result<(), WebError> {
         if self.driver != Some(client) {
             let error = ProtocolError::NotDriver(message.name());
-            self.send_to(client, Outgoing::Text(error_text(&error)));
+            self.clients
+                .send_to(client, Outgoing::Text(error_text(&error)));
             return Ok(());
         }
         match message {
@@ -222,7 +197,8 @@ impl Running {
                     message: other.name(),
                     needs: "`behavior view`: this server runs a live episode",
                 };
-                self.send_to(client, Outgoing::Text(error_text(&error)));
+                self.clients
+                    .send_to(client, Outgoing::Text(error_text(&error)));
             }
         }
         Ok(())
@@ -238,7 +214,7 @@ impl Running {
             let rig = XrRig::recentered(&input.head, &targets.eye);
             self.rig = Some(rig);
             let told = ServerMessage::XrRig(&rig).to_text();
-            self.send_to(client, Outgoing::Text(told));
+            self.clients.send_to(client, Outgoing::Text(told));
         }
         self.control = Control::Xr(input);
     }
@@ -262,7 +238,7 @@ impl Running {
     }
 
     fn left(&mut self, client: u64) -> Result<(), WebError> {
-        self.clients.remove(&client);
+        self.clients.leave(client);
         if self.driver == Some(client) {
             self.driver = None;
             self.end("driver left")?;
@@ -290,7 +266,8 @@ impl Running {
         let world = self.session.env.world().ok_or(WebError::NoEpisode)?;
         if !self.view.matches(world) {
             self.describe();
-            self.broadcast(Outgoing::Text(self.scene_text.clone()));
+            self.clients
+                .broadcast(Outgoing::Text(self.scene_text.clone()));
         }
         self.send_frame();
         if step.terminated {
@@ -326,8 +303,8 @@ impl Running {
             particles: changed.then_some(&self.particles),
         })
         .to_text();
-        self.broadcast(Outgoing::Binary(frame));
-        self.broadcast(Outgoing::Text(status));
+        self.clients.broadcast(Outgoing::Binary(frame));
+        self.clients.broadcast(Outgoing::Text(status));
     }
 
     /// Ends the episode (keeping its recording) and resets to the next seed's.
@@ -350,7 +327,7 @@ impl Running {
             recording: recording.map(|p| p.display().to_string()),
             reason,
         });
-        self.broadcast(Outgoing::Text(ended.to_text()));
+        self.clients.broadcast(Outgoing::Text(ended.to_text()));
         if reason == "server stopped" {
             return Ok(());
         }
@@ -359,7 +336,8 @@ impl Running {
         self.control = Control::Keys(Drive::default());
         self.session.env.reset(self.seed)?;
         self.describe();
-        self.broadcast(Outgoing::Text(self.scene_text.clone()));
+        self.clients
+            .broadcast(Outgoing::Text(self.scene_text.clone()));
         self.send_frame();
         Ok(())
     }
@@ -367,26 +345,6 @@ impl Running {
     fn file_stem(&self) -> String {
         let activity = &self.session.env.config().activity.name;
         format!("{activity}-seed{}", self.seed)
-    }
-
-    fn send_to(&mut self, client: u64, message: Outgoing) {
-        if let Some(c) = self.clients.get(&client)
-            && let Err(TrySendError::Closed(_)) = c.tx.try_send(message)
-        {
-            self.clients.remove(&client);
-        }
-    }
-
-    /// Sends to every client. A client too slow to take a frame skips it; one too slow to take
-    /// a text message (a scene, an ending) is let go, as its page would be wrong from then on.
-    fn broadcast(&mut self, message: Outgoing) {
-        let must_arrive = matches!(message, Outgoing::Text(_));
-        self.clients
-            .retain(|_, c| match c.tx.try_send(message.clone()) {
-                Ok(()) => true,
-                Err(TrySendError::Full(_)) => !must_arrive,
-                Err(TrySendError::Closed(_)) => false,
-            });
     }
 }
 

@@ -7,8 +7,8 @@ mod support;
 
 use behavior_env::record::{Recorder, read};
 use behavior_robots::ACTION_DIM;
-use behavior_web::{Playback, ServeOptions, Server};
-use support::{Socket, next_frame, next_of, send};
+use behavior_web::Playback;
+use support::{Socket, bind_local, next_frame, next_of, send, shutdown};
 use tokio_tungstenite::connect_async;
 
 const ACTIVITY: &str = "bringing_in_wood";
@@ -63,15 +63,9 @@ async fn a_recording_plays_every_step_where_the_episode_had_it_and_refuses_drivi
         editor: Box::new(|_, _| Err("no edits here".to_string())),
         name: "episode.mcap".to_string(),
     };
-    let options = ServeOptions {
-        addr: "127.0.0.1:0".parse().unwrap(),
-    };
-    let server = Server::bind(&options).await.unwrap();
-    let addr = server.local_addr().unwrap();
-    let (stop, stopped) = tokio::sync::oneshot::channel::<()>();
-    let running = tokio::spawn(server.play(playback, async {
-        let _ = stopped.await;
-    }));
+    let (server, addr) = bind_local().await;
+    let (stop, stopped) = shutdown();
+    let running = tokio::spawn(server.play(playback, stopped));
 
     let (mut page, _) = connect_async(format!("ws://{addr}/ws")).await.unwrap();
     assert_eq!(next_of(&mut page, "role").await["driving"], false);

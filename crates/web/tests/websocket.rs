@@ -7,9 +7,9 @@ mod common;
 mod support;
 
 use behavior_env::record::{read, replay};
-use behavior_web::{ServeOptions, Server, Session};
+use behavior_web::Session;
 use futures_util::SinkExt;
-use support::{next_frame, next_of, send};
+use support::{bind_local, next_frame, next_of, send, shutdown};
 use tokio_tungstenite::connect_async;
 use tokio_tungstenite::tungstenite::Message;
 use tokio_tungstenite::tungstenite::client::IntoClientRequest;
@@ -27,15 +27,9 @@ async fn a_driven_episode_is_refused_bad_input_moves_the_robot_and_replays_bit_f
         record_dir: dir.clone(),
         checkpoint_every: 10,
     };
-    let options = ServeOptions {
-        addr: "127.0.0.1:0".parse().unwrap(),
-    };
-    let server = Server::bind(&options).await.unwrap();
-    let addr = server.local_addr().unwrap();
-    let (stop, stopped) = tokio::sync::oneshot::channel::<()>();
-    let running = tokio::spawn(server.run(session, async {
-        let _ = stopped.await;
-    }));
+    let (server, addr) = bind_local().await;
+    let (stop, stopped) = shutdown();
+    let running = tokio::spawn(server.run(session, stopped));
 
     // A page of another site may not open the websocket (the browser says where it came from).
     let mut foreign = format!("ws://{addr}/ws").into_client_request().unwrap();
@@ -170,15 +164,9 @@ async fn dust_and_stains_reach_the_page_as_the_cameras_draw_them() {
         record_dir: dir.clone(),
         checkpoint_every: 10,
     };
-    let options = ServeOptions {
-        addr: "127.0.0.1:0".parse().unwrap(),
-    };
-    let server = Server::bind(&options).await.unwrap();
-    let addr = server.local_addr().unwrap();
-    let (stop, stopped) = tokio::sync::oneshot::channel::<()>();
-    let running = tokio::spawn(server.run(session, async {
-        let _ = stopped.await;
-    }));
+    let (server, addr) = bind_local().await;
+    let (stop, stopped) = shutdown();
+    let running = tokio::spawn(server.run(session, stopped));
     let (mut page, _) = connect_async(format!("ws://{addr}/ws?watch"))
         .await
         .unwrap();

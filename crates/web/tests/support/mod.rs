@@ -2,8 +2,11 @@
 
 #![allow(dead_code)]
 
+use behavior_web::{ServeOptions, Server};
 use futures_util::{SinkExt, StreamExt};
 use serde_json::Value;
+use std::future::Future;
+use std::net::SocketAddr;
 use std::time::Duration;
 use tokio::net::TcpStream;
 use tokio_tungstenite::tungstenite::Message;
@@ -46,4 +49,25 @@ pub async fn next_frame(socket: &mut Socket, node: usize) -> (u32, [f32; 3]) {
 
 pub async fn send(socket: &mut Socket, text: &str) {
     socket.send(Message::Text(text.into())).await.unwrap();
+}
+
+/// A server bound to a free port of 127.0.0.1, and its address.
+pub async fn bind_local() -> (Server, SocketAddr) {
+    let options = ServeOptions {
+        addr: "127.0.0.1:0".parse().unwrap(),
+    };
+    let server = Server::bind(&options).await.unwrap();
+    let addr = server.local_addr().unwrap();
+    (server, addr)
+}
+
+/// A shutdown signal for a server: send on the first to complete the second.
+pub fn shutdown() -> (
+    tokio::sync::oneshot::Sender<()>,
+    impl Future<Output = ()> + Send + 'static,
+) {
+    let (stop, stopped) = tokio::sync::oneshot::channel::<()>();
+    (stop, async {
+        let _ = stopped.await;
+    })
 }

@@ -182,14 +182,35 @@ impl ArmBody {
     /// The centre of what the gripper holds in the gripper's frame (of its box), if it holds
     /// anything.
     pub fn held_centre(&self) -> Option<Vector> {
-        let boxes = self.held_solids.iter().map(|s| s.aabb(Pose::IDENTITY));
-        boxes
-            .reduce(|(a, b), (c, d)| (a.min(c), b.max(d)))
+        self.held_box(Pose::IDENTITY)
             .map(|(lo, hi)| (lo + hi) / 2.0)
     }
 
-    /// How far the arm and what it holds reach out from the base's vertical axis at `c`, m,
-    /// over the floor: how big the base's footprint is as it drives with the arm there.
+    /// The arm's planning resolution, rad (m for the torso): [`ARM_RESOLUTION`], finer for what
+    /// reaches farther than [`HELD_REACH`] from the gripper, so that its far end moves no more
+    /// per step than that of something within it. A sheet of plywood held by its edge swung
+    /// its far end 5 cm between checked configurations, clipped the torso between two of
+    /// them, and its grasp broke; the arm also moves it slower, one step per configuration.
+    pub fn resolution(&self) -> f32 {
+        let reach = self.held_box(Pose::IDENTITY).map_or(0.0, |(lo, hi)| {
+            let far = lo.abs().max(hi.abs());
+            far.length()
+        });
+        ARM_RESOLUTION * (HELD_REACH / reach.max(HELD_REACH))
+    }
+
+    /// The box of what the gripper holds with the gripper at `gripper`: its lowest and highest
+    /// corners, if it holds anything.
+    pub fn held_box(&self, gripper: Pose) -> Option<(Vector, Vector)> {
+        let boxes = self.held_solids.iter().map(|s| s.aabb(gripper));
+        boxes.reduce(|(a, b), (c, d)| (a.min(c), b.max(d)))
+    }
+
+    /// How big the base's footprint is as it drives with the arm at `c`, m: how far the arm and
+    /// what it holds reach to either side of the base's heading, plus [`REACH_WEIGHT`] of how
+    /// far they reach out from its vertical axis. The width decides which doors it passes; the
+    /// reach, where it can turn. (By reach alone, a sheet of plywood carried flat, 0.94 m
+    /// across, ranked before the same sheet carried upright along the way, and passed no door.)
     pub fn spread(&self, c: &ArmConfig) -> f32 {
         let poses = c.joints(self.head).link_poses();
         let gripper = poses[FetchLink::Gripper as usize];
@@ -198,15 +219,16 @@ impl ArmBody {
             .zip(&poses[MOVING])
             .flat_map(|(solids, &at)| solids.iter().map(move |s| (s, at)));
         let held = self.held_solids.iter().map(|s| (s, gripper));
-        links
+        let (width, reach) = links
             .chain(held)
             .map(|(solid, at)| {
                 let (lo, hi) = solid.aabb(at);
                 let x = lo.x.abs().max(hi.x.abs());
                 let y = lo.y.abs().max(hi.y.abs());
-                x.hypot(y)
+                (y, x.hypot(y))
             })
-            .fold(0.0, f32::max)
+            .fold((0.0f32, 0.0f32), |(w, r), (y, d)| (w.max(y), r.max(d)));
+        width + REACH_WEIGHT * reach
     }
 
     /// Whether what the gripper holds touches a link other than the gripper, the links posed
@@ -230,6 +252,32 @@ impl ArmBody {
     }
 }
 
+/// The range of joint `k` (torso first): its limits, or for a continuous joint a turn either
+/// way from where it is at `start`.
+fn bounds(start: &ArmConfig, k: usize) -> [f32; 2] {
+    match joint(k).info().limits {
+        Some(limits) => limits,
+        None => [start.0[k] - PI, start.0[k] + PI],
+    }
+}
+
+/// A configuration drawn uniformly within the joints' ranges (see [`bounds`]): where an IK
+/// search may start over.
+pub fn any_config(start: &ArmConfig, rng: &mut SimRng) -> ArmConfig {
+    ArmConfig(std::array::from_fn(|k| {
+        let [lo, hi] = bounds(start, k);
+        uniform(rng, lo, hi)
+    }))
+}
+
+/// How far what the gripper holds may reach from it before the arm plans and moves in finer
+/// steps ([`ArmBody::resolution`]), m.
+pub const HELD_REACH: f32 = 0.3;
+
+/// How much the reach from the base's axis counts beside the width across its heading in
+/// [`ArmBody::spread`].
+pub const REACH_WEIGHT: f32 = 0.2;
+
 /// Fetch's arm moving among the world's objects, its base still.
 pub struct ArmSpace<'w> {
     world: &'w World,
@@ -242,15 +290,11 @@ impl<'w> ArmSpace<'w> {
     /// The space of the arm from `start`: joint limits, and half a turn either way of the
     /// start for a continuous joint.
     pub fn new(world: &'w World, body: ArmBody, start: &ArmConfig) -> ArmSpace<'w> {
-        let bounds = |k: usize| match joint(k).info().limits {
-            Some(limits) => limits,
-            None => [start.0[k] - PI, start.0[k] + PI],
-        };
         ArmSpace {
             world,
             body,
-            min: std::array::from_fn(|k| bounds(k)[0]),
-            max: std::array::from_fn(|k| bounds(k)[1]),
+            min: std::array::from_fn(|k| bounds(start, k)[0]),
+            max: std::array::from_fn(|k| bounds(start, k)[1]),
         }
     }
 
@@ -305,7 +349,7 @@ impl Space for ArmSpace<'_> {
     }
 
     fn resolution(&self) -> f32 {
-        ARM_RESOLUTION
+        self.body.resolution()
     }
 }
 

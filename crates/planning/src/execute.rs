@@ -226,6 +226,13 @@ pub fn replay_edit(env: &mut Env, edit: &serde_json::Value) -> Result<(), String
             .map_err(|e| e.to_string())?
             .map_err(|e| format!("the reset of hand {} failed on replay: {e}", recorded.hand));
     }
+    if recorded.primitive == physical::DOORS_OPENED {
+        return env
+            .edit(|edit| {
+                physical::open_doors_in(edit.world, edit.bindings);
+            })
+            .map_err(|e| e.to_string());
+    }
     let object = env
         .world()
         .and_then(|w| w.object_named(&recorded.object))

@@ -270,9 +270,42 @@ fn pointing(heading: f32, pitch: f32) -> Rotation {
 /// from where the arm is.
 fn solve(world: &World, fetch: &Fetch, body: &ArmBody, goal: &Pose) -> Option<ArmConfig> {
     let local = body.base.inverse() * *goal;
-    let joints = fetch.ik().solve(&fetch.joints(), &local).ok()?;
-    let c = ArmConfig::of(&joints).near(&ArmConfig::of(&fetch.joints()));
-    body.clear(world, &c).then_some(c)
+    let mut rng = seeded(goal_seed(&local));
+    free_ik(fetch, &local, &mut rng, |c| body.clear(world, c))
+}
+
+/// The first IK solution for `goal` (base frame) that `fits`: from where the arm is, then from
+/// [`IK_RESTARTS`] configurations drawn at random — the redundant arm reaches most goals in
+/// several ways, and the one nearest where it is may pass through the table (or, carrying a
+/// sheet of plywood upright, through the torso) where another does not.
+fn free_ik(
+    fetch: &Fetch,
+    goal: &Pose,
+    rng: &mut SimRng,
+    fits: impl Fn(&ArmConfig) -> bool,
+) -> Option<ArmConfig> {
+    let now = fetch.joints();
+    let here = ArmConfig::of(&now);
+    let starts = std::iter::once(now).chain((0..IK_RESTARTS).map(|_| {
+        let c = crate::arm::any_config(&here, rng);
+        c.joints(now.head)
+    }));
+    starts
+        .filter_map(|start| fetch.ik().solve(&start, goal).ok())
+        .map(|joints| ArmConfig::of(&joints).near(&here))
+        .find(|c| fits(c))
+}
+
+/// IK searches from random configurations after the one from where the arm is.
+const IK_RESTARTS: usize = 4;
+
+/// A seed from a goal's pose, so that the same goal draws the same restarts.
+fn goal_seed(goal: &Pose) -> u64 {
+    let t = goal.translation;
+    let r = goal.rotation;
+    [t.x, t.y, t.z, r.x, r.y, r.z, r.w]
+        .iter()
+        .fold(0u64, |h, v| h.rotate_left(9) ^ u64::from(v.to_bits()))
 }
 
 /// Fetch's arm folded over its base before it drives, as the real robot's `tuck_arm` folds
@@ -306,7 +339,7 @@ pub(crate) fn tuck(steps: &mut Stepper<'_>) -> Attempt<()> {
     } else {
         OPEN
     };
-    let goals = carry_goals(world, fetch, &body, tucked);
+    let goals = carry_goals(world, fetch, &body, tucked, &mut rng);
     let planned = goals
         .into_iter()
         .take(CARRY_TRIES)
@@ -319,8 +352,16 @@ pub(crate) fn tuck(steps: &mut Stepper<'_>) -> Attempt<()> {
 
 /// Where [`tuck`] may take the arm, each free, the smallest footprint first
 /// ([`ArmBody::spread`]): the folded arm with the torso where it is, then higher by [`LIFT`]
-/// steps; the gripper pointing down or ahead at each of [`CARRY`] (base frame), by IK.
-fn carry_goals(world: &World, fetch: &Fetch, body: &ArmBody, tucked: ArmConfig) -> Vec<ArmConfig> {
+/// steps; the gripper pointing down or ahead at each of [`CARRY`], or to one side with what it
+/// holds upright beside the base at each of [`CARRY_BESIDE`] (base frame), by IK
+/// ([`free_ik`]).
+fn carry_goals(
+    world: &World,
+    fetch: &Fetch,
+    body: &ArmBody,
+    tucked: ArmConfig,
+    rng: &mut SimRng,
+) -> Vec<ArmConfig> {
     let top = FetchJoint::TorsoLift
         .info()
         .limits
@@ -330,28 +371,42 @@ fn carry_goals(world: &World, fetch: &Fetch, body: &ArmBody, tucked: ArmConfig) 
         c.0[0] = (c.0[0] + LIFT * k as f32).min(top);
         c
     });
-    let now = ArmConfig::of(&fetch.joints());
-    let ways = [FRAC_PI_2, 0.0].into_iter().flat_map(|pitch| {
-        [0.0, FRAC_PI_2].map(|roll| pointing(0.0, pitch) * Rotation::from_rotation_x(roll))
-    });
-    let ways: Vec<Rotation> = ways.collect();
-    // What it holds is carried centred on the base's axis: held by its edge, a tile held
-    // with the gripper there stuck 0.37 m out to one side, and no door let it through.
-    let centre = body.held_centre();
-    let carried = CARRY.iter().flat_map(|&[x, z]| {
-        ways.iter().filter_map(move |&way| {
-            let mut at = Vector::new(x, 0.0, z);
-            if let Some(centre) = centre {
-                at.y -= (way * centre).y;
-            }
-            let goal = Pose::from_parts(at, way);
-            let joints = fetch.ik().solve(&fetch.joints(), &goal).ok()?;
-            Some(ArmConfig::of(&joints).near(&now))
-        })
-    });
+    let rolled = |heading: f32, pitch: f32, rolls: &[f32]| -> Vec<Rotation> {
+        rolls
+            .iter()
+            .map(|&roll| pointing(heading, pitch) * Rotation::from_rotation_x(roll))
+            .collect()
+    };
+    let down_or_ahead = [FRAC_PI_2, 0.0].map(|pitch| rolled(0.0, pitch, &[0.0, FRAC_PI_2]));
+    // Pointing to one side, what it holds turned four ways about that axis: a sheet of
+    // plywood taken by its edge is carried upright along the way, not flat across a door.
+    let quarters = [0.0, FRAC_PI_2, PI, -FRAC_PI_2];
+    let sideways = [FRAC_PI_2, -FRAC_PI_2].map(|heading| rolled(heading, 0.0, &quarters));
+    let ahead = down_or_ahead
+        .concat()
+        .into_iter()
+        .flat_map(|way| CARRY.iter().map(move |&at| (at, way)))
+        .map(|([x, z], way)| {
+            // What it holds is carried centred on the base's axis: held by its edge, a tile
+            // held with the gripper there stuck 0.37 m out to one side, and no door let it
+            // through.
+            let centre = body.held_centre().map_or(0.0, |c| (way * c).y);
+            Pose::from_parts(Vector::new(x, -centre, z), way)
+        });
+    let beside = sideways
+        .concat()
+        .into_iter()
+        .flat_map(|way| [-1.0, 1.0].map(|side| (way, side)))
+        .flat_map(|(way, side)| CARRY_BESIDE.iter().map(move |&at| (at, way, side)))
+        .filter_map(|(at, way, side)| beside_base(body, at, way, side));
+    let fits = |c: &ArmConfig| body.clear(world, c);
+    let carried: Vec<ArmConfig> = ahead
+        .chain(beside)
+        .filter_map(|goal| free_ik(fetch, &goal, rng, fits))
+        .collect();
     let mut goals: Vec<(f32, ArmConfig)> = Vec::new();
-    for c in folded.chain(carried) {
-        if !goals.iter().any(|(_, g)| *g == c) && body.clear(world, &c) {
+    for c in folded.filter(|c| fits(c)).chain(carried) {
+        if !goals.iter().any(|(_, g)| *g == c) {
             goals.push((body.spread(&c), c));
         }
     }
@@ -373,6 +428,42 @@ const CARRY: [[f32; 2]; 8] = [
     [0.45, 0.9],
     [0.55, 1.0],
 ];
+/// Where what the gripper holds is carried upright beside the base, pointing to one side: its
+/// centre's (ahead of the base's centre, height), m, in the base's frame. A sheet of plywood
+/// carried upright ahead of the base reached 1.5 m from its axis, and no turn in the corridor
+/// was free; beside it, 0.6 m.
+const CARRY_BESIDE: [[f32; 2]; 8] = [
+    [-0.2, 0.8],
+    [-0.1, 0.9],
+    [-0.2, 1.0],
+    [0.0, 0.8],
+    [0.0, 1.0],
+    [0.1, 0.9],
+    [0.2, 0.8],
+    [0.2, 1.0],
+];
+/// How far from the base's axis what is carried beside it starts, m: 1.5 cm clear of the
+/// base's 0.28 m radius (a doorway 0.75 m wide between an open leaf and the frame leaves the
+/// base and a sheet of plywood beside it a few centimetres).
+const BESIDE: f32 = behavior_robots::BASE_RADIUS + 0.015;
+
+/// The gripper's pose (base frame) pointing `way` that carries what it holds with its box's
+/// centre at `at` (ahead, height), on `side` (−1 right, 1 left) of the base, its near face
+/// [`BESIDE`] from the base's axis; `None` if it holds nothing.
+fn beside_base(body: &ArmBody, [x, z]: [f32; 2], way: Rotation, side: f32) -> Option<Pose> {
+    let (lo, hi) = body.held_box(Pose::from_rotation(way))?;
+    let centre = (lo + hi) / 2.0;
+    let y = if side < 0.0 {
+        -BESIDE - hi.y
+    } else {
+        BESIDE - lo.y
+    };
+    Some(Pose::from_parts(
+        Vector::new(x - centre.x, y, z - centre.z),
+        way,
+    ))
+}
+
 /// Carrying goals planned to before the arm stays as it is.
 const CARRY_TRIES: usize = 3;
 

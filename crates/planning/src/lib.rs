@@ -58,10 +58,12 @@ pub use manipulate::{
     GRASP_HEADINGS, GRASP_INSET, GRASP_JITTER, HAND_RESET, HandPath, PLACE_HEIGHT, PLACE_TRIES,
     RELEASE_STEPS, RISE, SETTLE_STEPS, approach_plan, grasp, hand_body, place,
 };
-pub use navigate::{CARRY_MARGIN, STAND_CLEARANCE, STAND_DISTANCES, STAND_HEADINGS, Standing};
+pub use navigate::{
+    CARRY_MARGIN, FETCH_CARRY_MARGIN, STAND_CLEARANCE, STAND_DISTANCES, STAND_HEADINGS, Standing,
+};
 pub use physical::{
-    BasePath, PHYSICAL_BUDGET, POSITION_TOLERANCE, STAND_PLANS, STEPS_PER_WAYPOINT, YAW_TOLERANCE,
-    base_config, drive_to,
+    BasePath, DOORS_OPENED, PHYSICAL_BUDGET, POSITION_TOLERANCE, STAND_PLANS, STEPS_PER_WAYPOINT,
+    YAW_TOLERANCE, base_config, drive_to,
 };
 pub use primitive::{Call, Failure, Primitive, WAIT_STEPS};
 pub use rrt::{Path, PlanParams, Planned, Space, plan};

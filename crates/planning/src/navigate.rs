@@ -1,11 +1,11 @@
 //! Where the base may stand to act on an object — NAVIGATE_TO's pose search (reference §5) — and
 //! the robot's footprint, read from the world.
 
-use crate::base::{BaseConfig, Footprint, stands_inside};
+use crate::base::{BaseConfig, Footprint, KEEL, stands_inside};
 use behavior_core::FLOOR_SYNSET;
 use behavior_core::rng::{SimRng, uniform};
 use behavior_robots::{Robot, Side};
-use behavior_sim::{BodyRef, ObjectId, Primitive, QueryFilter, World};
+use behavior_sim::{BodyRef, ObjectId, Primitive, QueryFilter, Solid, World};
 use rapier3d::math::{Pose, Vector};
 use std::f32::consts::PI;
 
@@ -15,10 +15,16 @@ pub const STAND_DISTANCES: [f32; 6] = [0.6, 0.8, 1.0, 1.2, 1.8, 2.4];
 pub const STAND_HEADINGS: usize = 20;
 /// How clear of everything the robot must stand, m.
 pub const STAND_CLEARANCE: f32 = 0.01;
-/// How much larger what the robot carries is planned than it is, m: held in a hand servoed
-/// toward its target, it trails and swings as the base drives (a tile caught a wall on a
-/// path planned past it with no room, and its grasp broke).
+/// How much larger what the BehaviorRobot carries is planned than it is, m: held in a hand
+/// servoed toward its target, it trails and swings as the base drives (a tile caught a wall on
+/// a path planned past it with no room, and its grasp broke).
 pub const CARRY_MARGIN: f32 = 0.03;
+/// How much larger what Fetch carries is planned than it is, m: its arm is moved joint by
+/// joint exactly and holds still while the base drives, so what it holds lags only by the
+/// grasp's give. With [`CARRY_MARGIN`], a sheet of plywood carried upright beside the base
+/// made a footprint 0.65 m wide for a doorway's 0.75 m, and no node of the 0.1 m lattice fell
+/// in the band where it passes.
+pub const FETCH_CARRY_MARGIN: f32 = 0.01;
 
 /// The robot as it stands now: its base's configuration on the floor, and the shapes of its
 /// parts (base, hands or arm) and of what it holds, in the base's floor frame, which move with
@@ -47,10 +53,14 @@ impl Standing {
         let mut shapes = shapes_in(world, robot.objects(), floor);
         // What the hands carry sways and trails as the base drives: it is kept clear by a margin.
         let carried = shapes_in(world, held, floor);
+        let margin = match robot {
+            Robot::Behavior(..) => CARRY_MARGIN,
+            Robot::Fetch(..) => FETCH_CARRY_MARGIN,
+        };
         shapes.extend(
             carried
                 .into_iter()
-                .map(|(shape, pose)| (inflated(&shape, CARRY_MARGIN), pose)),
+                .map(|(shape, pose)| (inflated(&shape, margin), pose)),
         );
         // A BehaviorRobot's body is stopped where a palm's target with straight fingers would
         // enter something fixed: that shape goes with the base too.
@@ -98,6 +108,27 @@ impl Standing {
                 .is_ok_and(|near| near.is_none())
         });
         clear && !stands_inside(world, &self.filter, c.x, c.y)
+    }
+
+    /// Whether a part of the robot low over the floor (Fetch's base, 3 cm up) would stand over
+    /// `object` at `c`: taken down to the floor, it overlaps it. A sheet of plywood 1.8 cm thick
+    /// passes under Fetch's base, which then stood over its edge; the gripper took the edge and
+    /// lifted it into the base, and the grasp broke.
+    pub fn over(&self, world: &World, c: &BaseConfig, object: ObjectId) -> bool {
+        let base = c.pose();
+        self.footprint.shapes.iter().any(|(shape, offset)| {
+            let at = base * *offset;
+            let Ok(solid) = Solid::new(shape, Pose::IDENTITY) else {
+                return false;
+            };
+            let (low, _) = solid.aabb(at);
+            if low.z > KEEL {
+                return false;
+            }
+            let down = Pose::from_translation(-Vector::Z * low.z.max(0.0)) * at;
+            let hits = world.core().overlaps(shape, down, &self.filter);
+            hits.is_ok_and(|hits| hits.iter().any(|b| b.object == object))
+        })
     }
 
     /// Whether the eye at `c` sees `object`'s centre before anything else.
@@ -166,7 +197,11 @@ impl Standing {
                 let psi = uniform(rng, -PI, PI);
                 let yaw = psi - PI;
                 let c = BaseConfig::new(centre.x + d * psi.cos(), centre.y + d * psi.sin(), yaw);
-                if indoors(world, &c) && self.clear_at(world, &c) && fits(&c) {
+                if indoors(world, &c)
+                    && self.clear_at(world, &c)
+                    && !self.over(world, &c, object)
+                    && fits(&c)
+                {
                     return Some(c);
                 }
             }

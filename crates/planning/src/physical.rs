@@ -13,11 +13,12 @@ use crate::navigate::Standing;
 use crate::primitive::{Call, Failure};
 use crate::rrt::{PlanParams, Space, plan, steps_along};
 use crate::symbolic::{call_seed, stand_for};
+use behavior_core::Predicate;
 use behavior_core::rng::{SimRng, seeded};
 use behavior_env::Env;
 use behavior_env::record::Recorder;
 use behavior_robots::{ACTION_SCALE, FetchAction, MAX_ANGULAR_SPEED, MAX_LINEAR_SPEED, Robot};
-use behavior_sim::{BodyRef, STEP_SECONDS, World};
+use behavior_sim::{BodyRef, ObjectId, STEP_SECONDS, World};
 use std::f32::consts::{FRAC_PI_2, PI};
 
 /// Steps the robot has to reach each configuration of the densified path before the
@@ -61,6 +62,7 @@ pub fn drive_to(
     recorder: Option<&mut Recorder>,
 ) -> Result<Result<BasePath, Failure>, RunError> {
     let mut steps = Stepper { env, recorder };
+    open_doors(&mut steps)?;
     // Best effort: a hand that cannot get there is planned around where it is.
     let _ = crate::manipulate::tuck(&mut steps)?;
     let _ = crate::fetch_manipulate::tuck(&mut steps)?;
@@ -92,6 +94,55 @@ pub fn drive_to(
         }
     }
     Ok(Ok(path))
+}
+
+/// The edit that opens the home's doors before a drive ([`open_doors`]), for replays to do
+/// again.
+pub const DOORS_OPENED: &str = "open_doors";
+
+/// The synset of the home's room doors.
+const DOOR_SYNSET: &str = "door.n.01";
+
+/// Opens every closed door of the home that the activity does not name all the way, between
+/// two steps, recorded as the edit [`DOORS_OPENED`]. The original's motion-primitive example
+/// does the same before it navigates ("until we can open doors": every door's Open set fully),
+/// and iGibson offers it as `should_open_all_interior_doors`. Base plans go through doors
+/// (their leaves are pushed aside, see [`plan_base`]), but what a robot carries beside or
+/// ahead of its base met a leaf as the base pushed it: a sheet of plywood's grasp broke on
+/// one. A door the activity names keeps its state: its openness may be the goal.
+fn open_doors(steps: &mut Stepper<'_>) -> Result<(), RunError> {
+    let opened = steps
+        .env
+        .edit(|edit| open_doors_in(edit.world, edit.bindings))?;
+    if opened {
+        steps.record_edit(&RecordedCall {
+            primitive: DOORS_OPENED.to_string(),
+            object: String::new(),
+            hand: 0,
+        })?;
+    }
+    Ok(())
+}
+
+/// [`open_doors`] in a world whose activity objects are `bindings`: whether any door was
+/// closed.
+pub(crate) fn open_doors_in(world: &mut World, bindings: &[Option<ObjectId>]) -> bool {
+    let closed: Vec<ObjectId> = world
+        .objects()
+        .filter(|(id, o)| o.category == DOOR_SYNSET && !bindings.contains(&Some(*id)))
+        .map(|(id, _)| id)
+        .filter(|&id| !world.state(id, Predicate::Open))
+        .collect();
+    for &door in &closed {
+        let limits: Vec<(usize, f32)> = (world.object(door).links.iter().enumerate())
+            .filter_map(|(i, link)| Some((i, link.joint.limits?[1])))
+            .collect();
+        for (link, open) in limits {
+            // The link exists and the position is finite: this cannot fail.
+            let _ = world.set_joint_position(door, link, open);
+        }
+    }
+    !closed.is_empty()
 }
 
 /// A physical primitive's outcome: the run's error outside, the primitive's failure inside.
@@ -331,10 +382,13 @@ fn straight(a: &BaseConfig, b: &BaseConfig, resolution: f32) -> Vec<BaseConfig> 
         .collect()
 }
 
-/// Every object's links: the leaves of doors, the doors, lids and drawers of furniture.
-fn hinged_parts(world: &behavior_sim::World) -> Vec<BodyRef> {
+/// Every object's links — the leaves of doors, the doors, lids and drawers of furniture — but
+/// those of the home's open doors ([`open_doors`]): a leaf open against the wall stands beside
+/// the way, and what the robot carries must pass it.
+fn hinged_parts(world: &World) -> Vec<BodyRef> {
     world
         .objects()
+        .filter(|(id, o)| !(o.category == DOOR_SYNSET && world.state(*id, Predicate::Open)))
         .flat_map(|(id, o)| (0..o.links.len()).map(move |l| BodyRef::link(id, l)))
         .collect()
 }

@@ -5,11 +5,12 @@
 #[path = "../../env/tests/common/mod.rs"]
 mod common;
 
+use behavior_core::Predicate;
 use behavior_env::Env;
-use behavior_env::record::{Recorder, read, replay};
+use behavior_env::record::{Recorder, read, replay_with};
 use behavior_planning::{
     BaseConfig, BaseSpace, Call, Mode, Primitive, Space, Standing, base_config, drive_to,
-    within_reach,
+    replay_edit, within_reach,
 };
 use behavior_robots::RobotKind;
 
@@ -83,9 +84,14 @@ fn a_recorded_drive_replays_bit_for_bit() {
         .unwrap();
     recorder.finish().unwrap();
     let recording = read(&path).unwrap();
-    assert!(recording.edits.is_empty(), "driving is actions, not edits");
+    // Driving is actions; the one edit opens the home's doors before the first drive.
+    let edits: Vec<&str> = (recording.edits.iter())
+        .map(|(_, e)| e["primitive"].as_str().unwrap_or_default())
+        .collect();
+    assert_eq!(edits, [behavior_planning::DOORS_OPENED]);
     assert_eq!(recording.frames.len() as u32, env.steps());
-    let report = replay(&recording, common::config("bringing_in_wood")).unwrap();
+    let config = common::config("bringing_in_wood");
+    let report = replay_with(&recording, config, &mut replay_edit).unwrap();
     assert!(report.identical && report.checkpoints > 1, "{report:?}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
@@ -180,4 +186,35 @@ fn a_primitive_that_uses_up_the_episode_ends_it_truncated_rather_than_failing() 
     assert!(outcome.result.is_err(), "the drive was cut short");
     assert!(outcome.step.truncated && !outcome.step.terminated);
     assert_eq!(outcome.step.info.steps, 10);
+}
+
+#[test]
+fn a_drive_opens_the_homes_doors_but_not_one_the_activity_names() {
+    // cleaning_carpets names a door of the corridor; the home's other doors start closed.
+    let mut env = episode("cleaning_carpets", RobotKind::Behavior, 0);
+    let named = object(&env, "door.n.01_1");
+    let doors = |env: &Env| -> Vec<(behavior_sim::ObjectId, bool)> {
+        let world = env.world().unwrap();
+        world
+            .objects()
+            .filter(|(_, o)| o.category == "door.n.01")
+            .map(|(id, _)| (id, world.state(id, Predicate::Open)))
+            .collect()
+    };
+    let before = doors(&env);
+    let home_closed = before.iter().filter(|&&(id, open)| id != named && !open);
+    assert!(home_closed.count() > 0, "{before:?}");
+    let call = Call {
+        primitive: Primitive::NavigateTo,
+        object: object(&env, "hand_towel.n.01_1"),
+        hand: 0,
+    };
+    let _ = drive_to(&mut env, &call, None).unwrap();
+    for ((id, was), (_, is)) in before.iter().zip(doors(&env)) {
+        if *id == named {
+            assert_eq!(is, *was, "the activity's door keeps its state");
+        } else {
+            assert!(is, "door {id:?} of the home is open after the drive");
+        }
+    }
 }

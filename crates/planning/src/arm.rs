@@ -188,9 +188,10 @@ impl ArmBody {
 
     /// The arm's planning resolution, rad (m for the torso): [`ARM_RESOLUTION`], finer for what
     /// reaches farther than [`HELD_REACH`] from the gripper, so that its far end moves no more
-    /// per step than that of something within it. A sheet of plywood held by its edge swung
-    /// its far end 5 cm between checked configurations, clipped the torso between two of
-    /// them, and its grasp broke; the arm also moves it slower, one step per configuration.
+    /// per step than that of something within it. At 0.05 rad a step, the far end of a sheet
+    /// of plywood held by its edge moves about 5 cm between checked configurations: the sheet
+    /// met the torso while the arm moved and its grasp broke. The arm also moves it slower,
+    /// one step per configuration.
     pub fn resolution(&self) -> f32 {
         let reach = self.held_box(Pose::IDENTITY).map_or(0.0, |(lo, hi)| {
             let far = lo.abs().max(hi.abs());

@@ -429,9 +429,9 @@ const CARRY: [[f32; 2]; 8] = [
     [0.55, 1.0],
 ];
 /// Where what the gripper holds is carried upright beside the base, pointing to one side: its
-/// centre's (ahead of the base's centre, height), m, in the base's frame. A sheet of plywood
-/// carried upright ahead of the base reached 1.5 m from its axis, and no turn in the corridor
-/// was free; beside it, 0.6 m.
+/// centre's (ahead of the base's centre, height), m, in the base's frame. Carried upright
+/// ahead of the base (the gripper 0.55–0.75 m out, the sheet 0.9 m beyond), a sheet of
+/// plywood found no base path through the corridor; beside it, the base passed.
 const CARRY_BESIDE: [[f32; 2]; 8] = [
     [-0.2, 0.8],
     [-0.1, 0.9],

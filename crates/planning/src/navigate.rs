@@ -21,9 +21,10 @@ pub const STAND_CLEARANCE: f32 = 0.01;
 pub const CARRY_MARGIN: f32 = 0.03;
 /// How much larger what Fetch carries is planned than it is, m: its arm is moved joint by
 /// joint exactly and holds still while the base drives, so what it holds lags only by the
-/// grasp's give. With [`CARRY_MARGIN`], a sheet of plywood carried upright beside the base
-/// made a footprint 0.65 m wide for a doorway's 0.75 m, and no node of the 0.1 m lattice fell
-/// in the band where it passes.
+/// grasp's give. With [`CARRY_MARGIN`], the base and a sheet of plywood carried upright
+/// beside it, about 0.65 m wide, found no way through a doorway 0.75 m wide on the 0.1 m
+/// lattice (whose nodes need about a cell of play to fall where it passes); 1 cm less on each
+/// side, it found one.
 pub const FETCH_CARRY_MARGIN: f32 = 0.01;
 
 /// The robot as it stands now: its base's configuration on the floor, and the shapes of its

@@ -15,14 +15,14 @@ use crate::clients::{Clients, Outgoing};
 use crate::protocol::{ClientMessage, ProtocolError, ServerMessage, Status, error_text};
 use crate::scene::{Describe, Particles, Recolor, SceneView};
 use crate::server::WebError;
-use crate::session::{TICK, ToSim};
+use crate::session::{Event, ToSim, ticks};
 use axum::body::Bytes;
 use behavior_env::record::{Recording, state_digest};
 use behavior_env::{Env, EpisodeMetrics, Start};
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
-use std::sync::mpsc::{Receiver, RecvTimeoutError};
+use std::sync::mpsc::Receiver;
 use std::time::{Duration, Instant};
 use tokio::sync::mpsc::Sender;
 
@@ -112,20 +112,14 @@ struct Viewer {
 /// Plays the recording until [`ToSim::Stop`] or until every sender is gone.
 pub(crate) fn run(playback: Playback, inbox: Receiver<ToSim>) -> Result<Vec<PathBuf>, WebError> {
     let mut viewer = Viewer::start(playback)?;
-    let mut next = Instant::now() + TICK;
-    loop {
-        let wait = next.saturating_duration_since(Instant::now());
-        match inbox.recv_timeout(wait) {
-            Ok(ToSim::Stop) | Err(RecvTimeoutError::Disconnected) => return Ok(Vec::new()),
-            Ok(message) => {
-                viewer.handle(message);
-                continue;
-            }
-            Err(RecvTimeoutError::Timeout) => {}
+    ticks(&inbox, |event| {
+        match event {
+            Event::Message(message) => viewer.handle(message),
+            Event::Tick => viewer.tick(),
         }
-        next = (next + TICK).max(Instant::now());
-        viewer.tick();
-    }
+        Ok(())
+    })?;
+    Ok(Vec::new())
 }
 
 impl Viewer {

@@ -92,25 +92,42 @@ struct Running {
 /// recordings written.
 pub(crate) fn run(session: Session, inbox: Receiver<ToSim>) -> Result<Vec<PathBuf>, WebError> {
     let mut running = Running::start(session)?;
+    ticks(&inbox, |event| match event {
+        Event::Message(message) => running.handle(message),
+        Event::Tick if running.driver.is_some() => running.step(),
+        Event::Tick => Ok(()),
+    })?;
+    running.end("server stopped")?;
+    Ok(running.written)
+}
+
+/// What a simulation thread is woken by: a message from a page, or the next [`TICK`].
+pub(crate) enum Event {
+    Message(ToSim),
+    Tick,
+}
+
+/// A simulation thread's clock (the live session's and the playback's): hands `on` each
+/// message as it arrives and a tick every [`TICK`], until [`ToSim::Stop`] or until every
+/// sender is gone; the first error `on` returns ends it.
+pub(crate) fn ticks(
+    inbox: &Receiver<ToSim>,
+    mut on: impl FnMut(Event) -> Result<(), WebError>,
+) -> Result<(), WebError> {
     let mut next = Instant::now() + TICK;
     loop {
         let wait = next.saturating_duration_since(Instant::now());
         match inbox.recv_timeout(wait) {
-            Ok(ToSim::Stop) | Err(RecvTimeoutError::Disconnected) => {
-                running.end("server stopped")?;
-                return Ok(running.written);
-            }
+            Ok(ToSim::Stop) | Err(RecvTimeoutError::Disconnected) => return Ok(()),
             Ok(message) => {
-                running.handle(message)?;
+                on(Event::Message(message))?;
                 continue;
             }
             Err(RecvTimeoutError::Timeout) => {}
         }
         // A late tick is not made up for: the simulation never runs ahead in bursts.
         next = (next + TICK).max(Instant::now());
-        if running.driver.is_some() {
-            running.step()?;
-        }
+        on(Event::Tick)?;
     }
 }
 

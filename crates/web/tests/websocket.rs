@@ -16,17 +16,23 @@ use tokio_tungstenite::tungstenite::client::IntoClientRequest;
 
 const ACTIVITY: &str = "bringing_in_wood";
 
+/// A live session of an official activity at `seed`, recording into `dir` with a checkpoint
+/// every 10 steps.
+fn session(activity: &str, seed: u64, dir: &std::path::Path) -> Session {
+    Session {
+        env: common::env(activity),
+        definition: String::new(),
+        seed,
+        record_dir: dir.to_path_buf(),
+        checkpoint_every: 10,
+    }
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_driven_episode_is_refused_bad_input_moves_the_robot_and_replays_bit_for_bit() {
     let dir = std::env::temp_dir().join(format!("behavior-web-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
-    let session = Session {
-        env: common::env(ACTIVITY),
-        definition: String::new(),
-        seed: 3,
-        record_dir: dir.clone(),
-        checkpoint_every: 10,
-    };
+    let session = session(ACTIVITY, 3, &dir);
     let (server, addr) = bind_local().await;
     let (stop, stopped) = shutdown();
     let running = tokio::spawn(server.run(session, stopped));
@@ -157,13 +163,7 @@ async fn a_driven_episode_is_refused_bad_input_moves_the_robot_and_replays_bit_f
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn dust_and_stains_reach_the_page_as_the_cameras_draw_them() {
     let dir = std::env::temp_dir().join(format!("behavior-web-dust-{}", std::process::id()));
-    let session = Session {
-        env: common::env("cleaning_barbecue_grill"),
-        definition: String::new(),
-        seed: 0,
-        record_dir: dir.clone(),
-        checkpoint_every: 10,
-    };
+    let session = session("cleaning_barbecue_grill", 0, &dir);
     let (server, addr) = bind_local().await;
     let (stop, stopped) = shutdown();
     let running = tokio::spawn(server.run(session, stopped));

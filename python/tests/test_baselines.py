@@ -24,6 +24,7 @@ def _check_run(config, result):
     assert steps == sorted(steps) and steps[-1] <= config.timesteps
     assert all(0.0 <= float(r["q"]) <= 1.0 for r in rows)
     assert (config.out / "model.zip").stat().st_size > 0
+    assert (config.out / "progress.csv").is_file(), "SB3 logs into the run's folder"
 
 
 @pytest.mark.parametrize("masked", [False, True])

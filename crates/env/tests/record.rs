@@ -8,10 +8,11 @@ use behavior_env::record::{Recorder, read, replay, resume, state_digest};
 use behavior_env::{Agent, Env};
 use std::path::PathBuf;
 
-fn temp(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("behavior-env-test-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
+/// A path named `name` in a scratch folder of its own, removed when the folder is dropped.
+fn temp(name: &str) -> (tempfile::TempDir, PathBuf) {
+    let dir = tempfile::Builder::new().prefix("behavior-env-test-").tempdir().unwrap();
+    let path = dir.path().join(name);
+    (dir, path)
 }
 
 /// Records `steps` steps of a random agent; returns the environment at the end.
@@ -42,7 +43,7 @@ fn record_with(
 
 #[test]
 fn a_recorded_episode_replays_bit_for_bit() {
-    let path = temp("whole.mcap");
+    let (_path_dir, path) = temp("whole.mcap");
     let env = record(&path, 90, 30);
     let recording = read(&path).unwrap();
     assert_eq!(recording.damage, None);
@@ -61,7 +62,7 @@ fn a_recorded_episode_replays_bit_for_bit() {
 
 #[test]
 fn a_fetch_episode_replays_bit_for_bit() {
-    let path = temp("fetch.mcap");
+    let (_path_dir, path) = temp("fetch.mcap");
     let mut config = common::config("re-shelving_library_books");
     config.robot = behavior_robots::RobotKind::Fetch;
     record_with(config, &path, 60, 20);
@@ -80,7 +81,7 @@ fn a_fetch_episode_replays_bit_for_bit() {
 
 #[test]
 fn a_replay_notices_a_different_action() {
-    let path = temp("changed.mcap");
+    let (_path_dir, path) = temp("changed.mcap");
     record(&path, 40, 20);
     let mut recording = read(&path).unwrap();
     recording.frames[25].action[0] = -recording.frames[25].action[0] + 0.5;
@@ -94,10 +95,10 @@ fn a_replay_notices_a_different_action() {
 
 #[test]
 fn a_cut_recording_replays_up_to_the_cut_and_says_where() {
-    let path = temp("cut.mcap");
+    let (_path_dir, path) = temp("cut.mcap");
     record(&path, 120, 10);
     let bytes = std::fs::read(&path).unwrap();
-    let cut = temp("cut_short.mcap");
+    let (_cut_dir, cut) = temp("cut_short.mcap");
     std::fs::write(&cut, &bytes[..bytes.len() * 6 / 10]).unwrap();
     let recording = read(&cut).unwrap();
     let damage = recording.damage.clone().expect("the cut is reported");
@@ -113,18 +114,18 @@ fn a_cut_recording_replays_up_to_the_cut_and_says_where() {
 
 #[test]
 fn files_that_are_not_recordings_are_refused_with_a_reason() {
-    let junk = temp("junk.mcap");
+    let (_junk_dir, junk) = temp("junk.mcap");
     std::fs::write(&junk, b"not an mcap file at all").unwrap();
     let err = read(&junk).unwrap_err().to_string();
     assert!(err.contains("junk.mcap"), "{err}");
-    let path = temp("header_only.mcap");
+    let (_path_dir, path) = temp("header_only.mcap");
     record(&path, 5, 10);
     let bytes = std::fs::read(&path).unwrap();
-    let cut = temp("too_short.mcap");
+    let (_cut_dir, cut) = temp("too_short.mcap");
     std::fs::write(&cut, &bytes[..40]).unwrap();
     let err = read(&cut).unwrap_err().to_string();
     assert!(err.contains("header"), "{err}");
-    assert!(read(&temp("missing.mcap")).is_err());
+    assert!(read(&temp("missing.mcap").1).is_err());
 }
 
 #[test]
@@ -157,7 +158,7 @@ fn an_episode_resumed_from_a_checkpoint_continues_identically() {
 
 #[test]
 fn a_recording_resumed_at_a_checkpoint_continues_as_recorded() {
-    let path = temp("resume.mcap");
+    let (_path_dir, path) = temp("resume.mcap");
     let env = record(&path, 60, 20);
     let mut recording = read(&path).unwrap();
     assert_eq!(

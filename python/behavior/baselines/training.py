@@ -28,6 +28,7 @@ import numpy as np
 import torch
 from gymnasium.wrappers import TimeLimit
 from stable_baselines3.common.callbacks import BaseCallback
+from stable_baselines3.common.logger import configure
 from stable_baselines3.common.monitor import Monitor
 from stable_baselines3.common.vec_env import DummyVecEnv
 
@@ -172,6 +173,10 @@ def write_run(config: TrainConfig, model, curve: QCurve, wall_s: float, algorith
 def learn(model, config: TrainConfig, algorithm: str) -> dict:
     """Trains `model` for the run's timesteps, recording the curve, then saves and evaluates."""
     curve = QCurve()
+    # SB3's own training log (losses, rates) as progress.csv beside the curve; left to itself,
+    # SB3 makes an empty folder in the system's temporary directory for every run.
+    Path(config.out).mkdir(parents=True, exist_ok=True)
+    model.set_logger(configure(str(config.out), ["csv"]))
     start = time.perf_counter()
     model.learn(total_timesteps=config.timesteps, callback=curve)
     return write_run(config, model, curve, time.perf_counter() - start, algorithm)

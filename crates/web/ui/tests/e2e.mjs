@@ -11,7 +11,7 @@
 import { BIN, launchBrowser, startServer, startViewer } from './harness.mjs';
 import { Pilot } from './pilot.mjs';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readdirSync } from 'node:fs';
+import { mkdtempSync, readdirSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -174,7 +174,9 @@ async function view() {
   }
 }
 
-main().catch((error) => {
+// The recordings are removed when the test passes and kept for a look when it fails.
+main().then(() => rmSync(demos, { recursive: true, force: true }), (error) => {
   console.error(error);
+  console.error('recordings kept in', demos);
   process.exit(1);
 });

@@ -7,7 +7,7 @@
 //   BEHAVIOR_BIN=target/release/behavior node crates/web/ui/tests/xr.mjs
 import { BIN, launchBrowser, startServer } from './harness.mjs';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync } from 'node:fs';
+import { mkdtempSync, rmSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -113,7 +113,9 @@ async function main() {
   log('passed');
 }
 
-main().catch((error) => {
+// The recordings are removed when the test passes and kept for a look when it fails.
+main().then(() => rmSync(demos, { recursive: true, force: true }), (error) => {
   console.error(error);
+  console.error('recordings kept in', demos);
   process.exit(1);
 });

@@ -98,7 +98,10 @@ fn an_agent_is_normalized_by_a_recorded_demonstration() {
     use behavior_env::metrics::HumanReference;
     use behavior_env::record::{Recorder, read};
     // A "demonstration": 60 random steps, recorded.
-    let dir = tempfile::Builder::new().prefix("behavior-demo-").tempdir().unwrap();
+    let dir = tempfile::Builder::new()
+        .prefix("behavior-demo-")
+        .tempdir()
+        .unwrap();
     let path = dir.path().join("demo.mcap");
     let mut env = common::env("bringing_in_wood");
     env.reset(6).unwrap();

@@ -10,7 +10,10 @@ use std::path::PathBuf;
 
 /// A path named `name` in a scratch folder of its own, removed when the folder is dropped.
 fn temp(name: &str) -> (tempfile::TempDir, PathBuf) {
-    let dir = tempfile::Builder::new().prefix("behavior-env-test-").tempdir().unwrap();
+    let dir = tempfile::Builder::new()
+        .prefix("behavior-env-test-")
+        .tempdir()
+        .unwrap();
     let path = dir.path().join(name);
     (dir, path)
 }

@@ -1,13 +1,14 @@
 //! The robot's base in (x, y, yaw) on the floor: its footprint, how it moves between two
 //! configurations (the original's: turn toward the next point, drive straight to it, turn to its
-//! heading), and collision checks through the world's overlap queries, without stepping.
+//! heading; here also backing onto a point behind, the smaller turn), and collision checks
+//! through the world's overlap queries, without stepping.
 
 use crate::rrt::Space;
 use behavior_core::rng::{SimRng, uniform};
 use behavior_sim::{Primitive, QueryFilter, World};
 use rapier3d::math::{Pose, Rotation, Vector};
 use serde::{Deserialize, Serialize};
-use std::f32::consts::PI;
+use std::f32::consts::{FRAC_PI_2, PI};
 
 /// Where the base stands: position on the floor, m, and heading, rad.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -98,13 +99,20 @@ impl<'w> BaseSpace<'w> {
         (self.min, self.max)
     }
 
-    /// The heading of the drive from `a` to `b`, or `a`'s own if they stand at one point.
+    /// The heading the base keeps driving from `a` to `b` (`a`'s own if they stand at one
+    /// point): facing the drive, or backing along it where that is the smaller turn. Both
+    /// robots' wheels drive either way, and the drive's executor backs onto a point behind
+    /// (`physical::drive_toward`); a base facing a table close up gets away only backwards.
     fn heading(a: &BaseConfig, b: &BaseConfig) -> f32 {
         let (dx, dy) = (b.x - a.x, b.y - a.y);
         if dx.hypot(dy) < 1e-6 {
-            a.yaw
+            return a.yaw;
+        }
+        let ahead = dy.atan2(dx);
+        if turn(a.yaw, ahead).abs() > FRAC_PI_2 {
+            a.yaw + turn(a.yaw, ahead + PI)
         } else {
-            dy.atan2(dx)
+            a.yaw + turn(a.yaw, ahead)
         }
     }
 }
@@ -238,5 +246,25 @@ mod tests {
         }
         // A quarter turn to face +y, one metre, a quarter turn: about 31 + 20 + 31 steps.
         assert!((80..=85).contains(&steps.len()), "{} steps", steps.len());
+    }
+
+    #[test]
+    fn a_point_behind_is_backed_onto_with_the_smaller_turn() {
+        let world = World::default();
+        let a = BaseConfig::new(0.0, 0.0, 0.0);
+        let behind = BaseConfig::new(-1.0, 0.0, 0.0);
+        let space = BaseSpace::new(&world, Footprint::default(), QueryFilter::default(), &a, &a);
+        let steps = space.steps(&a, &behind, 0.05);
+        assert_eq!(steps.len(), 20);
+        assert!(steps.iter().all(|s| s.yaw == 0.0));
+        assert!((space.distance(&a, &behind) - 1.0).abs() < 1e-6);
+        // Back and to the right: an eighth of a turn, backing, not three eighths ahead.
+        let aside = BaseConfig::new(-1.0, -1.0, FRAC_PI_2 / 2.0);
+        let steps = space.steps(&a, &aside, 0.05);
+        assert!(
+            steps
+                .iter()
+                .all(|s| (0.0..=FRAC_PI_2 / 2.0 + 1e-6).contains(&s.yaw))
+        );
     }
 }

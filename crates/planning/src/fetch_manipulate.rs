@@ -30,6 +30,7 @@
 //! floor out of reach. Fetch solved none of Table 1's activities that way.
 
 use crate::arm::{ArmBody, ArmConfig, ArmSpace};
+use crate::base::BaseConfig;
 use crate::execute::RunError;
 use crate::manipulate::{
     CLOSE_STEPS, GRASP_JITTER, RELEASE_STEPS, SETTLE_STEPS, grasp_point, placement_goals, rng_seed,
@@ -145,22 +146,70 @@ pub fn place(
 /// Whether Fetch's arm, from where the base stands, has a free configuration over the object
 /// for a grasp — or, holding something and given a placement, above a place for it; true for
 /// what cannot be held (a cabinet to open) and for a robot that is no Fetch.
-pub(crate) fn reaches(env: &Env, object: ObjectId, placement: Option<&Call>) -> bool {
-    let (Some((world, fetch)), Some(robot)) = (fetch(env), env.robot()) else {
+pub fn reaches(env: &Env, object: ObjectId, placement: Option<&Call>) -> bool {
+    let (Some((world, fetch)), Some(goals)) = (fetch(env), reach_goals(env, object, placement))
+    else {
         return true;
     };
-    let goals = match placement.and_then(|c| Some((c, c.primitive.relation()?))) {
+    any_solved(world, fetch, &ArmBody::of(world, fetch), &goals)
+}
+
+/// A test of places to stand for NAVIGATE_TO `object`: whether Fetch's arm, its base standing
+/// there, reaches over the object for a grasp or, holding something, above a place for it on
+/// or in the object, as OmniGibson's base-pose sampler checks IK reach for each candidate.
+/// The goals are the world poses [`reaches`] tries from where the base stands now (straight
+/// down they are the same from anywhere). `None` for what there is no arm to test for: no
+/// Fetch, or nothing to take or to put there.
+pub(crate) fn reach_test<'e>(
+    env: &'e Env,
+    object: ObjectId,
+) -> Option<impl Fn(&BaseConfig) -> bool + 'e> {
+    let (world, fetch) = fetch(env)?;
+    let goals = match fetch.holding() {
+        Some(_) => {
+            let on_or_in = [crate::Primitive::PlaceOnTop, crate::Primitive::PlaceInside];
+            let goals: Vec<Pose> = on_or_in
+                .into_iter()
+                .filter_map(|primitive| {
+                    let call = Call {
+                        primitive,
+                        object,
+                        hand: 0,
+                    };
+                    reach_goals(env, object, Some(&call))
+                })
+                .flatten()
+                .collect();
+            (!goals.is_empty()).then_some(goals)?
+        }
+        None => reach_goals(env, object, None)?,
+    };
+    let body = ArmBody::of(world, fetch);
+    // The base's frame over the floor's at its configuration: kept as the base moves.
+    let lift = crate::physical::base_config(env).pose().inverse() * body.base;
+    Some(move |stand: &BaseConfig| {
+        let mut moved = body.clone();
+        moved.base = stand.pose() * lift;
+        any_solved(world, fetch, &moved, &goals)
+    })
+}
+
+/// The end-effector goals of [`reaches`]; `None` for what cannot be held and is given no
+/// placement (a cabinet to open: within reach of its box is enough).
+fn reach_goals(env: &Env, object: ObjectId, placement: Option<&Call>) -> Option<Vec<Pose>> {
+    let (world, fetch) = fetch(env)?;
+    let robot = env.robot()?;
+    match placement.and_then(|c| Some((c, c.primitive.relation()?))) {
         Some((call, relation)) if fetch.holding().is_some() => {
             let mut rng = call_rng(env, call);
-            placement_goals(world, robot, call, relation, &mut rng).unwrap_or_default()
+            Some(placement_goals(world, robot, call, relation, &mut rng).unwrap_or_default())
         }
-        // Nothing to take (a cabinet to open): within reach of its box is enough.
         _ if fetch
             .rules()
             .holdable(world, BodyRef::from(object))
             .is_none() =>
         {
-            return true;
+            None
         }
         _ => {
             let call = Call {
@@ -168,13 +217,14 @@ pub(crate) fn reaches(env: &Env, object: ObjectId, placement: Option<&Call>) -> 
                 object,
                 hand: 0,
             };
-            grasp_goals(world, fetch, object, &mut call_rng(env, &call))
+            Some(grasp_goals(world, fetch, object, &mut call_rng(env, &call)))
         }
-    };
-    let body = ArmBody::of(world, fetch);
-    goals
-        .iter()
-        .any(|g| solve(world, fetch, &body, g).is_some())
+    }
+}
+
+/// Whether one of `goals` has a free IK solution for the arm `body`.
+fn any_solved(world: &World, fetch: &Fetch, body: &ArmBody, goals: &[Pose]) -> bool {
+    goals.iter().any(|g| solve(world, fetch, body, g).is_some())
 }
 
 /// The gripper's commands: open, or closed on what it holds.

@@ -7,9 +7,9 @@
 //!
 //! Nodes stand on a square grid of [`LATTICE_CELL`] anchored at the start, facing one of
 //! [`LATTICE_HEADINGS`] headings. From a node the base turns to the next heading either way, or
-//! drives one cell ahead (the grid's neighbour in its heading, straight or diagonal): exactly the
-//! motions [`BaseSpace`]'s steps make, so the path found is checked by the same space, at the
-//! same resolution, as an RRT path, then shortcut like one.
+//! drives one cell ahead or back (the grid's neighbour along its heading, straight or diagonal):
+//! exactly the motions [`BaseSpace`]'s steps make, so the path found is checked by the same
+//! space, at the same resolution, as an RRT path, then shortcut like one.
 
 use crate::base::{BaseConfig, BaseSpace};
 use crate::error::PlanError;
@@ -108,11 +108,11 @@ impl Lattice<'_, '_> {
             }
             Node::At { i, j, heading } => {
                 let (di, dj) = ahead(heading);
-                next.push(Node::At {
-                    i: i + di,
-                    j: j + dj,
+                next.extend([1, -1].map(|way| Node::At {
+                    i: i + way * di,
+                    j: j + way * dj,
                     heading,
-                });
+                }));
                 for turn in [1, LATTICE_HEADINGS - 1] {
                     next.push(Node::At {
                         i,

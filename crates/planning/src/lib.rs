@@ -50,7 +50,7 @@ pub use execute::{
     ARM_REACH, FETCH_ARM_REACH, Mode, Outcome, RecordedCall, RunError, replay_edit, run,
 };
 pub use fetch_manipulate::{ArmPath, FETCH_APPROACH, FETCH_DESCENT};
-pub use fetch_manipulate::{grasp as fetch_grasp, place as fetch_place};
+pub use fetch_manipulate::{grasp as fetch_grasp, place as fetch_place, reaches as fetch_reaches};
 pub use hand::{HAND_MARGIN, HAND_RESOLUTION, HAND_WEIGHTS, HandBody, HandConfig, HandSpace};
 pub use lattice::{LATTICE_CELL, LATTICE_EXPANSIONS, LATTICE_HEADINGS, lattice_plan};
 pub use manipulate::{

@@ -163,24 +163,28 @@ impl Standing {
         world: &World,
         object: ObjectId,
         reach: f32,
+        accept: &dyn Fn(&BaseConfig) -> bool,
         rng: &mut SimRng,
     ) -> Option<BaseConfig> {
-        self.search(world, object, rng, box_within(world, object, reach))
+        let close = box_within(world, object, reach);
+        self.search(world, object, rng, |c| close(c) && accept(c))
     }
 
     /// As [`Standing::near`], but only where the object's box lies within `reach` across the
     /// floor: where a hand can act on what it sees (the farther rings of [`STAND_DISTANCES`]
-    /// see a plate on a counter but leave it out of reach).
+    /// see a plate on a counter but leave it out of reach). Both take only the places that
+    /// `accept` (an arm's reach from there, say; checked last, being the dearest).
     pub fn near_within(
         &self,
         world: &World,
         object: ObjectId,
         reach: f32,
+        accept: &dyn Fn(&BaseConfig) -> bool,
         rng: &mut SimRng,
     ) -> Option<BaseConfig> {
         let close = box_within(world, object, reach);
         self.search(world, object, rng, |c| {
-            close(c) && self.sees(world, c, object)
+            close(c) && self.sees(world, c, object) && accept(c)
         })
     }
 

@@ -267,6 +267,12 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
         Robot::Behavior(..) => ARM_REACH,
     };
     let start = standing.config;
+    // Fetch stands first where its arm reaches the object from (the BehaviorRobot's hands
+    // reach over its box from any stand within `reach`).
+    let arm = crate::fetch_manipulate::reach_test(env, call.object);
+    let arm = arm
+        .as_ref()
+        .map(|test| test as &dyn Fn(&BaseConfig) -> bool);
     // A robot put or pushed into something fixed first backs out of it, by the shortest free
     // move nearby, then plans from there.
     let mut dense = Vec::new();
@@ -280,7 +286,7 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
     // corner), which the lattice tells at once: then another one.
     for k in 0..STAND_PLANS {
         let mut rng = seeded(seed.wrapping_add(k));
-        let Some(goal) = stand_for(world, &standing, call.object, reach, &mut rng) else {
+        let Some(goal) = stand_for(world, &standing, call.object, reach, arm, &mut rng) else {
             break;
         };
         let space = home_space(world, &standing, &start, &goal);

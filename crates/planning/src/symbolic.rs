@@ -287,8 +287,8 @@ fn navigate(
     rng: &mut SimRng,
 ) -> Result<(), Failure> {
     let standing = Standing::of(world, robot);
-    let config =
-        stand_for(world, &standing, object, REACH_DISTANCE, rng).ok_or(Failure::NoPlaceToStand)?;
+    let config = stand_for(world, &standing, object, REACH_DISTANCE, None, rng)
+        .ok_or(Failure::NoPlaceToStand)?;
     let z = robot.base_pose(world).translation.z;
     let pose = Pose::from_parts(
         Vector::new(config.x, config.y, z),
@@ -299,22 +299,27 @@ fn navigate(
 
 /// Where NAVIGATE_TO stands for `object`: facing it and seeing it within `reach` of it (the
 /// mode's reach), else clear within that reach, else seeing it from farther; for a floor, a
-/// clear place in its room.
+/// clear place in its room. Given an `arm` test (physical Fetch: its arm reaches the object
+/// from there), the places within reach that pass it come first.
 pub(crate) fn stand_for(
     world: &World,
     standing: &Standing,
     object: ObjectId,
     reach: f32,
+    arm: Option<&dyn Fn(&BaseConfig) -> bool>,
     rng: &mut SimRng,
 ) -> Option<BaseConfig> {
     if world.object(object).category == FLOOR_SYNSET {
-        stand_in_room(world, standing, object, rng)
-    } else {
-        standing
-            .near_within(world, object, reach, rng)
-            .or_else(|| standing.within(world, object, reach, rng))
-            .or_else(|| standing.near(world, object, rng))
+        return stand_in_room(world, standing, object, rng);
     }
+    let within = |accept: &dyn Fn(&BaseConfig) -> bool, rng: &mut SimRng| {
+        standing
+            .near_within(world, object, reach, accept, rng)
+            .or_else(|| standing.within(world, object, reach, accept, rng))
+    };
+    arm.and_then(|arm| within(arm, rng))
+        .or_else(|| within(&|_| true, rng))
+        .or_else(|| standing.near(world, object, rng))
 }
 
 /// A clear place in the room whose floor is `floor`, facing a random way.

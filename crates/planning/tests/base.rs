@@ -241,6 +241,42 @@ fn the_lattice_says_when_no_way_leads_to_a_walled_in_goal() {
     );
 }
 
+#[test]
+fn a_base_that_cannot_turn_backs_out_of_a_dead_end() {
+    let mut world = World::default();
+    wall(&mut world, "south", (-1.0, -0.35), (3.0, 0.05));
+    wall(&mut world, "north", (-1.0, 0.35), (3.0, 0.05));
+    wall(&mut world, "end", (1.0, 0.0), (0.05, 0.4));
+    // Long and narrow, as a base carrying a board ahead: no turn fits between the walls.
+    let long = Footprint {
+        shapes: vec![(
+            Primitive::Box {
+                half_extents: Vector::new(0.5, 0.2, 0.3),
+            },
+            Pose::from_translation(Vector::new(0.0, 0.0, 0.4)),
+        )],
+    };
+    let (start, goal) = (
+        BaseConfig::new(0.0, 0.0, 0.0),
+        BaseConfig::new(-3.0, 0.0, 0.0),
+    );
+    let space = BaseSpace::new(&world, long, QueryFilter::default(), &start, &goal)
+        .with_bounds([-4.5, -1.0], [1.5, 1.0]);
+    assert!(space.free(&start) && space.free(&goal));
+    assert!(
+        !space.free(&BaseConfig::new(-1.5, 0.0, 0.5)),
+        "a turn collides"
+    );
+    let params = PlanParams::default();
+    let rrt = plan(&space, &start, &goal, &params).map(|p| p.path);
+    for path in [rrt, lattice_plan(&space, &start, &goal, &params)] {
+        let path = path.unwrap();
+        assert_eq!(path.last(), Some(&goal));
+        assert_collision_free(&space, &path);
+        assert!(path.iter().all(|c| c.yaw.abs() < 0.2), "{path:?}");
+    }
+}
+
 /// Where the robot stands to reach a box by the west wall of a 3 × 3 m room, with and
 /// without the room, over twenty seeds.
 fn stands_by_the_wall(with_room: bool) -> Vec<BaseConfig> {

@@ -202,7 +202,7 @@ fn organizing_file_cabinet_is_solved_with_physical_primitives_and_replays_bit_fo
     // its other half off the palm, and where one place in the drawer has no way in, the next.
     solved_physically(
         "organizing_file_cabinet",
-        1,
+        2,
         "place_inside",
         RobotKind::Behavior,
     );

@@ -109,11 +109,12 @@ impl<'w> BaseSpace<'w> {
             return a.yaw;
         }
         let ahead = dy.atan2(dx);
-        if turn(a.yaw, ahead).abs() > FRAC_PI_2 {
-            a.yaw + turn(a.yaw, ahead + PI)
+        let way = if turn(a.yaw, ahead).abs() > FRAC_PI_2 {
+            ahead + PI
         } else {
-            a.yaw + turn(a.yaw, ahead)
-        }
+            ahead
+        };
+        a.yaw + turn(a.yaw, way)
     }
 }
 

@@ -44,10 +44,9 @@ fn both_robots_drive_to_an_object_without_touching_anything() {
         let (world, bot) = (env.world().unwrap(), env.robot().unwrap());
         assert!(within_reach(world, bot, plank), "{robot:?} ends in reach");
         // Fetch stands where its arm has a free configuration over the plank.
-        assert!(
-            fetch_reaches(&env, plank, None),
-            "{robot:?}'s arm reaches it"
-        );
+        if robot == RobotKind::Fetch {
+            assert!(fetch_reaches(&env, plank, None), "Fetch's arm reaches it");
+        }
         let after = base_config(&env);
         assert!(
             (after.x - before.x).hypot(after.y - before.y) > 0.1,

@@ -173,9 +173,9 @@ def write_run(config: TrainConfig, model, curve: QCurve, wall_s: float, algorith
 def learn(model, config: TrainConfig, algorithm: str) -> dict:
     """Trains `model` for the run's timesteps, recording the curve, then saves and evaluates."""
     curve = QCurve()
-    # SB3's own training log (losses, rates) as progress.csv beside the curve; left to itself,
-    # SB3 makes an empty folder in the system's temporary directory for every run.
-    Path(config.out).mkdir(parents=True, exist_ok=True)
+    # SB3's own training log (losses, rates) as progress.csv beside the curve (`configure`
+    # makes the folder); left to itself, SB3 makes an empty folder in the system's temporary
+    # directory for every run.
     model.set_logger(configure(str(config.out), ["csv"]))
     start = time.perf_counter()
     model.learn(total_timesteps=config.timesteps, callback=curve)

@@ -24,13 +24,15 @@
 //! report the miss; after placing, the original leaves the hand where it let go, ours comes
 //! back, so that the next NAVIGATE_TO finds the robot as compact as it started.
 
+use crate::base::BaseConfig;
 use crate::execute::{RecordedCall, RunError};
 use crate::hand::{HandBody, HandConfig, HandSpace};
 use crate::navigate::shapes_in;
 use crate::physical::{
-    Attempt, PHYSICAL_BUDGET, STEPS_PER_WAYPOINT, Stepper, attempt, call_rng, force_grasp,
+    Attempt, PHYSICAL_BUDGET, STEPS_PER_WAYPOINT, Stepper, attempt, base_config, call_rng,
+    force_grasp,
 };
-use crate::primitive::{Call, Failure};
+use crate::primitive::{Call, Failure, Primitive};
 use crate::rrt::{PlanParams, plan, steps_along};
 use crate::symbolic::{check, put};
 use behavior_core::rng::{SimRng, uniform};
@@ -219,16 +221,11 @@ pub(crate) fn placement_in_reach(env: &Env, call: &Call) -> bool {
         return true;
     }
     let shoulder = robot.shoulder(world, side);
-    let reach = HAND_REACH - REACH_SLACK;
     let (Some(embodied), mut rng) = (env.robot(), call_rng(env, call)) else {
         return true;
     };
-    placement_goals(world, embodied, call, relation, &mut rng).is_ok_and(|goals| {
-        goals.iter().any(|g| {
-            shift_for(shoulder, g.translation, reach).is_some()
-                && open_to(world, robot, g.translation, shoulder, &[])
-        })
-    })
+    placement_goals(world, embodied, call, relation, &mut rng)
+        .is_ok_and(|goals| places_from(world, robot, &goals, shoulder))
 }
 
 /// Where a BehaviorRobot's hands go before it drives, in the body frame: drawn in so that
@@ -477,17 +474,84 @@ fn on_top(world: &World, object: ObjectId, toward: Vector, inset: f32) -> Vector
 /// object's box within its reach less [`REACH_MARGIN`] (for a small object, over it; for a
 /// shelf, its near side), and the top of the box there lies [`open_to`] the shoulder (a
 /// necklace in a cabinet is not in reach from beside the cabinet).
-pub(crate) fn hand_reaches(world: &World, robot: &Robot, object: ObjectId) -> bool {
+pub fn hand_reaches(world: &World, robot: &Robot, object: ObjectId) -> bool {
     let Robot::Behavior(robot, _) = robot else {
         return true;
     };
+    Side::BOTH
+        .iter()
+        .any(|&side| reaches_from(world, robot, object, robot.shoulder(world, side)))
+}
+
+/// [`hand_reaches`] for one shoulder, wherever it is.
+fn reaches_from(world: &World, robot: &BehaviorRobot, object: ObjectId, shoulder: Vector) -> bool {
     let b = world.aabb(object);
-    Side::BOTH.iter().any(|&side| {
-        let shoulder = robot.shoulder(world, side);
-        let top = on_top(world, object, shoulder, 0.0);
-        let nearest = top.with_z(shoulder.z.clamp(b.mins.z, b.maxs.z));
-        shift_for(shoulder, nearest, HAND_REACH - REACH_MARGIN).is_some()
-            && open_to(world, robot, top, shoulder, &[object])
+    let top = on_top(world, object, shoulder, 0.0);
+    let nearest = top.with_z(shoulder.z.clamp(b.mins.z, b.maxs.z));
+    shift_for(shoulder, nearest, HAND_REACH - REACH_MARGIN).is_some()
+        && open_to(world, robot, top, shoulder, &[object])
+}
+
+/// Whether a shoulder at `shoulder` reaches above one of the placement `goals` as
+/// [`placement_in_reach`] asks.
+fn places_from(world: &World, robot: &BehaviorRobot, goals: &[Pose], shoulder: Vector) -> bool {
+    goals.iter().any(|g| {
+        shift_for(shoulder, g.translation, HAND_REACH - REACH_SLACK).is_some()
+            && open_to(world, robot, g.translation, shoulder, &[])
+    })
+}
+
+/// A test of places to stand for NAVIGATE_TO `object`, for a BehaviorRobot: whether, its body
+/// standing there, a hand reaches the object as [`hand_reaches`] asks (a necklace in a cabinet
+/// from before its open front, not from beside it) or, holding something, above a place for it
+/// on or in the object as [`placement_in_reach`] asks — the checks the solver makes once the
+/// robot has arrived, made before it drives. Without it, the robot stood within reach of a
+/// cabinet's box but beside it, found the necklace in it out of its hands' reach, and drove
+/// again, ten times over. `None` for no BehaviorRobot driven by its full action space.
+pub(crate) fn reach_test<'e>(
+    env: &'e Env,
+    object: ObjectId,
+) -> Option<impl Fn(&BaseConfig) -> bool + 'e> {
+    let (world, robot) = behavior_robot(env)?;
+    let to_base = base_config(env).pose().inverse();
+    let shoulder_of = |side: Side| to_base.transform_point(robot.shoulder(world, side));
+    let holding = Side::BOTH
+        .iter()
+        .rposition(|&side| robot.holding(side).is_some());
+    let goals: Vec<Pose> = holding
+        .map(|hand| {
+            [Primitive::PlaceOnTop, Primitive::PlaceInside]
+                .into_iter()
+                .filter_map(|primitive| {
+                    let call = Call {
+                        primitive,
+                        object,
+                        hand,
+                    };
+                    let relation = primitive.relation()?;
+                    let embodied = env.robot()?;
+                    placement_goals(world, embodied, &call, relation, &mut call_rng(env, &call))
+                        .ok()
+                })
+                .flatten()
+                .collect()
+        })
+        .unwrap_or_default();
+    // Holding something with no place for it there, the object's box in reach is what counts.
+    let shoulders: Vec<Vector> = match holding {
+        Some(hand) if !goals.is_empty() => vec![shoulder_of(Side::BOTH[hand])],
+        _ => Side::BOTH.into_iter().map(shoulder_of).collect(),
+    };
+    Some(move |stand: &BaseConfig| {
+        let pose = stand.pose();
+        shoulders.iter().any(|&s| {
+            let shoulder = pose.transform_point(s);
+            if goals.is_empty() {
+                reaches_from(world, robot, object, shoulder)
+            } else {
+                places_from(world, robot, &goals, shoulder)
+            }
+        })
     })
 }
 

@@ -267,12 +267,15 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
         Robot::Behavior(..) => ARM_REACH,
     };
     let start = standing.config;
-    // Fetch stands first where its arm reaches the object from (the BehaviorRobot's hands
-    // reach over its box from any stand within `reach`).
-    let arm = crate::fetch_manipulate::reach_test(env, call.object);
-    let arm = arm
-        .as_ref()
-        .map(|test| test as &dyn Fn(&BaseConfig) -> bool);
+    // The robot stands first where its arm (Fetch) or a hand (the BehaviorRobot) reaches the
+    // object from.
+    let fetch_arm = crate::fetch_manipulate::reach_test(env, call.object);
+    let hands = crate::manipulate::reach_test(env, call.object);
+    let arm = match (&fetch_arm, &hands) {
+        (Some(test), _) => Some(test as &dyn Fn(&BaseConfig) -> bool),
+        (_, Some(test)) => Some(test as &dyn Fn(&BaseConfig) -> bool),
+        _ => None,
+    };
     // A robot put or pushed into something fixed first backs out of it, by the shortest free
     // move nearby, then plans from there.
     let mut dense = Vec::new();

@@ -9,7 +9,7 @@ use behavior_core::rng::{SimRng, seeded, uniform};
 use behavior_core::{Ability, FLOOR_SYNSET, Predicate};
 use behavior_env::Edit;
 use behavior_robots::{MagicError, REACH_DISTANCE, Robot};
-use behavior_sim::{ObjectId, PointKind, Relation, World};
+use behavior_sim::{JointKind, ObjectId, PointKind, Relation, World};
 use rapier3d::math::{Pose, Rotation, Vector};
 
 /// Random points tried in a room for standing on its floor (the original's 60).
@@ -88,7 +88,14 @@ pub fn check(world: &World, robot: &Robot, call: &Call) -> Result<(), Failure> {
                 lacks: "is not openable",
                 states: ("open", "closed"),
             };
-            switch.check(world, call.object, call.primitive == Primitive::Open)?;
+            if call.primitive == Primitive::Open && switch.has(world, call.object)? {
+                // Open, its doors not all the way: OPEN swings them open.
+                if wide_open(world, call.object) {
+                    return Err(Failure::Already("open"));
+                }
+            } else {
+                switch.check(world, call.object, call.primitive == Primitive::Open)?;
+            }
             reach()
         }
         Primitive::ToggleOn | Primitive::ToggleOff => {
@@ -150,6 +157,14 @@ struct Switch {
 }
 
 impl Switch {
+    /// Whether `object` has the ability and is on: an error if it lacks the ability.
+    fn has(&self, world: &World, object: ObjectId) -> Result<bool, Failure> {
+        if !world.object(object).has(self.ability) {
+            return Err(Failure::Unable { what: self.lacks });
+        }
+        Ok(world.state(object, self.predicate))
+    }
+
     /// Whether `object` can be switched to `on`: it has the ability and is not so already.
     fn check(&self, world: &World, object: ObjectId, on: bool) -> Result<(), Failure> {
         if !world.object(object).has(self.ability) {
@@ -177,7 +192,8 @@ pub fn apply(edit: Edit<'_>, call: &Call) -> Result<(), Failure> {
             )),
             other => Ok(other?),
         },
-        Primitive::Open | Primitive::ToggleOn => set(world, object, call.primitive, true),
+        Primitive::Open => open_wide(world, object),
+        Primitive::ToggleOn => set(world, object, call.primitive, true),
         Primitive::Close | Primitive::ToggleOff => set(world, object, call.primitive, false),
         Primitive::Slice => Ok(world.set_state(object, Predicate::Sliced, true)?),
         Primitive::Wipe => {
@@ -234,6 +250,44 @@ fn set(
     Ok(world.set_state(object, predicate, value)?)
 }
 
+/// How far along its range a door or lid must be to count as opened all the way by OPEN
+/// (a door pushed back a little by what the robot did since still counts).
+pub const WIDE_OPEN: f32 = 0.9;
+
+/// The object's hinged doors and lids with their ranges: what OPEN swings all the way.
+fn hinges(world: &World, object: ObjectId) -> Vec<(usize, [f32; 2])> {
+    let links = world.object(object).links.iter().enumerate();
+    links
+        .filter(|(_, link)| link.joint.kind == JointKind::Revolute)
+        .filter_map(|(i, link)| Some((i, link.joint.limits?)))
+        .collect()
+}
+
+/// Whether the object is open and each of its doors and lids is open all the way (see
+/// [`WIDE_OPEN`]).
+pub(crate) fn wide_open(world: &World, object: ObjectId) -> bool {
+    world.state(object, Predicate::Open)
+        && hinges(world, object).iter().all(|&(link, [lo, hi])| {
+            world.core().joint_position(object, link) - lo >= WIDE_OPEN * (hi - lo)
+        })
+}
+
+/// OPEN's outcome: the object opened as the world's setter opens it (a random non-empty subset
+/// of its joints, as the original's `Open.set_value(True)`, reference §5) where it is shut,
+/// then each of its doors and lids swung all the way. A fridge door opened a tenth of its
+/// swing reads as open, and a hand carrying a box into the fridge meets the door. Drawers
+/// keep the setter's subset: pulled all the way, an upper drawer covers the one below it.
+fn open_wide(world: &mut World, object: ObjectId) -> Result<(), Failure> {
+    if !world.state(object, Predicate::Open) {
+        world.set_state(object, Predicate::Open, true)?;
+    }
+    for (link, [_, hi]) in hinges(world, object) {
+        // The link exists and the position is finite: this cannot fail.
+        let _ = world.set_joint_position(object, link, hi);
+    }
+    Ok(())
+}
+
 /// Whether a hand may hold the object: movable and not the robot's (the grasp rules' mass
 /// limit is checked as it grasps). The original also refuses a box over 0.2³ m³, sized for its
 /// own models; ours are sized as real objects, and that check would refuse a quarter of the
@@ -275,6 +329,16 @@ pub(crate) fn closed_container(world: &World, object: ObjectId) -> Option<Object
         .filter(|(id, o)| *id != object && o.is_present() && o.has(Ability::Openable))
         .map(|(id, _)| id)
         .find(|&c| !world.state(c, Predicate::Open) && world.core().inside(object, c))
+}
+
+/// An openable object the object is inside that is shut or whose doors are not all open all
+/// the way ([`wide_open`]), if any: what a hand reaching in may find in its way.
+pub(crate) fn shut_container(world: &World, object: ObjectId) -> Option<ObjectId> {
+    world
+        .objects()
+        .filter(|(id, o)| *id != object && o.is_present() && o.has(Ability::Openable))
+        .map(|(id, _)| id)
+        .find(|&c| !wide_open(world, c) && world.core().inside(object, c))
 }
 
 /// NAVIGATE_TO: a place to stand facing the object (§5's search), or for a floor a clear

@@ -17,7 +17,7 @@ use crate::fetch_manipulate::reaches as arm_reaches;
 use crate::manipulate::{hand_reaches, placement_in_reach};
 use crate::navigate::floor_gap;
 use crate::primitive::{Call, Failure, Primitive};
-use crate::symbolic::{closed_container, within};
+use crate::symbolic::{closed_container, shut_container, wide_open, within};
 use behavior_bddl::{GroundGoal, Literal, Predicate, PredicateOracle};
 use behavior_core::{Ability, FLOOR_SYNSET};
 use behavior_env::Env;
@@ -496,7 +496,12 @@ impl<'a> Solver<'a> {
         if self.env.robot().and_then(|r| r.held(hand)).is_some() {
             self.put_down(hand)?;
         }
-        if let Some(c) = closed_container(self.world(), x) {
+        // A hand reaches in only where the way is open: in physical mode, all the way.
+        let shut = match self.mode {
+            Mode::Physical => shut_container(self.world(), x),
+            Mode::Symbolic => closed_container(self.world(), x),
+        };
+        if let Some(c) = shut {
             self.approach(c)?;
             self.call(Primitive::Open, c, hand)?;
         }
@@ -535,9 +540,13 @@ impl<'a> Solver<'a> {
             other => return Err(format!("{} is not a placement", other.name())),
         };
         self.hold(x, CARRY)?;
+        let shut = match self.mode {
+            Mode::Physical => !wide_open(self.world(), y),
+            Mode::Symbolic => !self.world().state(y, Predicate::Open),
+        };
         if primitive == Primitive::PlaceInside
             && self.world().object(y).has(Ability::Openable)
-            && !self.world().state(y, Predicate::Open)
+            && shut
         {
             self.approach(y)?;
             self.call(Primitive::Open, y, CARRY)?;

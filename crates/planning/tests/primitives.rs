@@ -32,6 +32,17 @@ fn act(env: &mut Env, primitive: Primitive, object: ObjectId, hand: usize) -> Re
     run(env, call, Mode::Symbolic, None).unwrap().result
 }
 
+/// The first hinged link of an object and its open end.
+fn hinge(env: &Env, object: ObjectId) -> (usize, f32) {
+    let links = &env.world().unwrap().object(object).links;
+    links
+        .iter()
+        .enumerate()
+        .find(|(_, l)| l.joint.kind == behavior_sim::JointKind::Revolute)
+        .and_then(|(i, l)| Some((i, l.joint.limits?[1])))
+        .expect("a hinged door")
+}
+
 fn state(env: &Env, object: ObjectId, predicate: Predicate) -> bool {
     env.world().unwrap().state(object, predicate)
 }
@@ -130,8 +141,17 @@ fn a_closed_fridge_is_opened_before_things_go_in_and_slicing_needs_a_knife() {
     assert!(matches!(err, Failure::ContainerClosed(_)), "{err}");
     let err = act(&mut env, Primitive::Close, fridge, 1).unwrap_err();
     assert!(matches!(err, Failure::Already("closed")), "{err}");
+    // A door a little ajar reads as open; OPEN still swings it all the way, then refuses.
+    let door = hinge(&env, fridge);
+    env.edit(|e| e.world.set_joint_position(fridge, door.0, 0.2 * door.1))
+        .unwrap()
+        .unwrap();
+    assert!(state(&env, fridge, Predicate::Open), "ajar reads as open");
     act(&mut env, Primitive::Open, fridge, 1).unwrap();
-    assert!(state(&env, fridge, Predicate::Open));
+    let swung = env.world().unwrap().core().joint_position(fridge, door.0);
+    assert!((swung - door.1).abs() < 1e-4, "{swung} of {}", door.1);
+    let err = act(&mut env, Primitive::Open, fridge, 1).unwrap_err();
+    assert!(matches!(err, Failure::Already("open")), "{err}");
     act(&mut env, Primitive::Grasp, strawberry, 1).unwrap();
     act(&mut env, Primitive::NavigateTo, jar, 1).unwrap();
     let err = act(&mut env, Primitive::PlaceInside, jar, 1).unwrap_err();

@@ -368,10 +368,10 @@ fn goal_seed(goal: &Pose) -> u64 {
 /// home. Planned with what the gripper holds; where no plan gets to any of these, the arm
 /// stays.
 pub(crate) fn tuck(steps: &mut Stepper<'_>) -> Attempt<()> {
-    let Some((world, fetch)) = fetch(steps.env) else {
+    let Some((_, arm)) = fetch(steps.env) else {
         return Ok(Ok(()));
     };
-    let now = ArmConfig::of(&fetch.joints());
+    let now = ArmConfig::of(&arm.joints());
     let mut tucked = now;
     tucked.0[1..].copy_from_slice(&TUCKED);
     if now
@@ -382,13 +382,17 @@ pub(crate) fn tuck(steps: &mut Stepper<'_>) -> Attempt<()> {
     {
         return Ok(Ok(()));
     }
-    let body = ArmBody::of(world, fetch);
-    let mut rng = seeded(u64::from(steps.env.steps()));
-    let gripper = if fetch.holding().is_some() {
+    let gripper = if arm.holding().is_some() {
         CLOSED
     } else {
         OPEN
     };
+    attempt!(unstick(steps, gripper));
+    let Some((world, fetch)) = fetch(steps.env) else {
+        return Ok(Ok(()));
+    };
+    let body = ArmBody::of(world, fetch);
+    let mut rng = seeded(u64::from(steps.env.steps()));
     let goals = carry_goals(world, fetch, &body, tucked, &mut rng);
     let planned = goals
         .into_iter()
@@ -529,6 +533,7 @@ fn reach(
     gripper: f32,
     rng: &mut SimRng,
 ) -> Attempt<ArmPath> {
+    attempt!(unstick(steps, gripper));
     let start = arm_now(steps.env);
     let mut last = Failure::NoHandPose;
     let mut tried = 0;
@@ -569,6 +574,40 @@ fn reach(
         }
     }
     Ok(Err(last))
+}
+
+/// Ways the gripper is drawn straight out of what it touches, in the base's frame, m: up, back
+/// toward the base, both, and higher up.
+const UNSTICK: [[f32; 3]; 4] = [
+    [0.0, 0.0, 0.1],
+    [-0.15, 0.0, 0.0],
+    [-0.1, 0.0, 0.1],
+    [0.0, 0.0, 0.25],
+];
+
+/// An arm whose configuration touches something — the gripper left against a window by a
+/// motion that was stopped — drawn straight out of it, unchecked, along the first of
+/// [`UNSTICK`] that ends clear: the planner starts only from a free configuration, and every
+/// later grasp of a can by a window failed there. Where none ends clear, the arm stays and
+/// the planner says why.
+fn unstick(steps: &mut Stepper<'_>, gripper: f32) -> Attempt<()> {
+    let Some((world, fetch)) = fetch(steps.env) else {
+        return Ok(Ok(()));
+    };
+    let body = ArmBody::of(world, fetch);
+    if body.clear(world, &arm_now(steps.env)) {
+        return Ok(Ok(()));
+    }
+    let out = UNSTICK.into_iter().find_map(|offset| {
+        let path = line(fetch, Vector::from_array(offset), LINE_STEP)?;
+        path.last()
+            .is_some_and(|c| body.clear(world, c))
+            .then_some(path)
+    });
+    match out {
+        Some(path) => follow(steps, &path, gripper, Check::Touching, &mut Vec::new()),
+        None => Ok(Ok(())),
+    }
 }
 
 /// Goals with a free IK solution tried before the arm gives up.
@@ -814,6 +853,7 @@ fn come_back(
     gripper: f32,
     executed: &mut Vec<ArmConfig>,
 ) -> Attempt<()> {
+    attempt!(unstick(steps, gripper));
     let planned = match fetch(steps.env) {
         Some((world, fetch)) => {
             let body = ArmBody::of(world, fetch);

@@ -505,9 +505,10 @@ fn places_from(world: &World, robot: &BehaviorRobot, goals: &[Pose], shoulder: V
 /// standing there, a hand reaches the object as [`hand_reaches`] asks (a necklace in a cabinet
 /// from before its open front, not from beside it) or, holding something, above a place for it
 /// on or in the object as [`placement_in_reach`] asks — the checks the solver makes once the
-/// robot has arrived, made before it drives. Without it, the robot stood within reach of a
-/// cabinet's box but beside it, found the necklace in it out of its hands' reach, and drove
-/// again, ten times over. `None` for no BehaviorRobot driven by its full action space.
+/// robot has arrived, made before it drives, so that it drives to a stand the solver accepts
+/// rather than to one within reach of the object's box from which no hand reaches it (then
+/// it drove again, up to ten times). `None` for no BehaviorRobot driven by its full action
+/// space.
 pub(crate) fn reach_test<'e>(
     env: &'e Env,
     object: ObjectId,

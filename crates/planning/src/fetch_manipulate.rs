@@ -167,19 +167,7 @@ pub(crate) fn reach_test<'e>(
     let (world, fetch) = fetch(env)?;
     let goals = match fetch.holding() {
         Some(_) => {
-            let on_or_in = [crate::Primitive::PlaceOnTop, crate::Primitive::PlaceInside];
-            let goals: Vec<Pose> = on_or_in
-                .into_iter()
-                .filter_map(|primitive| {
-                    let call = Call {
-                        primitive,
-                        object,
-                        hand: 0,
-                    };
-                    reach_goals(env, object, Some(&call))
-                })
-                .flatten()
-                .collect();
+            let goals = crate::manipulate::on_or_in_goals(env, object, 0);
             (!goals.is_empty()).then_some(goals)?
         }
         None => reach_goals(env, object, None)?,

@@ -67,5 +67,5 @@ pub use physical::{
 };
 pub use primitive::{Call, Failure, Primitive, WAIT_STEPS};
 pub use rrt::{Path, PlanParams, Planned, Space, plan};
-pub use symbolic::{ELEMENT_TRIES, FLOOR_STAND_TRIES, apply, check, within_reach};
+pub use symbolic::{ELEMENT_TRIES, FLOOR_STAND_TRIES, WIDE_OPEN, apply, check, within_reach};
 pub use task::{Executed, GivenUp, Limits, Solution, Solver};

@@ -519,25 +519,7 @@ pub(crate) fn reach_test<'e>(
     let holding = Side::BOTH
         .iter()
         .rposition(|&side| robot.holding(side).is_some());
-    let goals: Vec<Pose> = holding
-        .map(|hand| {
-            [Primitive::PlaceOnTop, Primitive::PlaceInside]
-                .into_iter()
-                .filter_map(|primitive| {
-                    let call = Call {
-                        primitive,
-                        object,
-                        hand,
-                    };
-                    let relation = primitive.relation()?;
-                    let embodied = env.robot()?;
-                    placement_goals(world, embodied, &call, relation, &mut call_rng(env, &call))
-                        .ok()
-                })
-                .flatten()
-                .collect()
-        })
-        .unwrap_or_default();
+    let goals = holding.map_or_else(Vec::new, |hand| on_or_in_goals(env, object, hand));
     // Holding something with no place for it there, the object's box in reach is what counts.
     let shoulders: Vec<Vector> = match holding {
         Some(hand) if !goals.is_empty() => vec![shoulder_of(Side::BOTH[hand])],
@@ -554,6 +536,29 @@ pub(crate) fn reach_test<'e>(
             }
         })
     })
+}
+
+/// The poses above places on or in `object` for what `hand` holds, as PLACE_ONTOP and
+/// PLACE_INSIDE would sample them (drawing the numbers those placements will): what a place
+/// to stand is tested against when the robot carries something there. Empty where the hand
+/// holds nothing or neither finds a place.
+pub(crate) fn on_or_in_goals(env: &Env, object: ObjectId, hand: usize) -> Vec<Pose> {
+    let (Some(world), Some(robot)) = (env.world(), env.robot()) else {
+        return Vec::new();
+    };
+    [Primitive::PlaceOnTop, Primitive::PlaceInside]
+        .into_iter()
+        .filter_map(|primitive| {
+            let call = Call {
+                primitive,
+                object,
+                hand,
+            };
+            let relation = primitive.relation()?;
+            placement_goals(world, robot, &call, relation, &mut call_rng(env, &call)).ok()
+        })
+        .flatten()
+        .collect()
 }
 
 /// How far up a point must be clear to count as open from above, m.

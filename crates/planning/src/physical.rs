@@ -12,7 +12,7 @@ use crate::lattice::{LATTICE_EXPANSIONS, lattice_plan};
 use crate::navigate::Standing;
 use crate::primitive::{Call, Failure};
 use crate::rrt::{PlanParams, Space, plan, steps_along};
-use crate::symbolic::{call_seed, stand_for};
+use crate::symbolic::{call_seed, limited_links, open_all_the_way, stand_for};
 use behavior_core::Predicate;
 use behavior_core::rng::{SimRng, seeded};
 use behavior_env::Env;
@@ -134,13 +134,8 @@ pub(crate) fn open_doors_in(world: &mut World, bindings: &[Option<ObjectId>]) ->
         .filter(|&id| !world.state(id, Predicate::Open))
         .collect();
     for &door in &closed {
-        let limits: Vec<(usize, f32)> = (world.object(door).links.iter().enumerate())
-            .filter_map(|(i, link)| Some((i, link.joint.limits?[1])))
-            .collect();
-        for (link, open) in limits {
-            // The link exists and the position is finite: this cannot fail.
-            let _ = world.set_joint_position(door, link, open);
-        }
+        let links = limited_links(world, door, None);
+        open_all_the_way(world, door, &links);
     }
     !closed.is_empty()
 }

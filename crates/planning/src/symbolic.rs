@@ -167,10 +167,7 @@ impl Switch {
 
     /// Whether `object` can be switched to `on`: it has the ability and is not so already.
     fn check(&self, world: &World, object: ObjectId, on: bool) -> Result<(), Failure> {
-        if !world.object(object).has(self.ability) {
-            return Err(Failure::Unable { what: self.lacks });
-        }
-        match (on, world.state(object, self.predicate)) {
+        match (on, self.has(world, object)?) {
             (true, true) => Err(Failure::Already(self.states.0)),
             (false, false) => Err(Failure::Already(self.states.1)),
             _ => Ok(()),
@@ -254,13 +251,31 @@ fn set(
 /// (a door pushed back a little by what the robot did since still counts).
 pub const WIDE_OPEN: f32 = 0.9;
 
-/// The object's hinged doors and lids with their ranges: what OPEN swings all the way.
-fn hinges(world: &World, object: ObjectId) -> Vec<(usize, [f32; 2])> {
+/// The object's jointed parts with limits and their ranges, of `kind` if given: the hinged
+/// doors and lids OPEN swings all the way, or every part of a room's door.
+pub(crate) fn limited_links(
+    world: &World,
+    object: ObjectId,
+    kind: Option<JointKind>,
+) -> Vec<(usize, [f32; 2])> {
     let links = world.object(object).links.iter().enumerate();
     links
-        .filter(|(_, link)| link.joint.kind == JointKind::Revolute)
+        .filter(|(_, link)| kind.is_none_or(|k| link.joint.kind == k))
         .filter_map(|(i, link)| Some((i, link.joint.limits?)))
         .collect()
+}
+
+/// The object's hinged doors and lids with their ranges: what OPEN swings all the way.
+fn hinges(world: &World, object: ObjectId) -> Vec<(usize, [f32; 2])> {
+    limited_links(world, object, Some(JointKind::Revolute))
+}
+
+/// Sets each of the object's `links` to its open end.
+pub(crate) fn open_all_the_way(world: &mut World, object: ObjectId, links: &[(usize, [f32; 2])]) {
+    for &(link, [_, hi]) in links {
+        // The link exists and the position is finite: this cannot fail.
+        let _ = world.set_joint_position(object, link, hi);
+    }
 }
 
 /// Whether the object is open and each of its doors and lids is open all the way (see
@@ -281,10 +296,8 @@ fn open_wide(world: &mut World, object: ObjectId) -> Result<(), Failure> {
     if !world.state(object, Predicate::Open) {
         world.set_state(object, Predicate::Open, true)?;
     }
-    for (link, [_, hi]) in hinges(world, object) {
-        // The link exists and the position is finite: this cannot fail.
-        let _ = world.set_joint_position(object, link, hi);
-    }
+    let hinges = hinges(world, object);
+    open_all_the_way(world, object, &hinges);
     Ok(())
 }
 
@@ -323,22 +336,21 @@ fn is_closed(world: &World, object: ObjectId) -> bool {
 }
 
 /// A closed openable object the object is inside, if any.
-pub(crate) fn closed_container(world: &World, object: ObjectId) -> Option<ObjectId> {
-    world
-        .objects()
-        .filter(|(id, o)| *id != object && o.is_present() && o.has(Ability::Openable))
-        .map(|(id, _)| id)
-        .find(|&c| !world.state(c, Predicate::Open) && world.core().inside(object, c))
+fn closed_container(world: &World, object: ObjectId) -> Option<ObjectId> {
+    container_where(world, object, |c| !world.state(c, Predicate::Open))
 }
 
-/// An openable object the object is inside that is shut or whose doors are not all open all
-/// the way ([`wide_open`]), if any: what a hand reaching in may find in its way.
-pub(crate) fn shut_container(world: &World, object: ObjectId) -> Option<ObjectId> {
+/// An openable object the object is inside for which `shut` holds, if any.
+pub(crate) fn container_where(
+    world: &World,
+    object: ObjectId,
+    shut: impl Fn(ObjectId) -> bool,
+) -> Option<ObjectId> {
     world
         .objects()
         .filter(|(id, o)| *id != object && o.is_present() && o.has(Ability::Openable))
         .map(|(id, _)| id)
-        .find(|&c| !wide_open(world, c) && world.core().inside(object, c))
+        .find(|&c| shut(c) && world.core().inside(object, c))
 }
 
 /// NAVIGATE_TO: a place to stand facing the object (§5's search), or for a floor a clear

@@ -17,7 +17,7 @@ use crate::fetch_manipulate::reaches as arm_reaches;
 use crate::manipulate::{hand_reaches, placement_in_reach};
 use crate::navigate::floor_gap;
 use crate::primitive::{Call, Failure, Primitive};
-use crate::symbolic::{closed_container, shut_container, wide_open, within};
+use crate::symbolic::{container_where, wide_open, within};
 use behavior_bddl::{GroundGoal, Literal, Predicate, PredicateOracle};
 use behavior_core::{Ability, FLOOR_SYNSET};
 use behavior_env::Env;
@@ -496,17 +496,22 @@ impl<'a> Solver<'a> {
         if self.env.robot().and_then(|r| r.held(hand)).is_some() {
             self.put_down(hand)?;
         }
-        // A hand reaches in only where the way is open: in physical mode, all the way.
-        let shut = match self.mode {
-            Mode::Physical => shut_container(self.world(), x),
-            Mode::Symbolic => closed_container(self.world(), x),
-        };
-        if let Some(c) = shut {
+        if let Some(c) = container_where(self.world(), x, |c| self.to_open(c)) {
             self.approach(c)?;
             self.call(Primitive::Open, c, hand)?;
         }
         self.approach(x)?;
         self.call(Primitive::Grasp, x, hand)
+    }
+
+    /// Whether the openable `c` must be opened before a hand takes from it or puts into it:
+    /// shut, or in physical mode not open all the way ([`wide_open`]: a door ajar stops the
+    /// hand).
+    fn to_open(&self, c: ObjectId) -> bool {
+        match self.mode {
+            Mode::Physical => !wide_open(self.world(), c),
+            Mode::Symbolic => !self.world().state(c, Predicate::Open),
+        }
     }
 
     /// Puts what `hand` holds on the floor of the room the robot is in (or is nearest).
@@ -540,13 +545,9 @@ impl<'a> Solver<'a> {
             other => return Err(format!("{} is not a placement", other.name())),
         };
         self.hold(x, CARRY)?;
-        let shut = match self.mode {
-            Mode::Physical => !wide_open(self.world(), y),
-            Mode::Symbolic => !self.world().state(y, Predicate::Open),
-        };
         if primitive == Primitive::PlaceInside
             && self.world().object(y).has(Ability::Openable)
-            && shut
+            && self.to_open(y)
         {
             self.approach(y)?;
             self.call(Primitive::Open, y, CARRY)?;

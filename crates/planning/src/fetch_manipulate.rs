@@ -6,16 +6,17 @@
 //! pose the world's sampler found, then settling.
 //!
 //! - GRASP: the gripper pointing down at the top of the object's box, its fingers across the
-//!   box's narrower side (other headings after; then tilted toward it from the base's side),
-//!   the fingertips [`FETCH_APPROACH`] short of it; on in a straight line until the palm or a
-//!   finger touches the object (at most [`FETCH_DESCENT`]), closed until it holds (at most
+//!   narrower side of its own box (other headings after; then tilted toward it from the base's
+//!   side), the fingertips [`FETCH_APPROACH`] short of it; on in a straight line until the palm
+//!   or a finger touches the object (at most [`FETCH_DESCENT`]), closed until it holds (at most
 //!   [`CLOSE_STEPS`]; touching and not held, the grasp is forced as the BehaviorRobot's is),
 //!   straight back up, then the arm planned back to where it was, with what it holds (where
 //!   that is not free — a tile does not fit the folded arm — it stays, and the next drive's
 //!   [`tuck`] finds a way to carry it).
 //! - PLACE_*: poses for the held object by the world's sampler (in a copy of the world where the
-//!   gripper let go), the arm planned with it to [`crate::PLACE_HEIGHT`] above one, the gripper
-//!   opened, [`SETTLE_STEPS`] steps to settle, straight up and back.
+//!   gripper let go; held as the gripper points down, tilted or level, upright ways first), the
+//!   arm planned with it to [`crate::PLACE_HEIGHT`] above one, the gripper opened,
+//!   [`SETTLE_STEPS`] steps to settle, straight up and back.
 //!
 //! Executing joint by joint, each step's configuration is what the robot's own joint update
 //! ([`Fetch::joints_after`]) makes of the action, so every configuration the arm will pass is
@@ -252,10 +253,7 @@ fn fetch(env: &Env) -> Option<(&World, &Fetch)> {
 fn grasp_goals(world: &World, fetch: &Fetch, object: ObjectId, rng: &mut SimRng) -> Vec<Pose> {
     let base = fetch.base_pose(world).translation;
     let at = grasp_point(world, object, base);
-    let b = world.aabb(object);
-    let size = b.maxs - b.mins;
-    // The fingers close along the end effector's y: heading −π/2 closes them along x.
-    let across = if size.x <= size.y { -FRAC_PI_2 } else { 0.0 };
+    let across = across_heading(world, object);
     let facing = (at.y - base.y).atan2(at.x - base.x);
     let mut rotations: Vec<Rotation> =
         [across, across + PI, across + FRAC_PI_2, across - FRAC_PI_2]
@@ -278,22 +276,63 @@ fn grasp_goals(world: &World, fetch: &Fetch, object: ObjectId, rng: &mut SimRng)
         .collect()
 }
 
+/// The heading of the gripper pointing down whose fingers close across the object's narrower
+/// side: perpendicular to the longer of its own box's two axes that lie nearest the floor,
+/// in [−π/2, π/2). The fingers close along the end effector's y, so heading `h` closes them
+/// along `h + π/2`. Taken from the world's box instead, a candle lying diagonally (13.6 cm
+/// long, 4 cm thick, a 12 × 15 cm box) had the fingers close along its length, wider than
+/// they open, and a finger came down on it.
+fn across_heading(world: &World, object: ObjectId) -> f32 {
+    let pose = world.pose(object);
+    let size = {
+        let local = world.core().local_aabb(object);
+        local.maxs - local.mins
+    };
+    let vertical = crate::manipulate::vertical_axis(pose.rotation);
+    let long = (0..3)
+        .filter(|&a| a != vertical)
+        .max_by(|&a, &b| size[a].total_cmp(&size[b]))
+        .unwrap_or(0);
+    let mut axis = Vector::ZERO;
+    axis[long] = 1.0;
+    let along = pose.rotation * axis;
+    let heading = along.y.atan2(along.x);
+    if heading >= FRAC_PI_2 {
+        heading - PI
+    } else if heading < -FRAC_PI_2 {
+        heading + PI
+    } else {
+        heading
+    }
+}
+
 /// Where what the gripper holds (`grip`: its pose in the gripper's frame) is with the gripper
-/// pointing down toward `target` from the base, straight down and at each of [`PITCHES`]: the
-/// ways a placement sets it down. The sampler keeps an object's turn, and the gripper as it
-/// comes back from a grasp (tucked, or turned on the way back) points anywhere; a placement as
-/// it is held asks the wrist for a turn the arm has not got (traced: every goal for a pad over
-/// an ash can was 0.7–1 m out of reach of Fetch's IK).
+/// pointing down toward `target` from the base, straight down, at each of [`PITCHES`] and
+/// level: the ways a placement sets it down, those that set it down upright (its own vertical
+/// axis within [`UPRIGHT`] of the world's) first. The sampler keeps an object's turn, and the
+/// gripper as it comes back from a grasp (tucked, or turned on the way back) points anywhere;
+/// a placement as it is held asks the wrist for a turn the arm has not got (traced: every goal
+/// for a pad over an ash can was 0.7–1 m out of reach of Fetch's IK). A candle taken lying
+/// from a carton, set down as it was held, rolled off the table; held level, the gripper
+/// sets it down standing.
 pub(crate) fn held_below(world: &World, fetch: &Fetch, target: ObjectId, grip: &Pose) -> Vec<Pose> {
     let base = fetch.base_pose(world).translation;
     let at = world.aabb(target).center();
     let facing = (at.y - base.y).atan2(at.x - base.x);
     let eef = fetch.eef_pose(world).translation;
-    std::iter::once(FRAC_PI_2)
+    let mut held: Vec<Pose> = std::iter::once(FRAC_PI_2)
         .chain(PITCHES)
+        .chain([0.0])
         .map(|pitch| Pose::from_parts(eef, pointing(facing, pitch)) * *grip)
-        .collect()
+        .collect();
+    // Stable: among the upright and among the others, straight down first.
+    held.sort_by_key(|pose| (pose.rotation * Vector::Z).z.abs() < UPRIGHT.cos());
+    held
 }
+
+/// How far from the vertical an object's own vertical axis may lean for it to be set down
+/// upright, rad.
+const UPRIGHT: f32 = PI / 12.0;
 
 /// Pitches below the floor of the tilted approaches, rad, steepest first.
 const PITCHES: [f32; 3] = [PI / 3.0, PI / 4.0, PI / 6.0];
@@ -878,4 +917,70 @@ fn touches(env: &Env, object: ObjectId) -> bool {
                 .any(|c| c.other.is_some_and(|b| b.object == object))
         })
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use behavior_sim::{ObjectSpec, Part, Primitive};
+
+    /// A candle 13.6 cm long and 4 cm across lying on its side, its axis turned `yaw` about
+    /// the vertical.
+    fn lying_candle(yaw: f32) -> (World, ObjectId) {
+        let mut world = World::default();
+        let wax = Part::new(Primitive::Cylinder {
+            radius: 0.02,
+            half_height: 0.068,
+        });
+        let mut spec = ObjectSpec::new("candle_1", "candle.n.01", vec![wax]);
+        // Its own z (the cylinder's axis) laid along the floor's x, then turned by `yaw`.
+        let lying = Rotation::from_rotation_z(yaw) * Rotation::from_rotation_y(FRAC_PI_2);
+        spec.pose = Pose::from_parts(Vector::new(1.0, 1.0, 0.02), lying);
+        let id = world.add(spec).unwrap();
+        (world, id)
+    }
+
+    #[test]
+    fn the_fingers_close_across_a_lying_candle_whichever_way_it_lies() {
+        for yaw in [0.0, 0.7, -0.7, FRAC_PI_2, 2.4, -3.0] {
+            let (world, candle) = lying_candle(yaw);
+            let heading = across_heading(&world, candle);
+            assert!(
+                (-FRAC_PI_2..FRAC_PI_2).contains(&heading),
+                "yaw {yaw}: {heading}"
+            );
+            // The fingers close along heading + π/2: across the candle's axis, not along it.
+            let closing = heading + FRAC_PI_2;
+            let along = (closing - yaw).cos().abs();
+            assert!(
+                along < 1e-4,
+                "yaw {yaw}: the fingers close {along} along the axis"
+            );
+        }
+    }
+
+    #[test]
+    fn a_candle_held_lying_is_set_down_standing_first() {
+        let (mut world, candle) = lying_candle(0.4);
+        let fetch = Fetch::add(&mut world, Pose::IDENTITY).unwrap();
+        // Held as a grasp from above takes it: its axis across the fingers, along the
+        // gripper's z, the gripper pointing down.
+        let down = Pose::from_rotation(pointing(0.4, FRAC_PI_2));
+        let grip = down.inverse() * world.pose(candle);
+        let poses = held_below(&world, &fetch, candle, &grip);
+        let upright = |pose: &Pose| (pose.rotation * Vector::Z).z.abs() >= UPRIGHT.cos();
+        // Straight down, three tilts and level: only level stands it up, and it comes first.
+        assert_eq!(poses.len(), 5);
+        assert!(upright(&poses[0]), "{:?}", poses[0].rotation);
+        assert!(poses[1..].iter().all(|p| !upright(p)));
+        // Held upright (a can taken from above), straight down stays first.
+        let standing = down.inverse() * Pose::from_translation(Vector::new(1.0, 1.0, 0.1));
+        let poses = held_below(&world, &fetch, candle, &standing);
+        // The candle's box centre lies at (1, 1) from the base: the gripper faces π/4.
+        let facing = std::f32::consts::FRAC_PI_4;
+        let eef = fetch.eef_pose(&world).translation;
+        let straight_down = Pose::from_parts(eef, pointing(facing, FRAC_PI_2)) * standing;
+        assert!(poses[0].rotation.angle_between(straight_down.rotation) < 1e-3);
+        assert!(upright(&poses[0]));
+    }
 }

@@ -445,6 +445,15 @@ pub(crate) fn grasp_point(world: &World, object: ObjectId, shoulder: Vector) -> 
     on_top(world, object, shoulder, GRASP_INSET)
 }
 
+/// Which of an object's own axes (0 x, 1 y, 2 z), turned by `rotation`, lies nearest the
+/// vertical: the axis of its height as it lies now.
+pub(crate) fn vertical_axis(rotation: Rotation) -> usize {
+    let up = rotation.inverse() * Vector::Z;
+    (0..3)
+        .max_by(|&a, &b| up[a].abs().total_cmp(&up[b].abs()))
+        .unwrap_or(2)
+}
+
 /// The point of the object's own box nearest `toward` across the floor, at least `inset` in
 /// from its sides, at the height of the top of the object.
 fn on_top(world: &World, object: ObjectId, toward: Vector, inset: f32) -> Vector {
@@ -452,10 +461,7 @@ fn on_top(world: &World, object: ObjectId, toward: Vector, inset: f32) -> Vector
     let local = world.core().local_aabb(object);
     let mut at = pose.inverse_transform_point(toward);
     // The object's axis nearest the vertical is its height: the point sits at its middle.
-    let up = pose.rotation.inverse() * Vector::Z;
-    let vertical = (0..3)
-        .max_by(|&a, &b| up[a].abs().total_cmp(&up[b].abs()))
-        .unwrap_or(2);
+    let vertical = vertical_axis(pose.rotation);
     for axis in 0..3 {
         let middle = 0.5 * (local.mins[axis] + local.maxs[axis]);
         // How far from the middle the point may lie (never negative: a clamp whose bounds
@@ -881,9 +887,7 @@ fn levelled(world: &World, object: ObjectId) -> World {
     let mut level = world.clone();
     let pose = level.pose(object);
     let up = pose.rotation.inverse() * Vector::Z;
-    let axis = (0..3)
-        .max_by(|&a, &b| up[a].abs().total_cmp(&up[b].abs()))
-        .unwrap_or(2);
+    let axis = vertical_axis(pose.rotation);
     let mut local = Vector::ZERO;
     local[axis] = up[axis].signum();
     let correction = Rotation::from_rotation_arc(pose.rotation * local, Vector::Z);

@@ -9,7 +9,7 @@ use behavior_core::rng::{SimRng, seeded, uniform};
 use behavior_core::{Ability, FLOOR_SYNSET, Predicate};
 use behavior_env::Edit;
 use behavior_robots::{MagicError, REACH_DISTANCE, Robot};
-use behavior_sim::{JointKind, ObjectId, PointKind, Relation, World};
+use behavior_sim::{BodyRef, JointKind, ObjectId, PointKind, Relation, World};
 use rapier3d::math::{Pose, Rotation, Vector};
 
 /// Random points tried in a room for standing on its floor (the original's 60).
@@ -189,9 +189,10 @@ pub fn apply(edit: Edit<'_>, call: &Call) -> Result<(), Failure> {
             )),
             other => Ok(other?),
         },
-        Primitive::Open => open_wide(world, object),
+        Primitive::Open => open_wide(world, object, &robot.objects()),
+        Primitive::Close => shut(world, object, &robot.objects()),
         Primitive::ToggleOn => set(world, object, call.primitive, true),
-        Primitive::Close | Primitive::ToggleOff => set(world, object, call.primitive, false),
+        Primitive::ToggleOff => set(world, object, call.primitive, false),
         Primitive::Slice => Ok(world.set_state(object, Predicate::Sliced, true)?),
         Primitive::Wipe => {
             let tool_soaked = robot
@@ -287,17 +288,88 @@ pub(crate) fn wide_open(world: &World, object: ObjectId) -> bool {
         })
 }
 
+/// The movable things that one of the object's drawers (`link`) holds up — its normal at a
+/// contact within 45° of up — the robot's parts (`robot`) aside.
+fn resting_in(world: &World, object: ObjectId, link: usize, robot: &[ObjectId]) -> Vec<ObjectId> {
+    let drawer = BodyRef {
+        object,
+        link: Some(link),
+    };
+    let mut riders: Vec<ObjectId> = world
+        .core()
+        .contacts(drawer)
+        .unwrap_or_default()
+        .iter()
+        .filter(|c| c.normal.z >= CARRIES)
+        .filter_map(|c| c.other.map(|b| b.object))
+        .filter(|&o| o != object && !robot.contains(&o) && !world.object(o).is_fixed())
+        .collect();
+    riders.sort();
+    riders.dedup();
+    riders
+}
+
+/// How near the vertical the drawer's normal at a contact must be for it to carry what it
+/// touches (cos 45°).
+const CARRIES: f32 = std::f32::consts::FRAC_1_SQRT_2;
+
+/// A drawer's contents and where the drawer was: [`carry_contents`] moves them as it moved.
+struct Contents {
+    link: usize,
+    was: Pose,
+    riders: Vec<ObjectId>,
+}
+
+/// What rests in each of the object's drawers, with each drawer's pose.
+fn contents(world: &World, object: ObjectId, robot: &[ObjectId]) -> Vec<Contents> {
+    limited_links(world, object, Some(JointKind::Prismatic))
+        .into_iter()
+        .map(|(link, _)| Contents {
+            link,
+            was: world.core().link_pose(object, link),
+            riders: resting_in(world, object, link, robot),
+        })
+        .filter(|c| !c.riders.is_empty())
+        .collect()
+}
+
+/// Moves each drawer's contents by the drawer's motion since [`contents`] was taken. Setting a
+/// joint moves only the link: pulled out, a drawer left its necklace hanging over the
+/// carcass, and it fell to the cabinet's floor, out of every hand's reach.
+fn carry_contents(world: &mut World, object: ObjectId, contents: &[Contents]) {
+    for c in contents {
+        let moved = world.core().link_pose(object, c.link) * c.was.inverse();
+        for &rider in &c.riders {
+            let at = moved * world.pose(rider);
+            // A finite pose moved by a finite one: the teleport cannot fail.
+            let _ = world.set_pose(rider, at);
+        }
+    }
+}
+
 /// OPEN's outcome: the object opened as the world's setter opens it (a random non-empty subset
 /// of its joints, as the original's `Open.set_value(True)`, reference §5) where it is shut,
-/// then each of its doors and lids swung all the way. A fridge door opened a tenth of its
-/// swing reads as open, and a hand carrying a box into the fridge meets the door. Drawers
-/// keep the setter's subset: pulled all the way, an upper drawer covers the one below it.
-fn open_wide(world: &mut World, object: ObjectId) -> Result<(), Failure> {
+/// what lies in a drawer carried with it ([`carry_contents`]), then each of its doors and
+/// lids swung all the way. A fridge door opened a tenth of its swing reads as open, and a hand
+/// carrying a box into the fridge meets the door. Drawers keep the setter's subset: pulled all
+/// the way, an upper drawer covers the one below it.
+fn open_wide(world: &mut World, object: ObjectId, robot: &[ObjectId]) -> Result<(), Failure> {
+    let contents = contents(world, object, robot);
     if !world.state(object, Predicate::Open) {
         world.set_state(object, Predicate::Open, true)?;
     }
+    carry_contents(world, object, &contents);
     let hinges = hinges(world, object);
     open_all_the_way(world, object, &hinges);
+    Ok(())
+}
+
+/// CLOSE's outcome: every joint shut by the world's setter, what lies in a drawer carried in
+/// with it (left where the drawer was, it would fall to the floor).
+fn shut(world: &mut World, object: ObjectId, robot: &[ObjectId]) -> Result<(), Failure> {
+    let contents = contents(world, object, robot);
+    set(world, object, Primitive::Close, false)?;
+    carry_contents(world, object, &contents);
     Ok(())
 }
 

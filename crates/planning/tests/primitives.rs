@@ -205,3 +205,66 @@ fn a_wait_lasts_a_second_and_a_refused_primitive_changes_nothing() {
     assert!(matches!(err, Failure::HandEmpty), "{err}");
     assert_eq!(digest(&env), before, "a refused primitive changes nothing");
 }
+
+/// The drawers of `object` that `thing` rests on, by their contacts.
+fn drawers_under(env: &Env, object: ObjectId, thing: ObjectId) -> Vec<usize> {
+    let world = env.world().unwrap();
+    let links = &world.object(object).links;
+    (0..links.len())
+        .filter(|&l| links[l].joint.kind == behavior_sim::JointKind::Prismatic)
+        .filter(|&l| {
+            let drawer = behavior_sim::BodyRef::link(object, l);
+            let contacts = world.core().contacts(drawer).unwrap();
+            contacts
+                .iter()
+                .any(|c| c.other.is_some_and(|b| b.object == thing))
+        })
+        .collect()
+}
+
+#[test]
+fn what_lies_in_a_drawer_comes_out_and_goes_back_in_with_it() {
+    let mut env = episode("collect_misplaced_items", 0);
+    let (cabinet, necklace) = (
+        object(&env, "cabinet.n.01_1"),
+        object(&env, "necklace.n.01_1"),
+    );
+    act(&mut env, Primitive::NavigateTo, cabinet, 1).unwrap();
+    if state(&env, cabinet, Predicate::Open) {
+        act(&mut env, Primitive::Close, cabinet, 1).unwrap();
+    }
+    let drawers = drawers_under(&env, cabinet, necklace);
+    let &[drawer] = drawers.as_slice() else {
+        panic!("the necklace lies in one drawer: {drawers:?}");
+    };
+    let at = |env: &Env| {
+        let world = env.world().unwrap();
+        let link = world.core().link_pose(cabinet, drawer).translation;
+        (link, world.pose(necklace).translation)
+    };
+    // OPEN until the setter's random subset pulls the necklace's drawer (a few tries).
+    let (shut_drawer, shut_necklace) = at(&env);
+    for _ in 0..8 {
+        act(&mut env, Primitive::Open, cabinet, 1).unwrap();
+        if (at(&env).0 - shut_drawer).length() > 0.05 {
+            break;
+        }
+        act(&mut env, Primitive::Close, cabinet, 1).unwrap();
+    }
+    let (open_drawer, open_necklace) = at(&env);
+    let pulled = open_drawer - shut_drawer;
+    assert!(pulled.length() > 0.05, "the drawer moved {pulled:?}");
+    let moved = open_necklace - shut_necklace;
+    assert!(
+        (moved - pulled).length() < 1e-4,
+        "necklace {moved:?}, drawer {pulled:?}"
+    );
+    act(&mut env, Primitive::Close, cabinet, 1).unwrap();
+    let (closed_drawer, closed_necklace) = at(&env);
+    let back = closed_necklace - open_necklace;
+    assert!(
+        (back - (closed_drawer - open_drawer)).length() < 1e-4,
+        "{back:?}"
+    );
+    assert!(env.world().unwrap().core().inside(necklace, cabinet));
+}

@@ -209,6 +209,19 @@ fn organizing_file_cabinet_is_solved_with_physical_primitives_and_replays_bit_fo
 }
 
 #[test]
+fn collect_misplaced_items_is_solved_with_physical_primitives_and_replays_bit_for_bit() {
+    // A necklace taken from the cabinet drawer it lies in, pulled out with the drawer by OPEN,
+    // a shoe and a notebook from under tables, socks from a sofa and the floor, all put on a
+    // table.
+    solved_physically(
+        "collect_misplaced_items",
+        4,
+        "place_ontop",
+        RobotKind::Behavior,
+    );
+}
+
+#[test]
 fn fetch_solves_throwing_away_leftovers_with_physical_primitives_and_replays_bit_for_bit() {
     // Fetch's arm driven joint by joint: hamburgers taken off plates with the gripper pointing
     // down, carried over the base, and let go above the ashcan.

@@ -95,6 +95,7 @@ impl World {
                 return Vec::new();
             }
             let core = &mut self.core;
+            core.note_drift(substep);
             core.lead_kinematic_chains();
             let filter = ContactFilter {
                 ignored: &core.ignored,

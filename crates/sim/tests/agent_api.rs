@@ -308,16 +308,7 @@ fn an_attachment_holds_a_box_and_breaks_past_its_force() {
         .at(v(0.0, 0.0, 0.85));
     spec.density = 1000.0; // 1 kg
     let held = world.add(spec).unwrap();
-    let grasp = world
-        .core_mut()
-        .attach(AttachmentSpec {
-            holder: hand.into(),
-            held: held.into(),
-            at: v(0.0, 0.0, 0.9),
-            kind: AttachmentKind::Fixed,
-            max_force: 50.0,
-        })
-        .unwrap();
+    let grasp = hold_at_50_n(&mut world, hand, held);
     steps(&mut world, 30);
     let state = world.core().attachment(grasp).unwrap();
     let z = world.pose(held).translation.z;
@@ -342,6 +333,35 @@ fn an_attachment_holds_a_box_and_breaks_past_its_force() {
     );
     assert!(world.core_mut().detach(grasp));
     assert!(world.core().attachment(grasp).is_none());
+    // Pulled down with 200 N for a third of a step (as a lid meeting its hinge's limit pulls
+    // on a carried carton), it holds: it breaks only when overloaded in half a step's
+    // substeps, as PyBullet's force-limited constraint lets go only once it has drifted 0.1 m.
+    world
+        .core_mut()
+        .set_pose(held, Pose::from_translation(v(0.0, 0.0, 0.85)))
+        .unwrap();
+    let pulled = hold_at_50_n(&mut world, hand, held);
+    steps(&mut world, 10);
+    let substeps = world.core().substeps().count();
+    let mut pull = PullFor {
+        body: held,
+        substeps: (substeps - 1) / 3,
+        most: 0.0,
+        attachment: pulled,
+    };
+    world.step_with(&mut pull);
+    assert!(
+        pull.most > 50.0,
+        "overloaded in some substeps: {} N",
+        pull.most
+    );
+    let state = world.core().attachment(pulled).unwrap();
+    assert!(!state.broken && state.violation < 0.01, "{state:?}");
+    // Pulled for the whole step, it breaks.
+    pull.substeps = substeps;
+    world.step_with(&mut pull);
+    assert!(world.core().attachment(pulled).unwrap().broken);
+    assert!(world.core_mut().detach(pulled));
     // A point attachment lets the held box swing about the point.
     let point = world.pose(held).translation + v(0.0, 0.0, 0.05);
     let swing = world
@@ -926,4 +946,43 @@ fn a_part_moved_within_its_body_is_where_queries_drawing_and_mass_find_it() {
     let nan = Pose::from_translation(v(f32::NAN, 0.0, 0.0));
     assert!(world.core_mut().set_part_offset(id, 1, nan).is_err());
     assert_eq!(world.object(id).parts[1].offset, moved);
+}
+
+/// Pulls `body` down with 200 N for the first `substeps` substeps of a step, noting the most
+/// force `attachment` applied in them.
+struct PullFor {
+    body: ObjectId,
+    substeps: u32,
+    most: f32,
+    attachment: behavior_sim::AttachmentId,
+}
+
+impl StepHooks for PullFor {
+    fn before_substep(&mut self, world: &mut World, substep: u32) {
+        if let Some(state) = world.core().attachment(self.attachment) {
+            self.most = self.most.max(state.force);
+        }
+        // The force lasts the rest of the step: pushed, then cancelled.
+        let force = match substep {
+            0 => -200.0,
+            s if s == self.substeps => 200.0,
+            _ => return,
+        };
+        world
+            .core_mut()
+            .apply_force(self.body.into(), v(0.0, 0.0, force))
+            .unwrap();
+    }
+}
+
+/// `held` attached to `hand` at (0, 0, 0.9), fixed, at most 50 N.
+fn hold_at_50_n(world: &mut World, hand: ObjectId, held: ObjectId) -> behavior_sim::AttachmentId {
+    let spec = AttachmentSpec {
+        holder: hand.into(),
+        held: held.into(),
+        at: v(0.0, 0.0, 0.9),
+        kind: AttachmentKind::Fixed,
+        max_force: 50.0,
+    };
+    world.core_mut().attach(spec).unwrap()
 }

@@ -9,7 +9,7 @@ use behavior_core::rng::{SimRng, seeded, uniform};
 use behavior_core::{Ability, FLOOR_SYNSET, Predicate};
 use behavior_env::Edit;
 use behavior_robots::{MagicError, REACH_DISTANCE, Robot};
-use behavior_sim::{BodyRef, JointKind, ObjectId, PointKind, Relation, World};
+use behavior_sim::{BodyRef, JointKind, ObjectId, PointKind, Relation, SUPPORT_COS, World};
 use rapier3d::math::{Pose, Rotation, Vector};
 
 /// Random points tried in a room for standing on its floor (the original's 60).
@@ -289,7 +289,8 @@ pub(crate) fn wide_open(world: &World, object: ObjectId) -> bool {
 }
 
 /// The movable things that one of the object's drawers (`link`) holds up — its normal at a
-/// contact within 45° of up — the robot's parts (`robot`) aside.
+/// contact within 45° of up, as `ontop`'s support ([`SUPPORT_COS`]) — the robot's parts
+/// (`robot`) aside.
 fn resting_in(world: &World, object: ObjectId, link: usize, robot: &[ObjectId]) -> Vec<ObjectId> {
     let drawer = BodyRef {
         object,
@@ -300,7 +301,7 @@ fn resting_in(world: &World, object: ObjectId, link: usize, robot: &[ObjectId]) 
         .contacts(drawer)
         .unwrap_or_default()
         .iter()
-        .filter(|c| c.normal.z >= CARRIES)
+        .filter(|c| c.normal.z >= SUPPORT_COS)
         .filter_map(|c| c.other.map(|b| b.object))
         .filter(|&o| o != object && !robot.contains(&o) && !world.object(o).is_fixed())
         .collect();
@@ -308,10 +309,6 @@ fn resting_in(world: &World, object: ObjectId, link: usize, robot: &[ObjectId]) 
     riders.dedup();
     riders
 }
-
-/// How near the vertical the drawer's normal at a contact must be for it to carry what it
-/// touches (cos 45°).
-const CARRIES: f32 = std::f32::consts::FRAC_1_SQRT_2;
 
 /// A drawer's contents and where the drawer was: [`carry_contents`] moves them as it moved.
 struct Contents {

@@ -209,25 +209,24 @@ impl Core {
     /// 0.5 m away that far and let go; ours pulls it back within the substep, so the drift is
     /// read before the solve.
     pub(crate) fn note_drift(&mut self, substep: u32) {
-        let gaps: Vec<f32> = self
-            .attachments
-            .records
-            .values()
-            .map(|r| self.gap(r))
-            .collect();
-        for (record, gap) in self.attachments.records.values_mut().zip(gaps) {
+        // Out of the world while measured against it: no allocation in the step loop.
+        let mut records = std::mem::take(&mut self.attachments.records);
+        for record in records.values_mut() {
+            let gap = self.gap(record);
             record.drift = if substep == 0 {
                 gap
             } else {
                 record.drift.max(gap)
             };
         }
+        self.attachments.records = records;
     }
 
     /// After a substep: records each attachment's force and breaks those that needed too much
     /// in half the substeps of the last action step's length (see the module docs).
     pub(crate) fn watch_attachments(&mut self) {
         let substeps = self.substeps.count();
+        let window = (1u32 << substeps) - 1;
         // Joint impulses are those of the solver's last internal iteration, which spans
         // dt / iterations.
         let params = &self.physics.integration_parameters;
@@ -242,7 +241,6 @@ impl Core {
             record.force = Vector::new(i[0], i[1], i[2]).length() / dt;
             let over = u32::from(record.force > record.spec.max_force);
             record.overloaded = (record.overloaded << 1) | over;
-            let window = (1u32 << substeps) - 1;
             if 2 * (record.overloaded & window).count_ones() >= substeps {
                 self.physics.impulse_joints.remove(handle, true);
                 record.joint = None;

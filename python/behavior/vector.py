@@ -41,13 +41,15 @@ class BehaviorVecEnv(VectorEnv):
         observations=STATE_OBSERVATIONS,
         image_size: int = 128,
         render_mode: Optional[str] = None,
+        image_profile: str = "realistic",
     ):
         if render_mode is not None:
             raise ValueError(f"the vector environment renders nothing, not {render_mode!r}")
         self._env = _core.VecEnv(
             activity,
             num_envs,
-            _options(robot, scene, seed, max_steps, clutter, observations, image_size),
+            _options(robot, scene, seed, max_steps, clutter, observations, image_size,
+                     image_profile=image_profile),
         )
         first, _ = self._env.reset(seed)
         self.num_envs = num_envs

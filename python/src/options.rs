@@ -4,7 +4,7 @@
 use crate::build::{Catalog, EnvSpec};
 use behavior_env::{CameraConfig, EnvConfig, FixedCamera, Placement};
 use behavior_planning::Mode;
-use behavior_render::Modality;
+use behavior_render::{ImageProfile, Modality};
 use pyo3::FromPyObject;
 
 /// Names of the observations besides the images' modalities.
@@ -34,6 +34,8 @@ pub struct EnvOptions {
     pub observations: Vec<String>,
     /// The robot camera's images' side, pixels.
     pub image_size: u32,
+    /// How the cameras draw colour: `realistic` or `fast`.
+    pub image_profile: String,
     /// The side of the overview camera's colour image that `render()` returns, or `None` for
     /// no such camera.
     pub render_size: Option<u32>,
@@ -86,6 +88,10 @@ impl EnvOptions {
         if self.image_size == 0 || self.render_size == Some(0) {
             return Err("image_size and render_size must be at least 1 pixel".into());
         }
+        let profile: ImageProfile = self
+            .image_profile
+            .parse()
+            .map_err(|e| format!("{e} (image_profile)"))?;
         let observations = &mut config.observations;
         observations.proprioception = wanted("proprioception");
         observations.task_obs = wanted("task_obs");
@@ -94,6 +100,7 @@ impl EnvOptions {
             modalities,
             width: self.image_size,
             height: self.image_size,
+            profile,
             ..CameraConfig::default()
         });
         if let Some(size) = self.render_size {
@@ -105,6 +112,7 @@ impl EnvOptions {
                     width: size,
                     height: size,
                     vertical_fov: RENDER_FOV,
+                    profile,
                 },
             });
         }

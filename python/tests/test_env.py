@@ -193,6 +193,19 @@ def test_bad_observation_options_raise():
         behavior.BehaviorEnv(ACTIVITY, render_mode="ansi")
     with pytest.raises(ValueError, match="at least 1 pixel"):
         make(observations=["rgb"], image_size=0)
+    with pytest.raises(ValueError, match="unknown image profile `pretty`; known: realistic, fast"):
+        make(observations=["rgb"], image_profile="pretty")
+
+
+def test_the_image_profiles_differ_in_colour_only():
+    observed = {}
+    for profile in ("realistic", "fast"):
+        env = make(observations=["rgb", "depth", "seg"], image_size=48, image_profile=profile)
+        observed[profile], _ = env.reset(seed=0)
+    realistic, fast = observed["realistic"], observed["fast"]
+    assert np.array_equal(realistic["depth"], fast["depth"])
+    assert np.array_equal(realistic["seg"], fast["seg"])
+    assert not np.array_equal(realistic["rgb"], fast["rgb"])
 
 
 def test_python_runs_on_another_thread_while_rust_works():

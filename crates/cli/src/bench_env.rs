@@ -1,7 +1,7 @@
 //! `behavior bench env`: environment steps per second for both robots, idle and random agents,
 //! physics at 1/300 and 1/120 s, state only; then the BehaviorRobot with its eye camera's RGB,
-//! depth and segmentation at 128² and 512², rendered on whatever adapter there is (lavapipe on a
-//! CPU). On the original's speed-benchmark activities in a covering home with clutter; the time
+//! depth and segmentation at 128² and 512², in the realistic and the fast image profile side by
+//! side, rendered on whatever adapter there is (lavapipe on a CPU). On the original's speed-benchmark activities in a covering home with clutter; the time
 //! split as the original reports it (the images are the observation time), and memory per env.
 
 use crate::episode::{physics, robot_kind};
@@ -10,6 +10,7 @@ use crate::sample::first_covering;
 use crate::scene::with_clutter;
 use anyhow::{Context, Result};
 use behavior_env::{Agent, CameraConfig, Env, EnvConfig, Instances};
+use behavior_render::ImageProfile;
 use indicatif::ProgressBar;
 use serde::Serialize;
 use std::path::Path;
@@ -44,6 +45,9 @@ pub struct BenchEnvArgs {
     /// Only the configurations with images.
     #[arg(long)]
     images_only: bool,
+    /// The image profiles to time (repeat the flag for several); default: realistic and fast.
+    #[arg(long = "profile", value_name = "PROFILE")]
+    profiles: Vec<ImageProfile>,
     /// The eye camera's image sizes, square (repeat the flag for several); default: 128 and 512.
     #[arg(long = "image-size", value_name = "N", value_parser = clap::value_parser!(u32).range(1..=4096))]
     image_sizes: Vec<u32>,
@@ -61,6 +65,8 @@ struct Row {
     physics_dt: String,
     /// `none`, or the eye camera's image size (RGB, depth and segmentation).
     images: String,
+    /// The image profile (`-` without images).
+    profile: String,
     steps_per_second: f64,
     /// Mean per step, µs.
     physics_us: f64,
@@ -80,6 +86,9 @@ struct Report {
     /// Resident memory added per environment (world, robot, metrics, instance), MB: the growth
     /// of the process's resident set over eight environments kept alive, divided by eight.
     memory_per_env_mb: f64,
+    /// The same with the eye camera's 128² images in the realistic profile (each env its own
+    /// renderer, shadow maps included), MB.
+    memory_per_env_with_images_mb: Option<f64>,
 }
 
 fn resident_mb() -> f64 {
@@ -98,6 +107,12 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let taxonomy = Arc::new(prelude.knowledge.taxonomy.clone());
     let mut rows = Vec::new();
     let mut memory = 0.0f64;
+    let mut memory_images: Option<f64> = None;
+    let profiles = if args.profiles.is_empty() {
+        ImageProfile::ALL.to_vec()
+    } else {
+        args.profiles.clone()
+    };
     let names: Vec<&str> = if args.activities.is_empty() {
         ACTIVITIES.to_vec()
     } else {
@@ -115,7 +130,7 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         let images = if args.state_only {
             0
         } else {
-            2 * sizes.len() as u64
+            2 * (sizes.len() * profiles.len()) as u64
         };
         ProgressBar::new(names.len() as u64 * (state + images))
     };
@@ -131,6 +146,12 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
             .with_context(|| format!("sampling {name}"))?;
         let instance = sampler.start().context("no episode")?.instance.clone();
         memory = memory.max(memory_per_env(&base, &instance)?);
+        if !args.state_only {
+            let mut with_images = base.clone();
+            with_images.observations.camera = Some(CameraConfig::default());
+            let grown = memory_per_env(&with_images, &instance)?;
+            memory_images = Some(memory_images.map_or(grown, |m| m.max(grown)));
+        }
         let objects = sampler.world().map_or(0, |w| {
             w.objects()
                 .filter(|(_, o)| o.category != "wall.n.01")
@@ -159,6 +180,7 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
                         agent: agent.to_string(),
                         physics_dt: dt.to_string(),
                         images: "none".into(),
+                        profile: "-".into(),
                         ..row
                     });
                     bar.inc(1);
@@ -168,29 +190,34 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         if args.state_only {
             continue;
         }
-        for &size in &sizes {
-            for agent in ["idle", "random"] {
-                let mut config = base.clone();
-                config.instances = Instances::Saved(vec![instance.clone()]);
-                config.max_steps = u32::MAX;
-                config.observations.camera = Some(CameraConfig {
-                    width: size,
-                    height: size,
-                    ..CameraConfig::default()
-                });
-                let row = measure(config, agent, args.image_steps)?;
-                rows.push(Row {
-                    activity: name.to_string(),
-                    scene: home.name.clone(),
-                    objects,
-                    robot: "behavior".into(),
-                    agent: agent.to_string(),
-                    physics_dt: "1/300".into(),
-                    images: format!("{size}²"),
-                    ..row
-                });
-                bar.inc(1);
-            }
+        // Profiles side by side: each size's and agent's rows of every profile together.
+        let image_rows = sizes
+            .iter()
+            .flat_map(|s| ["idle", "random"].map(|a| (s, a)))
+            .flat_map(|(s, a)| profiles.iter().map(move |p| (s, a, p)));
+        for (&size, agent, &profile) in image_rows {
+            let mut config = base.clone();
+            config.instances = Instances::Saved(vec![instance.clone()]);
+            config.max_steps = u32::MAX;
+            config.observations.camera = Some(CameraConfig {
+                width: size,
+                height: size,
+                profile,
+                ..CameraConfig::default()
+            });
+            let row = measure(config, agent, args.image_steps)?;
+            rows.push(Row {
+                activity: name.to_string(),
+                scene: home.name.clone(),
+                objects,
+                robot: "behavior".into(),
+                agent: agent.to_string(),
+                physics_dt: "1/300".into(),
+                images: format!("{size}²"),
+                profile: profile.to_string(),
+                ..row
+            });
+            bar.inc(1);
         }
     }
     bar.finish_and_clear();
@@ -199,6 +226,7 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         image_steps: args.image_steps,
         rows,
         memory_per_env_mb: memory,
+        memory_per_env_with_images_mb: memory_images,
     };
     if args.json {
         println!("{}", serde_json::to_string_pretty(&report)?);
@@ -252,6 +280,7 @@ fn measure(config: EnvConfig, agent: &str, steps: u32) -> Result<Row> {
         agent: String::new(),
         physics_dt: String::new(),
         images: String::new(),
+        profile: String::new(),
         steps_per_second: f64::from(t.steps) / t.total.as_secs_f64().max(1e-12),
         physics_us: per(t.physics),
         rules_us: per(t.rules),
@@ -264,13 +293,14 @@ fn measure(config: EnvConfig, agent: &str, steps: u32) -> Result<Row> {
 
 fn print(report: &Report) {
     println!(
-        "{:<27} {:>7} {:<8} {:<6} {:<6} {:<6} {:>9} {:>9} {:>8} {:>9} {:>7} {:>7}",
+        "{:<27} {:>7} {:<8} {:<6} {:<6} {:<6} {:<9} {:>9} {:>9} {:>8} {:>9} {:>7} {:>7}",
         "activity",
         "objects",
         "robot",
         "agent",
         "dt",
         "images",
+        "profile",
         "steps/s",
         "physics",
         "rules",
@@ -280,13 +310,14 @@ fn print(report: &Report) {
     );
     for r in &report.rows {
         println!(
-            "{:<27} {:>7} {:<8} {:<6} {:<6} {:<6} {:>9.0} {:>7.0}µs {:>6.0}µs {:>7.1}µs {:>5.0}µs {:>6.1}%",
+            "{:<27} {:>7} {:<8} {:<6} {:<6} {:<6} {:<9} {:>9.0} {:>7.0}µs {:>6.0}µs {:>7.1}µs {:>5.0}µs {:>6.1}%",
             r.activity,
             r.objects,
             r.robot,
             r.agent,
             r.physics_dt,
             r.images,
+            r.profile,
             r.steps_per_second,
             r.physics_us,
             r.rules_us,
@@ -299,4 +330,7 @@ fn print(report: &Report) {
         "{} timed steps per row ({} with images) after {WARMUP} warm-up steps; memory per env ≈ {:.0} MB",
         report.steps, report.image_steps, report.memory_per_env_mb
     );
+    if let Some(mb) = report.memory_per_env_with_images_mb {
+        println!("memory per env with the eye's 128² realistic images ≈ {mb:.0} MB");
+    }
 }

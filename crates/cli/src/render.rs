@@ -7,7 +7,8 @@ use crate::prelude::Prelude;
 use anyhow::{Context, Result, bail};
 use behavior_env::{Agent, Env, categories};
 use behavior_render::{
-    Camera, CategoryTable, Frame, Modality, Pixels, Renderer, Scene, View, save_npy, save_png,
+    Camera, CategoryTable, Frame, ImageProfile, Modality, Pixels, Renderer, Scene, View, save_npy,
+    save_png,
 };
 use behavior_sim::World;
 use serde::Serialize;
@@ -36,6 +37,10 @@ pub struct RenderArgs {
         default_value = "rgb,depth,normal,seg,ins_seg,highlight,flow,scene_flow"
     )]
     modalities: Vec<String>,
+    /// How colour is drawn: realistic (materials, the home's sun with shadows, room lamps) or
+    /// fast (flat colours); the other modalities are the same in both.
+    #[arg(long, default_value = "realistic")]
+    profile: ImageProfile,
     /// Random action steps before the picture (the flow modalities show the last one's motion).
     #[arg(long, default_value_t = 0)]
     steps: u32,
@@ -121,7 +126,7 @@ pub fn render(args: RenderArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let Built { mut env, .. } = args.episode.build(&prelude, |_| {})?;
     let mut renderer = Renderer::new()?;
     let table = categories(&prelude.knowledge.taxonomy);
-    let mut view = View::new(camera(&args, &env)?);
+    let mut view = View::with_profile(camera(&args, &env)?, args.profile);
     let mut agent = Agent::named("random", args.episode.seed).context("the random agent")?;
     let dim = env.robot().map_or(0, |r| r.action_dim());
     let mut action = Vec::new();

@@ -7,6 +7,7 @@ use crate::video::Video;
 use anyhow::{Context, Result};
 use behavior_env::record::{CHECKPOINT_EVERY, Recorder};
 use behavior_env::{Agent, EpisodeMetrics, categories};
+use behavior_render::ImageProfile;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -39,6 +40,10 @@ pub struct RunArgs {
     /// The video's pictures' width and height, pixels.
     #[arg(long, default_value_t = 256)]
     video_size: u32,
+    /// How the video's pictures are drawn: realistic (materials, the home's sun with shadows,
+    /// room lamps) or fast (flat colours).
+    #[arg(long, default_value = "realistic")]
+    profile: ImageProfile,
     #[arg(long)]
     json: bool,
 }
@@ -83,7 +88,7 @@ pub fn run(args: RunArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let mut video = match &args.video {
         Some(path) => {
             let table = categories(&prelude.knowledge.taxonomy);
-            let mut video = Video::create(path, &env, args.video_size, table)?;
+            let mut video = Video::create(path, &env, (args.video_size, args.profile), table)?;
             video.capture(&env, 0, env.score().map_or(0.0, |s| s.q), false)?;
             Some(video)
         }

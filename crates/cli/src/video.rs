@@ -10,7 +10,7 @@ use crate::map::text;
 use crate::render::{OVERVIEW_FOV, draw};
 use anyhow::{Context, Result, bail};
 use behavior_env::Env;
-use behavior_render::{Camera, CategoryTable, Modality, Pixels, Renderer, View};
+use behavior_render::{Camera, CategoryTable, ImageProfile, Modality, Pixels, Renderer, View};
 use gif::{Encoder, Frame, Repeat};
 use image::{Rgb, RgbImage};
 use std::fs::File;
@@ -41,8 +41,13 @@ pub struct Video {
 
 impl Video {
     /// Starts a video of `env`'s episode (after its reset) at `path` (`.gif`), each picture
-    /// `size` pixels square.
-    pub fn create(path: &Path, env: &Env, size: u32, categories: CategoryTable) -> Result<Video> {
+    /// `size` pixels square and drawn in `profile`.
+    pub fn create(
+        path: &Path,
+        env: &Env,
+        (size, profile): (u32, ImageProfile),
+        categories: CategoryTable,
+    ) -> Result<Video> {
         let is_gif = path
             .extension()
             .is_some_and(|e| e.eq_ignore_ascii_case("gif"));
@@ -61,12 +66,16 @@ impl Video {
         }
         let world = env.world().context("no episode")?;
         let robot = env.robot().context("no robot")?;
-        let eye = View::new(Camera {
-            width: size,
-            height: size,
-            ..Camera::eye(robot.camera_pose(world))
-        });
-        let overview = View::new(Camera::overview(world, size, size, OVERVIEW_FOV)?);
+        let eye = View::with_profile(
+            Camera {
+                width: size,
+                height: size,
+                ..Camera::eye(robot.camera_pose(world))
+            },
+            profile,
+        );
+        let overview =
+            View::with_profile(Camera::overview(world, size, size, OVERVIEW_FOV)?, profile);
         let partial = path.with_extension("gif.part");
         let cannot = || format!("cannot write {}", partial.display());
         let file = File::create(&partial).with_context(cannot)?;

@@ -9,7 +9,8 @@
 use crate::observation::{Reading, Sensor, SensorInput};
 use behavior_bddl::Taxonomy;
 use behavior_render::{
-    Camera, CategoryTable, Lidar, Modality, Pattern, Pixels, RenderError, Renderer, Scene, View,
+    Camera, CategoryTable, ImageProfile, Lidar, Modality, Pattern, Pixels, RenderError, Renderer,
+    Scene, View,
 };
 use behavior_robots::RobotKind;
 use behavior_sim::QueryFilter;
@@ -43,17 +44,21 @@ pub struct CameraConfig {
     pub height: u32,
     /// rad.
     pub vertical_fov: f32,
+    /// How the colour image is drawn: realistic (the default) or fast. Depth, segmentation
+    /// and flow are the same in both.
+    pub profile: ImageProfile,
 }
 
 impl Default for CameraConfig {
     /// The original's onboard-sensing camera: 128², 120° vertically, RGB, depth and semantic
-    /// segmentation.
+    /// segmentation, colour in the realistic profile.
     fn default() -> Self {
         CameraConfig {
             modalities: vec![Modality::Rgb, Modality::Depth, Modality::Seg],
             width: behavior_render::EYE_SIZE,
             height: behavior_render::EYE_SIZE,
             vertical_fov: behavior_render::EYE_FOV,
+            profile: ImageProfile::default(),
         }
     }
 }
@@ -111,8 +116,8 @@ impl Rig {
         Ok(Rig {
             prefix,
             placement,
+            view: View::with_profile(camera, config.profile),
             config,
-            view: View::new(camera),
             placed: false,
         })
     }

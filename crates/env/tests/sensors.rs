@@ -3,7 +3,7 @@
 mod common;
 
 use behavior_env::{CameraConfig, Env, FixedCamera, Obs, Placement, Reading, categories};
-use behavior_render::{Modality, Pixels};
+use behavior_render::{ImageProfile, Modality, Pixels};
 use common::*;
 
 fn camera_env(name: &str, robot: &str) -> Env {
@@ -136,6 +136,7 @@ fn fixed_cameras_stand_still_and_the_overview_takes_in_the_home() {
                 width: 96,
                 height: 64,
                 vertical_fov: 60f32.to_radians(),
+                ..CameraConfig::default()
             },
         },
     ];
@@ -220,4 +221,56 @@ fn occlusion_culling_leaves_the_eye_s_images_as_they_are_in_furnished_homes() {
         );
     }
     assert!(culled_somewhere > 0, "nothing was culled in three homes");
+}
+
+/// In a home, with its rooms' lamps and the sun's shadow maps: the realistic and the fast
+/// profile differ only in colour, step after step.
+#[test]
+fn the_image_profiles_differ_in_colour_only() {
+    let observe = |profile: ImageProfile| {
+        let mut config = config("re-shelving_library_books");
+        config.observations.camera = Some(CameraConfig {
+            modalities: vec![
+                Modality::Rgb,
+                Modality::Depth,
+                Modality::Seg,
+                Modality::Flow,
+            ],
+            profile,
+            ..CameraConfig::default()
+        });
+        let mut env = Env::new(config);
+        let (first, _) = env.reset(0).unwrap();
+        let mut action = vec![0.0; env.robot().unwrap().action_dim()];
+        action[0] = 0.5;
+        action[5] = 0.5;
+        let last = (0..5)
+            .map(|_| env.step(&action).unwrap().obs)
+            .last()
+            .unwrap();
+        [first, last]
+    };
+    let (realistic, fast) = (
+        observe(ImageProfile::Realistic),
+        observe(ImageProfile::Fast),
+    );
+    for (r, f) in realistic.iter().zip(&fast) {
+        for key in ["depth", "seg", "flow"] {
+            assert_eq!(
+                get(r, key),
+                get(f, key),
+                "{key} differs between the profiles"
+            );
+        }
+        assert_ne!(
+            get(r, "rgb"),
+            get(f, "rgb"),
+            "the profiles drew the same colours"
+        );
+    }
+    assert_eq!(
+        realistic,
+        observe(ImageProfile::Realistic),
+        "the realistic images changed"
+    );
 }

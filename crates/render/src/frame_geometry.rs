@@ -28,6 +28,12 @@ pub(crate) struct FrameVertex {
     pub(crate) color: [f32; 4],
     /// Instance id, and category id | highlight << 16.
     pub(crate) ids: [u32; 2],
+    /// Where the point is in its part's own frame, m (for the realistic profile's patterns).
+    pub(crate) local: [f32; 3],
+    /// The part's half size, m.
+    pub(crate) extent: [f32; 3],
+    /// The part's finish: pattern, roughness and metallic, and its object's seed.
+    pub(crate) surface: [u32; 2],
 }
 
 /// The lists, kept between frames so that a frame like the last allocates nothing.
@@ -79,6 +85,7 @@ impl FrameGeometry {
             let previous = affine(&instance.previous);
             let [x, y, z] = instance.normal;
             let normal = Mat3A::from_cols_array_2d(&[x, y, z]).transpose();
+            let scale = Vec3A::from_array(instance.scale);
             self.vertices.extend(mesh.vertices.iter().map(|v| {
                 let p = Vec3A::from_array(v.position);
                 let position = model.transform_point3a(p).to_array();
@@ -93,6 +100,9 @@ impl FrameGeometry {
                     shine: instance.shine,
                     color: instance.color,
                     ids: instance.ids,
+                    local: (p * scale).to_array(),
+                    extent: instance.extent,
+                    surface: instance.surface,
                 }
             }));
             let placed = &self.vertices[base..];

@@ -4,8 +4,10 @@
 use crate::appearance::{DUST, Look, STAIN, Shown, WATER, look};
 use crate::camera::Camera;
 use crate::categories::{CategoryTable, DUST_CATEGORY, STAIN_CATEGORY, WATER_CATEGORY};
+use crate::finish::{Finish, Pattern, finish};
 use crate::mesh::{Drawn, MeshStore, contains};
 use crate::occlusion::Occlusion;
+use crate::profile::ImageProfile;
 use behavior_core::Predicate;
 use behavior_sim::{Material, ObjectId, Primitive, VisualShape, World};
 use rapier3d::glamx::{Mat3, Mat4, Vec4};
@@ -39,6 +41,12 @@ pub(crate) struct Instance {
     pub(crate) shine: f32,
     /// Instance id, and category id | highlight << 16.
     pub(crate) ids: [u32; 2],
+    /// The mesh's stretch (its vertices times this are in metres in the part's frame).
+    pub(crate) scale: [f32; 3],
+    /// The part's half size, m.
+    pub(crate) extent: [f32; 3],
+    /// Its finish for the realistic profile ([`Finish::packed`]).
+    pub(crate) surface: [u32; 2],
 }
 
 /// Which drawn thing an instance is, to find its transform in the previous frame.
@@ -77,7 +85,7 @@ pub(crate) struct Batch {
 }
 
 /// Rows of the affine transform `pose · scale`.
-fn rows(pose: &Pose, scale: Vector) -> [[f32; 4]; 3] {
+pub(crate) fn rows(pose: &Pose, scale: Vector) -> [[f32; 4]; 3] {
     let m = Mat3::from_quat(pose.rotation) * Mat3::from_diagonal(scale);
     let t = pose.translation;
     let r = m.transpose();
@@ -117,6 +125,10 @@ pub(crate) struct Gatherer<'a> {
     pub(crate) previous: Option<&'a History>,
     /// Whether to leave out what big boxes hide (see `occlusion.rs`).
     pub(crate) cull: bool,
+    /// How colour is drawn: the realistic profile finishes each part (`finish.rs`).
+    pub(crate) profile: ImageProfile,
+    /// The home's seed, for its palette.
+    pub(crate) home: u64,
 }
 
 /// One instance before it is put in drawing order.
@@ -200,26 +212,22 @@ impl Gatherer<'_> {
         [id.0 + 1, category | (highlighted << 16)]
     }
 
-    fn instance(
-        &self,
-        mesh: u32,
-        key: Key,
-        placed: (&Pose, Vector),
-        look: Look,
-        ids: [u32; 2],
-    ) -> Instance {
-        let (pose, scale) = placed;
-        let model = rows(pose, scale);
+    fn instance(&self, mesh: u32, key: Key, placed: (&Pose, &Drawn), shade: Shade) -> Instance {
+        let (pose, drawn) = placed;
+        let model = rows(pose, drawn.scale);
         let previous = self.previous.and_then(|h| h.model(key)).unwrap_or(model);
-        let [r, g, b] = look.albedo;
+        let [r, g, b] = shade.look.albedo;
         Instance {
             mesh,
             model,
-            normal: normal_rows(pose, scale),
+            normal: normal_rows(pose, drawn.scale),
             previous,
-            color: [r, g, b, look.emission],
-            shine: look.shine,
-            ids,
+            color: [r, g, b, shade.look.emission],
+            shine: shade.look.shine,
+            ids: shade.ids,
+            scale: drawn.scale.to_array(),
+            extent: drawn.extent.to_array(),
+            surface: shade.surface,
         }
     }
 
@@ -250,8 +258,22 @@ impl Gatherer<'_> {
             }
             let pixels = self.pixels(centre, drawn.reach);
             let mesh = self.meshes.id(drawn.key.sized(pixels), &part.shape);
-            let look = look(part.visual.color, part.visual.material, shown);
-            let instance = self.instance(mesh, key, (&part.pose, drawn.scale), look, ids);
+            let shade = match self.profile {
+                ImageProfile::Fast => Shade {
+                    look: look(part.visual.color, part.visual.material, shown),
+                    ids,
+                    surface: [0, 0],
+                },
+                ImageProfile::Realistic => {
+                    let finish = finish(world, id, part.visual, self.home);
+                    Shade {
+                        look: look(finish.color, part.visual.material, shown),
+                        ids,
+                        surface: finish.packed(),
+                    }
+                }
+            };
+            let instance = self.instance(mesh, key, (&part.pose, &drawn), shade);
             out.pending.push(Pending {
                 centre,
                 reach: drawn.reach,
@@ -292,8 +314,12 @@ impl Gatherer<'_> {
                     continue;
                 }
                 let ids = [id.0 + 1, u32::from(self.scene.categories.id(category))];
-                let look = look(*color, Material::Paper, Shown::default());
-                let dots = Dots { shape, look, ids };
+                let shade = Shade {
+                    look: look(*color, Material::Paper, Shown::default()),
+                    ids,
+                    surface: speck(Pattern::Plain, 0.9),
+                };
+                let dots = Dots { shape, shade };
                 let key = |n| Key::Particle(id.0, kind as u8, n);
                 self.dots(&dots, &points, key, planes, out);
             }
@@ -306,12 +332,15 @@ impl Gatherer<'_> {
             return;
         }
         let ids = [0, u32::from(self.scene.categories.id(WATER_CATEGORY))];
-        let look = look(WATER, Material::Glass, Shown::default());
+        let shade = Shade {
+            look: look(WATER, Material::Glass, Shown::default()),
+            ids,
+            surface: speck(Pattern::Glass, 0.05),
+        };
         let ball = Primitive::Sphere { radius: 0.009 };
         let dots = Dots {
             shape: &ball,
-            look,
-            ids,
+            shade,
         };
         self.dots(&dots, &drops, Key::Drop, planes, out);
     }
@@ -337,7 +366,7 @@ impl Gatherer<'_> {
             let mesh = self
                 .meshes
                 .id(drawn.key.sized(self.pixels(p, drawn.reach)), &shape);
-            let instance = self.instance(mesh, key, (&pose, drawn.scale), dots.look, dots.ids);
+            let instance = self.instance(mesh, key, (&pose, &drawn), dots.shade);
             out.pending.push(Pending {
                 centre: p,
                 reach: drawn.reach,
@@ -354,11 +383,31 @@ fn distance(occluder: &(Pose, Vector), eye: Vector) -> f32 {
     (occluder.0.translation - eye).length()
 }
 
-/// Small things drawn at points (dust, stains, drops): one shape, look and ids for all.
-struct Dots<'a> {
-    shape: &'a Primitive,
+/// How an instance is coloured and labelled.
+#[derive(Clone, Copy)]
+struct Shade {
     look: Look,
     ids: [u32; 2],
+    /// [`Finish::packed`], or zeros in the fast profile.
+    surface: [u32; 2],
+}
+
+/// The packed finish of particles and drops: a plain pattern of this roughness.
+fn speck(pattern: Pattern, roughness: f32) -> [u32; 2] {
+    Finish {
+        color: [0; 3],
+        pattern,
+        roughness,
+        metallic: 0.0,
+        seed: 0,
+    }
+    .packed()
+}
+
+/// Small things drawn at points (dust, stains, drops): one shape, shade and ids for all.
+struct Dots<'a> {
+    shape: &'a Primitive,
+    shade: Shade,
 }
 
 /// Puts instances in drawing order: nearest first, so that the depth test spares the shading of

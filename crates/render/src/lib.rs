@@ -11,6 +11,12 @@
 //! `mesa-vulkan-drivers libvulkan1`) or a GPU's driver; Metal and DX12 elsewhere. Without an
 //! adapter [`Renderer::new`] says which packages to install.
 //!
+//! Colour comes in two [`ImageProfile`]s, chosen per [`View`]: `realistic` (the default:
+//! procedural materials in each home's palette, `finish.rs`; the home's sun with shadow maps,
+//! `shadow.rs`, sky and ground ambient and a lamp per room, `lighting.rs`; filmic tone mapping,
+//! `realistic.wgsl`) and `fast` (flat colours under one light, `shader.wgsl`). Depth, normals,
+//! segmentation and flow are drawn by the same arithmetic in both and are identical.
+//!
 //! States are visible (see `appearance.rs`): cooked browner, burnt dark, frozen frosted, soaked
 //! darker, toggled on glowing; doors and drawers at their joints, sliced halves, dust and stain
 //! particles on the surfaces they lie on, and water drops, as the world has them.
@@ -26,15 +32,19 @@ mod camera;
 mod categories;
 mod error;
 mod export;
+mod finish;
 mod frame_geometry;
 mod gpu;
 mod instances;
 mod lidar;
+mod lighting;
 mod mesh;
 mod modality;
 mod occlusion;
 mod pipeline;
+mod profile;
 mod renderer;
+mod shadow;
 mod targets;
 
 pub use appearance::{DUST, Look, STAIN, WATER, state_look};
@@ -45,4 +55,5 @@ pub use export::{ExportError, save_npy, save_png, to_rgb};
 pub use instances::Scene;
 pub use lidar::{Lidar, Pattern, Scan};
 pub use modality::{Frame, Image, Modality, Pixels, UnknownModality};
+pub use profile::{ImageProfile, UnknownProfile};
 pub use renderer::{FrameStats, Renderer, View};

@@ -98,6 +98,8 @@ pub(crate) struct Drawn {
     pub(crate) scale: Vector,
     /// A ball around the shape's origin that holds it (in its own frame, scaled), m.
     pub(crate) reach: f32,
+    /// Half its size along its own axes, m (what the realistic profile's patterns scale by).
+    pub(crate) extent: Vector,
 }
 
 impl Drawn {
@@ -108,6 +110,7 @@ impl Drawn {
                 key: MeshKey::Visual(hash_mesh(m)),
                 scale: Vector::ONE,
                 reach: m.vertices.iter().map(|v| v.length()).fold(0.0, f32::max),
+                extent: half_size(&m.vertices),
             },
         }
     }
@@ -118,11 +121,13 @@ impl Drawn {
                 key: MeshKey::UnitBox,
                 scale: half_extents,
                 reach: half_extents.length(),
+                extent: half_extents,
             },
             Primitive::Sphere { radius } => Drawn {
                 key: MeshKey::UnitBall(Detail::Fine),
                 scale: Vector::splat(radius),
                 reach: radius,
+                extent: Vector::splat(radius),
             },
             Primitive::Cylinder {
                 radius,
@@ -131,6 +136,7 @@ impl Drawn {
                 key: MeshKey::UnitCylinder(Detail::Fine),
                 scale: Vector::new(radius, radius, half_height),
                 reach: (radius * radius + half_height * half_height).sqrt(),
+                extent: Vector::new(radius, radius, half_height),
             },
             Primitive::Capsule {
                 radius,
@@ -143,20 +149,35 @@ impl Drawn {
                 },
                 scale: Vector::ONE,
                 reach: radius + half_height,
+                extent: Vector::new(radius, radius, radius + half_height),
             },
             Primitive::ConvexHull { ref points } => Drawn {
                 key: MeshKey::Hull(hash_points(points)),
                 scale: Vector::ONE,
                 reach: points.iter().map(|v| v.length()).fold(0.0, f32::max),
+                extent: half_size(points),
             },
         }
+    }
+}
+
+/// Half the size of the box around `points` along each axis.
+fn half_size(points: &[Vector]) -> Vector {
+    let (lo, hi) = points.iter().fold(
+        (Vector::splat(f32::MAX), Vector::splat(f32::MIN)),
+        |(lo, hi), &p| (lo.min(p), hi.max(p)),
+    );
+    if lo.x > hi.x {
+        Vector::ZERO
+    } else {
+        (hi - lo) * 0.5
     }
 }
 
 /// A 64-bit hash of some numbers' bits, quick enough to run on every part every frame: four
 /// lanes of xor-and-multiply that do not wait on each other, folded at the end. (Byte-wise
 /// FNV-1a, used before, took a third of a frame's gathering in a furnished home.)
-fn hash_words(words: impl Iterator<Item = u32>) -> u64 {
+pub(crate) fn hash_words(words: impl Iterator<Item = u32>) -> u64 {
     const K: u64 = 0x9e37_79b9_7f4a_7c15;
     let mut lanes: [u64; 4] = [
         0x243f_6a88_85a3_08d3,

@@ -2,6 +2,7 @@
 //! shared layout and the per-frame globals.
 
 use crate::frame_geometry::FrameVertex;
+use crate::profile::ImageProfile;
 use crate::targets::{Pass, Source};
 use bytemuck::{Pod, Zeroable};
 use std::collections::BTreeMap;
@@ -32,27 +33,84 @@ pub(crate) struct Globals {
     pub(crate) size: [f32; 4],
 }
 
-/// The shader, the globals' binding, and the pipelines made so far.
+/// The shaders, the globals' binding, the realistic profile's light binding, and the pipelines
+/// made so far.
 pub(crate) struct Pipelines {
+    /// The fast profile's surface pass and the motion pass.
     module: wgpu::ShaderModule,
+    /// The realistic profile's surface pass.
+    realistic: wgpu::ShaderModule,
     layout: wgpu::PipelineLayout,
+    realistic_layout: wgpu::PipelineLayout,
     pub(crate) globals: wgpu::Buffer,
     pub(crate) bind_group: wgpu::BindGroup,
-    /// By pass and the targets written (a bit per [`Source::location`]).
-    made: BTreeMap<(Pass, u8), wgpu::RenderPipeline>,
+    /// The realistic pass's lights, shadow maps and their sampler.
+    pub(crate) lights_layout: wgpu::BindGroupLayout,
+    /// By pass, profile and the targets written (a bit per [`Source::location`]).
+    made: BTreeMap<(Pass, ImageProfile, u8), wgpu::RenderPipeline>,
 }
 
 /// `FrameVertex`'s fields in order.
-const VERTEX_ATTRIBUTES: [wgpu::VertexAttribute; 6] = wgpu::vertex_attr_array![
-    0 => Float32x3, 1 => Float32x3, 2 => Float32x3, 3 => Float32, 4 => Float32x4, 5 => Uint32x2
+const VERTEX_ATTRIBUTES: [wgpu::VertexAttribute; 9] = wgpu::vertex_attr_array![
+    0 => Float32x3, 1 => Float32x3, 2 => Float32x3, 3 => Float32, 4 => Float32x4, 5 => Uint32x2,
+    6 => Float32x3, 7 => Float32x3, 8 => Uint32x2
 ];
+
+/// A shader module of the shared prelude (`common.wgsl`) and `body`.
+fn module(device: &wgpu::Device, label: &str, body: &str) -> wgpu::ShaderModule {
+    let source = format!("{}\n{body}", include_str!("common.wgsl"));
+    device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some(label),
+        source: wgpu::ShaderSource::Wgsl(source.into()),
+    })
+}
+
+/// The realistic pass's second bind group: the lights' uniform, the two shadow maps and a
+/// comparison sampler (`realistic.wgsl`'s group 1).
+fn lights_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
+    let map = |binding| wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::FRAGMENT,
+        ty: wgpu::BindingType::Texture {
+            sample_type: wgpu::TextureSampleType::Depth,
+            view_dimension: wgpu::TextureViewDimension::D2,
+            multisampled: false,
+        },
+        count: None,
+    };
+    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some("lights"),
+        entries: &[
+            wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::FRAGMENT,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Uniform,
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
+                count: None,
+            },
+            map(1),
+            map(2),
+            wgpu::BindGroupLayoutEntry {
+                binding: 3,
+                visibility: wgpu::ShaderStages::FRAGMENT,
+                ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison),
+                count: None,
+            },
+        ],
+    })
+}
 
 impl Pipelines {
     pub(crate) fn new(device: &wgpu::Device) -> Pipelines {
-        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("behavior-render shader"),
-            source: wgpu::ShaderSource::Wgsl(include_str!("shader.wgsl").into()),
-        });
+        let realistic = module(device, "realistic", include_str!("realistic.wgsl"));
+        let module = module(
+            device,
+            "behavior-render shader",
+            include_str!("shader.wgsl"),
+        );
         let globals = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("globals"),
             size: std::mem::size_of::<Globals>() as u64,
@@ -85,29 +143,55 @@ impl Pipelines {
             bind_group_layouts: &[Some(&bind_layout)],
             immediate_size: 0,
         });
+        let lights_layout = lights_layout(device);
+        let realistic_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("behavior-render realistic"),
+            bind_group_layouts: &[Some(&bind_layout), Some(&lights_layout)],
+            immediate_size: 0,
+        });
         Pipelines {
             module,
+            realistic,
             layout,
+            realistic_layout,
             globals,
             bind_group,
+            lights_layout,
             made: BTreeMap::new(),
         }
     }
 
-    /// The pipeline of `pass` writing `sources` (all of that pass), made the first time: the
-    /// shader's other outputs have no target, and a CPU rasterizer spends nothing on them.
+    /// The pipeline of `pass` in `profile` writing `sources` (all of that pass), made the
+    /// first time: the shader's other outputs have no target, and a CPU rasterizer spends
+    /// nothing on them. The motion pass is the same in both profiles.
     pub(crate) fn get(
         &mut self,
         device: &wgpu::Device,
         pass: Pass,
+        profile: ImageProfile,
         sources: &[Source],
     ) -> wgpu::RenderPipeline {
         let mask = sources
             .iter()
             .fold(0u8, |mask, s| mask | (1 << s.location()));
+        let profile = match pass {
+            Pass::Surface => profile,
+            Pass::Motion => ImageProfile::Fast,
+        };
+        let (module, layout, entry) = match (pass, profile) {
+            (Pass::Surface, ImageProfile::Realistic) => (
+                &self.realistic,
+                &self.realistic_layout,
+                ("vs_realistic", "fs_realistic"),
+            ),
+            (Pass::Surface, ImageProfile::Fast) => {
+                (&self.module, &self.layout, ("vs_surface", "fs_surface"))
+            }
+            (Pass::Motion, _) => (&self.module, &self.layout, ("vs_motion", "fs_motion")),
+        };
         self.made
-            .entry((pass, mask))
-            .or_insert_with(|| build(device, &self.module, &self.layout, pass, sources))
+            .entry((pass, profile, mask))
+            .or_insert_with(|| build(device, module, layout, entry, (pass, sources)))
             .clone()
     }
 }
@@ -131,13 +215,9 @@ fn build(
     device: &wgpu::Device,
     module: &wgpu::ShaderModule,
     layout: &wgpu::PipelineLayout,
-    pass: Pass,
-    sources: &[Source],
+    (vertex, fragment): (&str, &str),
+    (pass, sources): (Pass, &[Source]),
 ) -> wgpu::RenderPipeline {
-    let (vertex, fragment) = match pass {
-        Pass::Surface => ("vs_surface", "fs_surface"),
-        Pass::Motion => ("vs_motion", "fs_motion"),
-    };
     let targets = slots(pass, sources, |s| wgpu::ColorTargetState {
         format: s.format(),
         blend: None,

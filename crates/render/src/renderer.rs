@@ -3,29 +3,43 @@
 
 use crate::camera::Camera;
 use crate::error::RenderError;
+use crate::finish::home_seed;
 use crate::frame_geometry::{FrameGeometry, FrameVertex};
 use crate::gpu::Gpu;
 use crate::instances::{Gatherer, History, Scene};
+use crate::lighting::{Lighting, ShadowMatrices};
 use crate::mesh::MeshStore;
 use crate::modality::{Frame, Modality};
 use crate::pipeline::{Globals, Pipelines, slots};
+use crate::profile::ImageProfile;
+use crate::shadow::{ShadowContext, ShadowMaps};
 use crate::targets::{Pass, Source, Target, Targets};
+use rapier3d::glamx::Mat4;
 use rapier3d::math::Vector;
 
-/// A camera and what it saw last, for the flow modalities: keep one per camera and render
-/// through it every step.
+/// A camera, how it draws colour, and what it saw last, for the flow modalities: keep one per
+/// camera and render through it every step.
 #[derive(Clone, Debug)]
 pub struct View {
     /// The camera; move it between frames as its mount moves.
     pub camera: Camera,
+    /// How its colour image is drawn (the other modalities are the same in both profiles).
+    pub profile: ImageProfile,
     previous: Option<History>,
 }
 
 impl View {
-    /// A camera that has seen nothing yet (its first frame's flow is zero).
+    /// A camera that has seen nothing yet (its first frame's flow is zero), drawing in the
+    /// realistic profile.
     pub fn new(camera: Camera) -> View {
+        View::with_profile(camera, ImageProfile::default())
+    }
+
+    /// A camera that has seen nothing yet, drawing colour in `profile`.
+    pub fn with_profile(camera: Camera, profile: ImageProfile) -> View {
         View {
             camera,
+            profile,
             previous: None,
         }
     }
@@ -52,6 +66,55 @@ pub struct Renderer {
     /// Whether to leave out what big boxes hide.
     cull: bool,
     stats: FrameStats,
+    /// The realistic profile's light and shadow maps, made at its first frame.
+    realistic: Option<Realistic>,
+}
+
+/// What the realistic profile draws with besides the fast one's.
+struct Realistic {
+    shadows: ShadowMaps,
+    lights: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
+}
+
+impl Realistic {
+    fn new(device: &wgpu::Device, layout: &wgpu::BindGroupLayout) -> Realistic {
+        let shadows = ShadowMaps::new(device);
+        let lights = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("lights"),
+            size: std::mem::size_of::<crate::lighting::LightsUniform>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let [fixed, moving] = shadows.views();
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("lights"),
+            layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: lights.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: wgpu::BindingResource::TextureView(fixed),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: wgpu::BindingResource::TextureView(moving),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 3,
+                    resource: wgpu::BindingResource::Sampler(&shadows.sampler),
+                },
+            ],
+        });
+        Realistic {
+            shadows,
+            lights,
+            bind_group,
+        }
+    }
 }
 
 /// The GPU's vertex and index buffers, and how many of each they hold.
@@ -95,6 +158,7 @@ impl Renderer {
             targets: Vec::new(),
             cull: true,
             stats: FrameStats::default(),
+            realistic: None,
         })
     }
 
@@ -126,12 +190,21 @@ impl Renderer {
     ) -> Result<Frame, RenderError> {
         view.camera.check()?;
         let camera = view.camera;
+        let realistic =
+            view.profile == ImageProfile::Realistic && modalities.contains(&Modality::Rgb);
+        let profile = if realistic {
+            ImageProfile::Realistic
+        } else {
+            ImageProfile::Fast
+        };
         let batch = Gatherer {
             scene,
             camera: &camera,
             meshes: &mut self.meshes,
             previous: view.previous.as_ref(),
             cull: self.cull,
+            profile,
+            home: home_seed(scene.world),
         }
         .gather();
         let motion = modalities
@@ -154,7 +227,16 @@ impl Renderer {
             .filter(|m| modalities.contains(m))
             .collect();
         wanted.dedup();
-        let frame = self.draw(&camera, &wanted)?;
+        let mut encoder = self
+            .gpu
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("frame"),
+            });
+        if realistic {
+            self.light(scene, &camera, &mut encoder);
+        }
+        let frame = self.draw(encoder, &camera, profile, &wanted)?;
         view.previous = Some(History {
             view_projection: camera.view_projection(),
             models: batch.models,
@@ -214,7 +296,40 @@ impl Renderer {
             .write_buffer(&self.pipelines.globals, 0, bytemuck::bytes_of(&globals));
     }
 
-    fn draw(&mut self, camera: &Camera, wanted: &[Modality]) -> Result<Frame, RenderError> {
+    /// Records the realistic profile's shadow passes into `encoder` and sets its lights for
+    /// `camera`.
+    fn light(&mut self, scene: &Scene, camera: &Camera, encoder: &mut wgpu::CommandEncoder) {
+        let device = &self.gpu.device;
+        let realistic = self
+            .realistic
+            .get_or_insert_with(|| Realistic::new(device, &self.pipelines.lights_layout));
+        let lighting = Lighting::of(scene.world);
+        let (looked_at, half) = looked_at(camera);
+        let mut ctx = ShadowContext {
+            device,
+            queue: &self.gpu.queue,
+            encoder,
+            world: scene.world,
+            hidden: scene.hidden,
+            meshes: &mut self.meshes,
+            sun: lighting.sun,
+        };
+        let shadows: ShadowMatrices = realistic.shadows.update(&mut ctx, looked_at, half);
+        let to_world =
+            Mat4::from_rotation_translation(camera.pose.rotation, camera.pose.translation);
+        let uniform = lighting.uniform(to_world, camera.pose.translation, shadows);
+        self.gpu
+            .queue
+            .write_buffer(&realistic.lights, 0, bytemuck::bytes_of(&uniform));
+    }
+
+    fn draw(
+        &mut self,
+        mut encoder: wgpu::CommandEncoder,
+        camera: &Camera,
+        profile: ImageProfile,
+        wanted: &[Modality],
+    ) -> Result<Frame, RenderError> {
         let size = (camera.width, camera.height);
         let kept = match self.targets.iter().position(|t| t.size() == size) {
             Some(k) => k,
@@ -230,12 +345,6 @@ impl Renderer {
         let (Some(targets), Some(buffers)) = (self.targets.get(kept), &self.buffers) else {
             return Err(RenderError::Gpu("buffers missing".into()));
         };
-        let mut encoder = self
-            .gpu
-            .device
-            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                label: Some("frame"),
-            });
         let sources = Source::all_of(wanted);
         for pass in [Pass::Surface, Pass::Motion] {
             let drawn: Vec<Source> = sources
@@ -247,14 +356,21 @@ impl Renderer {
                 continue;
             }
             let attachments = slots(pass, &drawn, |s| {
-                targets.get(s).map(|t| attachment(&t.view, s.clear()))
+                targets
+                    .get(s)
+                    .map(|t| attachment(&t.view, s.clear(profile)))
             });
             let attachments: Vec<_> = attachments.into_iter().map(Option::flatten).collect();
-            let pipeline = self.pipelines.get(&self.gpu.device, pass, &drawn);
+            let pipeline = self.pipelines.get(&self.gpu.device, pass, profile, &drawn);
+            let lights = match (pass, profile, &self.realistic) {
+                (Pass::Surface, ImageProfile::Realistic, Some(r)) => Some(&r.bind_group),
+                _ => None,
+            };
             let geometry = Geometry {
                 buffers,
                 indices: self.geometry.indices.len() as u32,
                 bind_group: &self.pipelines.bind_group,
+                lights,
             };
             geometry.pass(&mut encoder, &attachments, &targets.depth, &pipeline);
         }
@@ -293,6 +409,20 @@ impl Renderer {
     }
 }
 
+/// Where a camera looks, for the moving shadow map: the ground it looks down on and half the
+/// width it sees there, or a point 3 m ahead.
+fn looked_at(camera: &Camera) -> (Vector, f32) {
+    let eye = camera.pose.translation;
+    let forward = camera.pose.rotation * Vector::X;
+    if forward.z < -0.2 {
+        let reach = (eye.z / -forward.z).min(40.0);
+        let half = reach * (0.5 * camera.vertical_fov).tan() * 1.5;
+        (eye + forward * reach, half)
+    } else {
+        (eye + forward * 3.0, 0.0)
+    }
+}
+
 fn attachment(view: &wgpu::TextureView, clear: wgpu::Color) -> wgpu::RenderPassColorAttachment<'_> {
     wgpu::RenderPassColorAttachment {
         view,
@@ -311,6 +441,8 @@ struct Geometry<'a> {
     /// How many indices of the buffer this frame uses.
     indices: u32,
     bind_group: &'a wgpu::BindGroup,
+    /// The realistic pass's second group.
+    lights: Option<&'a wgpu::BindGroup>,
 }
 
 impl Geometry<'_> {
@@ -341,6 +473,9 @@ impl Geometry<'_> {
         }
         pass.set_pipeline(pipeline);
         pass.set_bind_group(0, self.bind_group, &[]);
+        if let Some(lights) = self.lights {
+            pass.set_bind_group(1, lights, &[]);
+        }
         pass.set_vertex_buffer(0, self.buffers.vertices.slice(..));
         pass.set_index_buffer(self.buffers.indices.slice(..), wgpu::IndexFormat::Uint32);
         pass.draw_indexed(0..self.indices, 0, 0..1);

@@ -4,32 +4,6 @@
 // - `fs_motion`: scene flow (m) and optical flow (pixels) since the previous frame.
 // A pipeline gives targets only to the outputs the modalities asked for need (`pipeline.rs`).
 
-struct Globals {
-    view_proj: mat4x4<f32>,
-    prev_view_proj: mat4x4<f32>,
-    // World to camera frame (x forward, y left, z up).
-    view: mat4x4<f32>,
-    // Toward the light, camera frame.
-    light: vec4<f32>,
-    // Image width and height in pixels.
-    size: vec4<f32>,
-};
-
-@group(0) @binding(0) var<uniform> g: Globals;
-
-// A vertex placed in the world by the CPU (see `frame_geometry.rs`).
-struct VertexIn {
-    @location(0) position: vec3<f32>,
-    @location(1) normal: vec3<f32>,
-    // Where this point was last frame.
-    @location(2) previous: vec3<f32>,
-    @location(3) shine: f32,
-    // Linear albedo, and emission in w.
-    @location(4) color: vec4<f32>,
-    // Instance id, and category id | highlight << 16.
-    @location(5) ids: vec2<u32>,
-};
-
 // What the surface pass interpolates: as little as it needs (a CPU rasterizer pays for every
 // number per triangle), in the camera's frame so that a pixel needs no matrix.
 struct SurfaceVertex {

@@ -3,6 +3,7 @@
 
 use crate::modality::{Image, Modality, Pixels};
 use crate::pipeline::{CAMERA_DEPTH, COLOR, DEPTH, FLOW, GEOMETRY, IDS, SCENE_FLOW};
+use crate::profile::ImageProfile;
 
 /// A texture and the buffer it is copied into for reading.
 pub(crate) struct Target {
@@ -239,9 +240,16 @@ impl Source {
         }
     }
 
-    /// What a pixel holds where nothing is drawn.
-    pub(crate) fn clear(self) -> wgpu::Color {
+    /// What a pixel holds where nothing is drawn: the realistic profile's colour sees a pale
+    /// sky.
+    pub(crate) fn clear(self, profile: ImageProfile) -> wgpu::Color {
         match self {
+            Source::Color if profile == ImageProfile::Realistic => wgpu::Color {
+                r: 0.52,
+                g: 0.62,
+                b: 0.78,
+                a: 1.0,
+            },
             Source::Color => wgpu::Color {
                 r: 0.05,
                 g: 0.05,

@@ -3,7 +3,8 @@
 
 use behavior_core::{Ability, Predicate};
 use behavior_render::{
-    Camera, CategoryTable, Frame, Lidar, Modality, Pattern, Pixels, Renderer, Scene, View,
+    Camera, CategoryTable, Frame, ImageProfile, Lidar, Modality, Pattern, Pixels, Renderer, Scene,
+    View,
 };
 use behavior_sim::{Material, ObjectId, ObjectSpec, Part, Primitive, QueryFilter, World};
 use rapier3d::math::{Pose, Vector};
@@ -365,4 +366,130 @@ fn red_box_at(world: &mut World, k: usize, at: Vector) -> ObjectId {
         .at(at)
         .fixed();
     world.add(spec).unwrap()
+}
+
+/// A grey 6 × 6 m ground slab with a tall grey post on it, seen from above and aside.
+fn post_on_ground() -> (World, Camera) {
+    let mut world = World::default();
+    slab(&mut world, "ground", v(0.0, 0.0, -0.05), v(3.0, 3.0, 0.05));
+    slab(&mut world, "post", v(0.0, 0.0, 0.75), v(0.15, 0.15, 0.75));
+    let eye = Camera::looking_at(v(-4.0, -3.0, 4.0), v(0.0, 0.0, 0.0), 96, 96, 1.3);
+    (world, eye)
+}
+
+/// The frame of `view` in `profile`, every modality.
+fn in_profile(world: &World, camera: Camera, profile: ImageProfile) -> Frame {
+    render(
+        world,
+        &mut View::with_profile(camera, profile),
+        &[],
+        &Modality::ALL,
+    )
+}
+
+#[test]
+fn both_profiles_give_the_same_depth_normals_segmentation_and_flow() {
+    let (mut world, eye) = post_on_ground();
+    red_box_at(&mut world, 1, v(1.0, -1.0, 0.1));
+    let realistic = in_profile(&world, eye, ImageProfile::Realistic);
+    let fast = in_profile(&world, eye, ImageProfile::Fast);
+    for m in Modality::ALL.into_iter().filter(|&m| m != Modality::Rgb) {
+        assert_eq!(
+            realistic.get(m),
+            fast.get(m),
+            "{m} differs between the profiles"
+        );
+    }
+    assert_ne!(
+        u8s(&realistic, Modality::Rgb),
+        u8s(&fast, Modality::Rgb),
+        "the profiles drew the same colours"
+    );
+}
+
+/// The brightness (sum of RGB) of the ground's pixels.
+fn ground_brightness(frame: &Frame, ground: ObjectId) -> Vec<u32> {
+    let Pixels::U32(ins) = &frame.get(Modality::InsSeg).unwrap().pixels else {
+        panic!()
+    };
+    let rgb = u8s(frame, Modality::Rgb);
+    (0..ins.len())
+        .filter(|&k| ins[k] == ground.0 + 1)
+        .map(|k| rgb[3 * k..3 * k + 3].iter().map(|&c| u32::from(c)).sum())
+        .collect()
+}
+
+/// The post shades part of the ground in the realistic profile; the fast one has no shadows.
+#[test]
+fn the_sun_casts_the_shadow_of_a_post_on_the_ground() {
+    let (world, eye) = post_on_ground();
+    let ground = world.object_named("ground").unwrap();
+    let brightness = |profile| ground_brightness(&in_profile(&world, eye, profile), ground);
+    let (fast, real) = (
+        brightness(ImageProfile::Fast),
+        brightness(ImageProfile::Realistic),
+    );
+    let median = |b: &[u32]| {
+        let mut sorted = b.to_vec();
+        sorted.sort_unstable();
+        sorted[sorted.len() / 2] as f32
+    };
+    // The ground's top face: what the fast profile, which has no shadows, draws evenly (its
+    // edges, facing sideways, are darker); most of it is in the sun.
+    let (fast_lit, real_lit) = (median(&fast), median(&real));
+    let top: Vec<usize> = (0..fast.len())
+        .filter(|&k| fast[k] as f32 >= 0.8 * fast_lit)
+        .collect();
+    assert!(
+        top.len() > fast.len() * 3 / 4,
+        "{} of {} on top",
+        top.len(),
+        fast.len()
+    );
+    let shaded = top
+        .iter()
+        .filter(|&&k| (real[k] as f32) < 0.6 * real_lit)
+        .count();
+    // The post's shadow: 0.3 m wide and at least 1.5 m long on the ground (the sun is at most
+    // 60° high), some dozens of pixels of the 96² image; the textured ground alone varies by
+    // a few per cent.
+    assert!(
+        shaded >= 20 && shaded < top.len() / 2,
+        "{shaded} of {} top pixels in shadow",
+        top.len()
+    );
+}
+
+/// Patterns follow the object's seed (its name): two boards alike but for their names differ
+/// in texture, and each is drawn the same again.
+#[test]
+fn patterns_change_with_the_object_and_repeat_for_it() {
+    let board = |world: &mut World, name: &str, y: f32| {
+        let part = Part::new(Primitive::Box {
+            half_extents: v(0.05, 0.3, 0.3),
+        });
+        let spec = ObjectSpec::new(name, "carton.n.02", vec![part])
+            .looks([170, 120, 80], Material::Wood)
+            .at(v(1.5, y, 0.0))
+            .fixed();
+        world.add(spec).unwrap()
+    };
+    let texture = |name: &str| {
+        let mut world = World::default();
+        board(&mut world, name, 0.0);
+        let eye = Camera::looking_at(v(0.0, 0.0, 0.0), v(1.5, 0.0, 0.0), 64, 64, 0.5);
+        let frame = in_profile(&world, eye, ImageProfile::Realistic);
+        u8s(&frame, Modality::Rgb).to_vec()
+    };
+    let (a, b) = (texture("board_1"), texture("board_2"));
+    assert_eq!(a, texture("board_1"), "the same board drew differently");
+    let differing = a
+        .iter()
+        .zip(&b)
+        .filter(|(x, y)| x.abs_diff(**y) > 4)
+        .count();
+    assert!(
+        differing > 300,
+        "only {differing} channels differ between two boards"
+    );
 }

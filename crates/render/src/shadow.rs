@@ -1,0 +1,480 @@
+//! The sun's shadow maps for the realistic profile: one of everything fixed (walls, floors,
+//! furniture bodies) over the whole home, drawn again only when that changes, and one of
+//! everything that moves (objects, doors and drawers, the robot) around where the camera
+//! looks, drawn every frame. Glass lets the sun through.
+//!
+//! Two maps because a CPU rasterizer pays for every triangle: a home's fixed geometry is most
+//! of its triangles and stays put, while what moves is little and near.
+
+use crate::instances::rows;
+use crate::lighting::ShadowMatrices;
+use crate::mesh::{Drawn, MeshStore, hash_words};
+use behavior_sim::{BodyKind, Material, ObjectId, World};
+use rapier3d::glamx::{Mat4, Vec3A, Vec4};
+use rapier3d::math::Vector;
+
+/// The fixed map's size, texels a side: 2 cm a texel over a 40 m home.
+const FIXED_SIZE: u32 = 2048;
+/// The moving map's, over at least 9 m: 9 mm a texel.
+const MOVING_SIZE: u32 = 1024;
+/// Half the side of the moving map's square at the least, m.
+const MOVING_HALF: f32 = 4.5;
+/// Round shapes cast their coarse mesh (see `mesh.rs`'s `Detail`).
+const CASTER_PIXELS: f32 = 0.0;
+
+pub(crate) const SHADOW_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+
+/// A caster: a stored mesh placed in the world.
+struct Caster {
+    mesh: u32,
+    model: [[f32; 4]; 3],
+    centre: Vector,
+    reach: f32,
+}
+
+/// One map: its texture, its matrix's buffer, and its casters' buffers.
+struct Map {
+    view: wgpu::TextureView,
+    matrix: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
+    vertices: Option<(wgpu::Buffer, usize)>,
+    indices: Option<(wgpu::Buffer, usize)>,
+    /// Indices drawn.
+    count: u32,
+}
+
+/// Both maps, the pipeline that draws them and the sampler that reads them.
+pub(crate) struct ShadowMaps {
+    pipeline: wgpu::RenderPipeline,
+    pub(crate) sampler: wgpu::Sampler,
+    fixed: Map,
+    moving: Map,
+    /// What the fixed map shows: a hash of its casters and the sun, and its matrix.
+    fixed_key: Option<(u64, Option<Mat4>)>,
+    /// Lists refilled each frame.
+    positions: Vec<[f32; 3]>,
+    triangles: Vec<u32>,
+}
+
+fn map(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, size: u32) -> Map {
+    let texture = device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("shadow map"),
+        size: wgpu::Extent3d {
+            width: size,
+            height: size,
+            depth_or_array_layers: 1,
+        },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: SHADOW_FORMAT,
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+        view_formats: &[],
+    });
+    let matrix = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("shadow matrix"),
+        size: 64,
+        usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("shadow matrix"),
+        layout,
+        entries: &[wgpu::BindGroupEntry {
+            binding: 0,
+            resource: matrix.as_entire_binding(),
+        }],
+    });
+    Map {
+        view: texture.create_view(&wgpu::TextureViewDescriptor::default()),
+        matrix,
+        bind_group,
+        vertices: None,
+        indices: None,
+        count: 0,
+    }
+}
+
+/// The light's view of the box `lo`–`hi` seen from direction `sun`, square around `centre` of
+/// half side `half` (in the light's frame) when given, else the whole box.
+fn light_matrix(sun: Vector, lo: Vector, hi: Vector, square: Option<(Vector, f32)>) -> Mat4 {
+    let middle = (lo + hi) * 0.5;
+    let up = if sun.cross(Vector::Z).length() < 1e-3 {
+        Vector::X
+    } else {
+        Vector::Z
+    };
+    let view = look_along(middle + sun * 100.0, -sun, up);
+    let corners = (0..8).map(|k| {
+        let pick = |bit: u32, a: f32, b: f32| if k & bit == 0 { a } else { b };
+        let p = Vector::new(
+            pick(1, lo.x, hi.x),
+            pick(2, lo.y, hi.y),
+            pick(4, lo.z, hi.z),
+        );
+        view.transform_point3(p)
+    });
+    let (mut min, mut max) = (Vector::splat(f32::MAX), Vector::splat(f32::MIN));
+    for c in corners {
+        min = min.min(c);
+        max = max.max(c);
+    }
+    if let Some((centre, half)) = square {
+        let c = view.transform_point3(centre);
+        min = Vector::new(c.x - half, c.y - half, min.z).max(min);
+        max = Vector::new(c.x + half, c.y + half, max.z).min(max);
+    }
+    let projection = orthographic((min.x, max.x), (min.y, max.y), (-max.z - 0.5, -min.z + 0.5));
+    projection * view
+}
+
+/// The view from `eye` looking along `forward` (unit), `up` up: the camera looks down its −z.
+fn look_along(eye: Vector, forward: Vector, up: Vector) -> Mat4 {
+    let right = forward.cross(up).normalize();
+    let up = right.cross(forward);
+    Mat4::from_cols(
+        Vec4::new(right.x, up.x, -forward.x, 0.0),
+        Vec4::new(right.y, up.y, -forward.y, 0.0),
+        Vec4::new(right.z, up.z, -forward.z, 0.0),
+        Vec4::new(-right.dot(eye), -up.dot(eye), forward.dot(eye), 1.0),
+    )
+}
+
+/// An orthographic projection of the view box x in `l`–`r`, y in `b`–`t`, and `n`–`f` ahead,
+/// onto wgpu's clip space (depth 0 at `n`, 1 at `f`).
+fn orthographic((l, r): (f32, f32), (b, t): (f32, f32), (n, f): (f32, f32)) -> Mat4 {
+    Mat4::from_cols(
+        Vec4::new(2.0 / (r - l), 0.0, 0.0, 0.0),
+        Vec4::new(0.0, 2.0 / (t - b), 0.0, 0.0),
+        Vec4::new(0.0, 0.0, -1.0 / (f - n), 0.0),
+        Vec4::new(-(r + l) / (r - l), -(t + b) / (t - b), -n / (f - n), 1.0),
+    )
+}
+
+impl ShadowMaps {
+    pub(crate) fn new(device: &wgpu::Device) -> ShadowMaps {
+        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("shadow"),
+            source: wgpu::ShaderSource::Wgsl(include_str!("shadow.wgsl").into()),
+        });
+        let bind_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("shadow matrix"),
+            entries: &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::VERTEX,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Uniform,
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
+                count: None,
+            }],
+        });
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("shadow"),
+            bind_group_layouts: &[Some(&bind_layout)],
+            immediate_size: 0,
+        });
+        let buffers = [Some(wgpu::VertexBufferLayout {
+            array_stride: 12,
+            step_mode: wgpu::VertexStepMode::Vertex,
+            attributes: &wgpu::vertex_attr_array![0 => Float32x3],
+        })];
+        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("shadow"),
+            layout: Some(&layout),
+            vertex: wgpu::VertexState {
+                module: &module,
+                entry_point: Some("vs_shadow"),
+                compilation_options: wgpu::PipelineCompilationOptions::default(),
+                buffers: &buffers,
+            },
+            primitive: wgpu::PrimitiveState {
+                cull_mode: None,
+                ..wgpu::PrimitiveState::default()
+            },
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: SHADOW_FORMAT,
+                depth_write_enabled: Some(true),
+                depth_compare: Some(wgpu::CompareFunction::Less),
+                stencil: wgpu::StencilState::default(),
+                bias: wgpu::DepthBiasState {
+                    constant: 2,
+                    slope_scale: 2.0,
+                    clamp: 0.0,
+                },
+            }),
+            multisample: wgpu::MultisampleState::default(),
+            fragment: None,
+            multiview_mask: None,
+            cache: None,
+        });
+        let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
+            label: Some("shadow"),
+            mag_filter: wgpu::FilterMode::Linear,
+            min_filter: wgpu::FilterMode::Linear,
+            compare: Some(wgpu::CompareFunction::LessEqual),
+            ..wgpu::SamplerDescriptor::default()
+        });
+        ShadowMaps {
+            pipeline,
+            sampler,
+            fixed: map(device, &bind_layout, FIXED_SIZE),
+            moving: map(device, &bind_layout, MOVING_SIZE),
+            fixed_key: None,
+            positions: Vec::new(),
+            triangles: Vec::new(),
+        }
+    }
+
+    /// The fixed map's and the moving map's texture views.
+    pub(crate) fn views(&self) -> [&wgpu::TextureView; 2] {
+        [&self.fixed.view, &self.moving.view]
+    }
+
+    /// Draws the maps for the world as it is, seen from `sun`, the moving one around
+    /// `looked_at`, spanning `half` m at least (see [`MOVING_HALF`]); records the passes into
+    /// `encoder`.
+    pub(crate) fn update(
+        &mut self,
+        ctx: &mut ShadowContext<'_>,
+        looked_at: Vector,
+        half: f32,
+    ) -> ShadowMatrices {
+        let (fixed, moving) = casters(ctx.world, ctx.hidden, ctx.meshes);
+        let Some((lo, hi)) = bounds(ctx.world) else {
+            return ShadowMatrices::default();
+        };
+        let sun = ctx.sun;
+        let key = hash_words(
+            fixed
+                .iter()
+                .flat_map(|c| {
+                    std::iter::once(c.mesh).chain(c.model.iter().flatten().map(|v| v.to_bits()))
+                })
+                .chain(sun.to_array().map(f32::to_bits)),
+        );
+        if self.fixed_key.map(|(k, _)| k) != Some(key) {
+            let matrix = light_matrix(sun, lo, hi, None);
+            let drawn = self.draw(ctx, Which::Fixed, &fixed, matrix);
+            self.fixed_key = Some((key, drawn.then_some(matrix)));
+        }
+        let half = half.max(MOVING_HALF);
+        let matrix = light_matrix(sun, lo, hi, Some((looked_at, half)));
+        let near: Vec<Caster> = moving
+            .into_iter()
+            .filter(|c| inside(&matrix, c.centre, c.reach))
+            .collect();
+        let drawn = self.draw(ctx, Which::Moving, &near, matrix);
+        ShadowMatrices {
+            fixed: self.fixed_key.and_then(|(_, m)| m),
+            moving: drawn.then_some(matrix),
+        }
+    }
+
+    /// Places `casters`, uploads them and records the pass that draws them into one map;
+    /// whether anything was drawn.
+    fn draw(
+        &mut self,
+        ctx: &mut ShadowContext<'_>,
+        which: Which,
+        casters: &[Caster],
+        matrix: Mat4,
+    ) -> bool {
+        self.positions.clear();
+        self.triangles.clear();
+        let sun = Vec3A::from(ctx.sun);
+        for caster in casters {
+            place(
+                caster,
+                ctx.meshes,
+                sun,
+                &mut self.positions,
+                &mut self.triangles,
+            );
+        }
+        let map = match which {
+            Which::Fixed => &mut self.fixed,
+            Which::Moving => &mut self.moving,
+        };
+        let (device, queue) = (ctx.device, ctx.queue);
+        queue.write_buffer(
+            &map.matrix,
+            0,
+            bytemuck::bytes_of(&matrix.to_cols_array_2d()),
+        );
+        upload(
+            device,
+            queue,
+            &mut map.vertices,
+            &self.positions,
+            wgpu::BufferUsages::VERTEX,
+        );
+        upload(
+            device,
+            queue,
+            &mut map.indices,
+            &self.triangles,
+            wgpu::BufferUsages::INDEX,
+        );
+        map.count = self.triangles.len() as u32;
+        let mut pass = ctx.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("shadow"),
+            color_attachments: &[],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &map.view,
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(1.0),
+                    store: wgpu::StoreOp::Store,
+                }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        let (Some((vertices, _)), Some((indices, _))) = (&map.vertices, &map.indices) else {
+            return false;
+        };
+        if map.count == 0 {
+            return false;
+        }
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(0, &map.bind_group, &[]);
+        pass.set_vertex_buffer(0, vertices.slice(..));
+        pass.set_index_buffer(indices.slice(..), wgpu::IndexFormat::Uint32);
+        pass.draw_indexed(0..map.count, 0, 0..1);
+        true
+    }
+}
+
+/// What drawing the maps needs of the renderer and the frame.
+pub(crate) struct ShadowContext<'a> {
+    pub(crate) device: &'a wgpu::Device,
+    pub(crate) queue: &'a wgpu::Queue,
+    pub(crate) encoder: &'a mut wgpu::CommandEncoder,
+    pub(crate) world: &'a World,
+    pub(crate) hidden: &'a [ObjectId],
+    pub(crate) meshes: &'a mut MeshStore,
+    /// Toward the sun.
+    pub(crate) sun: Vector,
+}
+
+#[derive(Clone, Copy)]
+enum Which {
+    Fixed,
+    Moving,
+}
+
+/// Whether a ball lies (partly) inside a map's view.
+fn inside(matrix: &Mat4, centre: Vector, reach: f32) -> bool {
+    let c: Vec4 = *matrix * centre.extend(1.0);
+    // The matrix is orthographic: x and y scale by its diagonal.
+    let (sx, sy) = (
+        matrix.x_axis.truncate().length(),
+        matrix.y_axis.truncate().length(),
+    );
+    c.x.abs() <= 1.0 + reach * sx && c.y.abs() <= 1.0 + reach * sy
+}
+
+/// The box of the world's fixed objects, raised to hold what stands above them.
+fn bounds(world: &World) -> Option<(Vector, Vector)> {
+    let (lo, hi) = world
+        .objects()
+        .filter(|(_, o)| o.is_present() && o.body_kind == BodyKind::Fixed)
+        .map(|(id, _)| world.aabb(id))
+        .fold(
+            (Vector::splat(f32::MAX), Vector::splat(f32::MIN)),
+            |(lo, hi), b| (lo.min(b.mins), hi.max(b.maxs)),
+        );
+    (lo.x <= hi.x).then(|| (lo - Vector::splat(0.5), hi + Vector::new(0.5, 0.5, 1.0)))
+}
+
+/// The world's casters: fixed ones (bodies of fixed objects) and moving ones (the rest).
+fn casters(
+    world: &World,
+    hidden: &[ObjectId],
+    meshes: &mut MeshStore,
+) -> (Vec<Caster>, Vec<Caster>) {
+    let (mut fixed, mut moving) = (Vec::new(), Vec::new());
+    for (id, object) in world.objects() {
+        if !object.is_present() || hidden.contains(&id) {
+            continue;
+        }
+        let still = object.body_kind == BodyKind::Fixed;
+        for part in world.core().visual_parts(id) {
+            if part.visual.material == Material::Glass {
+                continue;
+            }
+            let drawn = Drawn::of(&part.shape);
+            let caster = Caster {
+                mesh: meshes.id(drawn.key.sized(CASTER_PIXELS), &part.shape),
+                model: rows(&part.pose, drawn.scale),
+                centre: part.pose.translation,
+                reach: drawn.reach,
+            };
+            if still && part.link.is_none() {
+                fixed.push(caster);
+            } else {
+                moving.push(caster);
+            }
+        }
+    }
+    (fixed, moving)
+}
+
+/// Appends a caster's triangles, placed in the world; of a closed mesh only those that face
+/// the sun (the others are behind them).
+fn place(
+    caster: &Caster,
+    meshes: &MeshStore,
+    sun: Vec3A,
+    positions: &mut Vec<[f32; 3]>,
+    triangles: &mut Vec<u32>,
+) {
+    let mesh = meshes.mesh(caster.mesh);
+    let [x, y, z] = caster.model;
+    let row = |r: [f32; 4], p: Vec3A| r[0] * p.x + r[1] * p.y + r[2] * p.z + r[3];
+    let base = positions.len();
+    positions.extend(mesh.vertices.iter().map(|v| {
+        let p = Vec3A::from_array(v.position);
+        [row(x, p), row(y, p), row(z, p)]
+    }));
+    let placed = &positions[base..];
+    for t in mesh.indices.chunks_exact(3) {
+        if mesh.closed {
+            let corner = |k: usize| Vec3A::from_array(placed[t[k] as usize]);
+            let (a, b, c) = (corner(0), corner(1), corner(2));
+            if (b - a).cross(c - a).dot(sun) <= 0.0 {
+                continue;
+            }
+        }
+        triangles.extend(t.iter().map(|&i| base as u32 + i));
+    }
+}
+
+/// Writes `data` into `slot`'s buffer, remade bigger when it does not fit.
+fn upload<T: bytemuck::Pod>(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    slot: &mut Option<(wgpu::Buffer, usize)>,
+    data: &[T],
+    usage: wgpu::BufferUsages,
+) {
+    let bytes = std::mem::size_of_val(data);
+    if slot.as_ref().is_none_or(|(_, capacity)| *capacity < bytes) {
+        let capacity = bytes.next_power_of_two().max(1 << 16);
+        let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("shadow casters"),
+            size: capacity as u64,
+            usage: usage | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        *slot = Some((buffer, capacity));
+    }
+    if let Some((buffer, _)) = slot
+        && bytes > 0
+    {
+        queue.write_buffer(buffer, 0, bytemuck::cast_slice(data));
+    }
+}

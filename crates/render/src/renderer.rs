@@ -30,7 +30,7 @@ pub struct View {
 
 impl View {
     /// A camera that has seen nothing yet (its first frame's flow is zero), drawing in the
-    /// realistic profile.
+    /// default profile ([`ImageProfile::Fast`]).
     pub fn new(camera: Camera) -> View {
         View::with_profile(camera, ImageProfile::default())
     }

@@ -41,7 +41,7 @@ class BehaviorVecEnv(VectorEnv):
         observations=STATE_OBSERVATIONS,
         image_size: int = 128,
         render_mode: Optional[str] = None,
-        image_profile: str = "fast",
+        image_profile: str = "realistic",
     ):
         if render_mode is not None:
             raise ValueError(f"the vector environment renders nothing, not {render_mode!r}")

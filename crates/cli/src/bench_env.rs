@@ -1,7 +1,7 @@
 //! `behavior bench env`: environment steps per second for both robots, idle and random agents,
 //! physics at 1/300 and 1/120 s, state only; then the BehaviorRobot with its eye camera's RGB,
-//! depth and segmentation at 128² and 512², in the image profiles asked for (fast by default)
-//! side by side, rendered on whatever adapter there is (lavapipe on a CPU). On the original's speed-benchmark activities in a covering home with clutter; the time
+//! depth and segmentation at 128² and 512², in the image profiles asked for (realistic and fast
+//! by default) side by side, rendered on whatever adapter there is (lavapipe on a CPU). On the original's speed-benchmark activities in a covering home with clutter; the time
 //! split as the original reports it (the images are the observation time), and memory per env.
 
 use crate::episode::{physics, robot_kind};
@@ -45,8 +45,8 @@ pub struct BenchEnvArgs {
     /// Only the configurations with images.
     #[arg(long)]
     images_only: bool,
-    /// The image profiles to time (repeat the flag for several, e.g. `--profile fast --profile
-    /// realistic` for both side by side); default: fast.
+    /// The image profiles to time (repeat the flag for several); default: realistic and fast,
+    /// side by side.
     #[arg(long = "profile", value_name = "PROFILE")]
     profiles: Vec<ImageProfile>,
     /// The eye camera's image sizes, square (repeat the flag for several); default: 128 and 512.
@@ -110,7 +110,7 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let mut memory = 0.0f64;
     let mut memory_images: Option<f64> = None;
     let profiles = if args.profiles.is_empty() {
-        vec![ImageProfile::Fast]
+        ImageProfile::ALL.to_vec()
     } else {
         args.profiles.clone()
     };

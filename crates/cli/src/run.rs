@@ -40,9 +40,9 @@ pub struct RunArgs {
     /// The video's pictures' width and height, pixels.
     #[arg(long, default_value_t = 256)]
     video_size: u32,
-    /// How the video's pictures are drawn: fast (flat colours) or realistic (materials, the
-    /// home's sun with shadows, room lamps; slower, and its memory still grows frame by frame).
-    #[arg(long, default_value = "fast")]
+    /// How the video's pictures are drawn: realistic (materials, the home's sun with shadows,
+    /// room lamps) or fast (flat colours).
+    #[arg(long, default_value = "realistic")]
     profile: ImageProfile,
     #[arg(long)]
     json: bool,

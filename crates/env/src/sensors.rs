@@ -44,14 +44,14 @@ pub struct CameraConfig {
     pub height: u32,
     /// rad.
     pub vertical_fov: f32,
-    /// How the colour image is drawn: fast (the default) or realistic. Depth, segmentation
+    /// How the colour image is drawn: realistic (the default) or fast. Depth, segmentation
     /// and flow are the same in both.
     pub profile: ImageProfile,
 }
 
 impl Default for CameraConfig {
     /// The original's onboard-sensing camera: 128², 120° vertically, RGB, depth and semantic
-    /// segmentation, colour in the fast profile.
+    /// segmentation, colour in the realistic profile.
     fn default() -> Self {
         CameraConfig {
             modalities: vec![Modality::Rgb, Modality::Depth, Modality::Seg],

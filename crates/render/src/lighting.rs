@@ -107,7 +107,8 @@ pub(crate) struct LightsUniform {
     pub(crate) sun_color: [f32; 4],
     pub(crate) sky: [f32; 4],
     pub(crate) ground: [f32; 4],
-    /// Lamps, whether the static map and the dynamic one hold anything.
+    /// Lamps in use (the shader runs over all eight: unused ones light an empty footprint),
+    /// whether the static map and the dynamic one hold anything.
     pub(crate) counts: [u32; 4],
     pub(crate) lamp_position: [[f32; 4]; LAMPS],
     pub(crate) lamp_color: [[f32; 4]; LAMPS],
@@ -153,7 +154,8 @@ impl Lighting {
             ],
             lamp_position: [[0.0; 4]; LAMPS],
             lamp_color: [[0.0; 4]; LAMPS],
-            lamp_room: [[0.0; 4]; LAMPS],
+            // An empty footprint (min above max): a lamp not in use lights nothing.
+            lamp_room: [[1.0, 1.0, -1.0, -1.0]; LAMPS],
         };
         for (k, lamp) in nearest.iter().enumerate() {
             u.lamp_position[k] = lamp.position.extend(1.0).to_array();

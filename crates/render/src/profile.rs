@@ -14,13 +14,11 @@ pub enum ImageProfile {
     /// grout, carpet, plaster, stone, fabric weave, brushed metal, printed paper, food skins)
     /// in each home's own palette; a sun whose direction and colour are the home's, with
     /// shadows; a lamp in every room that lights that room; sky and ground ambient; filmic tone
-    /// mapping. Opt-in for now: at 128² it costs about 30 ms a frame on one CPU core and its
-    /// resident memory grows by some megabytes a frame (being worked on, issue 38); `behavior
-    /// render` uses it by default for its single pictures.
-    Realistic,
-    /// Flat colours under one light from above, no shadows, no textures: the fastest, what
-    /// every camera drew before the realistic profile existed, and the default.
+    /// mapping. The default for RGB and for every picture made for a person.
     #[default]
+    Realistic,
+    /// Flat colours under one light from above, no shadows, no textures: the fastest, and what
+    /// every camera drew before the realistic profile existed.
     Fast,
 }
 

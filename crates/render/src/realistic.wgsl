@@ -89,134 +89,141 @@ fn noise(p: vec3<f32>, seed: u32) -> f32 {
     return mix(mix(x00, x10, u.y), mix(x01, x11, u.y), u.z);
 }
 
-// Two octaves.
-fn fbm(p: vec3<f32>, seed: u32) -> f32 {
-    return 0.65 * noise(p, seed) + 0.35 * noise(p * 2.7 + vec3<f32>(3.1, 1.7, 5.3), seed + 1u);
-}
 
-// ---- patterns: each gives the albedo's tint and a roughness change ----
+// ---- patterns ----
+// Each pattern is two noise lookups at frequencies of its own, then a little arithmetic. Why so
+// lean: a CPU rasterizer runs every branch for every pixel, and lavapipe compiles a fragment
+// shader of more than a few thousand instructions anew at every draw (measured: 30 ms a frame,
+// and memory that grows by megabytes a frame, with a noise call in every pattern).
 
 struct Texel {
     tint: vec3<f32>,
     roughness: f32,
 };
 
-// Growth rings around an axis along the part's longest side, wavy fibres.
-fn wood(p: vec3<f32>, extent: vec3<f32>, seed: u32) -> Texel {
-    var q = p;
-    if (extent.y > extent.x && extent.y >= extent.z) {
-        q = p.yzx;
-    } else if (extent.z > extent.x && extent.z > extent.y) {
-        q = p.zxy;
+// Floor boards are 14 cm wide along x and up to 1.4 m long, their ends staggered row by row.
+const BOARD_WIDTH: f32 = 0.14;
+const BOARD_LENGTH: f32 = 1.4;
+
+// Where a pattern is read: the part's own coordinates, turned so that wood's grain runs along the
+// part's longest side, or a board's own for floor boards, or a line of print's for paper.
+fn pattern_frame(pattern: u32, p: vec3<f32>, extent: vec3<f32>, seed: u32) -> vec3<f32> {
+    switch pattern {
+        case 1u: {
+            if (extent.y > extent.x && extent.y >= extent.z) {
+                return p.yzx;
+            }
+            if (extent.z > extent.x && extent.z > extent.y) {
+                return p.zxy;
+            }
+            return p;
+        }
+        case 2u: {
+            let row = floor(p.y / BOARD_WIDTH);
+            let shift = lattice(vec3<i32>(i32(row), 0, 0), seed) * BOARD_LENGTH;
+            let board = floor((p.x + shift) / BOARD_LENGTH);
+            let across = fract(p.y / BOARD_WIDTH) - 0.5;
+            return vec3<f32>(p.x + shift + board * 3.1, across * BOARD_WIDTH, p.z + row * 0.37);
+        }
+        case 9u: {
+            let h = p.z / max(extent.z, 1e-3);
+            return vec3<f32>(p.x, p.y, floor(h * 14.0) / 90.0);
+        }
+        default: {
+            return p;
+        }
     }
-    let wobble = fbm(q * vec3<f32>(1.5, 6.0, 6.0), seed);
-    let rings = fract(length(q.yz * vec2<f32>(9.0, 9.0) + vec2<f32>(3.7, 1.3)) * 2.2 + wobble * 2.5);
-    let fibre = noise(q * vec3<f32>(4.0, 120.0, 120.0), seed + 7u);
-    let dark = smoothstep(0.55, 0.95, rings) * 0.28 + fibre * 0.1;
-    return Texel(vec3<f32>(1.0 - dark), 0.0);
 }
 
-// Boards 14 cm wide along x, up to 1.4 m long, ends staggered row by row.
-fn planks(p: vec3<f32>, seed: u32) -> Texel {
-    let width = 0.14;
-    let row = floor(p.y / width);
-    let shift = lattice(vec3<i32>(i32(row), 0, 0), seed) * 1.4;
-    let board = floor((p.x + shift) / 1.4);
-    let across = fract(p.y / width);
-    let along = fract((p.x + shift) / 1.4);
-    let seam = min(min(across, 1.0 - across) * width, min(along, 1.0 - along) * 1.4);
+// The two noise frequencies of a pattern, per axis.
+struct Frequencies {
+    first: vec3<f32>,
+    second: vec3<f32>,
+};
+
+fn frequencies(pattern: u32) -> Frequencies {
+    switch pattern {
+        case 1u, 2u: { return Frequencies(vec3<f32>(1.5, 6.0, 6.0), vec3<f32>(4.0, 120.0, 120.0)); }
+        case 3u: { return Frequencies(vec3<f32>(60.0), vec3<f32>(1.0)); }
+        case 4u: { return Frequencies(vec3<f32>(220.0), vec3<f32>(3.0)); }
+        case 5u: { return Frequencies(vec3<f32>(7.0), vec3<f32>(19.0)); }
+        case 6u: { return Frequencies(vec3<f32>(3.0), vec3<f32>(40.0)); }
+        case 7u: { return Frequencies(vec3<f32>(30.0), vec3<f32>(1.0)); }
+        case 8u: { return Frequencies(vec3<f32>(4.0, 400.0, 400.0), vec3<f32>(1.0)); }
+        case 9u: { return Frequencies(vec3<f32>(90.0), vec3<f32>(1.0)); }
+        case 10u: { return Frequencies(vec3<f32>(25.0), vec3<f32>(300.0)); }
+        default: { return Frequencies(vec3<f32>(12.0), vec3<f32>(1.0)); }
+    }
+}
+
+// Growth rings around the frame's x axis, wavy by `wobble`, with fibres.
+fn rings(q: vec3<f32>, wobble: f32, fibre: f32) -> f32 {
+    let r = fract(length(q.yz * 9.0 + vec2<f32>(3.7, 1.3)) * 2.2 + wobble * 2.5);
+    return 1.0 - smoothstep(0.55, 0.95, r) * 0.28 - fibre * 0.1;
+}
+
+// The tint of floor boards at `p`: each board its own shade, seams darker, grain in it.
+fn planks(p: vec3<f32>, grain: f32, seed: u32) -> f32 {
+    let row = floor(p.y / BOARD_WIDTH);
+    let shift = lattice(vec3<i32>(i32(row), 0, 0), seed) * BOARD_LENGTH;
+    let board = floor((p.x + shift) / BOARD_LENGTH);
+    let across = fract(p.y / BOARD_WIDTH);
+    let along = fract((p.x + shift) / BOARD_LENGTH);
+    let seam = min(min(across, 1.0 - across) * BOARD_WIDTH, min(along, 1.0 - along) * BOARD_LENGTH);
     let groove = 1.0 - 0.45 * (1.0 - smoothstep(0.0, 0.003, seam));
     let tone = 0.82 + 0.3 * lattice(vec3<i32>(i32(row), i32(board), 3), seed);
-    let grain = wood(vec3<f32>(p.x + shift + board * 3.1, (across - 0.5) * width, p.z + row * 0.37), vec3<f32>(1.0, 0.1, 0.01), seed);
-    return Texel(grain.tint * tone * groove, 0.0);
+    return grain * tone * groove;
 }
 
-// Square tiles with grout; each tile slightly its own shade.
-fn tiles(p: vec3<f32>, seed: u32) -> Texel {
+// Square tiles of 30 or 20 cm with grout; each tile a little its own shade.
+fn tiles(p: vec3<f32>, speck: f32, seed: u32) -> Texel {
     let size = select(0.3, 0.2, (seed & 1u) == 1u);
     let cell = floor(p.xy / size);
     let f = fract(p.xy / size);
     let edge = min(min(f.x, 1.0 - f.x), min(f.y, 1.0 - f.y)) * size;
     let grout = smoothstep(0.002, 0.004, edge);
-    let tone = 0.92 + 0.1 * lattice(vec3<i32>(i32(cell.x), i32(cell.y), 5), seed);
-    let speck = 0.04 * noise(p * 60.0, seed);
-    let tint = mix(vec3<f32>(0.55, 0.53, 0.5), vec3<f32>(tone - speck), grout);
-    return Texel(tint, (1.0 - grout) * 0.6);
+    let tone = 0.92 + 0.1 * lattice(vec3<i32>(i32(cell.x), i32(cell.y), 5), seed) - 0.04 * speck;
+    return Texel(mix(vec3<f32>(0.55, 0.53, 0.5), vec3<f32>(tone), grout), (1.0 - grout) * 0.6);
 }
 
-fn carpet(p: vec3<f32>, seed: u32) -> Texel {
-    let pile = noise(p * 220.0, seed);
-    let cloud = fbm(p * 3.0, seed + 3u);
-    return Texel(vec3<f32>(0.78 + 0.22 * pile + 0.12 * (cloud - 0.5)), 0.0);
-}
-
-fn plaster(p: vec3<f32>, seed: u32) -> Texel {
-    let n = fbm(p * 7.0, seed) - 0.5;
-    return Texel(vec3<f32>(1.0 + 0.06 * n), 0.0);
-}
-
-// Stone with dark veins.
-fn marble(p: vec3<f32>, seed: u32) -> Texel {
-    let turbulence = fbm(p * 3.0, seed) * 7.0;
-    let vein = 1.0 - abs(sin(p.x * 4.0 + p.y * 2.0 + turbulence));
-    let v8 = vein * vein * vein * vein;
-    let darkness = v8 * v8 * 0.45;
-    return Texel(vec3<f32>(1.0 - darkness + 0.05 * (noise(p * 40.0, seed) - 0.5)), 0.0);
-}
-
-// Warp and weft, about 4 threads a centimetre.
-fn fabric(p: vec3<f32>, seed: u32) -> Texel {
-    let k = 250.0;
-    let warp = sin(k * (p.x + p.z));
-    let weft = sin(k * (p.y - p.z));
-    let weave = 0.5 + 0.5 * warp * weft;
-    let slub = noise(p * 30.0, seed);
-    return Texel(vec3<f32>(0.82 + 0.12 * weave + 0.1 * (slub - 0.5)), 0.0);
-}
-
-// Fine streaks along x.
-fn brushed(p: vec3<f32>, seed: u32) -> Texel {
-    let streak = noise(p * vec3<f32>(4.0, 400.0, 400.0), seed);
-    return Texel(vec3<f32>(0.9 + 0.12 * streak), 0.1 * streak);
-}
-
-// A printed label band of a second colour, with lines of print on it.
-fn print(p: vec3<f32>, extent: vec3<f32>, seed: u32, base: vec3<f32>) -> Texel {
-    let h = p / max(extent, vec3<f32>(1e-3));
+// A printed label band of a second colour, with lines of print around it.
+fn print(p: vec3<f32>, extent: vec3<f32>, ink: f32, seed: u32, base: vec3<f32>) -> vec3<f32> {
+    let h = p.z / max(extent.z, 1e-3);
     let hue = vec3<f32>(lattice(vec3<i32>(1, 2, 3), seed), lattice(vec3<i32>(4, 5, 6), seed), lattice(vec3<i32>(7, 8, 9), seed));
     let accent = hue * hue / max(base, vec3<f32>(0.05));
-    let low = -0.2 + 0.3 * lattice(vec3<i32>(2, 2, 2), seed);
-    let band = step(low, h.z) * step(h.z, low + 0.45);
-    let line = step(0.55, fract(h.z * 14.0)) * step(0.35, noise(vec3<f32>(p.x * 90.0, p.y * 90.0, floor(h.z * 14.0)), seed));
-    let tint = mix(vec3<f32>(1.0), accent, band) * (1.0 - 0.5 * line * (1.0 - band));
-    return Texel(tint, 0.0);
-}
-
-// Mottled skin with small speckles.
-fn skin(p: vec3<f32>, seed: u32) -> Texel {
-    let blotch = fbm(p * 25.0, seed);
-    let speck = step(0.93, noise(p * 300.0, seed + 5u));
-    return Texel(vec3<f32>(0.85 + 0.3 * blotch - 0.25 * speck), 0.0);
-}
-
-fn plain(p: vec3<f32>, seed: u32) -> Texel {
-    return Texel(vec3<f32>(0.97 + 0.06 * noise(p * 12.0, seed)), 0.0);
+    let low = -0.2 + 0.3 * hue.x;
+    let band = step(low, h) * step(h, low + 0.45);
+    let line = step(0.55, fract(h * 14.0)) * step(0.35, ink);
+    return mix(vec3<f32>(1.0), accent, band) * (1.0 - 0.5 * line * (1.0 - band));
 }
 
 fn texel(pattern: u32, p: vec3<f32>, extent: vec3<f32>, seed: u32, base: vec3<f32>) -> Texel {
+    let q = pattern_frame(pattern, p, extent, seed);
+    let f = frequencies(pattern);
+    let a = noise(q * f.first, seed);
+    let b = noise(q * f.second, seed + 7u);
     switch pattern {
-        case 1u: { return wood(p, extent, seed); }
-        case 2u: { return planks(p, seed); }
-        case 3u: { return tiles(p, seed); }
-        case 4u: { return carpet(p, seed); }
-        case 5u: { return plaster(p, seed); }
-        case 6u: { return marble(p, seed); }
-        case 7u: { return fabric(p, seed); }
-        case 8u: { return brushed(p, seed); }
-        case 9u: { return print(p, extent, seed, base); }
-        case 10u: { return skin(p, seed); }
+        case 1u: { return Texel(vec3<f32>(rings(q, a, b)), 0.0); }
+        case 2u: { return Texel(vec3<f32>(planks(p, rings(q, a, b), seed)), 0.0); }
+        case 3u: { return tiles(p, a, seed); }
+        case 4u: { return Texel(vec3<f32>(0.78 + 0.22 * a + 0.12 * (b - 0.5)), 0.0); }
+        case 5u: { return Texel(vec3<f32>(1.0 + 0.06 * (0.65 * a + 0.35 * b - 0.5)), 0.0); }
+        case 6u: {
+            // Stone with dark veins.
+            let vein = 1.0 - abs(sin(p.x * 4.0 + p.y * 2.0 + a * 7.0));
+            let v4 = vein * vein * vein * vein;
+            return Texel(vec3<f32>(1.0 - v4 * v4 * 0.45 + 0.05 * (b - 0.5)), 0.0);
+        }
+        case 7u: {
+            // Warp and weft, about 4 threads a centimetre, with slubs.
+            let weave = 0.5 + 0.5 * sin(250.0 * (p.x + p.z)) * sin(250.0 * (p.y - p.z));
+            return Texel(vec3<f32>(0.82 + 0.12 * weave + 0.1 * (a - 0.5)), 0.0);
+        }
+        case 8u: { return Texel(vec3<f32>(0.9 + 0.12 * a), 0.1 * a); }
+        case 9u: { return Texel(print(p, extent, a, seed, base), 0.0); }
+        case 10u: { return Texel(vec3<f32>(0.85 + 0.3 * a - 0.25 * step(0.93, b)), 0.0); }
         case 11u: { return Texel(vec3<f32>(0.6), 0.0); }
-        default: { return plain(p, seed); }
+        default: { return Texel(vec3<f32>(0.97 + 0.06 * a), 0.0); }
     }
 }
 
@@ -235,14 +242,9 @@ fn sun_through(map: texture_depth_2d, matrix: mat4x4<f32>, p: vec3<f32>) -> f32 
 fn sunlit(p: vec3<f32>, n: vec3<f32>) -> f32 {
     // Lifted off the surface along its normal, against acne.
     let q = p + n * 0.02;
-    var lit = 1.0;
-    if (lights.counts.y != 0u) {
-        lit = min(lit, sun_through(static_map, lights.static_shadow, q));
-    }
-    if (lights.counts.z != 0u) {
-        lit = min(lit, sun_through(dynamic_map, lights.dynamic_shadow, q));
-    }
-    return lit;
+    let fixed = select(1.0, sun_through(static_map, lights.static_shadow, q), lights.counts.y != 0u);
+    let moving = select(1.0, sun_through(dynamic_map, lights.dynamic_shadow, q), lights.counts.z != 0u);
+    return min(fixed, moving);
 }
 
 // Diffuse plus a normalised Blinn-Phong lobe standing in for GGX, with Schlick's Fresnel.
@@ -269,6 +271,11 @@ fn aces(x: vec3<f32>) -> vec3<f32> {
     return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), vec3<f32>(0.0), vec3<f32>(1.0));
 }
 
+// No branch or loop here depends on the lights' uniform alone: lavapipe compiles a shader anew,
+// at every draw whose uniforms changed, when such a condition could be folded (its "inlined
+// uniforms"); measured: 30 ms a frame and megabytes of memory a frame with a loop over the
+// lamp count. So the lamps are a fixed eight (unused ones black, lighting an empty room) and
+// the shadow maps' flags are selected, not branched on.
 @fragment
 fn fs_realistic(in: RealisticVertex) -> SurfaceOut {
     // As `fs_surface`: the same normal, depth and ids.
@@ -293,7 +300,7 @@ fn fs_realistic(in: RealisticVertex) -> SurfaceOut {
     if (dot(nw, sun) > 0.0) {
         light += brdf(nw, sun, vw, albedo, roughness, metallic) * lights.sun_color.rgb * sunlit(in.world, nw);
     }
-    for (var k = 0u; k < lights.counts.x; k++) {
+    for (var k = 0u; k < 8u; k++) {
         let room = lights.lamp_room[k];
         if (in.world.x < room.x || in.world.y < room.y || in.world.x > room.z || in.world.y > room.w) {
             continue;

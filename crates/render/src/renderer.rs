@@ -30,7 +30,7 @@ pub struct View {
 
 impl View {
     /// A camera that has seen nothing yet (its first frame's flow is zero), drawing in the
-    /// default profile ([`ImageProfile::Fast`]).
+    /// default profile ([`ImageProfile::Realistic`]).
     pub fn new(camera: Camera) -> View {
         View::with_profile(camera, ImageProfile::default())
     }
@@ -409,17 +409,24 @@ impl Renderer {
     }
 }
 
-/// Where a camera looks, for the moving shadow map: the ground it looks down on and half the
-/// width it sees there, or a point 3 m ahead.
+/// Where a camera looks, for the moving shadow map, and half the width it must cover there (at
+/// least the map's own minimum): for a camera looking down from afar (an overview), the ground
+/// it sees; for one among the furniture (an eye), the floor 3 m ahead.
 fn looked_at(camera: &Camera) -> (Vector, f32) {
     let eye = camera.pose.translation;
     let forward = camera.pose.rotation * Vector::X;
-    if forward.z < -0.2 {
-        let reach = (eye.z / -forward.z).min(40.0);
+    let reach = if forward.z < -0.2 {
+        eye.z / -forward.z
+    } else {
+        f32::INFINITY
+    };
+    if reach > 8.0 && reach.is_finite() {
+        let reach = reach.min(60.0);
         let half = reach * (0.5 * camera.vertical_fov).tan() * 1.5;
         (eye + forward * reach, half)
     } else {
-        (eye + forward * 3.0, 0.0)
+        let ahead = Vector::new(forward.x, forward.y, 0.0).normalize_or(Vector::X);
+        (Vector::new(eye.x, eye.y, 0.0) + ahead * 3.0, 0.0)
     }
 }
 

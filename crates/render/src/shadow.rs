@@ -15,8 +15,8 @@ use rapier3d::math::Vector;
 
 /// The fixed map's size, texels a side: 2 cm a texel over a 40 m home.
 const FIXED_SIZE: u32 = 2048;
-/// The moving map's, over at least 9 m: 9 mm a texel.
-const MOVING_SIZE: u32 = 1024;
+/// The moving map's, over 9 m around an eye: under 2 cm a texel.
+const MOVING_SIZE: u32 = 512;
 /// Half the side of the moving map's square at the least, m.
 const MOVING_HALF: f32 = 4.5;
 /// Round shapes cast their coarse mesh (see `mesh.rs`'s `Detail`).
@@ -51,6 +51,9 @@ pub(crate) struct ShadowMaps {
     moving: Map,
     /// What the fixed map shows: a hash of its casters and the sun, and its matrix.
     fixed_key: Option<(u64, Option<Mat4>)>,
+    /// What the moving map shows: a hash of its casters and its matrix, and whether it holds
+    /// anything. A frame where nothing moved (an idle robot, objects asleep) keeps it.
+    moving_key: Option<(u64, bool)>,
     /// Lists refilled each frame.
     positions: Vec<[f32; 3]>,
     triangles: Vec<u32>,
@@ -222,6 +225,7 @@ impl ShadowMaps {
             fixed: map(device, &bind_layout, FIXED_SIZE),
             moving: map(device, &bind_layout, MOVING_SIZE),
             fixed_key: None,
+            moving_key: None,
             positions: Vec::new(),
             triangles: Vec::new(),
         }
@@ -246,18 +250,11 @@ impl ShadowMaps {
             return ShadowMatrices::default();
         };
         let sun = ctx.sun;
-        let key = hash_words(
-            fixed
-                .iter()
-                .flat_map(|c| {
-                    std::iter::once(c.mesh).chain(c.model.iter().flatten().map(|v| v.to_bits()))
-                })
-                .chain(sun.to_array().map(f32::to_bits)),
-        );
-        if self.fixed_key.map(|(k, _)| k) != Some(key) {
+        let fixed_key = key(&fixed, &sun.to_array());
+        if self.fixed_key.map(|(k, _)| k) != Some(fixed_key) {
             let matrix = light_matrix(sun, lo, hi, None);
             let drawn = self.draw(ctx, Which::Fixed, &fixed, matrix);
-            self.fixed_key = Some((key, drawn.then_some(matrix)));
+            self.fixed_key = Some((fixed_key, drawn.then_some(matrix)));
         }
         let half = half.max(MOVING_HALF);
         let matrix = light_matrix(sun, lo, hi, Some((looked_at, half)));
@@ -265,7 +262,12 @@ impl ShadowMaps {
             .into_iter()
             .filter(|c| inside(&matrix, c.centre, c.reach))
             .collect();
-        let drawn = self.draw(ctx, Which::Moving, &near, matrix);
+        let moving_key = key(&near, &matrix.to_cols_array());
+        let drawn = match self.moving_key {
+            Some((k, drawn)) if k == moving_key => drawn,
+            _ => self.draw(ctx, Which::Moving, &near, matrix),
+        };
+        self.moving_key = Some((moving_key, drawn));
         ShadowMatrices {
             fixed: self.fixed_key.and_then(|(_, m)| m),
             moving: drawn.then_some(matrix),
@@ -364,6 +366,15 @@ pub(crate) struct ShadowContext<'a> {
 enum Which {
     Fixed,
     Moving,
+}
+
+/// A hash of what a map shows: its casters (meshes and placements) and `more` (the sun, or the
+/// map's matrix).
+fn key(casters: &[Caster], more: &[f32]) -> u64 {
+    let placed = casters
+        .iter()
+        .flat_map(|c| std::iter::once(c.mesh).chain(c.model.iter().flatten().map(|v| v.to_bits())));
+    hash_words(placed.chain(more.iter().map(|v| v.to_bits())))
 }
 
 /// Whether a ball lies (partly) inside a map's view.

@@ -10,6 +10,7 @@ mod bench_plan;
 mod demos;
 mod episode;
 mod facts;
+mod gallery;
 #[cfg(feature = "lerobot")]
 mod lerobot;
 mod map;
@@ -64,6 +65,8 @@ enum Command {
     Run(run::RunArgs),
     /// What a camera sees: every image modality as PNG and .npy, with a legend of the ids.
     Render(render::RenderArgs),
+    /// A contact sheet of every archetype in two variants, labelled with its synset.
+    Gallery(gallery::GalleryArgs),
     /// The task planner doing an activity with action primitives: the plan as it runs, then
     /// success, Q and the metrics.
     Solve(solve::SolveArgs),
@@ -117,6 +120,7 @@ fn main() -> ExitCode {
         Command::Facts(args) => facts::facts(args, cli.data_dir.as_deref()),
         Command::Run(args) => run::run(args, cli.data_dir.as_deref()),
         Command::Render(args) => render::render(args, cli.data_dir.as_deref()),
+        Command::Gallery(args) => gallery::gallery(args, cli.data_dir.as_deref()),
         Command::Solve(args) => solve::solve(args, cli.data_dir.as_deref()),
         Command::SolveAll(args) => solve::solve_all(args, cli.data_dir.as_deref()),
         Command::Replay(args) => replay::run(args, cli.data_dir.as_deref()),

@@ -15,6 +15,20 @@ pub const NEAR: f32 = 0.02;
 /// The farthest a camera sees, m.
 pub const FAR: f32 = 100.0;
 
+/// The box around the world's fixed objects (a home's walls, floors and furniture), or `None`
+/// for a world without any.
+pub(crate) fn fixed_bounds(world: &World) -> Option<(Vector, Vector)> {
+    let (lo, hi) = world
+        .objects()
+        .filter(|(_, o)| o.is_present() && o.body_kind == BodyKind::Fixed)
+        .map(|(id, _)| world.aabb(id))
+        .fold(
+            (Vector::splat(f32::MAX), Vector::splat(f32::MIN)),
+            |(lo, hi), b| (lo.min(b.mins), hi.max(b.maxs)),
+        );
+    (lo.x <= hi.x).then_some((lo, hi))
+}
+
 /// A pinhole camera.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Camera {
@@ -82,19 +96,11 @@ impl Camera {
         vertical_fov: f32,
     ) -> Result<Camera, RenderError> {
         let fov = vertical_fov;
-        let (lo, hi) = world
-            .objects()
-            .filter(|(_, o)| o.is_present() && o.body_kind == BodyKind::Fixed)
-            .map(|(id, _)| world.aabb(id))
-            .fold(
-                (Vector::splat(f32::MAX), Vector::splat(f32::MIN)),
-                |(lo, hi), b| (lo.min(b.mins), hi.max(b.maxs)),
-            );
-        if lo.x > hi.x {
+        let Some((lo, hi)) = fixed_bounds(world) else {
             return Err(RenderError::BadCamera(
                 "an overview needs fixed objects to frame; the world has none".into(),
             ));
-        }
+        };
         let centre = (lo + hi) * 0.5;
         // Looking down, the image's height spans the world's x and its width the world's y: the
         // half-height that takes in both.

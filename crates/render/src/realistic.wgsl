@@ -43,10 +43,10 @@ struct RealisticVertex {
 @vertex
 fn vs_realistic(v: VertexIn) -> RealisticVertex {
     var out: RealisticVertex;
-    let world = vec4<f32>(v.position, 1.0);
-    out.camera = (g.view * world).xyz;
-    out.normal = (g.view * vec4<f32>(v.normal, 0.0)).xyz;
-    out.clip = g.view_proj * world;
+    let placed = place(v);
+    out.clip = placed.clip;
+    out.camera = placed.camera;
+    out.normal = placed.normal;
     out.color = v.color;
     out.ids = v.ids;
     out.world = v.position;
@@ -55,13 +55,6 @@ fn vs_realistic(v: VertexIn) -> RealisticVertex {
     out.surface = v.surface;
     return out;
 }
-
-struct SurfaceOut {
-    @location(0) color: vec4<f32>,
-    @location(1) geometry: vec4<f32>,
-    @location(2) depth: f32,
-    @location(3) ids: vec2<u32>,
-};
 
 // ---- noise ----
 
@@ -278,12 +271,8 @@ fn aces(x: vec3<f32>) -> vec3<f32> {
 // the shadow maps' flags are selected, not branched on.
 @fragment
 fn fs_realistic(in: RealisticVertex) -> SurfaceOut {
-    // As `fs_surface`: the same normal, depth and ids.
-    var n = normalize(in.normal);
+    let n = seen_normal(in.normal, in.camera);
     let to_eye = normalize(-in.camera);
-    if (dot(n, to_eye) < 0.0) {
-        n = -n;
-    }
     let rotation = mat3x3<f32>(lights.camera_to_world[0].xyz, lights.camera_to_world[1].xyz, lights.camera_to_world[2].xyz);
     let nw = rotation * n;
     let vw = rotation * to_eye;
@@ -312,10 +301,5 @@ fn fs_realistic(in: RealisticVertex) -> SurfaceOut {
     }
     light += albedo * in.color.w * 3.0;
 
-    var out: SurfaceOut;
-    out.color = vec4<f32>(aces(light * lights.sky.w), 1.0);
-    out.geometry = vec4<f32>(n, in.camera.x);
-    out.depth = in.camera.x;
-    out.ids = in.ids;
-    return out;
+    return surface_out(aces(light * lights.sky.w), n, in.camera, in.ids);
 }

@@ -27,10 +27,10 @@ struct MotionVertex {
 @vertex
 fn vs_surface(v: VertexIn) -> SurfaceVertex {
     var out: SurfaceVertex;
-    let world = vec4<f32>(v.position, 1.0);
-    out.camera = (g.view * world).xyz;
-    out.normal = (g.view * vec4<f32>(v.normal, 0.0)).xyz;
-    out.clip = g.view_proj * world;
+    let placed = place(v);
+    out.clip = placed.clip;
+    out.camera = placed.camera;
+    out.normal = placed.normal;
     out.color = v.color;
     out.ids = v.ids;
     out.shine = v.shine;
@@ -48,21 +48,10 @@ fn vs_motion(v: VertexIn) -> MotionVertex {
     return out;
 }
 
-struct SurfaceOut {
-    @location(0) color: vec4<f32>,
-    @location(1) geometry: vec4<f32>,
-    @location(2) depth: f32,
-    @location(3) ids: vec2<u32>,
-};
-
 @fragment
 fn fs_surface(in: SurfaceVertex) -> SurfaceOut {
-    var n = normalize(in.normal);
+    let n = seen_normal(in.normal, in.camera);
     let to_eye = normalize(-in.camera);
-    // Two-sided: the inside of an open box is lit as its outside.
-    if (dot(n, to_eye) < 0.0) {
-        n = -n;
-    }
     let l = g.light.xyz;
     let diffuse = max(dot(n, l), 0.0);
     let facing = max(dot(n, to_eye), 0.0);
@@ -74,12 +63,7 @@ fn fs_surface(in: SurfaceVertex) -> SurfaceOut {
     let specular = in.shine * c8 * c32;
     let albedo = in.color.rgb;
     let lit = albedo * (0.3 + 0.5 * diffuse + 0.2 * facing + in.color.w) + vec3<f32>(specular);
-    var out: SurfaceOut;
-    out.color = vec4<f32>(min(lit, vec3<f32>(1.0)), 1.0);
-    out.geometry = vec4<f32>(n, in.camera.x);
-    out.depth = in.camera.x;
-    out.ids = in.ids;
-    return out;
+    return surface_out(min(lit, vec3<f32>(1.0)), n, in.camera, in.ids);
 }
 
 struct MotionOut {

@@ -6,9 +6,11 @@
 //! Two maps because a CPU rasterizer pays for every triangle: a home's fixed geometry is most
 //! of its triangles and stays put, while what moves is little and near.
 
+use crate::camera::fixed_bounds;
 use crate::instances::rows;
 use crate::lighting::ShadowMatrices;
 use crate::mesh::{Drawn, MeshStore, hash_words};
+use crate::pipeline::uniform_layout;
 use behavior_sim::{BodyKind, Material, ObjectId, World};
 use rapier3d::glamx::{Mat4, Vec3A, Vec4};
 use rapier3d::math::Vector;
@@ -160,19 +162,7 @@ impl ShadowMaps {
             label: Some("shadow"),
             source: wgpu::ShaderSource::Wgsl(include_str!("shadow.wgsl").into()),
         });
-        let bind_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("shadow matrix"),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::VERTEX,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Uniform,
-                    has_dynamic_offset: false,
-                    min_binding_size: None,
-                },
-                count: None,
-            }],
-        });
+        let bind_layout = uniform_layout(device, "shadow matrix", wgpu::ShaderStages::VERTEX);
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("shadow"),
             bind_group_layouts: &[Some(&bind_layout)],
@@ -390,15 +380,8 @@ fn inside(matrix: &Mat4, centre: Vector, reach: f32) -> bool {
 
 /// The box of the world's fixed objects, raised to hold what stands above them.
 fn bounds(world: &World) -> Option<(Vector, Vector)> {
-    let (lo, hi) = world
-        .objects()
-        .filter(|(_, o)| o.is_present() && o.body_kind == BodyKind::Fixed)
-        .map(|(id, _)| world.aabb(id))
-        .fold(
-            (Vector::splat(f32::MAX), Vector::splat(f32::MIN)),
-            |(lo, hi), b| (lo.min(b.mins), hi.max(b.maxs)),
-        );
-    (lo.x <= hi.x).then(|| (lo - Vector::splat(0.5), hi + Vector::new(0.5, 0.5, 1.0)))
+    let (lo, hi) = fixed_bounds(world)?;
+    Some((lo - Vector::splat(0.5), hi + Vector::new(0.5, 0.5, 1.0)))
 }
 
 /// The world's casters: fixed ones (bodies of fixed objects) and moving ones (the rest).

@@ -88,7 +88,7 @@ async function drive() {
     log(`lifted: the apple rose ${rise.toFixed(3)} m with the hand (${(lifted.hand[2] - onto.hand[2]).toFixed(3)} m)`);
     assert.ok(rise > 0.15, `the apple rose only ${rise.toFixed(3)} m: not grasped`);
     await page.waitForFunction((text) => [...document.querySelectorAll('#checklist li.holds')]
-      .some((li) => li.textContent === text), LIFTED, { timeout: 10_000 });
+      .some((li) => li.textContent === text), LIFTED, { timeout: 60_000 });
     const ticked = await checklist();
     log('checklist:', ticked.map((i) => `${i.text}${i.holds ? ' ✓' : ''}`).join(' '));
     if (screenshot) {
@@ -111,7 +111,7 @@ async function drive() {
     // Enter ends the episode (the apple still held); its recording replays bit for bit.
     await page.keyboard.press('Enter');
     await pilot.hold(new Set());
-    await page.waitForFunction(() => behavior.ended.length > 0, null, { timeout: 10_000 });
+    await page.waitForFunction(() => behavior.ended.length > 0, null, { timeout: 60_000 });
     const ended = await page.evaluate(() => behavior.ended[0]);
     log(`ended (${ended.reason}) after ${ended.steps} steps: ${ended.recording}`);
     assert.equal(ended.reason, 'ended by the driver');

@@ -49,7 +49,7 @@ async function main() {
     const where = (name) => page.evaluate((n) => behavior.position(n), name);
     log('immersive-vr offered; entering');
     await page.click('#enter-vr');
-    await page.waitForFunction(() => behavior.xr.presenting && behavior.xr.rig, null, { timeout: 20_000 });
+    await page.waitForFunction(() => behavior.xr.presenting && behavior.xr.rig, null, { timeout: 120_000 });
     const rig = await page.evaluate(() => behavior.xr.rig);
     log(`session started; rig yaw ${rig.yaw.toFixed(3)} rad, offset ${rig.offset.map((v) => v.toFixed(2))}`);
 
@@ -66,7 +66,7 @@ async function main() {
       }
     };
     const until = async (what, test) => {
-      const deadline = Date.now() + 30_000;
+      const deadline = Date.now() + 120_000;
       while (!(await test())) {
         assert.ok(Date.now() < deadline, `timed out waiting until ${what}`);
         await page.waitForTimeout(100);
@@ -94,7 +94,7 @@ async function main() {
 
     // End the episode from the page (Enter, as on a desktop) and replay it.
     await page.evaluate(() => behavior.send({ type: 'end' }));
-    await page.waitForFunction(() => behavior.ended.length > 0, null, { timeout: 10_000 });
+    await page.waitForFunction(() => behavior.ended.length > 0, null, { timeout: 60_000 });
     const ended = await page.evaluate(() => behavior.ended[0]);
     log(`ended (${ended.reason}) after ${ended.steps} steps: ${ended.recording}`);
     const replay = JSON.parse(execFileSync(BIN, ['replay', '--verify', '--json', ended.recording]));

@@ -43,13 +43,47 @@ impl Clients {
     }
 
     /// Sends to every page. A page too slow to take a frame skips it; one too slow to take a
-    /// text message (a scene, an ending) is let go, as it would be wrong from then on.
+    /// text message (a scene, an ending) is let go, as it would be wrong from then on. Frames
+    /// fill at most half a page's queue: the other half stays free for the text messages, so a
+    /// page that draws slowly (a headset emulated on a CPU) skips frames but still hears of
+    /// its rig and of the episode's end. (Before, frames filled the queue, and the ending that
+    /// came next found it full: the page was let go and waited for it in vain.)
     pub(crate) fn broadcast(&mut self, message: Outgoing) {
         let must_arrive = matches!(message, Outgoing::Text(_));
-        self.0.retain(|_, tx| match tx.try_send(message.clone()) {
-            Ok(()) => true,
-            Err(TrySendError::Full(_)) => !must_arrive,
-            Err(TrySendError::Closed(_)) => false,
+        self.0.retain(|_, tx| {
+            if !must_arrive && 2 * tx.capacity() <= tx.max_capacity() {
+                return true;
+            }
+            match tx.try_send(message.clone()) {
+                Ok(()) => true,
+                Err(TrySendError::Full(_)) => !must_arrive,
+                Err(TrySendError::Closed(_)) => false,
+            }
         });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A page that reads nothing: frames stop at half its queue, and an ending still fits.
+    #[test]
+    fn frames_leave_half_the_queue_for_what_must_arrive() {
+        let (tx, mut rx) = tokio::sync::mpsc::channel(8);
+        let mut clients = Clients::default();
+        assert!(clients.join(1, tx, Vec::new()));
+        for _ in 0..20 {
+            clients.broadcast(Outgoing::Binary(Bytes::from_static(b"frame")));
+        }
+        for _ in 0..4 {
+            clients.broadcast(Outgoing::Text("ended".into()));
+        }
+        assert_eq!(clients.0.len(), 1, "the page was let go");
+        let mut got = Vec::new();
+        while let Ok(m) = rx.try_recv() {
+            got.push(matches!(m, Outgoing::Text(_)));
+        }
+        assert_eq!(got, [false, false, false, false, true, true, true, true]);
     }
 }

@@ -170,50 +170,73 @@ fn mix(a: [u8; 3], b: [u8; 3], t: f32) -> [u8; 3] {
     std::array::from_fn(|i| (f32::from(a[i]) + (f32::from(b[i]) - f32::from(a[i])) * t) as u8)
 }
 
-/// How `visual`, a part of `object`, is finished in a home of seed `home`.
-pub(crate) fn finish(world: &World, object: ObjectId, visual: Visual, home: u64) -> Finish {
-    let o = world.object(object);
-    let seed = fnv(o.name.bytes()) as u32;
-    match o.category.as_str() {
-        "floor.n.01" => {
-            let kind = world.rooms().iter().find(|r| r.floor == Some(object));
-            return floor(kind.map(|r| r.kind), home);
-        }
-        "wall.n.01" => {
-            return Finish {
+/// What an object's parts share of their finish, worked out once per object and frame.
+pub(crate) enum Finisher {
+    /// Floors and walls: every part alike, whatever its own look.
+    Whole(Finish),
+    /// Anything else: each part by its material, the object's seed for all, and the home's
+    /// wood species for furniture.
+    ByMaterial {
+        seed: u32,
+        /// The home's wood for a fixed object's wooden parts.
+        species: Option<[u8; 3]>,
+    },
+}
+
+impl Finisher {
+    /// How `object`'s parts are finished in a home of seed `home`.
+    pub(crate) fn of(world: &World, object: ObjectId, home: u64) -> Finisher {
+        let o = world.object(object);
+        let seed = fnv(o.name.bytes()) as u32;
+        match o.category.as_str() {
+            "floor.n.01" => {
+                let room = world.rooms().iter().find(|r| r.floor == Some(object));
+                Finisher::Whole(floor(room.map(|r| r.kind), home))
+            }
+            "wall.n.01" => Finisher::Whole(Finish {
                 color: pick(&PAINTS, home, 11),
                 pattern: Pattern::Plaster,
                 roughness: 0.85,
                 metallic: 0.0,
                 seed,
-            };
+            }),
+            _ => Finisher::ByMaterial {
+                seed,
+                species: (o.body_kind == BodyKind::Fixed).then(|| pick(&SPECIES, home, 7)),
+            },
         }
-        _ => {}
     }
-    let furniture = o.body_kind == BodyKind::Fixed;
-    let (pattern, roughness, metallic) = match visual.material {
-        Material::Wood => (Pattern::Wood, 0.6, 0.0),
-        Material::Metal => (Pattern::Brushed, 0.35, 1.0),
-        Material::Plastic => (Pattern::Plain, 0.45, 0.0),
-        Material::Glass => (Pattern::Glass, 0.05, 0.0),
-        Material::Ceramic => (Pattern::Plain, 0.15, 0.0),
-        Material::Cloth => (Pattern::Fabric, 0.95, 0.0),
-        Material::Paper => (Pattern::Print, 0.8, 0.0),
-        Material::Food => (Pattern::Skin, 0.5, 0.0),
-        Material::Rubber => (Pattern::Plain, 0.9, 0.0),
-        Material::Stone => (Pattern::Marble, 0.3, 0.0),
-    };
-    // Furniture takes the home's wood species; small wooden things keep most of their own.
-    let color = match visual.material {
-        Material::Wood if furniture => mix(visual.color, pick(&SPECIES, home, 7), 0.7),
-        _ => visual.color,
-    };
-    Finish {
-        color,
-        pattern,
-        roughness,
-        metallic,
-        seed,
+
+    /// The finish of one part of the object, of appearance `visual`.
+    pub(crate) fn part(&self, visual: Visual) -> Finish {
+        let (seed, species) = match *self {
+            Finisher::Whole(finish) => return finish,
+            Finisher::ByMaterial { seed, species } => (seed, species),
+        };
+        let (pattern, roughness, metallic) = match visual.material {
+            Material::Wood => (Pattern::Wood, 0.6, 0.0),
+            Material::Metal => (Pattern::Brushed, 0.35, 1.0),
+            Material::Plastic => (Pattern::Plain, 0.45, 0.0),
+            Material::Glass => (Pattern::Glass, 0.05, 0.0),
+            Material::Ceramic => (Pattern::Plain, 0.15, 0.0),
+            Material::Cloth => (Pattern::Fabric, 0.95, 0.0),
+            Material::Paper => (Pattern::Print, 0.8, 0.0),
+            Material::Food => (Pattern::Skin, 0.5, 0.0),
+            Material::Rubber => (Pattern::Plain, 0.9, 0.0),
+            Material::Stone => (Pattern::Marble, 0.3, 0.0),
+        };
+        // Furniture takes the home's wood species; small wooden things keep their own colour.
+        let color = match (visual.material, species) {
+            (Material::Wood, Some(wood)) => mix(visual.color, wood, 0.7),
+            _ => visual.color,
+        };
+        Finish {
+            color,
+            pattern,
+            roughness,
+            metallic,
+            seed,
+        }
     }
 }
 

@@ -4,7 +4,7 @@
 use crate::appearance::{DUST, Look, STAIN, Shown, WATER, look};
 use crate::camera::Camera;
 use crate::categories::{CategoryTable, DUST_CATEGORY, STAIN_CATEGORY, WATER_CATEGORY};
-use crate::finish::{Finish, Pattern, finish};
+use crate::finish::{Finish, Finisher, Pattern};
 use crate::mesh::{Drawn, MeshStore, contains};
 use crate::occlusion::Occlusion;
 use crate::profile::ImageProfile;
@@ -235,6 +235,8 @@ impl Gatherer<'_> {
         let world = self.scene.world;
         let ids = self.ids(id, &world.object(id).category);
         let shown = Shown::of(world, id);
+        let finisher =
+            (self.profile == ImageProfile::Realistic).then(|| Finisher::of(world, id, self.home));
         let eye = self.camera.pose.translation;
         for (k, part) in world.core().visual_parts(id).iter().enumerate() {
             let drawn = Drawn::of(&part.shape);
@@ -258,14 +260,14 @@ impl Gatherer<'_> {
             }
             let pixels = self.pixels(centre, drawn.reach);
             let mesh = self.meshes.id(drawn.key.sized(pixels), &part.shape);
-            let shade = match self.profile {
-                ImageProfile::Fast => Shade {
+            let shade = match &finisher {
+                None => Shade {
                     look: look(part.visual.color, part.visual.material, shown),
                     ids,
                     surface: [0, 0],
                 },
-                ImageProfile::Realistic => {
-                    let finish = finish(world, id, part.visual, self.home);
+                Some(finisher) => {
+                    let finish = finisher.part(part.visual);
                     Shade {
                         look: look(finish.color, part.visual.material, shown),
                         ids,

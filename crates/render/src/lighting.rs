@@ -2,7 +2,6 @@
 //! and ground ambient, and a lamp under the ceiling of every room that lights that room only
 //! (its walls would hide it from the others; lamps cast no shadows yet, the sun does).
 
-use crate::finish::home_seed;
 use behavior_sim::World;
 use bytemuck::{Pod, Zeroable};
 use rapier3d::glamx::Mat4;
@@ -45,10 +44,9 @@ fn unit(seed: u64, salt: u64) -> f32 {
 }
 
 impl Lighting {
-    /// The home's light, drawn from its seed: the sun 25–60° high from any side, warmer the
+    /// The light of a home of seed `seed` ([`crate::finish::home_seed`]): the sun 25–60° high from any side, warmer the
     /// lower it is; lamps of a warm white, brighter in bigger rooms.
-    pub(crate) fn of(world: &World) -> Lighting {
-        let seed = home_seed(world);
+    pub(crate) fn of(world: &World, seed: u64) -> Lighting {
         let elevation = (25.0 + 35.0 * unit(seed, 1)).to_radians();
         let azimuth = if seed == 0 {
             0.6
@@ -107,8 +105,8 @@ pub(crate) struct LightsUniform {
     pub(crate) sun_color: [f32; 4],
     pub(crate) sky: [f32; 4],
     pub(crate) ground: [f32; 4],
-    /// Lamps in use (the shader runs over all eight: unused ones light an empty footprint),
-    /// whether the static map and the dynamic one hold anything.
+    /// y, z: whether the static map and the dynamic one hold anything; x, w: padding (the
+    /// shader runs over all eight lamps, unused ones lighting an empty footprint).
     pub(crate) counts: [u32; 4],
     pub(crate) lamp_position: [[f32; 4]; LAMPS],
     pub(crate) lamp_color: [[f32; 4]; LAMPS],
@@ -147,7 +145,7 @@ impl Lighting {
             sky: [self.sky[0], self.sky[1], self.sky[2], EXPOSURE],
             ground: [self.ground[0], self.ground[1], self.ground[2], 0.0],
             counts: [
-                nearest.len() as u32,
+                0,
                 u32::from(shadows.fixed.is_some()),
                 u32::from(shadows.moving.is_some()),
                 0,

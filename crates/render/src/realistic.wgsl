@@ -15,7 +15,7 @@ struct Lights {
     // Ambient from above; w: exposure.
     sky: vec4<f32>,
     ground: vec4<f32>,
-    // Lamps; whether the static and the dynamic map hold anything.
+    // y, z: whether the static and the dynamic map hold anything; x, w: padding.
     counts: vec4<u32>,
     lamp_position: array<vec4<f32>, 8>,
     lamp_color: array<vec4<f32>, 8>,

@@ -192,6 +192,7 @@ impl Renderer {
         let camera = view.camera;
         let realistic =
             view.profile == ImageProfile::Realistic && modalities.contains(&Modality::Rgb);
+        let home = home_seed(scene.world);
         let profile = if realistic {
             ImageProfile::Realistic
         } else {
@@ -204,7 +205,7 @@ impl Renderer {
             previous: view.previous.as_ref(),
             cull: self.cull,
             profile,
-            home: home_seed(scene.world),
+            home,
         }
         .gather();
         let motion = modalities
@@ -234,7 +235,7 @@ impl Renderer {
                 label: Some("frame"),
             });
         if realistic {
-            self.light(scene, &camera, &mut encoder);
+            self.light(scene, &camera, home, &mut encoder);
         }
         let frame = self.draw(encoder, &camera, profile, &wanted)?;
         view.previous = Some(History {
@@ -296,14 +297,20 @@ impl Renderer {
             .write_buffer(&self.pipelines.globals, 0, bytemuck::bytes_of(&globals));
     }
 
-    /// Records the realistic profile's shadow passes into `encoder` and sets its lights for
-    /// `camera`.
-    fn light(&mut self, scene: &Scene, camera: &Camera, encoder: &mut wgpu::CommandEncoder) {
+    /// Records the realistic profile's shadow passes into `encoder` and sets the lights of the
+    /// home of seed `home` for `camera`.
+    fn light(
+        &mut self,
+        scene: &Scene,
+        camera: &Camera,
+        home: u64,
+        encoder: &mut wgpu::CommandEncoder,
+    ) {
         let device = &self.gpu.device;
         let realistic = self
             .realistic
             .get_or_insert_with(|| Realistic::new(device, &self.pipelines.lights_layout));
-        let lighting = Lighting::of(scene.world);
+        let lighting = Lighting::of(scene.world, home);
         let (looked_at, half) = looked_at(camera);
         let mut ctx = ShadowContext {
             device,

@@ -15,6 +15,7 @@ mod appliances;
 mod containers;
 mod furniture;
 mod geometry;
+mod looks;
 mod moving_parts;
 mod openings;
 mod plumbing;
@@ -264,6 +265,7 @@ impl Archetype {
             material: self.material,
         };
         spec.links = links;
+        looks::dress(&mut spec, self);
         (spec, layout)
     }
 }

@@ -30,7 +30,7 @@
 //! their errors are errors, as before.
 
 use behavior_sim::{
-    JointKind, JointSpec, LinkSpec, ObjectSpec, Part, Primitive, Visual, VisualMesh,
+    Form, JointKind, JointSpec, LinkSpec, ObjectSpec, Part, Primitive, Visual, VisualMesh,
 };
 use rapier3d::math::{Pose, Rotation, Vector};
 use rapier3d::parry::shape::ConvexPolyhedron;
@@ -507,6 +507,7 @@ fn collision_parts(element: &Element, from_visual: bool) -> Result<Vec<Part>, St
         primitive,
         offset: element.at,
         visual: None,
+        form: Form::Primitive,
     };
     let primitive = match &element.shape {
         &Shape::Box { half_extents } => Primitive::Box { half_extents },

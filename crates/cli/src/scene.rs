@@ -1,8 +1,9 @@
 //! `behavior scene ...`: the named homes, generating homes from seeds, maps, and which homes can
 //! host which activities.
 
+use crate::episode::{Built, EpisodeArgs};
 use crate::prelude::{Prelude, named_homes};
-use anyhow::{Context, Result};
+use anyhow::{Context, Result, bail};
 use behavior_assets::covering;
 use behavior_assets::{Library, NAMED_HOMES, Scene, clutter, generate};
 use clap::Subcommand;
@@ -40,6 +41,22 @@ pub enum SceneCommand {
         #[arg(long)]
         json: bool,
     },
+    /// Write a sampled instance of an activity — its home, its objects and the robot — as a
+    /// binary glTF 2.0 file, with the meshes and materials the cameras draw (Blender and three.js
+    /// editors open it).
+    Export(ExportArgs),
+}
+
+#[derive(clap::Args)]
+pub struct ExportArgs {
+    #[command(flatten)]
+    episode: EpisodeArgs,
+    /// The file to write.
+    #[arg(long, value_name = "OUT.glb")]
+    gltf: PathBuf,
+    /// Leave the robot out.
+    #[arg(long)]
+    no_robot: bool,
 }
 
 pub fn run(command: SceneCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
@@ -86,8 +103,38 @@ pub fn run(command: SceneCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
             eprintln!("{}: map of {}", png.display(), scene.name);
         }
         SceneCommand::Coverage { json } => coverage(&prelude, &library, json)?,
+        SceneCommand::Export(args) => export(&prelude, args)?,
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// Writes a sampled instance as glTF.
+fn export(prelude: &Prelude, args: ExportArgs) -> Result<()> {
+    if args.gltf.extension().and_then(|e| e.to_str()) != Some("glb") {
+        bail!(
+            "--gltf {}: the file must end in .glb (binary glTF)",
+            args.gltf.display()
+        );
+    }
+    let Built { env, .. } = args.episode.build(prelude, |_| {})?;
+    let world = env.world().context("no episode")?;
+    let hidden: Vec<_> = match (args.no_robot, env.robot()) {
+        (true, Some(robot)) => robot.objects(),
+        _ => Vec::new(),
+    };
+    let file = behavior_render::to_glb(world, &hidden);
+    std::fs::write(&args.gltf, &file)
+        .with_context(|| format!("cannot write {}", args.gltf.display()))?;
+    eprintln!(
+        "{}: {} objects, {:.1} MB",
+        args.gltf.display(),
+        world
+            .objects()
+            .filter(|(id, o)| o.is_present() && !hidden.contains(id))
+            .count(),
+        file.len() as f64 / 1e6
+    );
+    Ok(())
 }
 
 /// For each official activity, the named homes that cover it.

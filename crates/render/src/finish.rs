@@ -76,6 +76,11 @@ pub(crate) fn fnv(bytes: impl IntoIterator<Item = u8>) -> u64 {
     })
 }
 
+/// An object's own seed, which varies its finish and its form's shape: a hash of its name.
+pub(crate) fn object_seed(world: &World, object: ObjectId) -> u32 {
+    behavior_forms::seed_of(&world.object(object).name)
+}
+
 /// The home's own seed: a hash of its rooms (types and footprints), 0 for a world without rooms.
 pub(crate) fn home_seed(world: &World) -> u64 {
     if world.rooms().is_empty() {
@@ -187,7 +192,7 @@ impl Finisher {
     /// How `object`'s parts are finished in a home of seed `home`.
     pub(crate) fn of(world: &World, object: ObjectId, home: u64) -> Finisher {
         let o = world.object(object);
-        let seed = fnv(o.name.bytes()) as u32;
+        let seed = object_seed(world, object);
         match o.category.as_str() {
             "floor.n.01" => {
                 let room = world.rooms().iter().find(|r| r.floor == Some(object));

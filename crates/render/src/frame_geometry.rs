@@ -8,8 +8,11 @@
 //! shape's triangles face away, and the pipeline cannot cull them itself because open meshes
 //! (a bowl) are seen from both sides in the same draw. A GPU would not mind either way.
 
+use crate::appearance::to_linear;
+use crate::finish::{Finish, Pattern};
 use crate::instances::Instance;
 use crate::mesh::MeshStore;
+use behavior_forms::Tone;
 use bytemuck::{Pod, Zeroable};
 use rapier3d::glamx::{Affine3A, Mat3A, Vec3A};
 use rapier3d::math::Vector;
@@ -34,6 +37,36 @@ pub(crate) struct FrameVertex {
     pub(crate) extent: [f32; 3],
     /// The part's finish: pattern, roughness and metallic, and its object's seed.
     pub(crate) surface: [u32; 2],
+}
+
+/// The colour of a vertex of `tone` on an instance of `color` (linear albedo, emission in w):
+/// the instance's own, or the tone's, lit alike.
+fn toned(tone: Tone, color: [f32; 4]) -> [f32; 4] {
+    match tone.srgb() {
+        None => color,
+        Some(srgb) => {
+            let [r, g, b] = srgb.map(|c| to_linear(f32::from(c) / 255.0));
+            [r, g, b, color[3]]
+        }
+    }
+}
+
+/// The realistic profile's finish of a vertex of `tone` on an instance finished `surface`
+/// ([`crate::finish::Finish::packed`]): the instance's own, or for a detail in a tone of its own
+/// (a cap, a stem, a lamp's shade) a plain surface, metal only where the tone is metal.
+fn toned_surface(tone: Tone, surface: [u32; 2]) -> [u32; 2] {
+    if tone == Tone::Body {
+        return surface;
+    }
+    let metal = tone == Tone::Metal;
+    Finish {
+        color: [0; 3],
+        pattern: Pattern::Plain,
+        roughness: if metal { 0.35 } else { 0.7 },
+        metallic: if metal { 1.0 } else { 0.0 },
+        seed: surface[1],
+    }
+    .packed()
 }
 
 /// The lists, kept between frames so that a frame like the last allocates nothing.
@@ -98,11 +131,11 @@ impl FrameGeometry {
                         position
                     },
                     shine: instance.shine,
-                    color: instance.color,
+                    color: toned(v.tone, instance.color),
                     ids: instance.ids,
                     local: (p * scale).to_array(),
                     extent: instance.extent,
-                    surface: instance.surface,
+                    surface: toned_surface(v.tone, instance.surface),
                 }
             }));
             let placed = &self.vertices[base..];

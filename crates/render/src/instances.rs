@@ -4,12 +4,12 @@
 use crate::appearance::{DUST, Look, STAIN, Shown, WATER, look};
 use crate::camera::Camera;
 use crate::categories::{CategoryTable, DUST_CATEGORY, STAIN_CATEGORY, WATER_CATEGORY};
-use crate::finish::{Finish, Finisher, Pattern};
+use crate::finish::{Finish, Finisher, Pattern, object_seed};
 use crate::mesh::{Drawn, MeshStore, contains};
 use crate::occlusion::Occlusion;
 use crate::profile::ImageProfile;
 use behavior_core::Predicate;
-use behavior_sim::{Material, ObjectId, Primitive, VisualShape, World};
+use behavior_sim::{Form, Material, ObjectId, Primitive, VisualShape, World};
 use rapier3d::glamx::{Mat3, Mat4, Vec4};
 use rapier3d::math::{Pose, Vector};
 
@@ -238,8 +238,9 @@ impl Gatherer<'_> {
         let finisher =
             (self.profile == ImageProfile::Realistic).then(|| Finisher::of(world, id, self.home));
         let eye = self.camera.pose.translation;
+        let seed = object_seed(world, id);
         for (k, part) in world.core().visual_parts(id).iter().enumerate() {
-            let drawn = Drawn::of(&part.shape);
+            let drawn = Drawn::of(&part.shape, seed);
             let key = Key::Part(id.0, k as u32);
             out.models.push((key, rows(&part.pose, drawn.scale)));
             let centre = part.pose.translation;
@@ -247,6 +248,19 @@ impl Gatherer<'_> {
                 continue;
             }
             let mut backdrop = false;
+            if let VisualShape::Formed { form, half_extents } = part.shape {
+                let local = part.pose.inverse_transform_point(eye);
+                if local.abs().cmplt(half_extents).all() {
+                    continue;
+                }
+                // A rounded board holds the box inside its bevel whole: that box hides what is
+                // behind it as a plain board would.
+                let inner = half_extents - Vector::splat(behavior_forms::bevel(half_extents));
+                if form == Form::Rounded && Occlusion::worth(&part.pose, inner) {
+                    out.occluders.push((part.pose, inner));
+                    backdrop = true;
+                }
+            }
             if let VisualShape::Primitive(p) = part.shape {
                 if contains(p, part.pose.inverse_transform_point(eye)) {
                     continue;
@@ -357,7 +371,7 @@ impl Gatherer<'_> {
         out: &mut Gathered,
     ) {
         let shape = VisualShape::Primitive(dots.shape);
-        let drawn = Drawn::of(&shape);
+        let drawn = Drawn::of(&shape, 0);
         for (n, &p) in at.iter().enumerate() {
             let key = key(n as u32);
             let pose = Pose::from_translation(p);

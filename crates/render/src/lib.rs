@@ -21,6 +21,9 @@
 //! darker, toggled on glowing; doors and drawers at their joints, sliced halves, dust and stain
 //! particles on the surfaces they lie on, and water drops, as the world has them.
 //!
+//! [`to_glb`] writes the world as a binary glTF 2.0 file with the same meshes and the realistic
+//! profile's materials.
+//!
 //! [`Lidar`] casts beams through the world's batched ray queries: a planar fan (Fetch's base
 //! laser) or a multi-beam 3-D scan, as points and as a range image.
 //!
@@ -34,6 +37,7 @@ mod error;
 mod export;
 mod finish;
 mod frame_geometry;
+mod gltf;
 mod gpu;
 mod instances;
 mod lidar;
@@ -52,6 +56,7 @@ pub use camera::{Camera, EYE_FOV, EYE_SIZE, FAR, NEAR};
 pub use categories::{CategoryTable, DUST_CATEGORY, STAIN_CATEGORY, WATER_CATEGORY};
 pub use error::RenderError;
 pub use export::{ExportError, save_npy, save_png, to_rgb};
+pub use gltf::to_glb;
 pub use instances::Scene;
 pub use lidar::{Lidar, Pattern, Scan};
 pub use modality::{Frame, Image, Modality, Pixels, UnknownModality};

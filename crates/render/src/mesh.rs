@@ -1,17 +1,21 @@
 //! Triangle meshes for the world's shapes, each made once and kept: unit meshes for boxes,
 //! balls and cylinders (stretched by the instance's scale), one mesh per capsule size, per convex
-//! hull and per imported visual mesh (found again by a hash of their numbers).
+//! hull and per imported visual mesh (found again by a hash of their numbers), and one per
+//! detailed form, size, seed and level of detail (made by `behavior-forms`).
 
+use behavior_forms::{Form, Tone};
 use behavior_sim::{Primitive, VisualMesh, VisualShape};
 use rapier3d::math::Vector;
 use std::collections::BTreeMap;
 use std::f32::consts::{PI, TAU};
 
-/// A mesh vertex: position and outward normal in the shape's frame.
+/// A mesh vertex: position and outward normal in the shape's frame, and which colour it takes.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct Vertex {
     pub(crate) position: [f32; 3],
     pub(crate) normal: [f32; 3],
+    /// The object's colour, or a detail's own (a stem, a cap).
+    pub(crate) tone: Tone,
 }
 
 /// Counter-clockwise triangles over vertices.
@@ -53,6 +57,14 @@ pub(crate) enum MeshKey {
     },
     Hull(u64),
     Visual(u64),
+    /// A detailed form of a unit box (stretched by the instance's scale to its half size, whose
+    /// bits are here because the form's details keep their proportions), for an object's seed.
+    Form {
+        form: Form,
+        half: [u32; 3],
+        seed: u32,
+        detail: behavior_forms::Detail,
+    },
 }
 
 impl MeshKey {
@@ -68,13 +80,45 @@ impl MeshKey {
 /// [`Detail::Coarse`].
 const COARSE_BELOW_PIXELS: f32 = 8.0;
 
+/// Forms smaller than this radius on the image, pixels, are drawn at their coarse level.
+const COARSE_FORM_BELOW_PIXELS: f32 = 20.0;
+
+/// Forms smaller than this radius on the image, pixels, are drawn as their box: a few pixels
+/// show no shape, and a coarse form costs ten to forty times a box's triangles.
+const BOX_FORM_BELOW_PIXELS: f32 = 2.5;
+
+/// A rounded box whose bevel is narrower than this on the image, pixels, is drawn as the plain
+/// box: nobody sees the rounding, and it costs 25 times the triangles.
+const PLAIN_BEVEL_BELOW_PIXELS: f32 = 0.75;
+
 impl MeshKey {
     /// This key, or its coarse version for a round shape `pixels` in radius on the image.
     pub(crate) fn sized(self, pixels: f32) -> MeshKey {
-        if pixels >= COARSE_BELOW_PIXELS {
+        if let MeshKey::Form { form, half, .. } = self {
+            let half = Vector::from_array(half.map(f32::from_bits));
+            if pixels < BOX_FORM_BELOW_PIXELS {
+                return MeshKey::UnitBox;
+            }
+            if matches!(form, Form::Rounded)
+                && pixels * behavior_forms::bevel(half) < PLAIN_BEVEL_BELOW_PIXELS * half.length()
+            {
+                return MeshKey::UnitBox;
+            }
+        }
+        if pixels >= COARSE_BELOW_PIXELS && !matches!(self, MeshKey::Form { .. })
+            || pixels >= COARSE_FORM_BELOW_PIXELS
+        {
             return self;
         }
         match self {
+            MeshKey::Form {
+                form, half, seed, ..
+            } => MeshKey::Form {
+                form,
+                half,
+                seed,
+                detail: behavior_forms::Detail::Coarse,
+            },
             MeshKey::UnitBall(_) => MeshKey::UnitBall(Detail::Coarse),
             MeshKey::UnitCylinder(_) => MeshKey::UnitCylinder(Detail::Coarse),
             MeshKey::Capsule {
@@ -103,9 +147,21 @@ pub(crate) struct Drawn {
 }
 
 impl Drawn {
-    pub(crate) fn of(shape: &VisualShape) -> Drawn {
+    /// How to draw `shape` of an object of seed `seed` (which varies its form).
+    pub(crate) fn of(shape: &VisualShape, seed: u32) -> Drawn {
         match shape {
             VisualShape::Primitive(p) => Drawn::primitive(p),
+            &VisualShape::Formed { form, half_extents } => Drawn {
+                key: MeshKey::Form {
+                    form,
+                    half: half_extents.to_array().map(f32::to_bits),
+                    seed,
+                    detail: behavior_forms::Detail::Fine,
+                },
+                scale: half_extents,
+                reach: half_extents.length(),
+                extent: half_extents,
+            },
             VisualShape::Mesh(m) => Drawn {
                 key: MeshKey::Visual(hash_mesh(m)),
                 scale: Vector::ONE,
@@ -228,7 +284,39 @@ pub(crate) fn build(key: MeshKey, shape: &VisualShape) -> Mesh {
             hull(points)
         }
         (MeshKey::Visual(_), VisualShape::Mesh(m)) => faceted(&m.vertices, &m.triangles),
+        (
+            MeshKey::Form {
+                form,
+                half,
+                seed,
+                detail,
+            },
+            _,
+        ) => formed(
+            form,
+            Vector::from_array(half.map(f32::from_bits)),
+            seed,
+            detail,
+        ),
         _ => Mesh::default(),
+    }
+}
+
+/// A form's mesh shrunk to the unit box (the instance stretches it back by `half`): positions
+/// divided by `half`, normals multiplied by it, so that the instance's normal matrix (which
+/// divides by its scale) turns them back.
+fn formed(form: Form, half: Vector, seed: u32, detail: behavior_forms::Detail) -> Mesh {
+    let made = behavior_forms::mesh(form, half, u64::from(seed), detail);
+    let unit = half.max(Vector::splat(1e-6));
+    Mesh {
+        vertices: (made.positions.iter().zip(&made.normals).zip(&made.tones))
+            .map(|((&p, &n), &tone)| Vertex {
+                position: (p / unit).to_array(),
+                normal: (n * unit).to_array(),
+                tone,
+            })
+            .collect(),
+        indices: made.triangles.into_iter().flatten().collect(),
     }
 }
 
@@ -248,6 +336,7 @@ fn unit_box() -> Mesh {
                 mesh.vertices.push(Vertex {
                     position: p,
                     normal: n,
+                    tone: Tone::Body,
                 });
             }
             let quad = if sign > 0.0 {
@@ -286,6 +375,7 @@ fn ball(radius: f32, half_height: f32, detail: Detail) -> Mesh {
             mesh.vertices.push(Vertex {
                 position: p,
                 normal: n,
+                tone: Tone::Body,
             });
         }
     }
@@ -311,6 +401,7 @@ fn cylinder(detail: Detail) -> Mesh {
             mesh.vertices.push(Vertex {
                 position: [x, y, z],
                 normal: [x, y, 0.0],
+                tone: Tone::Body,
             });
         }
     }
@@ -323,12 +414,14 @@ fn cylinder(detail: Detail) -> Mesh {
         mesh.vertices.push(Vertex {
             position: [0.0, 0.0, z],
             normal: [0.0, 0.0, z],
+            tone: Tone::Body,
         });
         for s in 0..=round {
             let phi = TAU * s as f32 / round as f32;
             mesh.vertices.push(Vertex {
                 position: [phi.cos(), phi.sin(), z],
                 normal: [0.0, 0.0, z],
+                tone: Tone::Body,
             });
         }
         for s in 0..round as u32 {
@@ -367,6 +460,7 @@ fn faceted(vertices: &[Vector], triangles: &[[u32; 3]]) -> Mesh {
             mesh.vertices.push(Vertex {
                 position: q.to_array(),
                 normal: n.to_array(),
+                tone: Tone::Body,
             });
         }
         mesh.indices.extend([base, base + 1, base + 2]);

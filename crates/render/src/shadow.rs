@@ -7,6 +7,7 @@
 //! of its triangles and stays put, while what moves is little and near.
 
 use crate::camera::fixed_bounds;
+use crate::finish::object_seed;
 use crate::instances::rows;
 use crate::lighting::ShadowMatrices;
 use crate::mesh::{Drawn, MeshStore, hash_words};
@@ -396,11 +397,12 @@ fn casters(
             continue;
         }
         let still = object.body_kind == BodyKind::Fixed;
+        let seed = object_seed(world, id);
         for part in world.core().visual_parts(id) {
             if part.visual.material == Material::Glass {
                 continue;
             }
-            let drawn = Drawn::of(&part.shape);
+            let drawn = Drawn::of(&part.shape, seed);
             let caster = Caster {
                 mesh: meshes.id(drawn.key.sized(CASTER_PIXELS), &part.shape),
                 model: rows(&part.pose, drawn.scale),

@@ -13,7 +13,8 @@
 
 use behavior_core::AGENT_SYNSET;
 use behavior_sim::{
-    BodyKind, JointKind, JointModel, JointSpec, LinkSpec, Material, ObjectSpec, Part, Primitive,
+    BodyKind, Form, JointKind, JointModel, JointSpec, LinkSpec, Material, ObjectSpec, Part,
+    Primitive,
 };
 use rapier3d::math::{Pose, Rotation, Vector};
 use std::f32::consts::FRAC_PI_2;
@@ -498,6 +499,7 @@ fn capsule_x(x0: f32, x1: f32, radius: f32) -> Part {
         primitive: capsule,
         offset,
         visual: None,
+        form: Form::Primitive,
     }
 }
 
@@ -546,6 +548,7 @@ pub(crate) fn link_parts(link: FetchLink) -> Vec<Part> {
                     Rotation::from_rotation_y(FRAC_PI_2),
                 ),
                 visual: None,
+                form: Form::Primitive,
             };
             vec![
                 wrist,

@@ -20,7 +20,7 @@
 //! The palm is servoed onto its target (see `follow.rs`), carrying its fingers.
 
 use behavior_core::AGENT_SYNSET;
-use behavior_sim::{Material, ObjectId, ObjectSpec, Part, Primitive, World};
+use behavior_sim::{Form, Material, ObjectId, ObjectSpec, Part, Primitive, World};
 use rapier3d::math::{Pose, Rotation, Vector};
 
 /// Which hand.
@@ -173,6 +173,7 @@ fn finger_part(side: Side, finger: usize) -> Part {
         },
         offset: finger_offset(side, finger, 0.0),
         visual: None,
+        form: Form::Primitive,
     }
 }
 

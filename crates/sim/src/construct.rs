@@ -53,6 +53,7 @@ impl Core {
             parts: spec.parts,
             visual: spec.visual,
             meshes: spec.meshes,
+            form: spec.form,
             replaced_by: None,
             retired: false,
         });

@@ -103,5 +103,5 @@ pub use states::water::{
     STEPS_BETWEEN_DROPS,
 };
 pub use step::StepHooks;
-pub use visual::{Material, Visual, VisualMesh, VisualPart, VisualShape};
+pub use visual::{Form, Material, Visual, VisualMesh, VisualPart, VisualShape};
 pub use world::{Snapshot, World};

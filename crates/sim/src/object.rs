@@ -6,7 +6,7 @@
 //! each on one joint to the object's body or to an earlier link, so a chain is written as it stands
 //! when all its joints read zero.
 
-use crate::visual::{Material, Visual, VisualMesh};
+use crate::visual::{Form, Material, Visual, VisualMesh};
 use behavior_core::{Ability, AbilityParams, ParamValue};
 use rapier3d::dynamics::{ImpulseJointHandle, MultibodyJointHandle, RigidBodyHandle};
 use rapier3d::geometry::ColliderHandle;
@@ -80,6 +80,40 @@ pub enum Primitive {
     },
 }
 
+impl Primitive {
+    /// The box around it in its own frame, as its lowest and highest corners.
+    pub fn local_box(&self) -> (Vector, Vector) {
+        let half = match *self {
+            Primitive::Box { half_extents } => half_extents,
+            Primitive::Cylinder {
+                radius,
+                half_height,
+            } => Vector::new(radius, radius, half_height),
+            Primitive::Sphere { radius } => Vector::splat(radius),
+            Primitive::Capsule {
+                radius,
+                half_height,
+            } => Vector::new(radius, radius, radius + half_height),
+            Primitive::ConvexHull { ref points } => {
+                let lo = points
+                    .iter()
+                    .copied()
+                    .fold(Vector::splat(f32::MAX), Vector::min);
+                let hi = points
+                    .iter()
+                    .copied()
+                    .fold(Vector::splat(f32::MIN), Vector::max);
+                return if lo.x <= hi.x {
+                    (lo, hi)
+                } else {
+                    (Vector::ZERO, Vector::ZERO)
+                };
+            }
+        };
+        (-half, half)
+    }
+}
+
 /// One primitive of an object's compound shape, placed in the object's frame.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Part {
@@ -89,6 +123,8 @@ pub struct Part {
     pub offset: Pose,
     /// Its appearance, when it differs from the object's (a red button on a white stove).
     pub visual: Option<Visual>,
+    /// How it is drawn: its primitive, or a detailed form filling the box around it.
+    pub form: Form,
 }
 
 impl Part {
@@ -98,6 +134,7 @@ impl Part {
             primitive,
             offset: Pose::IDENTITY,
             visual: None,
+            form: Form::Primitive,
         }
     }
 
@@ -107,7 +144,14 @@ impl Part {
             primitive,
             offset: Pose::from_translation(offset),
             visual: None,
+            form: Form::Primitive,
         }
+    }
+
+    /// The same part drawn in a detailed form.
+    pub fn with_form(mut self, form: Form) -> Part {
+        self.form = form;
+        self
     }
 
     /// The same part with an appearance of its own.
@@ -177,6 +221,10 @@ pub struct ObjectSpec {
     /// Visual-only meshes (an imported model's look), drawn instead of the collision parts of
     /// the body or link they belong to.
     pub meshes: Vec<VisualMesh>,
+    /// A detailed form drawn instead of the body's parts, filling the box around them (a bowl
+    /// whose colliders are a bottom and four walls); [`Form::Primitive`] draws the parts. Not
+    /// passed on to the halves of a sliced object.
+    pub form: Form,
 }
 
 /// Where an ability acts, as a point in the object's frame.
@@ -294,6 +342,7 @@ impl ObjectSpec {
             halves: None,
             visual: Visual::default(),
             meshes: Vec::new(),
+            form: Form::Primitive,
         }
     }
 
@@ -380,6 +429,8 @@ pub struct Object {
     pub visual: Visual,
     /// Visual-only meshes.
     pub meshes: Vec<VisualMesh>,
+    /// The body's form ([`ObjectSpec::form`]).
+    pub form: Form,
     /// The two objects that replaced it when it was sliced: it has left the simulation.
     pub replaced_by: Option<[ObjectId; 2]>,
     /// Taken out of the simulation by [`crate::Core::retire`] (a stand-in a robot replaced).

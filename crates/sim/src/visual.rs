@@ -74,6 +74,114 @@ impl Default for Visual {
     }
 }
 
+/// A detailed shape drawn in place of plain primitives: a renderer makes its mesh from the form,
+/// the box it fills and a seed (see the `behavior-forms` crate), so the world carries a word
+/// where it would otherwise carry thousands of vertices, and checkpoints stay small.
+///
+/// A part's form is drawn filling the box around its primitive; an object's form
+/// ([`crate::ObjectSpec::form`]) fills the box around all its body's parts and is drawn instead
+/// of them. The physics never reads it: what collides is still the parts.
+#[derive(
+    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize,
+)]
+pub enum Form {
+    /// The primitive itself.
+    #[default]
+    Primitive,
+    /// A box with rounded edges (a bevel of a quarter of its thinnest half side, at most 12 mm):
+    /// boards, carcasses, appliances, boxes.
+    Rounded,
+    /// A box rounded like a cushion, a bar of soap or a slab of cheese.
+    Soft,
+    /// A smooth ball or ellipsoid.
+    Round,
+    /// A turned post: a spindle with beads (table and chair legs, candlesticks).
+    Turned,
+    /// An apple: a dimpled ball with a stem.
+    Apple,
+    /// A round fruit or vegetable with a small calyx: an orange, a tomato, a peach.
+    Fruit,
+    /// A lemon: an ellipsoid with pointed ends.
+    Lemon,
+    /// An egg.
+    Egg,
+    /// Broccoli or lettuce: a stalk under a cluster of florets.
+    Florets,
+    /// A mushroom: a cap on a stalk.
+    Mushroom,
+    /// A strawberry or raspberry: a rounded cone.
+    Berry,
+    /// A banana: a curved, ridged, tapering body, lying along x.
+    Banana,
+    /// A carrot: a long taper with its leaves' stub, lying along x.
+    Carrot,
+    /// A loaf: a block with a domed top.
+    Loaf,
+    /// A bottle: body, shoulder, neck and cap.
+    Bottle,
+    /// A can or tin with rolled rims.
+    Can,
+    /// A cup or drinking glass, open at the top.
+    Cup,
+    /// A mug: a cup with a handle on +x.
+    Mug,
+    /// A bowl on a foot ring.
+    Bowl,
+    /// A plate with a well and a rim.
+    Plate,
+    /// A cooking pot with two handles on ±x.
+    Pot,
+    /// A bucket or bin: a tapered tub with a rolled rim.
+    Bucket,
+    /// A cake or round dish: a cylinder with soft edges.
+    Cake,
+    /// A book: covers and spine around a block of pages.
+    Book,
+    /// Folded cloth: a soft slab in layers.
+    Folded,
+    /// A pen, pencil or marker lying along x: a round barrel with a tip.
+    Pen,
+    /// A table lamp: base, stem and shade.
+    Lamp,
+    /// A plant in a pot: pot, soil and a crown of leaves.
+    Plant,
+}
+
+impl Form {
+    /// Every form, in order.
+    pub const ALL: [Form; 29] = [
+        Form::Primitive,
+        Form::Rounded,
+        Form::Soft,
+        Form::Round,
+        Form::Turned,
+        Form::Apple,
+        Form::Fruit,
+        Form::Lemon,
+        Form::Egg,
+        Form::Florets,
+        Form::Mushroom,
+        Form::Berry,
+        Form::Banana,
+        Form::Carrot,
+        Form::Loaf,
+        Form::Bottle,
+        Form::Can,
+        Form::Cup,
+        Form::Mug,
+        Form::Bowl,
+        Form::Plate,
+        Form::Pot,
+        Form::Bucket,
+        Form::Cake,
+        Form::Book,
+        Form::Folded,
+        Form::Pen,
+        Form::Lamp,
+        Form::Plant,
+    ];
+}
+
 /// A visual-only triangle mesh (an imported model's look), in the frame of its body.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct VisualMesh {
@@ -94,6 +202,13 @@ pub enum VisualShape<'a> {
     Primitive(&'a Primitive),
     /// A visual-only mesh.
     Mesh(&'a VisualMesh),
+    /// A detailed form filling a box of these half extents, centred on the part's pose.
+    Formed {
+        /// Which form.
+        form: Form,
+        /// Half the box's size along the part's axes, m.
+        half_extents: Vector,
+    },
 }
 
 /// One thing to draw: a shape at a world pose, with its appearance.
@@ -110,8 +225,10 @@ pub struct VisualPart<'a> {
 }
 
 impl Core {
-    /// What to draw for an object, posed as it is now: its collision parts (or, for a body or
-    /// link that has visual meshes, those instead). Nothing for an object replaced by its halves.
+    /// What to draw for an object, posed as it is now: its collision parts, each in its form (or,
+    /// for a body or link that has visual meshes, those instead; for a body with a form of its
+    /// own, that form filling the box around its parts). Nothing for an object replaced by its
+    /// halves.
     pub fn visual_parts(&self, id: ObjectId) -> Vec<VisualPart<'_>> {
         let object = self.object(id);
         if !object.is_present() {
@@ -136,7 +253,18 @@ impl Core {
             let meshes: Vec<&VisualMesh> =
                 object.meshes.iter().filter(|m| m.link == link).collect();
             let pose = frame(link);
-            if meshes.is_empty() {
+            if link.is_none() && meshes.is_empty() && object.form != Form::Primitive {
+                let b = self.local_aabb(id);
+                out.push(VisualPart {
+                    shape: VisualShape::Formed {
+                        form: object.form,
+                        half_extents: (b.maxs - b.mins) * 0.5,
+                    },
+                    pose: pose * Pose::from_translation(b.center()),
+                    link,
+                    visual: object.visual,
+                });
+            } else if meshes.is_empty() {
                 out.extend(
                     list.iter()
                         .map(|part| drawn_part(part, pose, link, object.visual)),
@@ -155,8 +283,23 @@ impl Core {
 }
 
 fn drawn_part(part: &Part, frame: Pose, link: Option<usize>, default: Visual) -> VisualPart<'_> {
+    let shape = match part.form {
+        Form::Primitive => VisualShape::Primitive(&part.primitive),
+        form => {
+            let (lo, hi) = part.primitive.local_box();
+            return VisualPart {
+                shape: VisualShape::Formed {
+                    form,
+                    half_extents: (hi - lo) * 0.5,
+                },
+                pose: frame * part.offset * Pose::from_translation((lo + hi) * 0.5),
+                link,
+                visual: part.visual.unwrap_or(default),
+            };
+        }
+    };
     VisualPart {
-        shape: VisualShape::Primitive(&part.primitive),
+        shape,
         pose: frame * part.offset,
         link,
         visual: part.visual.unwrap_or(default),

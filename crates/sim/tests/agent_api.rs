@@ -897,9 +897,8 @@ fn a_part_moved_within_its_body_is_where_queries_drawing_and_mass_find_it() {
         vec![
             Part::new(cuboid(0.2, 0.2, 0.02)),
             Part {
-                primitive: cuboid(0.05, 0.05, 0.05),
                 offset: flag,
-                visual: None,
+                ..Part::new(cuboid(0.05, 0.05, 0.05))
             },
         ],
     )

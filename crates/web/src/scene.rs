@@ -172,7 +172,7 @@ pub(crate) fn describe(world: &World) -> (SceneView, Vec<Node>) {
                 let look = state_look(world, id, p.visual);
                 node_looks.push((p.visual, look_key(&look)));
                 drawn.push(DrawnPart {
-                    shape: shape_of(&p.shape),
+                    shape: shape_of(&p.shape, &object.name),
                     offset: pose_values(inverse * p.pose),
                     color: look.albedo,
                     emission: look.emission,
@@ -225,8 +225,13 @@ fn look_key(look: &Look) -> [f32; 4] {
     ]
 }
 
-fn shape_of(shape: &VisualShape) -> Shape {
+fn shape_of(shape: &VisualShape, name: &str) -> Shape {
     match shape {
+        &VisualShape::Formed { form, half_extents } => {
+            let seed = u64::from(behavior_forms::seed_of(name));
+            let made = behavior_forms::mesh(form, half_extents, seed, behavior_forms::Detail::Fine);
+            mesh(&made.positions, &made.triangles)
+        }
         VisualShape::Primitive(p) => match p {
             Primitive::Box { half_extents: h } => Shape::Box {
                 half_extents: [h.x, h.y, h.z],

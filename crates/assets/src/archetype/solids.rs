@@ -3,7 +3,7 @@
 
 use super::geometry::{chamfered, ellipsoid, hull, prism, span, v};
 use super::{Blank, Built};
-use behavior_sim::{Part, Primitive};
+use behavior_sim::{Form, Part, Primitive};
 use rapier3d::math::{Pose, Rotation};
 
 /// A sphere as big as the box allows (variant 0), or an ellipsoid filling the box (variant 1:
@@ -59,6 +59,7 @@ pub(super) fn rod(b: &Blank) -> Built {
         },
         offset: lying,
         visual: None,
+        form: Form::Primitive,
     }])
 }
 

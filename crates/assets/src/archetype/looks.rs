@@ -1,0 +1,94 @@
+//! Which detailed form an archetype is drawn in (see `behavior-forms`): small things as one form
+//! filling the box around their body (a bowl, whose colliders are a bottom and four walls, drawn
+//! as a bowl on its foot ring), furniture and appliances box by box: rounded edges, soft
+//! upholstery, turned legs.
+//! Collision is untouched: what is drawn lies within the colliders' box.
+
+use super::{Archetype, Shape};
+use behavior_sim::{Form, ObjectSpec, Part, Primitive};
+use rapier3d::math::Vector;
+
+/// The form a synset's body is drawn in, or [`Form::Primitive`] to draw its parts.
+fn body_form(synset: &str, shape: Shape) -> Form {
+    let name = synset.split('.').next().unwrap_or(synset);
+    let by_name = match name {
+        "apple" => Form::Apple,
+        "orange" | "peach" | "tomato" | "melon" | "pumpkin" | "radish" | "vidalia_onion"
+        | "grape" | "olive" | "chestnut" | "date" | "lettuce" => Form::Fruit,
+        "lemon" => Form::Lemon,
+        "egg" => Form::Egg,
+        "broccoli" => Form::Florets,
+        "mushroom" => Form::Mushroom,
+        "strawberry" | "raspberry" => Form::Berry,
+        "banana" => Form::Banana,
+        "carrot" => Form::Carrot,
+        "bread" => Form::Loaf,
+        "book" | "hardback" | "notebook" => Form::Book,
+        "cheese" | "soap" | "beef" | "meat" | "pork" | "fish" | "chicken" | "candy"
+        | "snack_food" | "sandwich" | "cracker" | "bow" | "gym_shoe" | "shoe" | "sandal" => {
+            Form::Soft
+        }
+        "bottle" | "beer" | "catsup" | "shampoo" | "perfume" | "vegetable_oil"
+        | "cleansing_agent" | "sauce" | "beverage" | "water" | "pop" => Form::Bottle,
+        "soup" | "oatmeal" | "yogurt" | "blender" => Form::Can,
+        "cup" | "vessel" => Form::Cup,
+        "mug" | "kettle" => Form::Mug,
+        "cake" | "cookie" | "hamburger" | "salad" | "sushi" | "candle" | "alarm" => Form::Cake,
+        "lamp" => Form::Lamp,
+        "pot_plant" | "christmas_tree" => Form::Plant,
+        "plate" => Form::Plate,
+        "dishtowel" | "hand_towel" | "towel" | "rag" | "piece_of_cloth" | "apparel" | "shirt"
+        | "sweater" | "sock" | "underwear" | "sheet" => Form::Folded,
+        "pen" | "pencil" | "marker" | "highlighter" => Form::Pen,
+        "bowl" | "dish" => Form::Bowl,
+        "bucket" | "ashcan" => Form::Bucket,
+        "pan" | "saucepan" | "caldron" | "teapot" => Form::Pot,
+        _ => Form::Primitive,
+    };
+    match (by_name, shape) {
+        (Form::Primitive, Shape::Ball) => Form::Round,
+        (form, _) => form,
+    }
+}
+
+/// Whether an archetype's own boxes are drawn with rounded edges: furniture, appliances,
+/// fixtures and boxy things; not floors (flush with the rooms' walls) nor the agent's stand-in.
+fn rounds_its_boxes(shape: Shape) -> bool {
+    !matches!(shape, Shape::Floor | Shape::Agent)
+}
+
+/// The form of one box of a piece of furniture or a fixture: upholstery is soft (a sofa, a
+/// bed's mattress), a thin upright post of a table or chair is a turned leg, the rest has
+/// rounded edges.
+fn box_form(shape: Shape, index: usize, half: Vector) -> Form {
+    let post = half.z > 3.0 * half.x.max(half.y) && half.x.max(half.y) < 0.04;
+    match shape {
+        Shape::Sofa => Form::Soft,
+        // The bed's parts: base, mattress, headboard.
+        Shape::Bed if index == 1 => Form::Soft,
+        Shape::Table | Shape::Chair if post => Form::Turned,
+        _ => Form::Rounded,
+    }
+}
+
+/// Sets the forms of a spec built from `archetype`.
+pub(super) fn dress(spec: &mut ObjectSpec, archetype: &Archetype) {
+    spec.form = body_form(archetype.synset, archetype.shape);
+    if !rounds_its_boxes(archetype.shape) {
+        return;
+    }
+    let shape = archetype.shape;
+    let dress_boxes = |parts: &mut Vec<Part>| {
+        for (index, part) in parts.iter_mut().enumerate() {
+            if let Primitive::Box { half_extents } = part.primitive {
+                part.form = box_form(shape, index, half_extents);
+            }
+        }
+    };
+    if spec.form == Form::Primitive {
+        dress_boxes(&mut spec.parts);
+    }
+    for link in &mut spec.links {
+        dress_boxes(&mut link.parts);
+    }
+}

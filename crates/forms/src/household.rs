@@ -1,0 +1,206 @@
+//! Made things about the house: rounded boards and cushions, turned legs, books, folded cloth,
+//! pens, table lamps and potted plants.
+
+use crate::grid::sphere_grid;
+use crate::lathe::{even, fold, p, revolve};
+use crate::mesh::{Mesh, join};
+use crate::rounded::rounded_box;
+use crate::tone::Tone;
+use crate::{Ctx, Detail, bevel};
+use rapier3d::math::{Rotation, Vector};
+use std::f32::consts::TAU;
+
+/// A box with rounded edges ([`bevel`]).
+pub(crate) fn rounded(ctx: Ctx) -> Mesh {
+    let h = ctx.half;
+    rounded_box(
+        Vector::ZERO,
+        h,
+        bevel(h),
+        ctx.detail.bevel_rows(),
+        Tone::Body,
+    )
+}
+
+/// A box rounded like a cushion: its edges round over most of its thinnest side.
+pub(crate) fn soft(ctx: Ctx) -> Mesh {
+    let h = ctx.half;
+    let radius = (0.8 * h.min_element()).min(0.4 * h.max_element());
+    rounded_box(
+        Vector::ZERO,
+        h,
+        radius,
+        ctx.detail.bevel_rows() + 1,
+        Tone::Body,
+    )
+}
+
+/// A turned post: a foot, a taper, a bead and a collar under a square-ish top.
+pub(crate) fn turned(ctx: Ctx) -> Mesh {
+    let bead = ctx.dice.between(0.55, 0.75);
+    let profile = [
+        p(0.0, 0.0),
+        fold(0.62, 0.0),
+        p(0.7, 0.04),
+        p(0.6, 0.1),
+        p(0.5, bead - 0.2),
+        p(0.78, bead),
+        p(0.55, bead + 0.05),
+        p(0.7, 0.86),
+        fold(0.72, 0.88),
+        fold(1.0, 0.9),
+        fold(1.0, 1.0),
+        p(0.0, 1.0),
+    ];
+    let mut mesh = revolve(&profile, ctx.detail.around(), even);
+    mesh.fit(ctx.half);
+    mesh
+}
+
+/// A book lying flat: two boards and a spine (on −x) around a block of pages.
+pub(crate) fn book(ctx: Ctx) -> Mesh {
+    let h = ctx.half;
+    let board = (0.15 * h.z).clamp(0.0008, 0.003).min(0.3 * h.z);
+    let rows = ctx.detail.bevel_rows();
+    let edge = |half: Vector| 0.45 * half.min_element();
+    let cover = |z: f32| {
+        let half = Vector::new(h.x, h.y, board);
+        rounded_box(Vector::new(0.0, 0.0, z), half, edge(half), rows, Tone::Body)
+    };
+    // A hair short of the covers' width, so that no corner of the two coincides.
+    let spine_half = Vector::new(board, 0.995 * h.y, h.z);
+    let spine = rounded_box(
+        Vector::new(-h.x + board, 0.0, 0.0),
+        spine_half,
+        edge(spine_half),
+        rows,
+        Tone::Body,
+    );
+    let inset = ctx.dice.between(0.02, 0.05) * h.y.min(h.x);
+    let pages_half = Vector::new(h.x - board - 0.5 * inset, h.y - inset, h.z - 1.5 * board);
+    let pages = rounded_box(
+        Vector::new(board - 0.5 * inset, 0.0, 0.0),
+        pages_half,
+        0.1 * pages_half.min_element(),
+        1,
+        Tone::Paper,
+    );
+    join([cover(-h.z + board), cover(h.z - board), spine, pages])
+}
+
+/// Folded cloth: two to four soft layers, each a little smaller and off-centre.
+pub(crate) fn folded(ctx: Ctx) -> Mesh {
+    let h = ctx.half;
+    let layers = ctx.dice.count(2, 4);
+    let thick = h.z / layers as f32;
+    let rows = ctx.detail.bevel_rows() + 1;
+    let pieces: Vec<Mesh> = (0..layers)
+        .map(|k| {
+            let shrink = 1.0 - 0.04 * k as f32;
+            let half = Vector::new(h.x * shrink, h.y * (1.0 - 0.03 * k as f32), thick);
+            let room = h.truncate() - half.truncate();
+            let shift = Vector::new(
+                ctx.dice.between(-1.0, 1.0) * room.x,
+                ctx.dice.between(-1.0, 1.0) * room.y,
+                -h.z + thick * (2 * k + 1) as f32,
+            );
+            rounded_box(shift, half, 0.9 * thick, rows, Tone::Body)
+        })
+        .collect();
+    join(pieces)
+}
+
+/// A pen, pencil or marker lying along x: a dark tip, a barrel, a capped end.
+pub(crate) fn pen(ctx: Ctx) -> Mesh {
+    let tip = ctx.dice.between(0.08, 0.16);
+    let profile = [
+        p(0.0, 0.0).tone(Tone::Dark),
+        p(0.2, 0.01).tone(Tone::Dark),
+        fold(0.45, tip * 0.5),
+        fold(0.9, tip),
+        p(1.0, tip + 0.02),
+        fold(1.0, 0.93),
+        p(0.9, 0.98),
+        p(0.0, 1.0),
+    ];
+    let mut mesh = revolve(&profile, ctx.detail.around(), even);
+    mesh.lay_along_x();
+    mesh.fit(ctx.half);
+    mesh
+}
+
+/// A table lamp: a round base and a metal stem under a pale shade.
+pub(crate) fn lamp(ctx: Ctx) -> Mesh {
+    let flare = ctx.dice.between(0.0, 0.2);
+    let stand = [
+        p(0.0, 0.0),
+        fold(0.75, 0.0),
+        p(0.75, 0.04),
+        fold(0.65, 0.08),
+        fold(0.1, 0.1).tone(Tone::Metal),
+        p(0.06, 0.14).tone(Tone::Metal),
+        p(0.06, 0.66).tone(Tone::Metal),
+        p(0.0, 0.66).tone(Tone::Metal),
+    ];
+    // The shade is a ring: a closed loop of the profile that never meets the axis.
+    let shade = [
+        fold(0.78 + flare, 0.5),
+        fold(0.82 + flare, 0.5),
+        fold(0.58, 1.0),
+        fold(0.54, 1.0),
+    ]
+    .map(|pt| pt.tone(Tone::Light));
+    let around = ctx.detail.around();
+    let mut mesh = join([revolve(&stand, around, even), revolve(&shade, around, even)]);
+    mesh.fit(ctx.half);
+    mesh
+}
+
+/// A plant in a clay pot: a tapered pot filled with soil and a crown of leaves.
+pub(crate) fn plant(ctx: Ctx) -> Mesh {
+    let pot = [
+        p(0.0, 0.0),
+        fold(0.42, 0.0),
+        p(0.5, 0.36),
+        fold(0.52, 0.4),
+        fold(0.47, 0.4).tone(Tone::Soil),
+        p(0.0, 0.38).tone(Tone::Soil),
+    ]
+    .map(|pt| {
+        if pt.tone == Tone::Body {
+            pt.tone(Tone::Clay)
+        } else {
+            pt
+        }
+    });
+    let mut pieces = vec![revolve(&pot, ctx.detail.around(), even)];
+    let leaves = ctx.dice.count(6, 10);
+    let spin = ctx.dice.between(0.0, TAU);
+    if ctx.detail == Detail::Coarse {
+        // A few pixels across, the leaves are one leafy crown.
+        let crown = Vector::new(0.5, 0.5, 0.32);
+        let mut bush = sphere_grid(4, 8, |d| d * crown);
+        bush.turn(Rotation::IDENTITY, Vector::new(0.0, 0.0, 0.68));
+        pieces.push(bush);
+    }
+    // An odd count of bands, so that no ring of vertices lies on a leaf's thin rim, where
+    // smoothing would stand their normals square to both faces.
+    let bands = (ctx.detail.bands() / 2) | 1;
+    for k in 0..leaves {
+        let heading = spin + TAU * k as f32 / leaves as f32;
+        let tilt = ctx.dice.between(0.35, 1.1);
+        let length = ctx.dice.between(0.32, 0.5);
+        if ctx.detail == Detail::Coarse {
+            continue;
+        }
+        let leaf_half = Vector::new(length, 0.4 * length, 0.2 * length);
+        let mut leaf = sphere_grid(bands, 4 * bands, |d| d * leaf_half);
+        let turn = Rotation::from_rotation_z(heading) * Rotation::from_rotation_y(-tilt);
+        let reach = turn * Vector::new(length, 0.0, 0.0);
+        leaf.turn(turn, Vector::new(0.0, 0.0, 0.42) + reach);
+        pieces.push(leaf);
+    }
+    let mut mesh = join(pieces);
+    mesh.fit(ctx.half);
+    mesh
+}

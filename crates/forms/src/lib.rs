@@ -1,0 +1,143 @@
+//! Detailed visual meshes made in code. The world says how a part looks with one word, a
+//! [`Form`]; this crate turns the word, the box the part fills and a seed into a closed triangle
+//! mesh with smooth normals ([`mesh`]), in two levels of detail, so that renderers and exporters
+//! draw bottles with shoulders and caps, bowls on foot rings, dimpled apples with stems and
+//! rounded furniture boards, without an asset download, and the same seed gives the same mesh
+//! everywhere.
+//!
+//! It owns geometry only: it must not know synsets (which form an object takes is the assets'
+//! choice), GPUs or the world's state. Every mesh lies inside its box, so what is drawn is what
+//! is simulated; [`Mesh::defects`] checks that and that the mesh is closed and wound outward.
+//!
+//! ```
+//! use behavior_forms::{Detail, mesh};
+//! use behavior_sim::Form;
+//! use rapier3d::math::Vector;
+//!
+//! let half = Vector::new(0.04, 0.04, 0.11);
+//! let bottle = mesh(Form::Bottle, half, 7, Detail::Fine);
+//! assert!(bottle.defects(half, 1e-4).is_empty());
+//! assert!(bottle.triangles.len() > 300);
+//! ```
+
+mod check;
+mod dice;
+mod grid;
+mod household;
+mod lathe;
+mod mesh;
+mod produce;
+mod rounded;
+mod tableware;
+mod tone;
+mod tube;
+
+pub use behavior_sim::Form;
+pub use check::Defect;
+pub use mesh::Mesh;
+pub use tone::Tone;
+
+use dice::Dice;
+use rapier3d::math::Vector;
+
+/// How finely a form is cut into triangles.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Detail {
+    /// For a form that fills more than a few dozen pixels.
+    Fine,
+    /// For a form a few pixels across: a quarter of the triangles or fewer.
+    Coarse,
+}
+
+impl Detail {
+    /// Both, finest first.
+    pub const ALL: [Detail; 2] = [Detail::Fine, Detail::Coarse];
+
+    /// Steps around a solid of revolution or a tube.
+    pub(crate) fn around(self) -> usize {
+        match self {
+            Detail::Fine => 24,
+            Detail::Coarse => 10,
+        }
+    }
+
+    /// Latitude bands of a grid surface.
+    pub(crate) fn bands(self) -> usize {
+        match self {
+            Detail::Fine => 14,
+            Detail::Coarse => 6,
+        }
+    }
+
+    /// Rows through a rounded edge.
+    pub(crate) fn bevel_rows(self) -> usize {
+        match self {
+            Detail::Fine => 3,
+            Detail::Coarse => 1,
+        }
+    }
+}
+
+/// An object's seed from its name (FNV-1a, the low 32 bits): the same object looks the same in
+/// every renderer, process and machine, and two objects of one synset differ.
+pub fn seed_of(name: &str) -> u32 {
+    name.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    }) as u32
+}
+
+/// The radius of a [`Form::Rounded`] box's edges: a quarter of its thinnest half side, at most
+/// 12 mm. A renderer may draw the plain box where this is under a pixel.
+pub fn bevel(half: Vector) -> f32 {
+    (0.25 * half.min_element()).min(0.012)
+}
+
+/// The mesh of `form` filling the box `[-half, half]` (z up), varied by `seed`. A form with no
+/// mesh of its own ([`Form::Primitive`]) gives the box.
+pub fn mesh(form: Form, half: Vector, seed: u64, detail: Detail) -> Mesh {
+    let half = half.max(Vector::splat(1e-4));
+    let mut dice = Dice::new(seed);
+    let ctx = Ctx {
+        half,
+        detail,
+        dice: &mut dice,
+    };
+    match form {
+        Form::Primitive | Form::Rounded => household::rounded(ctx),
+        Form::Soft => household::soft(ctx),
+        Form::Turned => household::turned(ctx),
+        Form::Book => household::book(ctx),
+        Form::Folded => household::folded(ctx),
+        Form::Pen => household::pen(ctx),
+        Form::Lamp => household::lamp(ctx),
+        Form::Plant => household::plant(ctx),
+        Form::Round => produce::round(ctx),
+        Form::Apple => produce::apple(ctx),
+        Form::Fruit => produce::fruit(ctx),
+        Form::Lemon => produce::lemon(ctx),
+        Form::Egg => produce::egg(ctx),
+        Form::Florets => produce::florets(ctx),
+        Form::Mushroom => produce::mushroom(ctx),
+        Form::Berry => produce::berry(ctx),
+        Form::Banana => produce::banana(ctx),
+        Form::Carrot => produce::carrot(ctx),
+        Form::Loaf => produce::loaf(ctx),
+        Form::Bottle => tableware::bottle(ctx),
+        Form::Can => tableware::can(ctx),
+        Form::Cup => tableware::cup(ctx),
+        Form::Mug => tableware::mug(ctx),
+        Form::Bowl => tableware::bowl(ctx),
+        Form::Plate => tableware::plate(ctx),
+        Form::Pot => tableware::pot(ctx),
+        Form::Bucket => tableware::bucket(ctx),
+        Form::Cake => tableware::cake(ctx),
+    }
+}
+
+/// What every form's builder is given.
+pub(crate) struct Ctx<'a> {
+    /// Half the box it fills, m.
+    pub(crate) half: Vector,
+    pub(crate) detail: Detail,
+    pub(crate) dice: &'a mut Dice,
+}

@@ -1,0 +1,284 @@
+//! Food that grows: fruit, vegetables and a loaf, as turned profiles with a little wobble, tubes
+//! and clusters of balls, each stretched to fill its box.
+
+use crate::Ctx;
+use crate::grid::{signed_pow, sphere_grid};
+use crate::lathe::{Pt, even, fold, p, revolve};
+use crate::mesh::{Mesh, join};
+use crate::tone::Tone;
+use crate::tube::tube;
+use rapier3d::math::Vector;
+use std::f32::consts::{PI, TAU};
+
+/// Points of a round profile from the bottom (z = 0) to the top (z = 1), `radius(z)` wide, in
+/// `steps` even steps of angle.
+fn rounded_profile(steps: usize, radius: impl Fn(f32, f32) -> f32) -> Vec<Pt> {
+    (0..=steps)
+        .map(|k| {
+            let theta = PI * k as f32 / steps as f32;
+            let z = 0.5 - 0.5 * theta.cos();
+            let r = if k == 0 || k == steps {
+                0.0
+            } else {
+                radius(theta.sin(), z)
+            };
+            p(r, z)
+        })
+        .collect()
+}
+
+/// Stretches the mesh to its box; built upright, it is laid along x first when the box is
+/// longer than it is tall (a lemon or an egg lying on its side).
+fn settle(mut mesh: Mesh, ctx: &Ctx) -> Mesh {
+    if ctx.half.x > ctx.half.z * 1.1 && ctx.half.x >= ctx.half.y {
+        mesh.lay_along_x();
+    }
+    mesh.fit(ctx.half);
+    mesh
+}
+
+/// A smooth ball or ellipsoid.
+pub(crate) fn round(ctx: Ctx) -> Mesh {
+    let b = ctx.detail.bands();
+    let mut mesh = sphere_grid(b, 2 * b, |d| d);
+    mesh.fit(ctx.half);
+    mesh
+}
+
+/// A stem: a short tube rising from `from`, bent over by `lean` of its length.
+fn stem(from: Vector, (length, thick, lean): (f32, f32, f32), ctx: &Ctx) -> Mesh {
+    let path = [
+        from - Vector::Z * (2.0 * thick),
+        from + Vector::new(0.0, 0.0, 0.5 * length),
+        from + Vector::new(lean * length, 0.0, length),
+    ];
+    tube(
+        &path,
+        (ctx.detail.around() / 4).max(4),
+        |_, _| thick,
+        Tone::Stem,
+    )
+}
+
+/// An apple: dimpled top and bottom, five faint lobes, a stem.
+pub(crate) fn apple(ctx: Ctx) -> Mesh {
+    let lobes = ctx.dice.between(0.01, 0.035);
+    let turn = ctx.dice.between(0.0, TAU);
+    let lean = ctx.dice.between(0.1, 0.5);
+    let profile = [
+        p(0.0, 0.07),
+        p(0.25, 0.02),
+        p(0.6, 0.06),
+        p(0.9, 0.25),
+        p(1.0, 0.48),
+        p(0.95, 0.72),
+        p(0.78, 0.9),
+        p(0.5, 0.97),
+        p(0.22, 0.93),
+        p(0.0, 0.84),
+    ];
+    let body = revolve(&profile, ctx.detail.around(), |phi| {
+        1.0 + lobes * (5.0 * phi + turn).cos()
+    });
+    let stem = stem(Vector::new(0.0, 0.0, 0.84), (0.24, 0.035, lean), &ctx);
+    let mut mesh = join([body, stem]);
+    mesh.fit(ctx.half);
+    mesh
+}
+
+/// An orange, a tomato, a peach: a ball a little flattened, with a green calyx on top.
+pub(crate) fn fruit(ctx: Ctx) -> Mesh {
+    let flat = ctx.dice.between(0.82, 1.0);
+    let mut profile = rounded_profile(ctx.detail.bands(), |s, _| s);
+    for pt in &mut profile {
+        pt.z *= flat;
+    }
+    let top = profile.len() - 1;
+    profile[top].z = 0.97 * flat;
+    let body = revolve(&profile, ctx.detail.around(), even);
+    let calyx = [
+        p(0.0, 0.93 * flat),
+        fold(0.16, 0.95 * flat),
+        fold(0.1, flat),
+        p(0.0, flat),
+    ]
+    .map(|pt| pt.tone(Tone::Leaf));
+    let calyx = revolve(&calyx, ctx.detail.around() / 2, |phi| {
+        1.0 + 0.3 * (5.0 * phi).cos()
+    });
+    let mut mesh = join([body, calyx]);
+    mesh.fit(ctx.half);
+    mesh
+}
+
+/// A lemon: an ellipsoid drawn out to a point at each end.
+pub(crate) fn lemon(ctx: Ctx) -> Mesh {
+    let mut profile = vec![p(0.0, 0.0), p(0.1, 0.04)];
+    let steps = ctx.detail.bands();
+    for k in 1..steps {
+        let theta = PI * k as f32 / steps as f32;
+        profile.push(p(theta.sin(), 0.1 + 0.8 * (0.5 - 0.5 * theta.cos())));
+    }
+    profile.extend([p(0.1, 0.96), p(0.0, 1.0)]);
+    settle(revolve(&profile, ctx.detail.around(), even), &ctx)
+}
+
+/// An egg: fuller at one end.
+pub(crate) fn egg(ctx: Ctx) -> Mesh {
+    let profile = rounded_profile(ctx.detail.bands(), |s, z| s * (1.1 - 0.25 * z));
+    settle(revolve(&profile, ctx.detail.around(), even), &ctx)
+}
+
+/// Broccoli: a pale stalk under a dome of florets.
+pub(crate) fn florets(ctx: Ctx) -> Mesh {
+    let stalk = [
+        p(0.0, 0.0),
+        fold(0.24, 0.0),
+        p(0.2, 0.3),
+        p(0.3, 0.55),
+        fold(0.3, 0.6),
+        p(0.0, 0.6),
+    ]
+    .map(|pt| pt.tone(Tone::Stalk));
+    let mut pieces = vec![revolve(&stalk, ctx.detail.around() / 2, even)];
+    let count = ctx.dice.count(6, 9);
+    let bands = (ctx.detail.bands() / 2).max(4);
+    let spin = ctx.dice.between(0.0, TAU);
+    for k in 0..=count {
+        let (at, size) = if k == count {
+            (Vector::new(0.0, 0.0, 0.85), 0.42)
+        } else {
+            let a = spin + TAU * k as f32 / count as f32;
+            let lift = ctx.dice.between(0.62, 0.76);
+            (
+                Vector::new(0.55 * a.cos(), 0.55 * a.sin(), lift),
+                ctx.dice.between(0.3, 0.38),
+            )
+        };
+        let lump = 0.08 * ctx.dice.between(0.5, 1.0);
+        pieces.push(sphere_grid(bands, 2 * bands, |d| {
+            at + d * size * (1.0 + lump * (7.0 * d.x).sin() * (7.0 * d.y).cos())
+        }));
+    }
+    let mut mesh = join(pieces);
+    mesh.fit(ctx.half);
+    mesh
+}
+
+/// A mushroom: a domed cap over a pale stalk.
+pub(crate) fn mushroom(ctx: Ctx) -> Mesh {
+    let cap = [
+        p(0.0, 0.42),
+        p(0.6, 0.45),
+        fold(0.95, 0.52),
+        p(1.0, 0.62),
+        p(0.86, 0.84),
+        p(0.5, 0.97),
+        p(0.0, 1.0),
+    ];
+    let stalk = [
+        p(0.0, 0.0),
+        fold(0.3, 0.0),
+        p(0.26, 0.25),
+        p(0.24, 0.5),
+        p(0.0, 0.5),
+    ]
+    .map(|pt| pt.tone(Tone::Light));
+    let around = ctx.detail.around();
+    let mut mesh = join([
+        revolve(&cap, around, even),
+        revolve(&stalk, around / 2, even),
+    ]);
+    mesh.fit(ctx.half);
+    mesh
+}
+
+/// A strawberry: a rounded cone, tip down, under a leafy top.
+pub(crate) fn berry(ctx: Ctx) -> Mesh {
+    let profile = [
+        p(0.0, 0.0),
+        p(0.22, 0.08),
+        p(0.6, 0.38),
+        p(0.92, 0.7),
+        p(0.96, 0.85),
+        p(0.75, 0.95).tone(Tone::Leaf),
+        p(0.4, 0.99).tone(Tone::Leaf),
+        p(0.0, 1.0).tone(Tone::Leaf),
+    ];
+    let mut mesh = revolve(&profile, ctx.detail.around(), |phi| {
+        1.0 + 0.04 * (6.0 * phi).cos()
+    });
+    mesh.fit(ctx.half);
+    mesh
+}
+
+/// A banana lying along x: a ridged tube bending up at both ends, tapering to a dark stem.
+pub(crate) fn banana(ctx: Ctx) -> Mesh {
+    let bend = ctx.dice.between(0.5, 0.8);
+    let steps = ctx.detail.around() / 2;
+    let path: Vec<Vector> = (0..=steps)
+        .map(|k| {
+            let t = -bend + 2.0 * bend * k as f32 / steps as f32;
+            Vector::new(t.sin(), 0.0, 1.0 - t.cos())
+        })
+        .collect();
+    let last = path.len() - 1;
+    let taper = |i: usize| {
+        let u = i as f32 / last as f32;
+        0.12 * (0.25 + 0.75 * (PI * u).sin().max(0.0).powf(0.6))
+    };
+    let sides = (ctx.detail.around() / 2).max(5);
+    let body = tube(
+        &path,
+        sides,
+        |i, theta| taper(i) * (1.0 + 0.07 * (5.0 * theta).cos()),
+        Tone::Body,
+    );
+    let end = path[last];
+    let out = (path[last] - path[last - 1]).normalize();
+    let stem_path = [end - out * 0.02, end + out * 0.08];
+    let stem = tube(&stem_path, sides.min(6), |_, _| 0.035, Tone::Stem);
+    let mut mesh = join([body, stem]);
+    mesh.fit(ctx.half);
+    mesh
+}
+
+/// A carrot lying along x: a long taper with the stub of its leaves.
+pub(crate) fn carrot(ctx: Ctx) -> Mesh {
+    let profile = [
+        p(0.0, 0.0),
+        p(0.1, 0.06),
+        p(0.45, 0.45),
+        p(0.8, 0.82),
+        p(0.98, 0.93),
+        fold(0.9, 0.98),
+        p(0.0, 0.99),
+    ];
+    let leaves = [p(0.0, 0.95), fold(0.4, 0.95), fold(0.3, 1.06), p(0.0, 1.06)]
+        .map(|pt| pt.tone(Tone::Leaf));
+    let around = ctx.detail.around();
+    let wobble = |phi: f32| 1.0 + 0.03 * (3.0 * phi).sin();
+    let mut mesh = join([
+        revolve(&profile, around, wobble),
+        revolve(&leaves, around / 2, even),
+    ]);
+    mesh.lay_along_x();
+    mesh.fit(ctx.half);
+    mesh
+}
+
+/// A loaf: square-ish below, domed above.
+pub(crate) fn loaf(ctx: Ctx) -> Mesh {
+    let b = ctx.detail.bands();
+    let dome = ctx.dice.between(0.55, 0.8);
+    let mut mesh = sphere_grid(b, 2 * b, |d| {
+        let top = if d.z > 0.0 { dome } else { 0.25 };
+        Vector::new(
+            signed_pow(d.x, 0.3),
+            signed_pow(d.y, 0.35),
+            signed_pow(d.z, top),
+        )
+    });
+    mesh.fit(ctx.half);
+    mesh
+}

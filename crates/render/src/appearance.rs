@@ -45,7 +45,8 @@ fn mix(a: [f32; 3], b: [f32; 3], t: f32) -> [f32; 3] {
     std::array::from_fn(|i| a[i] + (b[i] - a[i]) * t)
 }
 
-pub(crate) fn to_linear(c: f32) -> f32 {
+/// An sRGB channel (0–1) as linear light: the colours the cameras compute with.
+pub fn to_linear(c: f32) -> f32 {
     if c <= 0.04045 {
         c / 12.92
     } else {

@@ -245,6 +245,44 @@ impl Finisher {
     }
 }
 
+/// A part's surface as the realistic profile finishes it, for drawers other than the cameras
+/// (the browser viewer): its colour in the home's palette (before the object's states change
+/// it), roughness and metalness.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PartFinish {
+    /// sRGB, 0–255.
+    pub color: [u8; 3],
+    /// 0 (mirror) to 1 (chalk).
+    pub roughness: f32,
+    /// 0 (a dielectric) or 1 (a metal).
+    pub metallic: f32,
+}
+
+/// The finishes of a world's parts, its home's palette worked out once.
+#[derive(Clone, Copy, Debug)]
+pub struct Finishes {
+    home: u64,
+}
+
+impl Finishes {
+    /// The finishes of `world`'s parts.
+    pub fn of(world: &World) -> Finishes {
+        Finishes {
+            home: home_seed(world),
+        }
+    }
+
+    /// How a part of `object` of appearance `visual` is finished.
+    pub fn part(&self, world: &World, object: ObjectId, visual: Visual) -> PartFinish {
+        let f = Finisher::of(world, object, self.home).part(visual);
+        PartFinish {
+            color: f.color,
+            roughness: f.roughness,
+            metallic: f.metallic,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -12,9 +12,9 @@
 //! adapter [`Renderer::new`] says which packages to install.
 //!
 //! Colour comes in two [`ImageProfile`]s, chosen per [`View`]: `realistic` (the default:
-//! procedural materials in each home's palette, `finish.rs`; the home's sun with shadow maps,
-//! `shadow.rs`, sky and ground ambient and a lamp per room, `lighting.rs`; filmic tone mapping,
-//! `realistic.wgsl`) and `fast` (flat colours under one light, `shader.wgsl`). Depth, normals,
+//! procedural materials in each home's palette, `finish.rs`; the home's sun with shadow maps and
+//! ambient occlusion from a map of the fixed geometry seen from above, `shadow.rs`; sky and
+//! ground ambient and a lamp per room, `lighting.rs`; filmic tone mapping, `realistic.wgsl`) and `fast` (flat colours under one light, `shader.wgsl`). Depth, normals,
 //! segmentation and flow are drawn by the same arithmetic in both and are identical.
 //!
 //! States are visible (see `appearance.rs`): cooked browner, burnt dark, frozen frosted, soaked
@@ -51,11 +51,12 @@ mod renderer;
 mod shadow;
 mod targets;
 
-pub use appearance::{DUST, Look, STAIN, WATER, state_look};
+pub use appearance::{DUST, Look, STAIN, WATER, state_look, to_linear};
 pub use camera::{Camera, EYE_FOV, EYE_SIZE, FAR, NEAR};
 pub use categories::{CategoryTable, DUST_CATEGORY, STAIN_CATEGORY, WATER_CATEGORY};
 pub use error::RenderError;
 pub use export::{ExportError, save_npy, save_png, to_rgb};
+pub use finish::{Finishes, PartFinish};
 pub use gltf::to_glb;
 pub use instances::Scene;
 pub use lidar::{Lidar, Pattern, Scan};

@@ -101,12 +101,13 @@ pub(crate) struct LightsUniform {
     pub(crate) camera_to_world: [[f32; 4]; 4],
     pub(crate) static_shadow: [[f32; 4]; 4],
     pub(crate) dynamic_shadow: [[f32; 4]; 4],
+    pub(crate) sky_shadow: [[f32; 4]; 4],
     pub(crate) sun: [f32; 4],
     pub(crate) sun_color: [f32; 4],
     pub(crate) sky: [f32; 4],
     pub(crate) ground: [f32; 4],
-    /// y, z: whether the static map and the dynamic one hold anything; x, w: padding (the
-    /// shader runs over all eight lamps, unused ones lighting an empty footprint).
+    /// x, y, z: whether the sky map, the static map and the dynamic one hold anything; w:
+    /// padding (the shader runs over all eight lamps, unused ones lighting an empty footprint).
     pub(crate) counts: [u32; 4],
     pub(crate) lamp_position: [[f32; 4]; LAMPS],
     pub(crate) lamp_color: [[f32; 4]; LAMPS],
@@ -120,6 +121,8 @@ pub(crate) struct ShadowMatrices {
     pub(crate) fixed: Option<Mat4>,
     /// World to the dynamic map's, if it holds anything.
     pub(crate) moving: Option<Mat4>,
+    /// World to the sky map's (the fixed geometry seen from above), if it holds anything.
+    pub(crate) sky: Option<Mat4>,
 }
 
 impl Lighting {
@@ -140,12 +143,13 @@ impl Lighting {
             camera_to_world: camera_to_world.to_cols_array_2d(),
             static_shadow: shadows.fixed.unwrap_or(Mat4::IDENTITY).to_cols_array_2d(),
             dynamic_shadow: shadows.moving.unwrap_or(Mat4::IDENTITY).to_cols_array_2d(),
+            sky_shadow: shadows.sky.unwrap_or(Mat4::IDENTITY).to_cols_array_2d(),
             sun: self.sun.extend(0.0).to_array(),
             sun_color: [self.sun_color[0], self.sun_color[1], self.sun_color[2], 0.0],
             sky: [self.sky[0], self.sky[1], self.sky[2], EXPOSURE],
             ground: [self.ground[0], self.ground[1], self.ground[2], 0.0],
             counts: [
-                0,
+                u32::from(shadows.sky.is_some()),
                 u32::from(shadows.fixed.is_some()),
                 u32::from(shadows.moving.is_some()),
                 0,

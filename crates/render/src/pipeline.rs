@@ -91,8 +91,8 @@ fn uniform_entry(binding: u32, visibility: wgpu::ShaderStages) -> wgpu::BindGrou
     }
 }
 
-/// The realistic pass's second bind group: the lights' uniform, the two shadow maps and a
-/// comparison sampler (`realistic.wgsl`'s group 1).
+/// The realistic pass's second bind group: the lights' uniform, the two shadow maps, a
+/// comparison sampler and the sky map (`realistic.wgsl`'s group 1).
 fn lights_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
     let map = |binding| wgpu::BindGroupLayoutEntry {
         binding,
@@ -116,6 +116,7 @@ fn lights_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
                 ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison),
                 count: None,
             },
+            map(4),
         ],
     })
 }

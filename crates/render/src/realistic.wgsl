@@ -9,13 +9,15 @@ struct Lights {
     // World to the shadow maps' clip spaces.
     static_shadow: mat4x4<f32>,
     dynamic_shadow: mat4x4<f32>,
+    // World to the sky map's (the fixed geometry seen from straight above).
+    sky_shadow: mat4x4<f32>,
     // Toward the sun.
     sun: vec4<f32>,
     sun_color: vec4<f32>,
     // Ambient from above; w: exposure.
     sky: vec4<f32>,
     ground: vec4<f32>,
-    // y, z: whether the static and the dynamic map hold anything; x, w: padding.
+    // x, y, z: whether the sky, the static and the dynamic map hold anything; w: padding.
     counts: vec4<u32>,
     lamp_position: array<vec4<f32>, 8>,
     lamp_color: array<vec4<f32>, 8>,
@@ -27,6 +29,7 @@ struct Lights {
 @group(1) @binding(1) var static_map: texture_depth_2d;
 @group(1) @binding(2) var dynamic_map: texture_depth_2d;
 @group(1) @binding(3) var shadow_sampler: sampler_comparison;
+@group(1) @binding(4) var sky_map: texture_depth_2d;
 
 struct RealisticVertex {
     @builtin(position) clip: vec4<f32>,
@@ -240,6 +243,28 @@ fn sunlit(p: vec3<f32>, n: vec3<f32>) -> f32 {
     return min(fixed, moving);
 }
 
+// How open the sky is over a point's neighbourhood (1: open; 0: covered), from the sky map:
+// four lookups (each a filtered 2 × 2 comparison) at 15 to 35 cm around a centre lifted off the
+// surface along its normal by the farthest one's distance, so that a wall's own footprint does
+// not count against it but a table top over a floor, the boards of a shelf or the walls of a
+// corner do.
+fn sky_open(p: vec3<f32>, n: vec3<f32>) -> f32 {
+    let centre = vec3<f32>((p + n * 0.37).xy, p.z + 0.02);
+    // Four points around the centre, 35 and 15 cm off, a quarter turn apart.
+    let a = sky_seen(centre + vec3<f32>(0.322, 0.136, 0.0));
+    let b = sky_seen(centre + vec3<f32>(-0.058, 0.138, 0.0));
+    let c = sky_seen(centre + vec3<f32>(-0.322, -0.136, 0.0));
+    let d = sky_seen(centre + vec3<f32>(0.058, -0.138, 0.0));
+    return 0.25 * (a + b + c + d);
+}
+
+// Whether the sky map sees a world point (1) or something above it (0), filtered.
+fn sky_seen(q: vec3<f32>) -> f32 {
+    let c = lights.sky_shadow * vec4<f32>(q, 1.0);
+    let uv = clamp(vec2<f32>(c.x * 0.5 + 0.5, 0.5 - c.y * 0.5), vec2<f32>(0.0), vec2<f32>(1.0));
+    return textureSampleCompareLevel(sky_map, shadow_sampler, uv, min(c.z, 1.0));
+}
+
 // Diffuse plus a normalised Blinn-Phong lobe standing in for GGX, with Schlick's Fresnel.
 fn brdf(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, albedo: vec3<f32>, roughness: f32, metallic: f32) -> vec3<f32> {
     let ndl = max(dot(n, l), 0.0);
@@ -284,7 +309,11 @@ fn fs_realistic(in: RealisticVertex) -> SurfaceOut {
     let roughness = clamp(roughness0 + t.roughness, 0.04, 1.0);
 
     let up = 0.5 + 0.5 * nw.z;
-    var light = albedo * (1.0 - 0.6 * metallic) * mix(lights.ground.rgb, lights.sky.rgb, up);
+    // Ambient occlusion: what covers the sky over the point dims its ambient light, and the
+    // rooms' lamps (which hang above) as much: a soft shade under tables and in corners.
+    let open = select(1.0, sky_open(in.world, nw), lights.counts.x != 0u);
+    let occlusion = 0.3 + 0.7 * open;
+    var light = albedo * (1.0 - 0.6 * metallic) * mix(lights.ground.rgb, lights.sky.rgb, up) * occlusion;
     let sun = lights.sun.xyz;
     if (dot(nw, sun) > 0.0) {
         light += brdf(nw, sun, vw, albedo, roughness, metallic) * lights.sun_color.rgb * sunlit(in.world, nw);
@@ -297,7 +326,7 @@ fn fs_realistic(in: RealisticVertex) -> SurfaceOut {
         let to_lamp = lights.lamp_position[k].xyz - in.world;
         let d2 = dot(to_lamp, to_lamp);
         let l = to_lamp * inverseSqrt(d2);
-        light += brdf(nw, l, vw, albedo, roughness, metallic) * lights.lamp_color[k].rgb / (d2 + 0.5);
+        light += brdf(nw, l, vw, albedo, roughness, metallic) * lights.lamp_color[k].rgb * occlusion / (d2 + 0.5);
     }
     light += albedo * in.color.w * 3.0;
 

@@ -65,6 +65,8 @@ pub struct Renderer {
     targets: Vec<Targets>,
     /// Whether to leave out what big boxes hide.
     cull: bool,
+    /// Whether the realistic profile dims what the fixed geometry covers from above.
+    ambient_occlusion: bool,
     stats: FrameStats,
     /// The realistic profile's light and shadow maps, made at its first frame.
     realistic: Option<Realistic>,
@@ -86,7 +88,7 @@ impl Realistic {
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
-        let [fixed, moving] = shadows.views();
+        let [fixed, moving, sky] = shadows.views();
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("lights"),
             layout,
@@ -106,6 +108,10 @@ impl Realistic {
                 wgpu::BindGroupEntry {
                     binding: 3,
                     resource: wgpu::BindingResource::Sampler(&shadows.sampler),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 4,
+                    resource: wgpu::BindingResource::TextureView(sky),
                 },
             ],
         });
@@ -157,6 +163,7 @@ impl Renderer {
             buffers: None,
             targets: Vec::new(),
             cull: true,
+            ambient_occlusion: true,
             stats: FrameStats::default(),
             realistic: None,
         })
@@ -173,6 +180,12 @@ impl Renderer {
     /// the same either way, only slower without it; turning it off is for checking that.
     pub fn set_occlusion_culling(&mut self, on: bool) {
         self.cull = on;
+    }
+
+    /// Turns the realistic profile's ambient occlusion on (the default) or off, to see what it
+    /// does (an ablation); the other modalities are the same either way.
+    pub fn set_ambient_occlusion(&mut self, on: bool) {
+        self.ambient_occlusion = on;
     }
 
     /// What the last frame drew.
@@ -321,7 +334,10 @@ impl Renderer {
             meshes: &mut self.meshes,
             sun: lighting.sun,
         };
-        let shadows: ShadowMatrices = realistic.shadows.update(&mut ctx, looked_at, half);
+        let mut shadows: ShadowMatrices = realistic.shadows.update(&mut ctx, looked_at, half);
+        if !self.ambient_occlusion {
+            shadows.sky = None;
+        }
         let to_world =
             Mat4::from_rotation_translation(camera.pose.rotation, camera.pose.translation);
         let uniform = lighting.uniform(to_world, camera.pose.translation, shadows);

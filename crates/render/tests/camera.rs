@@ -460,6 +460,50 @@ fn the_sun_casts_the_shadow_of_a_post_on_the_ground() {
     );
 }
 
+/// Ambient occlusion: a low board over the ground (a table top, 4 m square at 0.5 m: whatever
+/// the sun's height and side, its shadow covers the middle) dims the ground under it beyond its
+/// shadow, by what it hides of the sky; turned off, the same frame is lighter there, and the
+/// other modalities are the same either way.
+#[test]
+fn a_board_overhead_dims_the_ground_under_it_beyond_its_shadow() {
+    let mut world = World::default();
+    slab(&mut world, "ground", v(0.0, 0.0, -0.05), v(4.0, 4.0, 0.05));
+    slab(&mut world, "board", v(0.0, 0.0, 0.5), v(2.0, 2.0, 0.01));
+    let eye = Camera::looking_at(v(-3.0, -2.0, 0.3), v(0.0, 0.0, 0.0), 64, 64, 0.6);
+    let categories = categories();
+    let scene = scene(&world, &categories);
+    let mut renderer = Renderer::new().unwrap();
+    let mut frame = |occlusion: bool| {
+        renderer.set_ambient_occlusion(occlusion);
+        let mut view = View::with_profile(eye, ImageProfile::Realistic);
+        renderer.render(&scene, &mut view, &Modality::ALL).unwrap()
+    };
+    let (with, without) = (frame(true), frame(false));
+    let middle = |f: &Frame| {
+        let k = 3 * (32 * 64 + 32);
+        u8s(f, Modality::Rgb)[k..k + 3]
+            .iter()
+            .map(|&c| u32::from(c))
+            .sum::<u32>() as f32
+    };
+    let ins = |f: &Frame| f.get(Modality::InsSeg).cloned();
+    assert_eq!(ins(&with), ins(&without), "occlusion changed what is seen");
+    let ground = world.object_named("ground").unwrap();
+    let Some(Pixels::U32(ids)) = ins(&with).map(|i| i.pixels) else {
+        panic!("instance ids are u32")
+    };
+    assert_eq!(
+        ids[32 * 64 + 32],
+        ground.0 + 1,
+        "the middle pixel is not the ground"
+    );
+    let (dim, lit) = (middle(&with), middle(&without));
+    assert!(
+        dim < 0.85 * lit,
+        "the ground under the board is {dim} with occlusion, {lit} without"
+    );
+}
+
 /// Patterns follow the object's seed (its name): two boards alike but for their names differ
 /// in texture, and each is drawn the same again.
 #[test]

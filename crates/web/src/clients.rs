@@ -10,7 +10,11 @@ use tokio::sync::mpsc::error::TrySendError;
 /// A message to a page: JSON text or a binary frame.
 #[derive(Clone, Debug)]
 pub(crate) enum Outgoing {
+    /// Text that must arrive (a scene, an ending, a status with new particles).
     Text(String),
+    /// Text the next one supersedes (a step's status: Q, metrics, checklist, every surface's
+    /// colour that differs from the scene's): a slow page may skip it, as it skips frames.
+    Update(String),
     Binary(Bytes),
 }
 
@@ -42,12 +46,13 @@ impl Clients {
         }
     }
 
-    /// Sends to every page. A page too slow to take a frame skips it; one too slow to take a
-    /// text message (a scene, an ending) is let go, as it would be wrong from then on. Frames
-    /// fill at most half a page's queue: the other half stays free for the text messages, so a
-    /// page that draws slowly (a headset emulated on a CPU) skips frames but still hears of
-    /// its rig and of the episode's end. (Before, frames filled the queue, and the ending that
-    /// came next found it full: the page was let go and waited for it in vain.)
+    /// Sends to every page. A page too slow to take a frame or an update skips it; one too slow
+    /// to take a text message (a scene, an ending) is let go, as it would be wrong from then on.
+    /// Frames and updates fill at most half a page's queue: the other half stays free for the
+    /// text messages, so a page that draws slowly (a headset emulated on a CPU) skips frames and
+    /// statuses but still hears of its rig and of the episode's end. (Before, frames, and then
+    /// each step's status, filled the queue, and the ending that came next found it full: the
+    /// page was let go and waited for it in vain.)
     pub(crate) fn broadcast(&mut self, message: Outgoing) {
         let must_arrive = matches!(message, Outgoing::Text(_));
         self.0.retain(|_, tx| {
@@ -56,7 +61,14 @@ impl Clients {
             }
             match tx.try_send(message.clone()) {
                 Ok(()) => true,
-                Err(TrySendError::Full(_)) => !must_arrive,
+                Err(TrySendError::Full(_)) if must_arrive => {
+                    eprintln!(
+                        "a page was let go: its queue of {} messages was full",
+                        tx.max_capacity()
+                    );
+                    false
+                }
+                Err(TrySendError::Full(_)) => true,
                 Err(TrySendError::Closed(_)) => false,
             }
         });
@@ -67,7 +79,8 @@ impl Clients {
 mod tests {
     use super::*;
 
-    /// A page that reads nothing: frames stop at half its queue, and an ending still fits.
+    /// A page that reads nothing: frames and statuses stop at half its queue, and an ending
+    /// still fits.
     #[test]
     fn frames_leave_half_the_queue_for_what_must_arrive() {
         let (tx, mut rx) = tokio::sync::mpsc::channel(8);
@@ -75,6 +88,7 @@ mod tests {
         assert!(clients.join(1, tx, Vec::new()));
         for _ in 0..20 {
             clients.broadcast(Outgoing::Binary(Bytes::from_static(b"frame")));
+            clients.broadcast(Outgoing::Update("status".into()));
         }
         for _ in 0..4 {
             clients.broadcast(Outgoing::Text("ended".into()));

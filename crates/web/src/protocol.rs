@@ -167,7 +167,8 @@ pub(crate) struct Status<'a> {
     pub(crate) metrics: &'a EpisodeMetrics,
     /// Which of the goal's literals hold, and the option closest to holding.
     pub(crate) checklist: &'a ChecklistStatus,
-    /// Surfaces whose colour changed since the last status.
+    /// Every surface whose colour has changed since the scene was sent, with its colour now
+    /// (so that a page that skipped statuses is right again at the next one).
     pub(crate) recolor: &'a [Recolor],
     /// Every particle, when they changed since the last status (absent otherwise).
     #[serde(skip_serializing_if = "Option::is_none")]

@@ -9,10 +9,12 @@
 use crate::checklist::Checklist;
 use behavior_core::Predicate;
 use behavior_env::Env;
-use behavior_render::{DUST, Look, STAIN, WATER, state_look};
-use behavior_sim::{ObjectId, Primitive, Visual, VisualShape, World};
+use behavior_forms::Tone;
+use behavior_render::{DUST, Finishes, Look, STAIN, WATER, state_look};
+use behavior_sim::{Form, ObjectId, Primitive, Visual, VisualShape, World};
 use rapier3d::math::{Pose, Vector};
 use serde::Serialize;
+use std::collections::BTreeMap;
 
 /// A shape as the page builds it: in its own frame, z up.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -36,6 +38,34 @@ pub(crate) enum Shape {
         vertices: Vec<f32>,
         triangles: Vec<u32>,
     },
+    /// A detailed form at its coarse level, smooth (the page averages each vertex's normal
+    /// from its triangles; folds have vertices of their own and stay sharp), its details in
+    /// colours of their own. Why coarse: a home's forms at both levels came to 10 MB of scene
+    /// for the page, and the fine level to too many triangles for a browser drawing on a CPU,
+    /// a headset's two eyes above all; the coarse level is a fifth of that.
+    Form(FormMesh),
+}
+
+/// A detailed form's mesh for the page.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub(crate) struct FormMesh {
+    /// x, y, z after one another, m, to a tenth of a millimetre.
+    vertices: Vec<f32>,
+    triangles: Vec<u32>,
+    /// The form's parts in colours of their own (a stem, a cap): their triangles come after the
+    /// body's, in this order.
+    details: Vec<Detail>,
+}
+
+/// Triangles of a mesh in a colour of their own.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub(crate) struct Detail {
+    /// How many indices (three a triangle).
+    pub(crate) count: u32,
+    /// Linear sRGB, 0–1.
+    pub(crate) color: [f32; 3],
+    /// 0 or 1.
+    pub(crate) metallic: f32,
 }
 
 /// One drawn part of a node.
@@ -48,8 +78,10 @@ pub(crate) struct DrawnPart {
     pub(crate) color: [f32; 3],
     /// 0–1: how much it glows (toggled on).
     pub(crate) emission: f32,
-    /// 0–1: how shiny the material is.
-    pub(crate) shine: f32,
+    /// 0 (mirror) to 1 (chalk), as the realistic profile finishes it.
+    pub(crate) roughness: f32,
+    /// 0 or 1.
+    pub(crate) metallic: f32,
 }
 
 /// A rigid body: an object's base or one of its links.
@@ -148,6 +180,9 @@ pub(crate) struct SceneView {
     present: Vec<ObjectId>,
     /// Per node, per part: its appearance and the look last sent.
     looks: Vec<Vec<(Visual, [f32; 4])>>,
+    /// Every part whose look has changed since the scene was made, with its look now (node,
+    /// part → colour and glow): each status sends them all.
+    changed: BTreeMap<(usize, usize), [f32; 4]>,
 }
 
 /// The world's current parts, grouped into nodes.
@@ -156,6 +191,7 @@ pub(crate) fn describe(world: &World) -> (SceneView, Vec<Node>) {
     let mut bodies = Vec::new();
     let mut looks = Vec::new();
     let mut nodes = Vec::new();
+    let finishes = Finishes::of(world);
     for (id, object) in core.objects() {
         let parts = core.visual_parts(id);
         let links = std::iter::once(None).chain((0..object.links.len()).map(Some));
@@ -169,14 +205,21 @@ pub(crate) fn describe(world: &World) -> (SceneView, Vec<Node>) {
             let mut drawn = Vec::with_capacity(mine.len());
             let mut node_looks = Vec::with_capacity(mine.len());
             for p in mine {
-                let look = state_look(world, id, p.visual);
-                node_looks.push((p.visual, look_key(&look)));
+                // The colour in the home's palette, as the cameras' realistic profile has it.
+                let finish = finishes.part(world, id, p.visual);
+                let visual = Visual {
+                    color: finish.color,
+                    ..p.visual
+                };
+                let look = state_look(world, id, visual);
+                node_looks.push((visual, look_key(&look)));
                 drawn.push(DrawnPart {
                     shape: shape_of(&p.shape, &object.name),
                     offset: pose_values(inverse * p.pose),
                     color: look.albedo,
                     emission: look.emission,
-                    shine: look.shine,
+                    roughness: finish.roughness,
+                    metallic: finish.metallic,
                 });
             }
             looks.push(node_looks);
@@ -195,6 +238,7 @@ pub(crate) fn describe(world: &World) -> (SceneView, Vec<Node>) {
             bodies,
             present,
             looks,
+            changed: BTreeMap::new(),
         },
         nodes,
     )
@@ -227,10 +271,22 @@ fn look_key(look: &Look) -> [f32; 4] {
 
 fn shape_of(shape: &VisualShape, name: &str) -> Shape {
     match shape {
+        // A board's rounded edges are a few millimetres: the page draws the plain board.
+        &VisualShape::Formed {
+            form: Form::Rounded,
+            half_extents: h,
+        } => Shape::Box {
+            half_extents: [h.x, h.y, h.z],
+        },
         &VisualShape::Formed { form, half_extents } => {
             let seed = u64::from(behavior_forms::seed_of(name));
-            let made = behavior_forms::mesh(form, half_extents, seed, behavior_forms::Detail::Fine);
-            mesh(&made.positions, &made.triangles)
+            let coarse = behavior_forms::Detail::Coarse;
+            Shape::Form(formed(&behavior_forms::mesh(
+                form,
+                half_extents,
+                seed,
+                coarse,
+            )))
         }
         VisualShape::Primitive(p) => match p {
             Primitive::Box { half_extents: h } => Shape::Box {
@@ -263,8 +319,44 @@ fn shape_of(shape: &VisualShape, name: &str) -> Shape {
 
 fn mesh(vertices: &[Vector], triangles: &[[u32; 3]]) -> Shape {
     Shape::Mesh {
-        vertices: vertices.iter().flat_map(|v| [v.x, v.y, v.z]).collect(),
+        vertices: flat(vertices),
         triangles: triangles.iter().flatten().copied().collect(),
+    }
+}
+
+fn flat(points: &[Vector]) -> Vec<f32> {
+    points.iter().flat_map(|v| [v.x, v.y, v.z]).collect()
+}
+
+/// A detailed form's mesh, its triangles grouped by tone (the body's first), each other tone a
+/// detail in its colour, as the cameras draw it.
+fn formed(made: &behavior_forms::Mesh) -> FormMesh {
+    let mut by_tone: std::collections::BTreeMap<Tone, Vec<u32>> = Default::default();
+    for t in &made.triangles {
+        let tone = made.tones[t[0] as usize];
+        by_tone.entry(tone).or_default().extend_from_slice(t);
+    }
+    let mut triangles = by_tone.remove(&Tone::Body).unwrap_or_default();
+    let mut details = Vec::new();
+    for (tone, indices) in by_tone {
+        let color = tone
+            .srgb()
+            .unwrap_or([255; 3])
+            .map(|c| behavior_render::to_linear(f32::from(c) / 255.0));
+        details.push(Detail {
+            count: indices.len() as u32,
+            color,
+            metallic: if tone == Tone::Metal { 1.0 } else { 0.0 },
+        });
+        triangles.extend(indices);
+    }
+    FormMesh {
+        vertices: flat(&made.positions)
+            .into_iter()
+            .map(|c| (c * 1e4).round() / 1e4)
+            .collect(),
+        triangles,
+        details,
     }
 }
 
@@ -296,19 +388,22 @@ impl SceneView {
         out
     }
 
-    /// The parts whose colour changed since the last call (states: cooked, soaked, on…).
+    /// Every part whose colour has changed since the scene was made (states: cooked, soaked,
+    /// on…), with its colour now: whole, so that a page that skipped a status is right again.
     pub(crate) fn recolor(&mut self, world: &World) -> Vec<Recolor> {
-        let mut changed = Vec::new();
         for (node, (&(id, _), parts)) in self.bodies.iter().zip(&mut self.looks).enumerate() {
             for (part, (visual, last)) in parts.iter_mut().enumerate() {
                 let key = look_key(&state_look(world, id, *visual));
                 if key != *last {
                     *last = key;
-                    changed.push([node as f32, part as f32, key[0], key[1], key[2], key[3]]);
+                    self.changed.insert((node, part), key);
                 }
             }
         }
-        changed
+        self.changed
+            .iter()
+            .map(|(&(node, part), k)| [node as f32, part as f32, k[0], k[1], k[2], k[3]])
+            .collect()
     }
 }
 
@@ -366,5 +461,30 @@ impl<'a> Describe<'a> {
             particle_colors: ParticleColors::default(),
         };
         (view, description)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use behavior_forms::Detail as Level;
+
+    #[test]
+    fn a_form_reaches_the_page_with_its_stem_after_its_body() {
+        let made = behavior_forms::mesh(Form::Apple, Vector::splat(0.04), 1, Level::Fine);
+        let FormMesh {
+            vertices,
+            triangles,
+            details,
+        } = formed(&made);
+        assert_eq!(vertices.len(), 3 * made.positions.len());
+        assert_eq!(triangles.len(), 3 * made.triangles.len());
+        assert_eq!(details.len(), 1, "an apple has one detail, its stem");
+        let [r, _, b] = details[0].color;
+        assert!(r > b, "the stem is not brown: {:?}", details[0].color);
+        let body = triangles.len() - details[0].count as usize;
+        let tone = |t: &[u32]| made.tones[t[0] as usize];
+        assert!(triangles[..body].chunks(3).all(|t| tone(t) == Tone::Body));
+        assert!(triangles[body..].chunks(3).all(|t| tone(t) == Tone::Stem));
     }
 }

@@ -287,7 +287,7 @@ async fn client(mut socket: WebSocket, shared: Arc<Shared>, watch: bool) {
             out = rx.recv() => {
                 let Some(out) = out else { break };
                 let message = match out {
-                    Outgoing::Text(text) => Message::Text(text.into()),
+                    Outgoing::Text(text) | Outgoing::Update(text) => Message::Text(text.into()),
                     Outgoing::Binary(bytes) => Message::Binary(bytes),
                 };
                 if socket.send(message).await.is_err() {

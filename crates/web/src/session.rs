@@ -321,7 +321,13 @@ impl Running {
         })
         .to_text();
         self.clients.broadcast(Outgoing::Binary(frame));
-        self.clients.broadcast(Outgoing::Text(status));
+        // A status is whole (its recolouring lists every surface that ever changed), so a slow
+        // page may skip it, unless it brings new particles, which are sent only when they change.
+        self.clients.broadcast(if changed {
+            Outgoing::Text(status)
+        } else {
+            Outgoing::Update(status)
+        });
     }
 
     /// Ends the episode (keeping its recording) and resets to the next seed's.

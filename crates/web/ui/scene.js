@@ -118,7 +118,9 @@ export class View {
   // [node, part, r, g, b, emission] for each surface whose states changed its colour.
   recolor(changes) {
     for (const [node, part, r, g, b, glow] of changes) {
-      const material = this.nodes[node]?.children[part]?.material;
+      // A detailed form has a material per colour; its body's is the first.
+      const materials = this.nodes[node]?.children[part]?.material;
+      const material = Array.isArray(materials) ? materials[0] : materials;
       if (!material) continue;
       material.color.setRGB(r, g, b, THREE.LinearSRGBColorSpace);
       material.emissive.setRGB(r * glow, g * glow, b * glow, THREE.LinearSRGBColorSpace);
@@ -139,20 +141,50 @@ const DOT_SHAPES = {
   water: () => new THREE.SphereGeometry(0.009, 6, 4),
 };
 
+// A part as the cameras' realistic profile finishes it: its colour in the home's palette and its
+// states, roughness and metalness; a detailed form's details (a stem, a cap) in their own colours.
 function mesh(part) {
   const [r, g, b] = part.color;
   const color = new THREE.Color().setRGB(r, g, b, THREE.LinearSRGBColorSpace);
-  const material = new THREE.MeshStandardMaterial({
+  const body = new THREE.MeshStandardMaterial({
     color,
     emissive: color.clone().multiplyScalar(part.emission),
-    roughness: 1 - 0.8 * part.shine,
-    metalness: 0,
+    roughness: part.roughness,
+    metalness: part.metallic,
   });
-  const m = new THREE.Mesh(geometry(part.shape), material);
+  const m = part.shape.kind === 'form' ? form(part.shape, body) : new THREE.Mesh(geometry(part.shape), body);
   const o = part.offset;
   m.position.set(o[0], o[1], o[2]);
   m.quaternion.set(o[3], o[4], o[5], o[6]);
   return m;
+}
+
+// A detailed form in the body's material and its details' own (the body's first, which
+// recolouring changes).
+function form(shape, body) {
+  const materials = [body, ...shape.details.map((d) => new THREE.MeshStandardMaterial({
+    color: new THREE.Color().setRGB(d.color[0], d.color[1], d.color[2], THREE.LinearSRGBColorSpace),
+    roughness: d.metallic > 0 ? 0.35 : 0.7,
+    metalness: d.metallic,
+  }))];
+  return new THREE.Mesh(formGeometry(shape), materials);
+}
+
+// A form's geometry: normals averaged over each vertex's triangles (a fold's vertices are its
+// own, so it stays sharp), and a group per colour (the body's first).
+function formGeometry(level) {
+  const g = new THREE.BufferGeometry();
+  g.setAttribute('position', new THREE.Float32BufferAttribute(level.vertices, 3));
+  g.setIndex(level.triangles);
+  g.computeVertexNormals();
+  const body = level.triangles.length - level.details.reduce((n, d) => n + d.count, 0);
+  g.addGroup(0, body, 0);
+  let start = body;
+  level.details.forEach((d, k) => {
+    g.addGroup(start, d.count, k + 1);
+    start += d.count;
+  });
+  return g;
 }
 
 // Shapes in their own z-up frames (three's cylinders and capsules stand along y: turned).

@@ -94,7 +94,11 @@ async function main() {
 
     // End the episode from the page (Enter, as on a desktop) and replay it.
     await page.evaluate(() => behavior.send({ type: 'end' }));
-    await page.waitForFunction(() => behavior.ended.length > 0, null, { timeout: 60_000 });
+    // The page, drawing two eyes on the CPU, works through what is queued before the ending
+    // reaches it: about a minute with the debug server on a 2-core machine.
+    const asked = Date.now();
+    await page.waitForFunction(() => behavior.ended.length > 0, null, { timeout: 240_000 });
+    log(`the ending came ${((Date.now() - asked) / 1000).toFixed(1)} s after it was asked for`);
     const ended = await page.evaluate(() => behavior.ended[0]);
     log(`ended (${ended.reason}) after ${ended.steps} steps: ${ended.recording}`);
     const replay = JSON.parse(execFileSync(BIN, ['replay', '--verify', '--json', ended.recording]));

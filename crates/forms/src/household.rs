@@ -52,9 +52,7 @@ pub(crate) fn turned(ctx: Ctx) -> Mesh {
         fold(1.0, 1.0),
         p(0.0, 1.0),
     ];
-    let mut mesh = revolve(&profile, ctx.detail.around(), even);
-    mesh.fit(ctx.half);
-    mesh
+    revolve(&profile, ctx.detail.around(), even).fit(ctx.half)
 }
 
 /// A book lying flat: two boards and a spine (on −x) around a block of pages.
@@ -123,10 +121,9 @@ pub(crate) fn pen(ctx: Ctx) -> Mesh {
         p(0.9, 0.98),
         p(0.0, 1.0),
     ];
-    let mut mesh = revolve(&profile, ctx.detail.around(), even);
-    mesh.lay_along_x();
-    mesh.fit(ctx.half);
-    mesh
+    revolve(&profile, ctx.detail.around(), even)
+        .lay_along_x()
+        .fit(ctx.half)
 }
 
 /// A table lamp: a round base and a metal stem under a pale shade.
@@ -151,9 +148,7 @@ pub(crate) fn lamp(ctx: Ctx) -> Mesh {
     ]
     .map(|pt| pt.tone(Tone::Light));
     let around = ctx.detail.around();
-    let mut mesh = join([revolve(&stand, around, even), revolve(&shade, around, even)]);
-    mesh.fit(ctx.half);
-    mesh
+    join([revolve(&stand, around, even), revolve(&shade, around, even)]).fit(ctx.half)
 }
 
 /// A plant in a clay pot: a tapered pot filled with soil and a crown of leaves.
@@ -174,15 +169,16 @@ pub(crate) fn plant(ctx: Ctx) -> Mesh {
         }
     });
     let mut pieces = vec![revolve(&pot, ctx.detail.around(), even)];
-    let leaves = ctx.dice.count(6, 10);
-    let spin = ctx.dice.between(0.0, TAU);
     if ctx.detail == Detail::Coarse {
         // A few pixels across, the leaves are one leafy crown.
         let crown = Vector::new(0.5, 0.5, 0.32);
         let mut bush = sphere_grid(4, 8, |d| d * crown);
         bush.turn(Rotation::IDENTITY, Vector::new(0.0, 0.0, 0.68));
         pieces.push(bush);
+        return join(pieces).fit(ctx.half);
     }
+    let leaves = ctx.dice.count(6, 10);
+    let spin = ctx.dice.between(0.0, TAU);
     // An odd count of bands, so that no ring of vertices lies on a leaf's thin rim, where
     // smoothing would stand their normals square to both faces.
     let bands = (ctx.detail.bands() / 2) | 1;
@@ -190,9 +186,6 @@ pub(crate) fn plant(ctx: Ctx) -> Mesh {
         let heading = spin + TAU * k as f32 / leaves as f32;
         let tilt = ctx.dice.between(0.35, 1.1);
         let length = ctx.dice.between(0.32, 0.5);
-        if ctx.detail == Detail::Coarse {
-            continue;
-        }
         let leaf_half = Vector::new(length, 0.4 * length, 0.2 * length);
         let mut leaf = sphere_grid(bands, 4 * bands, |d| d * leaf_half);
         let turn = Rotation::from_rotation_z(heading) * Rotation::from_rotation_y(-tilt);
@@ -200,7 +193,5 @@ pub(crate) fn plant(ctx: Ctx) -> Mesh {
         leaf.turn(turn, Vector::new(0.0, 0.0, 0.42) + reach);
         pieces.push(leaf);
     }
-    let mut mesh = join(pieces);
-    mesh.fit(ctx.half);
-    mesh
+    join(pieces).fit(ctx.half)
 }

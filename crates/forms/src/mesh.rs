@@ -94,21 +94,23 @@ impl Mesh {
 
     /// Swaps axes so that what was built along z lies along x: (x, y, z) → (z, x, y), a turn,
     /// so triangles keep their winding.
-    pub(crate) fn lay_along_x(&mut self) {
+    pub(crate) fn lay_along_x(mut self) -> Mesh {
         let turn = |v: &mut Vector| *v = Vector::new(v.z, v.x, v.y);
         self.positions.iter_mut().for_each(turn);
         self.normals.iter_mut().for_each(turn);
+        self
     }
 
     /// Stretches the mesh so that the box around it is exactly `[-half, half]`, and smooths its
     /// normals anew over the stretched shape (folds, whose vertices are doubled, stay sharp):
     /// stretching a thin rim's averaged normal is not the average of its stretched faces'.
-    pub(crate) fn fit(&mut self, half: Vector) {
+    pub(crate) fn fit(mut self, half: Vector) -> Mesh {
         let (lo, hi) = self.bounds();
         let size = (hi - lo).max(Vector::splat(1e-9));
         let scale = 2.0 * half / size;
         self.stretch(scale, -(lo + hi) * 0.5 * scale);
         self.smooth_normals();
+        self
     }
 
     /// Sets every vertex's normal to the area-weighted mean of its triangles' (for shapes built

@@ -29,20 +29,16 @@ fn rounded_profile(steps: usize, radius: impl Fn(f32, f32) -> f32) -> Vec<Pt> {
 
 /// Stretches the mesh to its box; built upright, it is laid along x first when the box is
 /// longer than it is tall (a lemon or an egg lying on its side).
-fn settle(mut mesh: Mesh, ctx: &Ctx) -> Mesh {
-    if ctx.half.x > ctx.half.z * 1.1 && ctx.half.x >= ctx.half.y {
-        mesh.lay_along_x();
-    }
-    mesh.fit(ctx.half);
-    mesh
+fn settle(mesh: Mesh, ctx: &Ctx) -> Mesh {
+    let lying = ctx.half.x > ctx.half.z * 1.1 && ctx.half.x >= ctx.half.y;
+    let mesh = if lying { mesh.lay_along_x() } else { mesh };
+    mesh.fit(ctx.half)
 }
 
 /// A smooth ball or ellipsoid.
 pub(crate) fn round(ctx: Ctx) -> Mesh {
     let b = ctx.detail.bands();
-    let mut mesh = sphere_grid(b, 2 * b, |d| d);
-    mesh.fit(ctx.half);
-    mesh
+    sphere_grid(b, 2 * b, |d| d).fit(ctx.half)
 }
 
 /// A stem: a short tube rising from `from`, bent over by `lean` of its length.
@@ -81,9 +77,7 @@ pub(crate) fn apple(ctx: Ctx) -> Mesh {
         1.0 + lobes * (5.0 * phi + turn).cos()
     });
     let stem = stem(Vector::new(0.0, 0.0, 0.84), (0.24, 0.035, lean), &ctx);
-    let mut mesh = join([body, stem]);
-    mesh.fit(ctx.half);
-    mesh
+    join([body, stem]).fit(ctx.half)
 }
 
 /// An orange, a tomato, a peach: a ball a little flattened, with a green calyx on top.
@@ -106,9 +100,7 @@ pub(crate) fn fruit(ctx: Ctx) -> Mesh {
     let calyx = revolve(&calyx, ctx.detail.around() / 2, |phi| {
         1.0 + 0.3 * (5.0 * phi).cos()
     });
-    let mut mesh = join([body, calyx]);
-    mesh.fit(ctx.half);
-    mesh
+    join([body, calyx]).fit(ctx.half)
 }
 
 /// A lemon: an ellipsoid drawn out to a point at each end.
@@ -160,9 +152,7 @@ pub(crate) fn florets(ctx: Ctx) -> Mesh {
             at + d * size * (1.0 + lump * (7.0 * d.x).sin() * (7.0 * d.y).cos())
         }));
     }
-    let mut mesh = join(pieces);
-    mesh.fit(ctx.half);
-    mesh
+    join(pieces).fit(ctx.half)
 }
 
 /// A mushroom: a domed cap over a pale stalk.
@@ -185,12 +175,11 @@ pub(crate) fn mushroom(ctx: Ctx) -> Mesh {
     ]
     .map(|pt| pt.tone(Tone::Light));
     let around = ctx.detail.around();
-    let mut mesh = join([
+    join([
         revolve(&cap, around, even),
         revolve(&stalk, around / 2, even),
-    ]);
-    mesh.fit(ctx.half);
-    mesh
+    ])
+    .fit(ctx.half)
 }
 
 /// A strawberry: a rounded cone, tip down, under a leafy top.
@@ -205,11 +194,10 @@ pub(crate) fn berry(ctx: Ctx) -> Mesh {
         p(0.4, 0.99).tone(Tone::Leaf),
         p(0.0, 1.0).tone(Tone::Leaf),
     ];
-    let mut mesh = revolve(&profile, ctx.detail.around(), |phi| {
+    revolve(&profile, ctx.detail.around(), |phi| {
         1.0 + 0.04 * (6.0 * phi).cos()
-    });
-    mesh.fit(ctx.half);
-    mesh
+    })
+    .fit(ctx.half)
 }
 
 /// A banana lying along x: a ridged tube bending up at both ends, tapering to a dark stem.
@@ -238,9 +226,7 @@ pub(crate) fn banana(ctx: Ctx) -> Mesh {
     let out = (path[last] - path[last - 1]).normalize();
     let stem_path = [end - out * 0.02, end + out * 0.08];
     let stem = tube(&stem_path, sides.min(6), |_, _| 0.035, Tone::Stem);
-    let mut mesh = join([body, stem]);
-    mesh.fit(ctx.half);
-    mesh
+    join([body, stem]).fit(ctx.half)
 }
 
 /// A carrot lying along x: a long taper with the stub of its leaves.
@@ -258,27 +244,25 @@ pub(crate) fn carrot(ctx: Ctx) -> Mesh {
         .map(|pt| pt.tone(Tone::Leaf));
     let around = ctx.detail.around();
     let wobble = |phi: f32| 1.0 + 0.03 * (3.0 * phi).sin();
-    let mut mesh = join([
+    join([
         revolve(&profile, around, wobble),
         revolve(&leaves, around / 2, even),
-    ]);
-    mesh.lay_along_x();
-    mesh.fit(ctx.half);
-    mesh
+    ])
+    .lay_along_x()
+    .fit(ctx.half)
 }
 
 /// A loaf: square-ish below, domed above.
 pub(crate) fn loaf(ctx: Ctx) -> Mesh {
     let b = ctx.detail.bands();
     let dome = ctx.dice.between(0.55, 0.8);
-    let mut mesh = sphere_grid(b, 2 * b, |d| {
+    sphere_grid(b, 2 * b, |d| {
         let top = if d.z > 0.0 { dome } else { 0.25 };
         Vector::new(
             signed_pow(d.x, 0.3),
             signed_pow(d.y, 0.35),
             signed_pow(d.z, top),
         )
-    });
-    mesh.fit(ctx.half);
-    mesh
+    })
+    .fit(ctx.half)
 }

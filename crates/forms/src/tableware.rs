@@ -13,16 +13,7 @@ use std::f32::consts::{FRAC_PI_2, PI};
 
 /// A profile turned and stretched to fill the box.
 fn turned(profile: &[Pt], ctx: &Ctx) -> Mesh {
-    let mut mesh = revolve(profile, ctx.detail.around(), even);
-    mesh.fit(ctx.half);
-    mesh
-}
-
-/// Every point of `profile` in `tone`.
-fn all_in(tone: Tone, profile: &mut [Pt]) {
-    for pt in profile {
-        *pt = pt.tone(tone);
-    }
+    revolve(profile, ctx.detail.around(), even).fit(ctx.half)
 }
 
 /// Body, shoulder, neck and a cap in a tone of its own.
@@ -30,8 +21,7 @@ pub(crate) fn bottle(ctx: Ctx) -> Mesh {
     let shoulder = ctx.dice.between(0.45, 0.58);
     let neck = ctx.dice.between(0.24, 0.38);
     let cap = [Tone::Dark, Tone::Metal, Tone::Light][ctx.dice.count(0, 2)];
-    let mut top = [fold(neck + 0.05, 0.9), fold(neck + 0.05, 1.0), p(0.0, 1.0)];
-    all_in(cap, &mut top);
+    let top = [fold(neck + 0.05, 0.9), fold(neck + 0.05, 1.0), p(0.0, 1.0)].map(|pt| pt.tone(cap));
     let mut profile = vec![
         p(0.0, 0.015),
         p(0.88, 0.0),
@@ -50,15 +40,14 @@ pub(crate) fn bottle(ctx: Ctx) -> Mesh {
 
 /// A tin with rolled metal rims and a recessed lid.
 pub(crate) fn can(ctx: Ctx) -> Mesh {
-    let mut bottom = [p(0.0, 0.015), fold(0.9, 0.0), fold(0.97, 0.03)];
-    let mut top = [
+    let bottom = [p(0.0, 0.015), fold(0.9, 0.0), fold(0.97, 0.03)].map(|pt| pt.tone(Tone::Metal));
+    let top = [
         fold(1.0, 0.94),
         fold(0.97, 1.0),
         fold(0.9, 0.985),
         p(0.0, 0.985),
-    ];
-    all_in(Tone::Metal, &mut bottom);
-    all_in(Tone::Metal, &mut top);
+    ]
+    .map(|pt| pt.tone(Tone::Metal));
     let mut profile = bottom.to_vec();
     profile.push(fold(1.0, 0.06));
     profile.extend(top);

@@ -13,6 +13,7 @@
 //! drops show through the world's geometry, not through colour.
 
 use behavior_core::Predicate;
+use behavior_forms::Tone;
 use behavior_sim::{Material, ObjectId, Visual, World};
 
 /// sRGB of a roast brown.
@@ -52,6 +53,28 @@ pub fn to_linear(c: f32) -> f32 {
     } else {
         ((c + 0.055) / 1.055).powf(2.4)
     }
+}
+
+/// How a form's detail in a tone of its own (a stem, a cap, a lamp's shade) is drawn, by the
+/// cameras, glTF export and the browser viewer alike: its plain colour, matte, or bare metal.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ToneLook {
+    /// Linear RGB.
+    pub albedo: [f32; 3],
+    /// 0 (mirror) to 1 (chalk).
+    pub roughness: f32,
+    /// 0 or 1.
+    pub metallic: f32,
+}
+
+/// The look of `tone`, or `None` for [`Tone::Body`] (the part's own).
+pub fn tone_look(tone: Tone) -> Option<ToneLook> {
+    let metal = tone == Tone::Metal;
+    tone.srgb().map(|srgb| ToneLook {
+        albedo: srgb.map(|c| to_linear(f32::from(c) / 255.0)),
+        roughness: if metal { 0.35 } else { 0.7 },
+        metallic: if metal { 1.0 } else { 0.0 },
+    })
 }
 
 /// The states that change an object's colour, read once per object and frame.

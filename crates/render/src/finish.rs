@@ -189,10 +189,10 @@ pub(crate) enum Finisher {
 }
 
 impl Finisher {
-    /// How `object`'s parts are finished in a home of seed `home`.
-    pub(crate) fn of(world: &World, object: ObjectId, home: u64) -> Finisher {
+    /// How `object`'s parts are finished in a home of seed `home`; `seed` is the object's own
+    /// ([`object_seed`], which its caller has already worked out for its form).
+    pub(crate) fn of(world: &World, object: ObjectId, home: u64, seed: u32) -> Finisher {
         let o = world.object(object);
-        let seed = object_seed(world, object);
         match o.category.as_str() {
             "floor.n.01" => {
                 let room = world.rooms().iter().find(|r| r.floor == Some(object));
@@ -274,7 +274,8 @@ impl Finishes {
 
     /// How a part of `object` of appearance `visual` is finished.
     pub fn part(&self, world: &World, object: ObjectId, visual: Visual) -> PartFinish {
-        let f = Finisher::of(world, object, self.home).part(visual);
+        let seed = object_seed(world, object);
+        let f = Finisher::of(world, object, self.home, seed).part(visual);
         PartFinish {
             color: f.color,
             roughness: f.roughness,

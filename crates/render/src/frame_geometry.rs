@@ -8,7 +8,7 @@
 //! shape's triangles face away, and the pipeline cannot cull them itself because open meshes
 //! (a bowl) are seen from both sides in the same draw. A GPU would not mind either way.
 
-use crate::appearance::to_linear;
+use crate::appearance::tone_look;
 use crate::finish::{Finish, Pattern};
 use crate::instances::Instance;
 use crate::mesh::MeshStore;
@@ -42,31 +42,29 @@ pub(crate) struct FrameVertex {
 /// The colour of a vertex of `tone` on an instance of `color` (linear albedo, emission in w):
 /// the instance's own, or the tone's, lit alike.
 fn toned(tone: Tone, color: [f32; 4]) -> [f32; 4] {
-    match tone.srgb() {
+    match tone_look(tone) {
         None => color,
-        Some(srgb) => {
-            let [r, g, b] = srgb.map(|c| to_linear(f32::from(c) / 255.0));
+        Some(look) => {
+            let [r, g, b] = look.albedo;
             [r, g, b, color[3]]
         }
     }
 }
 
 /// The realistic profile's finish of a vertex of `tone` on an instance finished `surface`
-/// ([`crate::finish::Finish::packed`]): the instance's own, or for a detail in a tone of its own
-/// (a cap, a stem, a lamp's shade) a plain surface, metal only where the tone is metal.
+/// ([`crate::finish::Finish::packed`]): the instance's own, or the tone's, plain.
 fn toned_surface(tone: Tone, surface: [u32; 2]) -> [u32; 2] {
-    if tone == Tone::Body {
-        return surface;
+    match tone_look(tone) {
+        None => surface,
+        Some(look) => Finish {
+            color: [0; 3],
+            pattern: Pattern::Plain,
+            roughness: look.roughness,
+            metallic: look.metallic,
+            seed: surface[1],
+        }
+        .packed(),
     }
-    let metal = tone == Tone::Metal;
-    Finish {
-        color: [0; 3],
-        pattern: Pattern::Plain,
-        roughness: if metal { 0.35 } else { 0.7 },
-        metallic: if metal { 1.0 } else { 0.0 },
-        seed: surface[1],
-    }
-    .packed()
 }
 
 /// The lists, kept between frames so that a frame like the last allocates nothing.

@@ -10,7 +10,7 @@
 //! node per object holding a node per part, under a root node that turns the world's z-up frame
 //! into glTF's y-up.
 
-use crate::appearance::{Shown, look};
+use crate::appearance::{Shown, look, tone_look};
 use crate::finish::{Finisher, home_seed, object_seed};
 use crate::mesh::{Drawn, MeshStore};
 use behavior_forms::Tone;
@@ -66,16 +66,12 @@ impl MaterialKey {
 
 /// What one tone of a mesh is drawn in: its own plain colour, or the part's.
 fn tone_material(tone: Tone, body: MaterialKey) -> MaterialKey {
-    match tone.srgb() {
+    match tone_look(tone) {
         None => body,
-        Some(srgb) => {
-            let metal = tone == Tone::Metal;
-            let rgb = srgb.map(|c| crate::appearance::to_linear(f32::from(c) / 255.0));
-            MaterialKey {
-                double_sided: body.double_sided,
-                ..MaterialKey::new(rgb, 1.0, if metal { (0.35, 1.0) } else { (0.7, 0.0) }, 0.0)
-            }
-        }
+        Some(look) => MaterialKey {
+            double_sided: body.double_sided,
+            ..MaterialKey::new(look.albedo, 1.0, (look.roughness, look.metallic), 0.0)
+        },
     }
 }
 
@@ -202,7 +198,7 @@ pub fn to_glb(world: &World, hidden: &[ObjectId]) -> Vec<u8> {
             continue;
         }
         let seed = object_seed(world, id);
-        let finisher = Finisher::of(world, id, home);
+        let finisher = Finisher::of(world, id, home, seed);
         let shown = Shown::of(world, id);
         let mut parts = Vec::new();
         for part in world.core().visual_parts(id) {

@@ -235,10 +235,10 @@ impl Gatherer<'_> {
         let world = self.scene.world;
         let ids = self.ids(id, &world.object(id).category);
         let shown = Shown::of(world, id);
-        let finisher =
-            (self.profile == ImageProfile::Realistic).then(|| Finisher::of(world, id, self.home));
-        let eye = self.camera.pose.translation;
         let seed = object_seed(world, id);
+        let finisher = (self.profile == ImageProfile::Realistic)
+            .then(|| Finisher::of(world, id, self.home, seed));
+        let eye = self.camera.pose.translation;
         for (k, part) in world.core().visual_parts(id).iter().enumerate() {
             let drawn = Drawn::of(&part.shape, seed);
             let key = Key::Part(id.0, k as u32);

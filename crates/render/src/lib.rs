@@ -51,7 +51,7 @@ mod renderer;
 mod shadow;
 mod targets;
 
-pub use appearance::{DUST, Look, STAIN, WATER, state_look, to_linear};
+pub use appearance::{DUST, Look, STAIN, ToneLook, WATER, state_look, to_linear, tone_look};
 pub use camera::{Camera, EYE_FOV, EYE_SIZE, FAR, NEAR};
 pub use categories::{CategoryTable, DUST_CATEGORY, STAIN_CATEGORY, WATER_CATEGORY};
 pub use error::RenderError;

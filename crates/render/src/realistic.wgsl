@@ -251,18 +251,12 @@ fn sunlit(p: vec3<f32>, n: vec3<f32>) -> f32 {
 fn sky_open(p: vec3<f32>, n: vec3<f32>) -> f32 {
     let centre = vec3<f32>((p + n * 0.37).xy, p.z + 0.02);
     // Four points around the centre, 35 and 15 cm off, a quarter turn apart.
-    let a = sky_seen(centre + vec3<f32>(0.322, 0.136, 0.0));
-    let b = sky_seen(centre + vec3<f32>(-0.058, 0.138, 0.0));
-    let c = sky_seen(centre + vec3<f32>(-0.322, -0.136, 0.0));
-    let d = sky_seen(centre + vec3<f32>(0.058, -0.138, 0.0));
+    let m = lights.sky_shadow;
+    let a = sun_through(sky_map, m, centre + vec3<f32>(0.322, 0.136, 0.0));
+    let b = sun_through(sky_map, m, centre + vec3<f32>(-0.058, 0.138, 0.0));
+    let c = sun_through(sky_map, m, centre + vec3<f32>(-0.322, -0.136, 0.0));
+    let d = sun_through(sky_map, m, centre + vec3<f32>(0.058, -0.138, 0.0));
     return 0.25 * (a + b + c + d);
-}
-
-// Whether the sky map sees a world point (1) or something above it (0), filtered.
-fn sky_seen(q: vec3<f32>) -> f32 {
-    let c = lights.sky_shadow * vec4<f32>(q, 1.0);
-    let uv = clamp(vec2<f32>(c.x * 0.5 + 0.5, 0.5 - c.y * 0.5), vec2<f32>(0.0), vec2<f32>(1.0));
-    return textureSampleCompareLevel(sky_map, shadow_sampler, uv, min(c.z, 1.0));
 }
 
 // Diffuse plus a normalised Blinn-Phong lobe standing in for GGX, with Schlick's Fresnel.

@@ -3,14 +3,16 @@
 //! The world's visual description (`World::visual_parts`) is regrouped into *nodes*, one per
 //! rigid body (an object's base or one of its links): each node carries its parts (a shape, its
 //! pose in the node's frame, a colour) and moves as one, so a step needs only one pose per
-//! node. Convex hulls are sent as triangles (parry's hull), everything else as its primitive.
-//! Colours are linear sRGB as the cameras' appearance gives them for the object's states.
+//! node. Convex hulls are sent as triangles (parry's hull), detailed forms as their coarse
+//! meshes (rounded boards as plain boxes), everything else as its primitive. Colours are linear
+//! sRGB in the home's palette, as the cameras' realistic profile gives them for the object's
+//! states, with its roughness and metalness.
 
 use crate::checklist::Checklist;
 use behavior_core::Predicate;
 use behavior_env::Env;
 use behavior_forms::Tone;
-use behavior_render::{DUST, Finishes, Look, STAIN, WATER, state_look};
+use behavior_render::{DUST, Finishes, Look, STAIN, WATER, state_look, tone_look};
 use behavior_sim::{Form, ObjectId, Primitive, Visual, VisualShape, World};
 use rapier3d::math::{Pose, Vector};
 use serde::Serialize;
@@ -64,6 +66,8 @@ pub(crate) struct Detail {
     pub(crate) count: u32,
     /// Linear sRGB, 0–1.
     pub(crate) color: [f32; 3],
+    /// 0 (mirror) to 1 (chalk).
+    pub(crate) roughness: f32,
     /// 0 or 1.
     pub(crate) metallic: f32,
 }
@@ -339,15 +343,14 @@ fn formed(made: &behavior_forms::Mesh) -> FormMesh {
     let mut triangles = by_tone.remove(&Tone::Body).unwrap_or_default();
     let mut details = Vec::new();
     for (tone, indices) in by_tone {
-        let color = tone
-            .srgb()
-            .unwrap_or([255; 3])
-            .map(|c| behavior_render::to_linear(f32::from(c) / 255.0));
-        details.push(Detail {
-            count: indices.len() as u32,
-            color,
-            metallic: if tone == Tone::Metal { 1.0 } else { 0.0 },
-        });
+        if let Some(look) = tone_look(tone) {
+            details.push(Detail {
+                count: indices.len() as u32,
+                color: look.albedo,
+                roughness: look.roughness,
+                metallic: look.metallic,
+            });
+        }
         triangles.extend(indices);
     }
     FormMesh {

@@ -164,7 +164,7 @@ function mesh(part) {
 function form(shape, body) {
   const materials = [body, ...shape.details.map((d) => new THREE.MeshStandardMaterial({
     color: new THREE.Color().setRGB(d.color[0], d.color[1], d.color[2], THREE.LinearSRGBColorSpace),
-    roughness: d.metallic > 0 ? 0.35 : 0.7,
+    roughness: d.roughness,
     metalness: d.metallic,
   }))];
   return new THREE.Mesh(formGeometry(shape), materials);

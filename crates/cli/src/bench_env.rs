@@ -52,6 +52,10 @@ pub struct BenchEnvArgs {
     /// The eye camera's image sizes, square (repeat the flag for several); default: 128 and 512.
     #[arg(long = "image-size", value_name = "N", value_parser = clap::value_parser!(u32).range(1..=4096))]
     image_sizes: Vec<u32>,
+    /// The robots to time, behavior or fetch (repeat the flag for both); default: both without
+    /// images, the BehaviorRobot with images.
+    #[arg(long = "robot", value_name = "ROBOT")]
+    robots: Vec<String>,
     #[arg(long)]
     json: bool,
 }
@@ -124,14 +128,22 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     } else {
         args.image_sizes.clone()
     };
+    for robot in &args.robots {
+        robot_kind(robot)?;
+    }
+    let robot_count = args.robots.len() as u64;
     let bar = if args.json {
         ProgressBar::hidden()
     } else {
-        let state = if args.images_only { 0 } else { 8 };
+        let state = match (args.images_only, robot_count) {
+            (true, _) => 0,
+            (false, 0) => 8,
+            (false, n) => 4 * n,
+        };
         let images = if args.state_only {
             0
         } else {
-            2 * (sizes.len() * profiles.len()) as u64
+            2 * robot_count.max(1) * (sizes.len() * profiles.len()) as u64
         };
         ProgressBar::new(names.len() as u64 * (state + images))
     };
@@ -162,12 +174,13 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
                 .count()
         });
         drop(sampler);
-        let robots: &[&str] = if args.images_only {
-            &[]
-        } else {
-            &["behavior", "fetch"]
+        let both = ["behavior", "fetch"].map(String::from);
+        let state_robots: &[String] = match (args.images_only, args.robots.is_empty()) {
+            (true, _) => &[],
+            (false, true) => &both,
+            (false, false) => &args.robots,
         };
-        for &robot in robots {
+        for robot in state_robots {
             for agent in ["idle", "random"] {
                 for dt in ["1/300", "1/120"] {
                     let mut config = base.clone();
@@ -195,13 +208,20 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
             continue;
         }
         // Profiles side by side: each size's and agent's rows of every profile together.
-        let image_rows = sizes
+        let image_robots = if args.robots.is_empty() {
+            vec!["behavior".to_string()]
+        } else {
+            args.robots.clone()
+        };
+        let image_rows = image_robots
             .iter()
-            .flat_map(|s| ["idle", "random"].map(|a| (s, a)))
-            .flat_map(|(s, a)| profiles.iter().map(move |p| (s, a, p)));
-        for (&size, agent, &profile) in image_rows {
+            .flat_map(|r| sizes.iter().map(move |s| (r, s)))
+            .flat_map(|(r, s)| ["idle", "random"].map(|a| (r, s, a)))
+            .flat_map(|(r, s, a)| profiles.iter().map(move |p| (r, s, a, p)));
+        for (robot, &size, agent, &profile) in image_rows {
             let mut config = base.clone();
             config.instances = Instances::Saved(vec![instance.clone()]);
+            config.robot = robot_kind(robot)?;
             config.max_steps = u32::MAX;
             config.observations.camera = Some(CameraConfig {
                 width: size,
@@ -214,7 +234,7 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
                 activity: name.to_string(),
                 scene: home.name.clone(),
                 objects,
-                robot: "behavior".into(),
+                robot: robot.clone(),
                 agent: agent.to_string(),
                 physics_dt: "1/300".into(),
                 images: format!("{size}²"),

@@ -1,7 +1,8 @@
 //! `behavior gallery`: a contact sheet of every archetype of the catalog, each in two variants
 //! (the shape's two variants where it has them, a small and a large size, two seeds), drawn on
 //! a floor under the realistic profile and labelled with its synset: what the agent's camera
-//! shows of each kind of object, on one page.
+//! shows of each kind of object, on one page. With `--robots`, the robots instead, each from
+//! the front left and from behind, in their makers' meshes where this machine has them.
 
 use crate::map::text;
 use crate::prelude::Prelude;
@@ -11,6 +12,7 @@ use behavior_env::categories;
 use behavior_render::{
     Camera, CategoryTable, ImageProfile, Modality, Pixels, Renderer, Scene, View,
 };
+use behavior_robots::{ActionSpace, Robot, RobotKind};
 use behavior_sim::{Material, ObjectSpec, Part, Primitive, World};
 use image::{Rgb, RgbImage};
 use rapier3d::math::Vector;
@@ -38,6 +40,69 @@ pub struct GalleryArgs {
     /// Only archetypes whose synset contains this text (repeat the flag for several).
     #[arg(long, value_name = "TEXT")]
     only: Vec<String>,
+    /// Draw the robots instead of the archetypes: each embodiment from the front left and
+    /// from behind.
+    #[arg(long, conflicts_with = "only")]
+    robots: bool,
+}
+
+/// One picture of the sheet.
+enum Subject {
+    Archetype(Sitter),
+    /// A robot, seen from the front left (side 0) or from behind on its right (side 1).
+    Robot {
+        kind: RobotKind,
+        side: u32,
+    },
+}
+
+impl Subject {
+    fn world(&self, prelude: &Prelude, tile: u32) -> Result<(World, Camera)> {
+        match self {
+            Subject::Archetype(sitter) => sitter.world(prelude, tile),
+            &Subject::Robot { kind, side } => robot_world(kind, side, tile),
+        }
+    }
+
+    /// The caption: the synset or the robot's name.
+    fn label(&self, tile: u32) -> String {
+        match self {
+            Subject::Archetype(sitter) => label(sitter.archetype.synset, tile),
+            Subject::Robot { kind, .. } => label(kind.name(), tile),
+        }
+    }
+}
+
+/// A floor `half` metres from the origin each way, in a light wood.
+fn floor(half: f32) -> ObjectSpec {
+    ObjectSpec::new(
+        "floor",
+        "floor.n.01",
+        vec![Part::new(Primitive::Box {
+            half_extents: Vector::new(half, half, 0.05),
+        })],
+    )
+    .looks([170, 140, 110], Material::Wood)
+    .at(Vector::new(0.0, 0.0, -0.05))
+    .fixed()
+}
+
+/// A robot standing on a floor facing +x, and a camera that frames it from one side.
+fn robot_world(kind: RobotKind, side: u32, tile: u32) -> Result<(World, Camera)> {
+    let mut world = World::default();
+    world.add(floor(3.0))?;
+    let pose = Robot::standing_pose(kind, Vector::ZERO, 0.0);
+    Robot::add(kind, ActionSpace::Full, &mut world, pose)
+        .with_context(|| format!("adding the {} robot", kind.name()))?;
+    // Both robots are about 1.1-1.5 m tall and 0.6 m wide.
+    let centre = Vector::new(0.1, 0.0, 0.7);
+    let direction = match side {
+        0 => Vector::new(1.0, 0.7, 0.45),
+        _ => Vector::new(-1.0, -0.5, 0.6),
+    };
+    let distance = 1.0 / (0.5 * FOV).tan();
+    let from = centre + direction.normalize() * distance;
+    Ok((world, Camera::looking_at(from, centre, tile, tile, FOV)))
 }
 
 /// One picture of the sheet: an archetype in one of its two variants.
@@ -60,18 +125,7 @@ impl Sitter {
     fn world(&self, prelude: &Prelude, tile: u32) -> Result<(World, Camera)> {
         let size = self.size();
         let mut world = World::default();
-        let floor_half = Vector::new(size.x.max(size.y) + 1.0, size.x.max(size.y) + 1.0, 0.05);
-        let floor = ObjectSpec::new(
-            "floor",
-            "floor.n.01",
-            vec![Part::new(Primitive::Box {
-                half_extents: floor_half,
-            })],
-        )
-        .looks([170, 140, 110], Material::Wood)
-        .at(Vector::new(0.0, 0.0, -0.05))
-        .fixed();
-        world.add(floor)?;
+        world.add(floor(size.x.max(size.y) + 1.0))?;
         let synset = self.archetype.synset;
         let name = format!("{synset}_{}", self.variant + 1);
         let spec = prelude
@@ -102,11 +156,22 @@ pub fn gallery(args: GalleryArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     }
     let prelude = Prelude::load(data_dir)?;
     let table = categories(&prelude.knowledge.taxonomy);
-    let sitters: Vec<Sitter> = CATALOG
-        .iter()
-        .filter(|a| args.only.is_empty() || args.only.iter().any(|o| a.synset.contains(o.as_str())))
-        .flat_map(|archetype| (0..2).map(move |variant| Sitter { archetype, variant }))
-        .collect();
+    let sitters: Vec<Subject> = if args.robots {
+        RobotKind::ALL
+            .into_iter()
+            .flat_map(|kind| (0..2).map(move |side| Subject::Robot { kind, side }))
+            .collect()
+    } else {
+        CATALOG
+            .iter()
+            .filter(|a| {
+                args.only.is_empty() || args.only.iter().any(|o| a.synset.contains(o.as_str()))
+            })
+            .flat_map(|archetype| {
+                (0..2).map(move |variant| Subject::Archetype(Sitter { archetype, variant }))
+            })
+            .collect()
+    };
     if sitters.is_empty() {
         bail!(
             "no archetype's synset contains `{}`",
@@ -114,6 +179,7 @@ pub fn gallery(args: GalleryArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         );
     }
     let mut renderer = Renderer::new()?;
+    renderer.set_models(behavior_robots::shared_models());
     let tile = args.tile;
     let rows = (sitters.len() as u32).div_ceil(COLUMNS);
     let columns = COLUMNS.min(sitters.len() as u32);
@@ -131,7 +197,7 @@ pub fn gallery(args: GalleryArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
             k as u32 / COLUMNS * (tile + CAPTION),
         );
         image::imageops::replace(&mut sheet, &picture, i64::from(x), i64::from(y));
-        let label = label(sitter.archetype.synset, tile);
+        let label = sitter.label(tile);
         text(
             &mut sheet,
             &label,
@@ -148,9 +214,10 @@ pub fn gallery(args: GalleryArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     std::fs::rename(&partial, &args.out)
         .with_context(|| format!("cannot write {}", args.out.display()))?;
     println!(
-        "{} pictures of {} archetypes ({} profile) in {}",
+        "{} pictures of {} {} ({} profile) in {}",
         sitters.len(),
         sitters.len() / 2,
+        if args.robots { "robots" } else { "archetypes" },
         args.profile,
         args.out.display()
     );
@@ -159,7 +226,7 @@ pub fn gallery(args: GalleryArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
 
 /// One sitter's picture.
 fn draw(
-    sitter: &Sitter,
+    sitter: &Subject,
     prelude: &Prelude,
     renderer: &mut Renderer,
     table: &CategoryTable,

@@ -122,7 +122,7 @@ fn export(prelude: &Prelude, args: ExportArgs) -> Result<()> {
         (true, Some(robot)) => robot.objects(),
         _ => Vec::new(),
     };
-    let file = behavior_render::to_glb(world, &hidden);
+    let file = behavior_render::to_glb(world, &hidden, &behavior_robots::shared_models());
     std::fs::write(&args.gltf, &file)
         .with_context(|| format!("cannot write {}", args.gltf.display()))?;
     eprintln!(

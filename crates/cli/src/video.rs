@@ -84,8 +84,10 @@ impl Video {
         let mut encoder =
             Encoder::new(BufWriter::new(file), width, height, &[]).with_context(cannot)?;
         encoder.set_repeat(Repeat::Infinite).with_context(cannot)?;
+        let mut renderer = Renderer::new()?;
+        renderer.set_models(behavior_robots::shared_models());
         Ok(Video {
-            renderer: Renderer::new()?,
+            renderer,
             eye,
             overview,
             categories,

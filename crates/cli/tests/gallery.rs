@@ -70,3 +70,51 @@ fn the_gallery_refuses_a_file_that_is_no_png_and_a_filter_that_matches_nothing()
     );
     assert!(!out.exists(), "a sheet was written for nothing");
 }
+
+#[test]
+fn the_robots_sheet_shows_fetch_in_its_makers_meshes_and_each_robot_from_two_sides() {
+    let draw = |name: &str, assets: Option<&str>| {
+        let out = scratch(name);
+        let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_behavior"));
+        command.args(["gallery", "--robots", "--tile", "96", "--out"]);
+        command.arg(&out);
+        if let Some(value) = assets {
+            command.env("BEHAVIOR_ROBOT_ASSETS", value);
+        }
+        let output = command.output().unwrap();
+        assert!(
+            output.status.success(),
+            "{}",
+            String::from_utf8_lossy(&output.stderr)
+        );
+        assert!(
+            stdout(&output).contains("4 pictures of 2 robots"),
+            "{}",
+            stdout(&output)
+        );
+        image::open(&out).unwrap().to_rgb8()
+    };
+    let meshes = draw("robots.png", None);
+    let plain = draw("robots-plain.png", Some("none"));
+    assert_eq!((meshes.width(), meshes.height()), (4 * 96, 96 + 14));
+    let tile = |sheet: &image::RgbImage, k: u32| {
+        image::imageops::crop_imm(sheet, 96 * k, 0, 96, 96).to_image()
+    };
+    // BehaviorRobot (tiles 0 and 1) has no meshes to fetch: the same either way. Fetch (2 and
+    // 3) is drawn differently from its makers' meshes, and each robot differs by side.
+    for k in 0..2 {
+        assert_eq!(tile(&meshes, k), tile(&plain, k), "tile {k}");
+    }
+    for k in 2..4 {
+        let changed = tile(&meshes, k)
+            .pixels()
+            .zip(tile(&plain, k).pixels())
+            .filter(|(a, b)| a != b)
+            .count();
+        assert!(changed > 300, "tile {k}: {changed} pixels differ");
+    }
+    assert_ne!(tile(&meshes, 2), tile(&meshes, 3));
+    assert_ne!(tile(&meshes, 0), tile(&meshes, 1));
+    let refused = behavior(&["gallery", "--robots", "--only", "bowl", "--out", "x.png"]);
+    assert!(!refused.status.success(), "--robots with --only");
+}

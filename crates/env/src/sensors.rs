@@ -167,8 +167,11 @@ impl CameraSensor {
                 camera.config.clone(),
             )?);
         }
+        let mut renderer = Renderer::new()?;
+        // Robots in their makers' meshes where this process has them (fetched at first use).
+        renderer.set_models(behavior_robots::shared_models());
         Ok(CameraSensor {
-            renderer: Renderer::new()?,
+            renderer,
             rigs,
             categories,
         })

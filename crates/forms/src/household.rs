@@ -195,3 +195,28 @@ pub(crate) fn plant(ctx: Ctx) -> Mesh {
     }
     join(pieces).fit(ctx.half)
 }
+
+/// A person's trunk: rounded hips, a waist, a chest widening to the shoulders, a neck; round in
+/// its profile and flattened front to back, as deep as 0.6 of its width (the BehaviorRobot's
+/// body, whose collider is a round capsule). Seeds vary the chest and the shoulders' slope.
+pub(crate) fn torso(ctx: Ctx) -> Mesh {
+    let chest = ctx.dice.between(0.39, 0.44);
+    let shoulders = ctx.dice.between(0.74, 0.8);
+    let profile = [
+        p(0.0, 0.0),
+        p(0.22, 0.015),
+        p(0.34, 0.09),
+        p(0.35, 0.2),
+        p(0.31, 0.36),
+        p(chest, 0.56),
+        p(0.49, shoulders - 0.06),
+        p(0.47, shoulders),
+        p(0.36, shoulders + 0.05),
+        p(0.18, 0.86),
+        p(0.14, 0.89),
+        p(0.13, 0.97),
+        p(0.0, 1.0),
+    ];
+    let flat = Vector::new(0.6 * ctx.half.x, ctx.half.y, ctx.half.z);
+    revolve(&profile, ctx.detail.around(), even).fit(flat)
+}

@@ -111,6 +111,7 @@ pub fn mesh(form: Form, half: Vector, seed: u64, detail: Detail) -> Mesh {
         Form::Pen => household::pen(ctx),
         Form::Lamp => household::lamp(ctx),
         Form::Plant => household::plant(ctx),
+        Form::Torso => household::torso(ctx),
         Form::Round => produce::round(ctx),
         Form::Apple => produce::apple(ctx),
         Form::Fruit => produce::fruit(ctx),

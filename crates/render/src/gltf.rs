@@ -14,7 +14,7 @@ use crate::appearance::{Shown, look, tone_look};
 use crate::finish::{Finisher, home_seed, object_seed};
 use crate::mesh::{Drawn, MeshStore};
 use behavior_forms::Tone;
-use behavior_sim::{Material, ObjectId, World};
+use behavior_sim::{Material, ModelLibrary, ObjectId, World};
 use serde_json::{Value, json};
 use std::collections::BTreeMap;
 
@@ -187,8 +187,9 @@ const FLOAT: u32 = 5126;
 const UNSIGNED_INT: u32 = 5125;
 
 /// The world as a binary glTF 2.0 file: every present object but `hidden` ones, as the
-/// realistic profile colours it.
-pub fn to_glb(world: &World, hidden: &[ObjectId]) -> Vec<u8> {
+/// realistic profile colours it, with the model pieces `models` holds (robots' links) in their
+/// meshes.
+pub fn to_glb(world: &World, hidden: &[ObjectId], models: &ModelLibrary) -> Vec<u8> {
     let mut store = MeshStore::default();
     let mut b = Builder::default();
     let home = home_seed(world);
@@ -201,7 +202,7 @@ pub fn to_glb(world: &World, hidden: &[ObjectId]) -> Vec<u8> {
         let finisher = Finisher::of(world, id, home, seed);
         let shown = Shown::of(world, id);
         let mut parts = Vec::new();
-        for part in world.core().visual_parts(id) {
+        for part in world.core().visual_parts_with(id, models) {
             let drawn = Drawn::of(&part.shape, seed);
             let mesh_id = store.id(drawn.key, &part.shape);
             let finish = finisher.part(part.visual);
@@ -315,7 +316,7 @@ mod tests {
         };
         world.add(bowl.at(Vector::new(0.0, 0.0, 0.5))).unwrap();
         world.add(table).unwrap();
-        let file = to_glb(&world, &[]);
+        let file = to_glb(&world, &[], &ModelLibrary::EMPTY);
         assert_eq!(&file[..4], b"glTF");
         assert_eq!(
             u32::from_le_bytes(file[8..12].try_into().unwrap()) as usize,

@@ -9,9 +9,16 @@ use crate::mesh::{Drawn, MeshStore, contains};
 use crate::occlusion::Occlusion;
 use crate::profile::ImageProfile;
 use behavior_core::Predicate;
-use behavior_sim::{Form, Material, ObjectId, Primitive, VisualShape, World};
+use behavior_sim::{
+    Form, Material, ModelLibrary, ObjectId, Primitive, VisualPart, VisualShape, World,
+};
 use rapier3d::glamx::{Mat3, Mat4, Vec4};
 use rapier3d::math::{Pose, Vector};
+
+/// Objects with a model piece smaller than this radius on the image, pixels, are drawn from
+/// their own parts: a robot's link a few pixels across shows no more in its maker's mesh than
+/// in our primitives, which cost a hundredth of its triangles.
+const PIECE_ABOVE_PIXELS: f32 = 20.0;
 
 /// What is drawn and how it is labelled.
 pub struct Scene<'a> {
@@ -52,7 +59,12 @@ pub(crate) struct Instance {
 /// Which drawn thing an instance is, to find its transform in the previous frame.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 pub(crate) enum Key {
+    /// An object's part by its index in the object's visual parts.
     Part(u32, u32),
+    /// One of a model piece's meshes by its index (apart from the parts, so that an object
+    /// drawn from its parts one frame and its piece the next takes no part's motion for a
+    /// mesh's).
+    Piece(u32, u32),
     Particle(u32, u8, u32),
     Drop(u32),
 }
@@ -129,6 +141,8 @@ pub(crate) struct Gatherer<'a> {
     pub(crate) profile: ImageProfile,
     /// The home's seed, for its palette.
     pub(crate) home: u64,
+    /// Real meshes of model pieces (robots' links), drawn instead of their objects' parts.
+    pub(crate) models: &'a ModelLibrary,
 }
 
 /// One instance before it is put in drawing order.
@@ -154,7 +168,7 @@ struct Gathered {
     models: Models,
 }
 
-impl Gatherer<'_> {
+impl<'a> Gatherer<'a> {
     pub(crate) fn gather(mut self) -> Batch {
         let planes = frustum(&self.camera.view_projection());
         // Room for a frame like the last one, so that the lists do not grow part by part.
@@ -239,9 +253,12 @@ impl Gatherer<'_> {
         let finisher = (self.profile == ImageProfile::Realistic)
             .then(|| Finisher::of(world, id, self.home, seed));
         let eye = self.camera.pose.translation;
-        for (k, part) in world.core().visual_parts(id).iter().enumerate() {
+        for (k, part) in self.parts(id).iter().enumerate() {
             let drawn = Drawn::of(&part.shape, seed);
-            let key = Key::Part(id.0, k as u32);
+            let key = match part.shape {
+                VisualShape::Piece { .. } => Key::Piece(id.0, k as u32),
+                _ => Key::Part(id.0, k as u32),
+            };
             out.models.push((key, rows(&part.pose, drawn.scale)));
             let centre = part.pose.translation;
             if !visible(planes, centre, drawn.reach) {
@@ -259,6 +276,13 @@ impl Gatherer<'_> {
                 if form == Form::Rounded && Occlusion::worth(&part.pose, inner) {
                     out.occluders.push((part.pose, inner));
                     backdrop = true;
+                }
+            }
+            // A camera inside a model piece's box does not draw it, as with a primitive.
+            if let VisualShape::Piece { held, .. } = part.shape {
+                let local = part.pose.inverse_transform_point(eye);
+                if local.cmpgt(held.bounds[0]).all() && local.cmplt(held.bounds[1]).all() {
+                    continue;
                 }
             }
             if let VisualShape::Primitive(p) = part.shape {
@@ -298,6 +322,20 @@ impl Gatherer<'_> {
                 instance,
             });
         }
+    }
+
+    /// An object's parts to draw: a model piece's meshes where the library holds them and the
+    /// object is at least [`PIECE_ABOVE_PIXELS`] in radius on the image, else its own parts.
+    fn parts(&self, id: ObjectId) -> Vec<VisualPart<'a>> {
+        let core = self.scene.world.core();
+        if core.object(id).model.is_some() {
+            let b = core.local_aabb(id);
+            let centre = core.pose(id) * b.center();
+            if self.pixels(centre, (b.maxs - b.mins).length() * 0.5) >= PIECE_ABOVE_PIXELS {
+                return core.visual_parts_with(id, self.models);
+            }
+        }
+        core.visual_parts(id)
     }
 
     /// Dust as small grey balls, stains as thin dark discs lying flat.

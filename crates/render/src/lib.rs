@@ -24,11 +24,17 @@
 //! [`to_glb`] writes the world as a binary glTF 2.0 file with the same meshes and the realistic
 //! profile's materials.
 //!
+//! Objects that name a model piece (a robot's link) are drawn with the piece's real meshes where
+//! the renderer was handed a library that holds them ([`Renderer::set_models`]; the robots crate
+//! reads Fetch's), once they are 20 pixels or more in radius on the image, and from their own
+//! parts otherwise; shadows are always cast by the parts, which follow the meshes within a few
+//! centimetres. A camera inside a piece's box does not draw it.
+//!
 //! [`Lidar`] casts beams through the world's batched ray queries: a planar fan (Fetch's base
 //! laser) or a multi-beam 3-D scan, as points and as a range image.
 //!
-//! It knows nothing of activities, episodes or robots: an environment places the cameras (an
-//! eye, a head camera) and says what to highlight.
+//! It knows nothing of activities, episodes or robots (a model piece is a name with meshes): an
+//! environment places the cameras (an eye, a head camera) and says what to highlight.
 
 mod appearance;
 mod camera;
@@ -58,6 +64,7 @@ pub use error::RenderError;
 pub use export::{ExportError, save_npy, save_png, to_rgb};
 pub use finish::{Finishes, PartFinish};
 pub use gltf::to_glb;
+pub use mesh::viewer_piece;
 pub use instances::Scene;
 pub use lidar::{Lidar, Pattern, Scan};
 pub use modality::{Frame, Image, Modality, Pixels, UnknownModality};

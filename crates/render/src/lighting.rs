@@ -1,6 +1,8 @@
 //! The light of the realistic profile: a sun whose direction and colour are the home's, sky
 //! and ground ambient, and a lamp under the ceiling of every room that lights that room only
-//! (its walls would hide it from the others; lamps cast no shadows yet, the sun does).
+//! (its walls would hide it from the others). The sun casts shadows, and so does the lamp of
+//! the camera's room (its main light; the other rooms' lamps light what the camera sees of them
+//! through doorways, unshadowed).
 
 use behavior_sim::World;
 use bytemuck::{Pod, Zeroable};
@@ -102,12 +104,15 @@ pub(crate) struct LightsUniform {
     pub(crate) static_shadow: [[f32; 4]; 4],
     pub(crate) dynamic_shadow: [[f32; 4]; 4],
     pub(crate) sky_shadow: [[f32; 4]; 4],
+    /// World to the main lamp's map (a perspective view down from the lamp).
+    pub(crate) lamp_shadow: [[f32; 4]; 4],
     pub(crate) sun: [f32; 4],
     pub(crate) sun_color: [f32; 4],
     pub(crate) sky: [f32; 4],
     pub(crate) ground: [f32; 4],
-    /// x, y, z: whether the sky map, the static map and the dynamic one hold anything; w:
-    /// padding (the shader runs over all eight lamps, unused ones lighting an empty footprint).
+    /// x, y, z, w: whether the sky map, the static map, the dynamic one and the lamp's hold
+    /// anything (the shader runs over all eight lamps, unused ones lighting an empty footprint;
+    /// the first is the main lamp).
     pub(crate) counts: [u32; 4],
     pub(crate) lamp_position: [[f32; 4]; LAMPS],
     pub(crate) lamp_color: [[f32; 4]; LAMPS],
@@ -123,9 +128,26 @@ pub(crate) struct ShadowMatrices {
     pub(crate) moving: Option<Mat4>,
     /// World to the sky map's (the fixed geometry seen from above), if it holds anything.
     pub(crate) sky: Option<Mat4>,
+    /// World to the main lamp's map, if it holds anything.
+    pub(crate) lamp: Option<Mat4>,
 }
 
 impl Lighting {
+    /// The lamp of the room the camera at `eye` is in (the first whose footprint holds it), or
+    /// the nearest where it is in none: the one whose shadows are drawn.
+    pub(crate) fn main_lamp(&self, eye: Vector) -> Option<&Lamp> {
+        let inside = |l: &&Lamp| {
+            let r = l.room;
+            (r[0]..=r[2]).contains(&eye.x) && (r[1]..=r[3]).contains(&eye.y)
+        };
+        self.lamps.iter().find(inside).or_else(|| {
+            self.lamps.iter().min_by(|a, b| {
+                let d = |l: &Lamp| (l.position - eye).length_squared();
+                d(a).total_cmp(&d(b))
+            })
+        })
+    }
+
     /// The uniform for a camera at `eye` whose frame maps to the world by `camera_to_world`.
     pub(crate) fn uniform(
         &self,
@@ -133,10 +155,16 @@ impl Lighting {
         eye: Vector,
         shadows: ShadowMatrices,
     ) -> LightsUniform {
+        // The main lamp first (its shadows are drawn), then the others, nearest first.
+        let main = self.main_lamp(eye);
         let mut nearest: Vec<&Lamp> = self.lamps.iter().collect();
         nearest.sort_by(|a, b| {
-            let d = |l: &Lamp| (l.position - eye).length_squared();
-            d(a).total_cmp(&d(b))
+            let d = |l: &Lamp| {
+                let first = main.is_some_and(|m| std::ptr::eq(m, l));
+                (!first, (l.position - eye).length_squared())
+            };
+            let (da, db) = (d(a), d(b));
+            da.0.cmp(&db.0).then(da.1.total_cmp(&db.1))
         });
         nearest.truncate(LAMPS);
         let mut u = LightsUniform {
@@ -144,6 +172,7 @@ impl Lighting {
             static_shadow: shadows.fixed.unwrap_or(Mat4::IDENTITY).to_cols_array_2d(),
             dynamic_shadow: shadows.moving.unwrap_or(Mat4::IDENTITY).to_cols_array_2d(),
             sky_shadow: shadows.sky.unwrap_or(Mat4::IDENTITY).to_cols_array_2d(),
+            lamp_shadow: shadows.lamp.unwrap_or(Mat4::IDENTITY).to_cols_array_2d(),
             sun: self.sun.extend(0.0).to_array(),
             sun_color: [self.sun_color[0], self.sun_color[1], self.sun_color[2], 0.0],
             sky: [self.sky[0], self.sky[1], self.sky[2], EXPOSURE],
@@ -152,7 +181,7 @@ impl Lighting {
                 u32::from(shadows.sky.is_some()),
                 u32::from(shadows.fixed.is_some()),
                 u32::from(shadows.moving.is_some()),
-                0,
+                u32::from(shadows.lamp.is_some()),
             ],
             lamp_position: [[0.0; 4]; LAMPS],
             lamp_color: [[0.0; 4]; LAMPS],

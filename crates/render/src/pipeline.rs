@@ -92,7 +92,7 @@ fn uniform_entry(binding: u32, visibility: wgpu::ShaderStages) -> wgpu::BindGrou
 }
 
 /// The realistic pass's second bind group: the lights' uniform, the two shadow maps, a
-/// comparison sampler and the sky map (`realistic.wgsl`'s group 1).
+/// comparison sampler, the sky map and the lamp's map (`realistic.wgsl`'s group 1).
 fn lights_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
     let map = |binding| wgpu::BindGroupLayoutEntry {
         binding,
@@ -117,6 +117,7 @@ fn lights_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
                 count: None,
             },
             map(4),
+            map(5),
         ],
     })
 }

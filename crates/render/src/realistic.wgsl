@@ -11,13 +11,15 @@ struct Lights {
     dynamic_shadow: mat4x4<f32>,
     // World to the sky map's (the fixed geometry seen from straight above).
     sky_shadow: mat4x4<f32>,
+    // World to the main lamp's map (in perspective, looking down).
+    lamp_shadow: mat4x4<f32>,
     // Toward the sun.
     sun: vec4<f32>,
     sun_color: vec4<f32>,
     // Ambient from above; w: exposure.
     sky: vec4<f32>,
     ground: vec4<f32>,
-    // x, y, z: whether the sky, the static and the dynamic map hold anything; w: padding.
+    // x, y, z, w: whether the sky, the static, the dynamic and the lamp's map hold anything.
     counts: vec4<u32>,
     lamp_position: array<vec4<f32>, 8>,
     lamp_color: array<vec4<f32>, 8>,
@@ -30,6 +32,7 @@ struct Lights {
 @group(1) @binding(2) var dynamic_map: texture_depth_2d;
 @group(1) @binding(3) var shadow_sampler: sampler_comparison;
 @group(1) @binding(4) var sky_map: texture_depth_2d;
+@group(1) @binding(5) var lamp_map: texture_depth_2d;
 
 struct RealisticVertex {
     @builtin(position) clip: vec4<f32>,
@@ -225,11 +228,13 @@ fn texel(pattern: u32, p: vec3<f32>, extent: vec3<f32>, seed: u32, base: vec3<f3
 
 // ---- light ----
 
-// How much of the sun reaches a world point (1: all), from one map.
+// How much of a light reaches a world point (1: all), from one map. The maps of the sun are
+// orthographic (w is 1), the lamp's in perspective; a point behind the lamp is lit.
 fn sun_through(map: texture_depth_2d, matrix: mat4x4<f32>, p: vec3<f32>) -> f32 {
-    let c = matrix * vec4<f32>(p, 1.0);
+    let h = matrix * vec4<f32>(p, 1.0);
+    let c = h.xyz / max(h.w, 1e-6);
     let uv = vec2<f32>(c.x * 0.5 + 0.5, 0.5 - c.y * 0.5);
-    if (any(uv < vec2<f32>(0.0)) || any(uv > vec2<f32>(1.0)) || c.z > 1.0) {
+    if (any(uv < vec2<f32>(0.0)) || any(uv > vec2<f32>(1.0)) || c.z > 1.0 || h.w <= 0.0) {
         return 1.0;
     }
     return textureSampleCompareLevel(map, shadow_sampler, uv, c.z);
@@ -312,6 +317,8 @@ fn fs_realistic(in: RealisticVertex) -> SurfaceOut {
     if (dot(nw, sun) > 0.0) {
         light += brdf(nw, sun, vw, albedo, roughness, metallic) * lights.sun_color.rgb * sunlit(in.world, nw);
     }
+    // The first lamp is the camera's room's, the one with a shadow map.
+    let lamp_lit = select(1.0, sun_through(lamp_map, lights.lamp_shadow, in.world + nw * 0.02), lights.counts.w != 0u);
     for (var k = 0u; k < 8u; k++) {
         let room = lights.lamp_room[k];
         if (in.world.x < room.x || in.world.y < room.y || in.world.x > room.z || in.world.y > room.w) {
@@ -320,7 +327,8 @@ fn fs_realistic(in: RealisticVertex) -> SurfaceOut {
         let to_lamp = lights.lamp_position[k].xyz - in.world;
         let d2 = dot(to_lamp, to_lamp);
         let l = to_lamp * inverseSqrt(d2);
-        light += brdf(nw, l, vw, albedo, roughness, metallic) * lights.lamp_color[k].rgb * occlusion / (d2 + 0.5);
+        let shade = select(1.0, lamp_lit, k == 0u);
+        light += brdf(nw, l, vw, albedo, roughness, metallic) * lights.lamp_color[k].rgb * occlusion * shade / (d2 + 0.5);
     }
     light += albedo * in.color.w * 3.0;
 

@@ -14,8 +14,10 @@ use crate::pipeline::{Globals, Pipelines, slots};
 use crate::profile::ImageProfile;
 use crate::shadow::{ShadowContext, ShadowMaps};
 use crate::targets::{Pass, Source, Target, Targets};
+use behavior_sim::ModelLibrary;
 use rapier3d::glamx::Mat4;
 use rapier3d::math::Vector;
+use std::sync::Arc;
 
 /// A camera, how it draws colour, and what it saw last, for the flow modalities: keep one per
 /// camera and render through it every step.
@@ -70,6 +72,8 @@ pub struct Renderer {
     stats: FrameStats,
     /// The realistic profile's light and shadow maps, made at its first frame.
     realistic: Option<Realistic>,
+    /// Real meshes of model pieces ([`Renderer::set_models`]).
+    models: Arc<ModelLibrary>,
 }
 
 /// What the realistic profile draws with besides the fast one's.
@@ -88,7 +92,7 @@ impl Realistic {
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
-        let [fixed, moving, sky] = shadows.views();
+        let [fixed, moving, sky, lamp] = shadows.views();
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("lights"),
             layout,
@@ -112,6 +116,10 @@ impl Realistic {
                 wgpu::BindGroupEntry {
                     binding: 4,
                     resource: wgpu::BindingResource::TextureView(sky),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 5,
+                    resource: wgpu::BindingResource::TextureView(lamp),
                 },
             ],
         });
@@ -166,7 +174,20 @@ impl Renderer {
             ambient_occlusion: true,
             stats: FrameStats::default(),
             realistic: None,
+            models: Arc::new(ModelLibrary::EMPTY),
         })
+    }
+
+    /// Draws objects that name a model piece (a robot's link) with the piece's meshes from
+    /// `models` (for Fetch, `behavior_robots::shared_models()`); without, or for a piece it does
+    /// not hold, with their own parts. The meshes made of the previous library are dropped.
+    pub fn set_models(&mut self, models: Arc<ModelLibrary>) {
+        if !Arc::ptr_eq(&models, &self.models) {
+            self.models = models;
+            // Mesh ids change: the shadow maps, which remember what they drew by them, go too.
+            self.meshes = MeshStore::default();
+            self.realistic = None;
+        }
     }
 
     /// The adapter drawing: its name and backend (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)
@@ -219,6 +240,7 @@ impl Renderer {
             cull: self.cull,
             profile,
             home,
+            models: &self.models,
         }
         .gather();
         let motion = modalities
@@ -332,7 +354,9 @@ impl Renderer {
             world: scene.world,
             hidden: scene.hidden,
             meshes: &mut self.meshes,
+            models: &self.models,
             sun: lighting.sun,
+            lamp: lighting.main_lamp(camera.pose.translation).copied(),
         };
         let mut shadows: ShadowMatrices = realistic.shadows.update(&mut ctx, looked_at, half);
         if !self.ambient_occlusion {

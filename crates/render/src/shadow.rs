@@ -10,14 +10,20 @@
 //! over a point's neighbourhood is covered by something higher (a table top, a shelf, the walls
 //! of a corner) is how much ambient light it loses — ambient occlusion from the fixed geometry,
 //! at the cost of four lookups a pixel. It is drawn with the fixed map, when that changes.
+//!
+//! A fourth map is the lamp's: the camera's room's lamp looks down on its room in perspective,
+//! so that a table shades the floor under it from the lamp as from the sun, and the robot casts
+//! its shadow. Its fixed casters are drawn into a map of their own, kept while they and the lamp
+//! stay; when something in the room moves, that map is copied into the lamp's and the moving
+//! casters drawn over it, so one lookup a pixel sees both.
 
 use crate::camera::fixed_bounds;
 use crate::finish::object_seed;
 use crate::instances::rows;
-use crate::lighting::ShadowMatrices;
+use crate::lighting::{Lamp, ShadowMatrices};
 use crate::mesh::{Drawn, MeshStore, hash_words};
 use crate::pipeline::uniform_layout;
-use behavior_sim::{BodyKind, Material, ObjectId, World};
+use behavior_sim::{BodyKind, Material, ModelLibrary, ObjectId, World};
 use rapier3d::glamx::{Mat4, Vec3A, Vec4};
 use rapier3d::math::Vector;
 
@@ -28,14 +34,18 @@ const MOVING_SIZE: u32 = 512;
 /// The sky map's: 4 cm a texel over a 40 m home, finer than the occlusion it feeds (lookups
 /// 15 to 35 cm from a point).
 const SKY_SIZE: u32 = 1024;
+/// The lamp's map: about 2 cm a texel on the floor of a 5 m room (a lamp's shadows are soft).
+const LAMP_SIZE: u32 = 256;
+/// The widest the lamp's view opens, as the tangent of half its angle (150° in all): a long
+/// room's far ends, seen almost edge-on from the lamp, keep no shadow rather than a smeared one.
+const LAMP_SPREAD: f32 = 3.7;
 /// Half the side of the moving map's square at the least, m.
 const MOVING_HALF: f32 = 4.5;
-/// Round shapes cast their coarse mesh (see `mesh.rs`'s `Detail`).
-const CASTER_PIXELS: f32 = 0.0;
 
 pub(crate) const SHADOW_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 
 /// A caster: a stored mesh placed in the world.
+#[derive(Clone, Copy)]
 struct Caster {
     mesh: u32,
     model: [[f32; 4]; 3],
@@ -45,6 +55,7 @@ struct Caster {
 
 /// One map: its texture, its matrix's buffer, and its casters' buffers.
 struct Map {
+    texture: wgpu::Texture,
     view: wgpu::TextureView,
     matrix: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
@@ -61,6 +72,13 @@ pub(crate) struct ShadowMaps {
     fixed: Map,
     moving: Map,
     sky: Map,
+    /// The lamp's fixed casters alone, and what it shows: a hash of them and the lamp's
+    /// matrix, and whether it holds anything.
+    lamp_fixed: Map,
+    lamp_fixed_key: Option<(u64, bool)>,
+    /// The lamp's map: the fixed one with the moving casters over it, and what it shows.
+    lamp: Map,
+    lamp_key: Option<(u64, bool)>,
     /// World to the sky map's clip space, while it holds anything.
     sky_matrix: Option<Mat4>,
     /// What the fixed map shows: a hash of its casters and the sun, and its matrix.
@@ -85,7 +103,10 @@ fn map(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, size: u32) -> Map 
         sample_count: 1,
         dimension: wgpu::TextureDimension::D2,
         format: SHADOW_FORMAT,
-        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+            | wgpu::TextureUsages::TEXTURE_BINDING
+            | wgpu::TextureUsages::COPY_SRC
+            | wgpu::TextureUsages::COPY_DST,
         view_formats: &[],
     });
     let matrix = device.create_buffer(&wgpu::BufferDescriptor {
@@ -104,6 +125,7 @@ fn map(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, size: u32) -> Map 
     });
     Map {
         view: texture.create_view(&wgpu::TextureViewDescriptor::default()),
+        texture,
         matrix,
         bind_group,
         vertices: None,
@@ -142,6 +164,26 @@ fn light_matrix(sun: Vector, lo: Vector, hi: Vector, square: Option<(Vector, f32
         max = Vector::new(c.x + half, c.y + half, max.z).min(max);
     }
     let projection = orthographic((min.x, max.x), (min.y, max.y), (-max.z - 0.5, -min.z + 0.5));
+    projection * view
+}
+
+/// A lamp's view straight down in perspective, wide enough to see its room's footprint on the
+/// floor (at most [`LAMP_SPREAD`]), from 5 cm below it to 1 m under the floor.
+fn lamp_matrix(lamp: &Lamp) -> Mat4 {
+    let p = lamp.position;
+    let [x0, y0, x1, y1] = lamp.room;
+    let across = [x0 - p.x, x1 - p.x, y0 - p.y, y1 - p.y]
+        .into_iter()
+        .fold(0.0f32, |m, d| m.max(d.abs()));
+    let height = p.z.max(0.5);
+    let spread = (across / height).clamp(0.2, LAMP_SPREAD);
+    let view = look_along(p, -Vector::Z, Vector::X);
+    let projection = rapier3d::glamx::glam::camera::rh::proj::directx::perspective(
+        2.0 * spread.atan(),
+        1.0,
+        0.05,
+        height + 1.0,
+    );
     projection * view
 }
 
@@ -227,6 +269,10 @@ impl ShadowMaps {
             fixed: map(device, &bind_layout, FIXED_SIZE),
             moving: map(device, &bind_layout, MOVING_SIZE),
             sky: map(device, &bind_layout, SKY_SIZE),
+            lamp_fixed: map(device, &bind_layout, LAMP_SIZE),
+            lamp_fixed_key: None,
+            lamp: map(device, &bind_layout, LAMP_SIZE),
+            lamp_key: None,
             sky_matrix: None,
             fixed_key: None,
             moving_key: None,
@@ -235,9 +281,14 @@ impl ShadowMaps {
         }
     }
 
-    /// The fixed map's, the moving map's and the sky map's texture views.
-    pub(crate) fn views(&self) -> [&wgpu::TextureView; 3] {
-        [&self.fixed.view, &self.moving.view, &self.sky.view]
+    /// The fixed map's, the moving map's, the sky map's and the lamp's texture views.
+    pub(crate) fn views(&self) -> [&wgpu::TextureView; 4] {
+        [
+            &self.fixed.view,
+            &self.moving.view,
+            &self.sky.view,
+            &self.lamp.view,
+        ]
     }
 
     /// Draws the maps for the world as it is, seen from `sun`, the moving one around
@@ -249,18 +300,19 @@ impl ShadowMaps {
         looked_at: Vector,
         half: f32,
     ) -> ShadowMatrices {
-        let (fixed, moving) = casters(ctx.world, ctx.hidden, ctx.meshes);
+        let (fixed, moving) = casters(ctx.world, ctx.hidden, ctx.meshes, ctx.models);
         let Some((lo, hi)) = bounds(ctx.world) else {
             return ShadowMatrices::default();
         };
         let sun = ctx.sun;
+        let lamp = ctx.lamp.and_then(|l| self.lamp(ctx, &l, [&fixed, &moving]));
         let fixed_key = key(&fixed, &sun.to_array());
         if self.fixed_key.map(|(k, _)| k) != Some(fixed_key) {
             let matrix = light_matrix(sun, lo, hi, None);
-            let drawn = self.draw(ctx, (Which::Fixed, sun), &fixed, matrix);
+            let drawn = self.draw(ctx, (Which::Fixed, Facing::Along(sun)), &fixed, matrix);
             self.fixed_key = Some((fixed_key, drawn.then_some(matrix)));
             let above = light_matrix(Vector::Z, lo, hi, None);
-            let drawn = self.draw(ctx, (Which::Sky, Vector::Z), &fixed, above);
+            let drawn = self.draw(ctx, (Which::Sky, Facing::Along(Vector::Z)), &fixed, above);
             self.sky_matrix = drawn.then_some(above);
         }
         let half = half.max(MOVING_HALF);
@@ -272,33 +324,80 @@ impl ShadowMaps {
         let moving_key = key(&near, &matrix.to_cols_array());
         let drawn = match self.moving_key {
             Some((k, drawn)) if k == moving_key => drawn,
-            _ => self.draw(ctx, (Which::Moving, sun), &near, matrix),
+            _ => self.draw(ctx, (Which::Moving, Facing::Along(sun)), &near, matrix),
         };
         self.moving_key = Some((moving_key, drawn));
         ShadowMatrices {
             fixed: self.fixed_key.and_then(|(_, m)| m),
             moving: drawn.then_some(matrix),
             sky: self.sky_matrix,
+            lamp,
         }
     }
 
+    /// Brings the lamp's map up to date with the casters in its room, `[fixed, moving]`
+    /// (drawing only what changed); its matrix, if it holds anything.
+    fn lamp(
+        &mut self,
+        ctx: &mut ShadowContext<'_>,
+        lamp: &Lamp,
+        [fixed, moving]: [&[Caster]; 2],
+    ) -> Option<Mat4> {
+        let matrix = lamp_matrix(lamp);
+        let [x0, y0, x1, y1] = lamp.room;
+        let in_room = |c: &&Caster| {
+            let (p, r) = (c.centre, c.reach);
+            p.x + r >= x0
+                && p.x - r <= x1
+                && p.y + r >= y0
+                && p.y - r <= y1
+                && p.z - r < lamp.position.z
+        };
+        let facing = Facing::From(lamp.position);
+        let fixed: Vec<Caster> = fixed.iter().filter(in_room).copied().collect();
+        let fixed_key = key(&fixed, &matrix.to_cols_array());
+        let fixed_drawn = match self.lamp_fixed_key {
+            Some((k, drawn)) if k == fixed_key => drawn,
+            _ => self.draw(ctx, (Which::LampFixed, facing), &fixed, matrix),
+        };
+        self.lamp_fixed_key = Some((fixed_key, fixed_drawn));
+        let moving: Vec<Caster> = moving.iter().filter(in_room).copied().collect();
+        // What the fixed map shows is part of what the lamp's shows.
+        let under = [fixed_key as u32, (fixed_key >> 32) as u32].map(f32::from_bits);
+        let lamp_key = key(&moving, &under);
+        let drawn = match self.lamp_key {
+            Some((k, drawn)) if k == lamp_key => drawn,
+            _ => {
+                ctx.encoder.copy_texture_to_texture(
+                    self.lamp_fixed.texture.as_image_copy(),
+                    self.lamp.texture.as_image_copy(),
+                    self.lamp.texture.size(),
+                );
+                let moving_drawn = self.draw(ctx, (Which::Lamp, facing), &moving, matrix);
+                fixed_drawn || moving_drawn
+            }
+        };
+        self.lamp_key = Some((lamp_key, drawn));
+        drawn.then_some(matrix)
+    }
+
     /// Places `casters`, uploads them and records the pass that draws them into one map, seen
-    /// from `toward` (the sun, or straight up for the sky map); whether anything was drawn.
+    /// as `facing` says (along the sun, straight up for the sky map, from the lamp); whether
+    /// anything was drawn.
     fn draw(
         &mut self,
         ctx: &mut ShadowContext<'_>,
-        (which, toward): (Which, Vector),
+        (which, facing): (Which, Facing),
         casters: &[Caster],
         matrix: Mat4,
     ) -> bool {
         self.positions.clear();
         self.triangles.clear();
-        let sun = Vec3A::from(toward);
         for caster in casters {
             place(
                 caster,
                 ctx.meshes,
-                sun,
+                facing,
                 &mut self.positions,
                 &mut self.triangles,
             );
@@ -307,6 +406,13 @@ impl ShadowMaps {
             Which::Fixed => &mut self.fixed,
             Which::Moving => &mut self.moving,
             Which::Sky => &mut self.sky,
+            Which::LampFixed => &mut self.lamp_fixed,
+            Which::Lamp => &mut self.lamp,
+        };
+        // The lamp's map starts as a copy of its fixed casters' map: drawn over, not cleared.
+        let load = match which {
+            Which::Lamp => wgpu::LoadOp::Load,
+            _ => wgpu::LoadOp::Clear(1.0),
         };
         let (device, queue) = (ctx.device, ctx.queue);
         queue.write_buffer(
@@ -335,7 +441,7 @@ impl ShadowMaps {
             depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
                 view: &map.view,
                 depth_ops: Some(wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(1.0),
+                    load,
                     store: wgpu::StoreOp::Store,
                 }),
                 stencil_ops: None,
@@ -367,8 +473,13 @@ pub(crate) struct ShadowContext<'a> {
     pub(crate) world: &'a World,
     pub(crate) hidden: &'a [ObjectId],
     pub(crate) meshes: &'a mut MeshStore,
+    /// Real meshes of model pieces: a robot casts the shadow of the mesh it is drawn with, so
+    /// that no box around it darkens its own surface.
+    pub(crate) models: &'a ModelLibrary,
     /// Toward the sun.
     pub(crate) sun: Vector,
+    /// The lamp of the camera's room, whose shadows are drawn.
+    pub(crate) lamp: Option<Lamp>,
 }
 
 #[derive(Clone, Copy)]
@@ -376,6 +487,16 @@ enum Which {
     Fixed,
     Moving,
     Sky,
+    LampFixed,
+    Lamp,
+}
+
+/// Where a map's light comes from: along a direction (the sun, the sky) or from a point (a
+/// lamp). Of a closed mesh, only the triangles that face the light are drawn.
+#[derive(Clone, Copy)]
+enum Facing {
+    Along(Vector),
+    From(Vector),
 }
 
 /// A hash of what a map shows: its casters (meshes and placements) and `more` (the sun, or the
@@ -409,6 +530,7 @@ fn casters(
     world: &World,
     hidden: &[ObjectId],
     meshes: &mut MeshStore,
+    models: &ModelLibrary,
 ) -> (Vec<Caster>, Vec<Caster>) {
     let (mut fixed, mut moving) = (Vec::new(), Vec::new());
     for (id, object) in world.objects() {
@@ -417,13 +539,13 @@ fn casters(
         }
         let still = object.body_kind == BodyKind::Fixed;
         let seed = object_seed(world, id);
-        for part in world.core().visual_parts(id) {
+        for part in world.core().visual_parts_with(id, models) {
             if part.visual.material == Material::Glass {
                 continue;
             }
             let drawn = Drawn::of(&part.shape, seed);
             let caster = Caster {
-                mesh: meshes.id(drawn.key.sized(CASTER_PIXELS), &part.shape),
+                mesh: meshes.id(drawn.key.caster(), &part.shape),
                 model: rows(&part.pose, drawn.scale),
                 centre: part.pose.translation,
                 reach: drawn.reach,
@@ -439,11 +561,11 @@ fn casters(
 }
 
 /// Appends a caster's triangles, placed in the world; of a closed mesh only those that face
-/// the sun (the others are behind them).
+/// the light (the others are behind them).
 fn place(
     caster: &Caster,
     meshes: &MeshStore,
-    sun: Vec3A,
+    facing: Facing,
     positions: &mut Vec<[f32; 3]>,
     triangles: &mut Vec<u32>,
 ) {
@@ -460,7 +582,11 @@ fn place(
         if mesh.closed {
             let corner = |k: usize| Vec3A::from_array(placed[t[k] as usize]);
             let (a, b, c) = (corner(0), corner(1), corner(2));
-            if (b - a).cross(c - a).dot(sun) <= 0.0 {
+            let toward = match facing {
+                Facing::Along(sun) => Vec3A::from(sun),
+                Facing::From(light) => Vec3A::from(light) - a,
+            };
+            if (b - a).cross(c - a).dot(toward) <= 0.0 {
                 continue;
             }
         }

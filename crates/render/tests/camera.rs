@@ -1,13 +1,17 @@
 //! The renderer on a small real scene: a red box 2 m in front of a camera, apples raw and
 //! cooked, a lidar beside the box.
 
-use behavior_core::{Ability, Predicate};
+use behavior_core::{Ability, Predicate, RoomType};
 use behavior_render::{
     Camera, CategoryTable, Frame, ImageProfile, Lidar, Modality, Pattern, Pixels, Renderer, Scene,
     View,
 };
-use behavior_sim::{Material, ObjectId, ObjectSpec, Part, Primitive, QueryFilter, World};
+use behavior_sim::{
+    Material, Model, ModelLibrary, ModelPiece, ObjectId, ObjectSpec, Part, Primitive, QueryFilter,
+    Room, Visual, VisualMesh, World,
+};
 use rapier3d::math::{Pose, Vector};
+use std::sync::Arc;
 
 fn v(x: f32, y: f32, z: f32) -> Vector {
     Vector::new(x, y, z)
@@ -504,6 +508,60 @@ fn a_board_overhead_dims_the_ground_under_it_beyond_its_shadow() {
     );
 }
 
+/// The lamp of the camera's room casts shadows: a board hung 1 m up under the lamp (which hangs
+/// 2.3 m up over the middle of a 6 m room) darkens the floor straight under it. A ceiling keeps
+/// the sun out and ambient occlusion is off, so that only the lamp's shadow can tell the floor
+/// with the board from the floor without.
+#[test]
+fn the_lamp_of_the_cameras_room_shades_the_floor_under_a_board() {
+    let room = |world: &mut World| {
+        let floor = slab(world, "ground", v(0.0, 0.0, -0.05), v(3.0, 3.0, 0.05));
+        slab(world, "ceiling", v(0.0, 0.0, 2.55), v(3.0, 3.0, 0.05));
+        world.add_room(Room {
+            kind: RoomType::LivingRoom,
+            instance: 0,
+            min: [-3.0, -3.0],
+            max: [3.0, 3.0],
+            floor: Some(floor),
+        });
+        floor
+    };
+    let mut bare = World::default();
+    let ground = room(&mut bare);
+    let mut boarded = World::default();
+    room(&mut boarded);
+    slab(&mut boarded, "board", v(0.0, 0.0, 1.0), v(0.3, 0.3, 0.01));
+    // Low, from the side: the floor's middle is seen under the board.
+    let eye = Camera::looking_at(v(-2.5, 0.0, 0.3), v(0.0, 0.0, 0.0), 64, 64, 0.6);
+    let categories = categories();
+    let mut renderer = Renderer::new().unwrap();
+    renderer.set_ambient_occlusion(false);
+    let mut middle = |world: &World| {
+        let mut view = View::with_profile(eye, ImageProfile::Realistic);
+        let frame = renderer
+            .render(
+                &scene(world, &categories),
+                &mut view,
+                &[Modality::Rgb, Modality::InsSeg],
+            )
+            .unwrap();
+        let Pixels::U32(ids) = &frame.get(Modality::InsSeg).unwrap().pixels else {
+            panic!("instance ids are u32")
+        };
+        let k = 32 * 64 + 32;
+        assert_eq!(ids[k], ground.0 + 1, "the middle pixel is not the floor");
+        u8s(&frame, Modality::Rgb)[3 * k..3 * k + 3]
+            .iter()
+            .map(|&c| u32::from(c))
+            .sum::<u32>() as f32
+    };
+    let (lit, shaded) = (middle(&bare), middle(&boarded));
+    assert!(
+        shaded < 0.85 * lit,
+        "the floor under the board is {shaded}, without the board {lit}"
+    );
+}
+
 /// Patterns follow the object's seed (its name): two boards alike but for their names differ
 /// in texture, and each is drawn the same again.
 #[test]
@@ -536,4 +594,106 @@ fn patterns_change_with_the_object_and_repeat_for_it() {
         differing > 300,
         "only {differing} channels differ between two boards"
     );
+}
+
+/// An 8-sided diamond (an octahedron) of `radius`, as a model piece's mesh: closed, outward.
+fn diamond(radius: f32, color: [u8; 3]) -> VisualMesh {
+    let r = radius;
+    let vertices = vec![
+        v(r, 0.0, 0.0),
+        v(-r, 0.0, 0.0),
+        v(0.0, r, 0.0),
+        v(0.0, -r, 0.0),
+        v(0.0, 0.0, r),
+        v(0.0, 0.0, -r),
+    ];
+    let triangles = vec![
+        [0, 2, 4],
+        [2, 1, 4],
+        [1, 3, 4],
+        [3, 0, 4],
+        [2, 0, 5],
+        [1, 2, 5],
+        [3, 1, 5],
+        [0, 3, 5],
+    ];
+    VisualMesh {
+        link: None,
+        vertices,
+        triangles,
+        visual: Visual {
+            color,
+            material: Material::Plastic,
+        },
+    }
+}
+
+#[test]
+fn a_model_piece_is_drawn_from_its_meshes_where_the_renderer_holds_them() {
+    let piece = ModelPiece {
+        model: Model::Fetch,
+        piece: 3,
+    };
+    let mut world = World::default();
+    // A 20 cm box standing in for the piece, 28 cm ahead: 23 px in radius on the image.
+    let cube = Part::new(Primitive::Box {
+        half_extents: Vector::splat(0.1),
+    });
+    let mut spec = ObjectSpec::new("link_1", "agent.n.01", vec![cube])
+        .looks([220, 30, 30], Material::Plastic)
+        .at(v(0.28, 0.0, 0.0))
+        .fixed();
+    spec.model = Some(piece);
+    let id = world.add(spec).unwrap();
+    let mut library = ModelLibrary::default();
+    library.insert(piece, vec![diamond(0.1, [20, 200, 20])]);
+    let library = Arc::new(library);
+    let categories = categories();
+    let mut renderer = Renderer::new().unwrap();
+    let draw = |renderer: &mut Renderer, camera: Camera| {
+        let mut view = View::new(camera);
+        let frame = renderer
+            .render(
+                &scene(&world, &categories),
+                &mut view,
+                &[Modality::Rgb, Modality::InsSeg],
+            )
+            .unwrap();
+        let Pixels::U32(ins) = &frame.get(Modality::InsSeg).unwrap().pixels else {
+            panic!("instance ids are u32");
+        };
+        let count = ins.iter().filter(|&&i| i == id.0 + 1).count();
+        let centre = frame.index(64, 64);
+        let rgb = u8s(&frame, Modality::Rgb)[3 * centre..3 * centre + 3].to_vec();
+        (count, rgb)
+    };
+    let ahead = Camera::eye(Pose::IDENTITY);
+    let (boxed, box_rgb) = draw(&mut renderer, ahead);
+    renderer.set_models(library.clone());
+    let (cut, diamond_rgb) = draw(&mut renderer, ahead);
+    // Seen along an axis, the diamond's outline is a square turned 45° in its middle plane, 28 cm
+    // away, with corners 10 cm out; the box's near face, 18 cm away, is 20 cm wide: in
+    // perspective 2·(0.1/0.28)² against (0.2/0.18)², a fifth of the pixels.
+    assert!(boxed > 1000, "the box covers {boxed} px");
+    let share = cut as f32 / boxed as f32;
+    assert!((0.16..0.26).contains(&share), "{cut} of {boxed} px");
+    assert!(
+        box_rgb[0] > 2 * box_rgb[1],
+        "the stand-in is red: {box_rgb:?}"
+    );
+    assert!(
+        diamond_rgb[1] > 2 * diamond_rgb[0],
+        "the mesh is green: {diamond_rgb:?}"
+    );
+    // Far away (under 20 px in radius) the stand-in is drawn again: 10 m ahead, about 3 px.
+    let far = Camera::eye(Pose::from_translation(v(-9.0, 0.0, 0.0)));
+    let (far_count, _) = draw(&mut renderer, far);
+    let mut plain = Renderer::new().unwrap();
+    assert_eq!(draw(&mut plain, far).0, far_count, "far away it is its box");
+    // A camera inside the piece's box draws nothing of it.
+    let inside = Camera::eye(Pose::from_translation(v(0.28, 0.0, 0.0)));
+    assert_eq!(draw(&mut renderer, inside).0, 0);
+    // Without the library again, the box is back, pixel for pixel.
+    renderer.set_models(Arc::new(ModelLibrary::default()));
+    assert_eq!(draw(&mut renderer, ahead), (boxed, box_rgb));
 }

@@ -8,7 +8,7 @@
 
 use crate::hand::Side;
 use behavior_core::AGENT_SYNSET;
-use behavior_sim::{BodyKind, Material, ObjectSpec, Part, Primitive};
+use behavior_sim::{BodyKind, Form, Material, ObjectSpec, Part, Primitive};
 use rapier3d::math::{Pose, Vector};
 
 /// The body's mass, kg.
@@ -60,7 +60,9 @@ pub(crate) fn body_spec(name: &str, pose: Pose) -> ObjectSpec {
     let volume = pi * r * r * cylinder + 4.0 / 3.0 * pi * r.powi(3);
     let mut spec = ObjectSpec::new(name, AGENT_SYNSET, vec![Part::new(body_shape())])
         .body(BodyKind::KinematicVelocity)
-        .looks([90, 90, 200], Material::Plastic);
+        .looks([200, 204, 212], Material::Plastic);
+    // Drawn as a trunk with shoulders over its capsule, as the original's body mesh.
+    spec.form = Form::Torso;
     spec.pose = pose;
     spec.density = BODY_MASS / volume;
     spec

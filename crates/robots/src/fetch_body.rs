@@ -653,6 +653,7 @@ pub(crate) fn link_spec(link: FetchLink, pose: Pose) -> ObjectSpec {
     let mut spec = ObjectSpec::new(link.name(), AGENT_SYNSET, parts)
         .body(BodyKind::KinematicVelocity)
         .looks(colour, Material::Plastic);
+    spec.model = Some(crate::fetch_model::fetch_piece(link));
     spec.pose = pose;
     spec.density = link_mass(link) / total;
     if link == FetchLink::Gripper {

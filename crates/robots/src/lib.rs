@@ -24,8 +24,14 @@
 //! moving the arm (IK, the fixed-body checks and the awake fingers) — where DESIGN.md §4
 //! measured 0.65–3 ms for a simulated 9-link arm while driving.
 //!
-//! It knows nothing of BDDL, activities, episodes, rewards, metrics or rendering: an environment
-//! builds on it, and reads the world through [`behavior_sim`] as any other crate does.
+//! **Looks.** Fetch's links name model pieces whose real meshes ([`shared_models`]) come from
+//! gymnasium-robotics' MuJoCo model, fetched from PyPI at first use (`fetch_model.rs`); the
+//! BehaviorRobot's body is drawn as a trunk ([`behavior_sim::Form::Torso`]). Collision is our own
+//! primitives either way.
+//!
+//! It knows nothing of BDDL, activities, episodes, rewards, metrics or how anything is drawn (it
+//! hands renderers the meshes): an environment builds on it, and reads the world through
+//! [`behavior_sim`] as any other crate does.
 //!
 //! ```
 //! use behavior_robots::{Action, BehaviorRobot, BODY_HEIGHT};
@@ -71,7 +77,8 @@
 //! and their constants), `motion.rs` (from an action to the step's targets), `follow.rs` (how a
 //! palm follows its target), `grasp.rs` (assisted grasping), `proprioception.rs`, `relative.rs`
 //! (robot-relative predicates) and `robot.rs` (the robot as a step hook); for Fetch,
-//! `fetch_body.rs` (joints, links, forward kinematics), `ik.rs`, `fetch_action.rs`,
+//! `fetch_body.rs` (joints, links, forward kinematics), `fetch_model.rs` (its real meshes),
+//! `ik.rs`, `fetch_action.rs`,
 //! `fetch_proprioception.rs` and `fetch.rs` (the robot as a step hook); `embodiment.rs` (either
 //! robot).
 
@@ -83,6 +90,7 @@ mod embodiment;
 mod fetch;
 mod fetch_action;
 mod fetch_body;
+mod fetch_model;
 mod fetch_proprioception;
 mod follow;
 mod grasp;
@@ -109,6 +117,7 @@ pub use fetch_body::{
     FETCH_MASS, FINGER_OPEN, FetchJoint, FetchJoints, FetchLink, GRIPPER_CENTRE, GRIPPER_FRICTION,
     GRIPPER_OFFSET, JointInfo, START_TILT, START_TORSO, WHEEL_RADIUS, WHEEL_SEPARATION, link_mass,
 };
+pub use fetch_model::{ModelError, fetch_models, fetch_piece, shared_models};
 pub use fetch_proprioception::FetchProprioception;
 pub use grasp::GraspRules;
 pub use hand::{

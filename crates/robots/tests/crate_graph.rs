@@ -1,5 +1,6 @@
 //! Robots stand on the world and nothing above it (DESIGN.md §3): among our crates the manifest
-//! names `behavior-sim` and the vocabulary crate only — no BDDL, assets, sampling or episode.
+//! names `behavior-sim`, the vocabulary crate and `behavior-data` (a leaf that finds fetched
+//! files, for Fetch's meshes) only — no BDDL, assets, sampling or episode.
 
 #[test]
 fn the_robots_depend_on_the_world_and_the_vocabulary_only() {
@@ -13,7 +14,7 @@ fn the_robots_depend_on_the_world_and_the_vocabulary_only() {
     assert!(ours.contains(&"behavior-sim"), "{ours:?}");
     assert!(
         ours.iter()
-            .all(|d| ["behavior-sim", "behavior-core"].contains(d)),
-        "behavior-robots may depend on behavior-sim and behavior-core only: {ours:?}"
+            .all(|d| ["behavior-sim", "behavior-core", "behavior-data"].contains(d)),
+        "behavior-robots may depend on behavior-sim, behavior-core and behavior-data only: {ours:?}"
     );
 }

@@ -54,6 +54,7 @@ impl Core {
             visual: spec.visual,
             meshes: spec.meshes,
             form: spec.form,
+            model: spec.model,
             replaced_by: None,
             retired: false,
         });

@@ -103,5 +103,8 @@ pub use states::water::{
     STEPS_BETWEEN_DROPS,
 };
 pub use step::StepHooks;
-pub use visual::{Form, Material, Visual, VisualMesh, VisualPart, VisualShape};
+pub use visual::{
+    Form, HeldMesh, Material, Model, ModelLibrary, ModelPiece, Visual, VisualMesh, VisualPart,
+    VisualShape,
+};
 pub use world::{Snapshot, World};

@@ -6,7 +6,7 @@
 //! each on one joint to the object's body or to an earlier link, so a chain is written as it stands
 //! when all its joints read zero.
 
-use crate::visual::{Form, Material, Visual, VisualMesh};
+use crate::visual::{Form, Material, ModelPiece, Visual, VisualMesh};
 use behavior_core::{Ability, AbilityParams, ParamValue};
 use rapier3d::dynamics::{ImpulseJointHandle, MultibodyJointHandle, RigidBodyHandle};
 use rapier3d::geometry::ColliderHandle;
@@ -225,6 +225,10 @@ pub struct ObjectSpec {
     /// whose colliders are a bottom and four walls); [`Form::Primitive`] draws the parts. Not
     /// passed on to the halves of a sliced object.
     pub form: Form,
+    /// A piece of a real model (a robot's link) drawn instead of the body's parts where the
+    /// renderer holds its meshes ([`crate::ModelLibrary`]); the parts (in their forms) are the
+    /// look where it does not.
+    pub model: Option<ModelPiece>,
 }
 
 /// Where an ability acts, as a point in the object's frame.
@@ -343,6 +347,7 @@ impl ObjectSpec {
             visual: Visual::default(),
             meshes: Vec::new(),
             form: Form::Primitive,
+            model: None,
         }
     }
 
@@ -431,6 +436,8 @@ pub struct Object {
     pub meshes: Vec<VisualMesh>,
     /// The body's form ([`ObjectSpec::form`]).
     pub form: Form,
+    /// The body's model piece ([`ObjectSpec::model`]).
+    pub model: Option<ModelPiece>,
     /// The two objects that replaced it when it was sliced: it has left the simulation.
     pub replaced_by: Option<[ObjectId; 2]>,
     /// Taken out of the simulation by [`crate::Core::retire`] (a stand-in a robot replaced).

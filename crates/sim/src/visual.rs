@@ -8,6 +8,7 @@ use crate::core::Core;
 use crate::object::{ObjectId, Part, Primitive};
 use rapier3d::math::{Pose, Vector};
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 
 /// What a surface is made of.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -145,11 +146,14 @@ pub enum Form {
     Lamp,
     /// A plant in a pot: pot, soil and a crown of leaves.
     Plant,
+    /// A person's trunk from the hips to the neck, with shoulders, 0.6 as deep (along x) as
+    /// wide: the BehaviorRobot's body.
+    Torso,
 }
 
 impl Form {
     /// Every form, in order.
-    pub const ALL: [Form; 29] = [
+    pub const ALL: [Form; 30] = [
         Form::Primitive,
         Form::Rounded,
         Form::Soft,
@@ -179,6 +183,7 @@ impl Form {
         Form::Pen,
         Form::Lamp,
         Form::Plant,
+        Form::Torso,
     ];
 }
 
@@ -195,6 +200,86 @@ pub struct VisualMesh {
     pub visual: Visual,
 }
 
+/// A model whose meshes are real (a robot maker's) and come from a package fetched at run time,
+/// never from the world: a world names the piece, a renderer holds the meshes
+/// ([`ModelLibrary`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+pub enum Model {
+    /// Fetch, from gymnasium-robotics' MuJoCo model.
+    Fetch,
+}
+
+/// One rigid piece of a [`Model`] (a link), numbered by whoever builds the model (for Fetch,
+/// the robots crate's link order).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+pub struct ModelPiece {
+    /// Which model.
+    pub model: Model,
+    /// Which of its pieces.
+    pub piece: u8,
+}
+
+/// The meshes of model pieces a renderer holds, each piece's in the frame of the object (or
+/// body) that names it. Plain data, built once per process and shared by every renderer.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ModelLibrary {
+    pieces: BTreeMap<ModelPiece, Vec<HeldMesh>>,
+}
+
+/// A model piece's mesh with the numbers a renderer asks of it every frame, worked out once.
+#[derive(Clone, Debug, PartialEq)]
+pub struct HeldMesh {
+    /// The mesh, in its piece's frame.
+    pub mesh: VisualMesh,
+    /// The corners of the box around its vertices.
+    pub bounds: [Vector; 2],
+    /// The farthest vertex from the frame's origin, m.
+    pub reach: f32,
+}
+
+impl HeldMesh {
+    fn new(mesh: VisualMesh) -> HeldMesh {
+        let bounds = mesh.vertices.iter().fold(
+            [Vector::splat(f32::MAX), Vector::splat(f32::MIN)],
+            |[lo, hi], &p| [lo.min(p), hi.max(p)],
+        );
+        let reach = mesh.vertices.iter().map(|v| v.length()).fold(0.0, f32::max);
+        HeldMesh {
+            mesh,
+            bounds,
+            reach,
+        }
+    }
+}
+
+impl ModelLibrary {
+    /// A library with no pieces: every model is drawn from its object's parts.
+    pub const EMPTY: ModelLibrary = ModelLibrary {
+        pieces: BTreeMap::new(),
+    };
+
+    /// Adds (or replaces) a piece's meshes.
+    pub fn insert(&mut self, piece: ModelPiece, meshes: Vec<VisualMesh>) {
+        self.pieces
+            .insert(piece, meshes.into_iter().map(HeldMesh::new).collect());
+    }
+
+    /// A piece's meshes, if held.
+    pub fn get(&self, piece: ModelPiece) -> Option<&[HeldMesh]> {
+        self.pieces.get(&piece).map(Vec::as_slice)
+    }
+
+    /// Every piece held, in order.
+    pub fn pieces(&self) -> impl Iterator<Item = (ModelPiece, &[HeldMesh])> {
+        self.pieces.iter().map(|(&p, m)| (p, m.as_slice()))
+    }
+
+    /// Whether it holds no piece.
+    pub fn is_empty(&self) -> bool {
+        self.pieces.is_empty()
+    }
+}
+
 /// The shape of a drawn part.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum VisualShape<'a> {
@@ -202,6 +287,15 @@ pub enum VisualShape<'a> {
     Primitive(&'a Primitive),
     /// A visual-only mesh.
     Mesh(&'a VisualMesh),
+    /// One mesh of a model piece held by a [`ModelLibrary`], in the part's frame.
+    Piece {
+        /// The piece.
+        piece: ModelPiece,
+        /// Which of the piece's meshes.
+        index: u16,
+        /// The mesh (vertices in the part's frame) and its bounds.
+        held: &'a HeldMesh,
+    },
     /// A detailed form filling a box of these half extents, centred on the part's pose.
     Formed {
         /// Which form.
@@ -228,8 +322,19 @@ impl Core {
     /// What to draw for an object, posed as it is now: its collision parts, each in its form (or,
     /// for a body or link that has visual meshes, those instead; for a body with a form of its
     /// own, that form filling the box around its parts). Nothing for an object replaced by its
-    /// halves.
+    /// halves. A model piece is drawn from the parts: see [`Core::visual_parts_with`].
     pub fn visual_parts(&self, id: ObjectId) -> Vec<VisualPart<'_>> {
+        static NO_MODELS: ModelLibrary = ModelLibrary::EMPTY;
+        self.visual_parts_with(id, &NO_MODELS)
+    }
+
+    /// [`Core::visual_parts`], but a body naming a model piece that `models` holds is drawn
+    /// from the piece's meshes instead of its parts.
+    pub fn visual_parts_with<'a>(
+        &'a self,
+        id: ObjectId,
+        models: &'a ModelLibrary,
+    ) -> Vec<VisualPart<'a>> {
         let object = self.object(id);
         if !object.is_present() {
             return Vec::new();
@@ -253,7 +358,22 @@ impl Core {
             let meshes: Vec<&VisualMesh> =
                 object.meshes.iter().filter(|m| m.link == link).collect();
             let pose = frame(link);
-            if link.is_none() && meshes.is_empty() && object.form != Form::Primitive {
+            let piece = object
+                .model
+                .filter(|_| link.is_none())
+                .and_then(|p| Some((p, models.get(p)?)));
+            if let Some((piece, held)) = piece {
+                out.extend(held.iter().enumerate().map(|(index, held)| VisualPart {
+                    shape: VisualShape::Piece {
+                        piece,
+                        index: index as u16,
+                        held,
+                    },
+                    pose,
+                    link,
+                    visual: held.mesh.visual,
+                }));
+            } else if link.is_none() && meshes.is_empty() && object.form != Form::Primitive {
                 let b = self.local_aabb(id);
                 out.push(VisualPart {
                     shape: VisualShape::Formed {

@@ -7,8 +7,8 @@ mod common;
 use behavior_core::Ability;
 use behavior_sim::{
     AttachmentKind, AttachmentSpec, BodyKind, BodyRef, Drive, JointKind, JointModel, JointSpec,
-    LinkSpec, Material, ObjectId, ObjectSpec, Part, PointKind, Primitive, QueryFilter, StepHooks,
-    Velocity, Visual, VisualShape, World, groups,
+    LinkSpec, Material, Model, ModelLibrary, ModelPiece, ObjectId, ObjectSpec, Part, PointKind,
+    Primitive, QueryFilter, StepHooks, Velocity, Visual, VisualMesh, VisualShape, World, groups,
 };
 use common::*;
 use rapier3d::math::{Pose, Rotation, Vector};
@@ -655,6 +655,41 @@ fn every_part_is_described_with_colour_material_and_pose_and_links_follow_their_
         "the door part swung: {closed} → {open}"
     );
     assert!((body - v(0.2, 0.0, 0.3)).length() < 1e-6);
+    // A cabinet naming a model piece: drawn from its parts until a library holds the piece,
+    // then from the piece's meshes on its body (the door, a link, keeps its part). The world
+    // keeps the name through a checkpoint.
+    let piece = ModelPiece {
+        model: Model::Fetch,
+        piece: 7,
+    };
+    let parts = world.core().object(cabinet).parts.clone();
+    let mut named = ObjectSpec::new("cabinet_2", "cabinet.n.01", parts).fixed();
+    named.model = Some(piece);
+    let named = world.add(named).unwrap();
+    let mut library = ModelLibrary::default();
+    let square = VisualMesh {
+        link: None,
+        vertices: vec![v(0.0, 0.0, 0.0), v(1.0, 0.0, 0.0), v(0.0, 1.0, 0.0)],
+        triangles: vec![[0, 1, 2]],
+        visual: red,
+    };
+    assert_eq!(world.core().visual_parts_with(named, &library).len(), 2);
+    library.insert(piece, vec![square.clone(), square]);
+    let held = world.core().visual_parts_with(named, &library);
+    assert_eq!(held.len(), 2);
+    assert!(
+        matches!(held[1].shape, VisualShape::Piece { piece: p, index: 1, held } if p == piece && held.reach == 1.0 && held.bounds[1] == v(1.0, 1.0, 0.0)),
+        "{:?}",
+        held[1].shape
+    );
+    assert_eq!(held[0].visual, red);
+    assert_eq!(
+        world.core().visual_parts(named).len(),
+        2,
+        "no library, its parts"
+    );
+    let loaded = World::from_bytes(&world.to_bytes()).unwrap();
+    assert_eq!(loaded.core().object(named).model, Some(piece));
 }
 
 /// Counts hook calls and, as a controller would, drives a ball sideways every substep.

@@ -13,7 +13,7 @@ use behavior_core::Predicate;
 use behavior_env::Env;
 use behavior_forms::Tone;
 use behavior_render::{DUST, Finishes, Look, STAIN, WATER, state_look, tone_look};
-use behavior_sim::{Form, ObjectId, Primitive, Visual, VisualShape, World};
+use behavior_sim::{Form, ModelLibrary, ObjectId, Primitive, Visual, VisualShape, World};
 use rapier3d::math::{Pose, Vector};
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -190,14 +190,14 @@ pub(crate) struct SceneView {
 }
 
 /// The world's current parts, grouped into nodes.
-pub(crate) fn describe(world: &World) -> (SceneView, Vec<Node>) {
+pub(crate) fn describe(world: &World, models: &ModelLibrary) -> (SceneView, Vec<Node>) {
     let core = world.core();
     let mut bodies = Vec::new();
     let mut looks = Vec::new();
     let mut nodes = Vec::new();
     let finishes = Finishes::of(world);
     for (id, object) in core.objects() {
-        let parts = core.visual_parts(id);
+        let parts = core.visual_parts_with(id, models);
         let links = std::iter::once(None).chain((0..object.links.len()).map(Some));
         for link in links {
             let frame = node_pose(world, id, link);
@@ -318,14 +318,33 @@ fn shape_of(shape: &VisualShape, name: &str) -> Shape {
             }
         },
         VisualShape::Mesh(m) => mesh(&m.vertices, &m.triangles),
+        // A robot's link in its maker's mesh, simplified and creased as the cameras draw it
+        // mid-size: smooth where the page averages its normals, sharp at its edges.
+        VisualShape::Piece { held, .. } => {
+            let (positions, triangles) = behavior_render::viewer_piece(held);
+            Shape::Form(FormMesh {
+                vertices: tenths_of_millimetres(positions.into_iter().flatten().collect()),
+                triangles,
+                details: Vec::new(),
+            })
+        }
     }
 }
 
 fn mesh(vertices: &[Vector], triangles: &[[u32; 3]]) -> Shape {
     Shape::Mesh {
-        vertices: flat(vertices),
+        vertices: tenths_of_millimetres(flat(vertices)),
         triangles: triangles.iter().flatten().copied().collect(),
     }
+}
+
+/// Coordinates rounded to 0.1 mm: nobody sees less at the viewer, and the scene's text is
+/// shorter by half.
+fn tenths_of_millimetres(values: Vec<f32>) -> Vec<f32> {
+    values
+        .into_iter()
+        .map(|c| (c * 1e4).round() / 1e4)
+        .collect()
 }
 
 fn flat(points: &[Vector]) -> Vec<f32> {
@@ -354,10 +373,7 @@ fn formed(made: &behavior_forms::Mesh) -> FormMesh {
         triangles.extend(indices);
     }
     FormMesh {
-        vertices: flat(&made.positions)
-            .into_iter()
-            .map(|c| (c * 1e4).round() / 1e4)
-            .collect(),
+        vertices: tenths_of_millimetres(flat(&made.positions)),
         triangles,
         details,
     }
@@ -445,7 +461,8 @@ impl<'a> Describe<'a> {
     }
 
     pub(crate) fn build(self) -> (SceneView, SceneDescription) {
-        let (view, nodes) = describe(self.world);
+        // Robots in their makers' meshes where this process has them.
+        let (view, nodes) = describe(self.world, &behavior_robots::shared_models());
         let core = self.world.core();
         let robot = self
             .robot
@@ -489,5 +506,37 @@ mod tests {
         let tone = |t: &[u32]| made.tones[t[0] as usize];
         assert!(triangles[..body].chunks(3).all(|t| tone(t) == Tone::Body));
         assert!(triangles[body..].chunks(3).all(|t| tone(t) == Tone::Stem));
+    }
+
+    #[test]
+    fn fetch_reaches_the_page_in_its_makers_meshes_simplified_and_creased() {
+        let mut world = World::default();
+        behavior_robots::Fetch::add(&mut world, Pose::IDENTITY).unwrap();
+        let models = behavior_robots::shared_models();
+        assert!(
+            !models.is_empty(),
+            "Fetch's meshes could not be had (gymnasium-robotics from PyPI)"
+        );
+        let triangles = |nodes: &[Node]| -> (usize, usize) {
+            let shapes = nodes.iter().flat_map(|n| &n.parts).map(|p| &p.shape);
+            let forms: Vec<&FormMesh> = shapes
+                .filter_map(|s| match s {
+                    Shape::Form(f) => Some(f),
+                    _ => None,
+                })
+                .collect();
+            (forms.len(), forms.iter().map(|f| f.triangles.len() / 3).sum())
+        };
+        let (_, with) = describe(&world, &models);
+        let (_, without) = describe(&world, &ModelLibrary::EMPTY);
+        let (pieces, sent) = triangles(&with);
+        // Every link's meshes (the base's four, the gripper's two), on a 4 mm grid.
+        assert_eq!(pieces, 15, "{pieces} meshes");
+        assert!((8_000..20_000).contains(&sent), "{sent} triangles");
+        assert_eq!(triangles(&without), (0, 0), "without meshes, its primitives");
+        // The gripper's fingers stay our pads, with or without.
+        let fingers = |nodes: &[Node]| nodes.iter().filter(|n| n.link.is_some()).count();
+        assert_eq!(fingers(&with), 2);
+        assert_eq!(fingers(&with), fingers(&without));
     }
 }

@@ -25,6 +25,8 @@ pub(crate) struct Package {
     pub(crate) keep: &'static [&'static str],
     /// A file below `folder` whose presence shows the cache is complete.
     pub(crate) marker: &'static str,
+    /// How to use a copy fetched by hand, for the error when fetching fails.
+    pub(crate) by_hand: &'static str,
 }
 
 impl Package {
@@ -51,6 +53,7 @@ impl Package {
         DataError::Fetch {
             package: self.spec(),
             reason: reason.into(),
+            by_hand: self.by_hand,
         }
     }
 

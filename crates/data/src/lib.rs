@@ -43,13 +43,15 @@ pub enum DataError {
     },
     /// pip, the network or unpacking failed.
     #[error(
-        "could not fetch {package} from PyPI: {reason}\n  Fetch it by hand with `python3 -m pip download --no-deps --no-binary :all: {package}`, unpack it, and point {ENV_VAR} (for bddl, or --data-dir) or {ROBOT_ASSETS_ENV_VAR} (for gymnasium-robotics) at the folder named in the behavior-data crate's documentation."
+        "could not fetch {package} from PyPI: {reason}\n  Fetch it by hand with `python3 -m pip download --no-deps --no-binary :all: {package}`, unpack it, and {by_hand}."
     )]
     Fetch {
         /// `name==version`.
         package: String,
         /// What went wrong.
         reason: String,
+        /// Where to point the program at a copy fetched by hand.
+        by_hand: &'static str,
     },
     /// A file or directory could not be read or written.
     #[error("cannot read {path}: {source}")]

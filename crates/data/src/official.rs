@@ -30,6 +30,7 @@ const BDDL: Package = Package {
     folder: "bddl",
     keep: &[],
     marker: "hierarchy_owned.json",
+    by_hand: "point BEHAVIOR_DATA_DIR (or --data-dir) at its `bddl/` folder",
 };
 
 /// A located data directory.

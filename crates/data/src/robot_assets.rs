@@ -23,6 +23,7 @@ const GYMNASIUM_ROBOTICS: Package = Package {
     folder: "gymnasium_robotics/envs/assets",
     keep: &["fetch", "stls/fetch", "LICENSE.md"],
     marker: "fetch/robot.xml",
+    by_hand: "point BEHAVIOR_ROBOT_ASSETS at its `gymnasium_robotics/envs/assets` folder (or set it to `none` to draw robots from their own shapes)",
 };
 
 /// The files every assets folder must have.

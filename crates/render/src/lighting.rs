@@ -117,6 +117,8 @@ pub(crate) struct LightsUniform {
     pub(crate) lamp_position: [[f32; 4]; LAMPS],
     pub(crate) lamp_color: [[f32; 4]; LAMPS],
     pub(crate) lamp_room: [[f32; 4]; LAMPS],
+    /// x: how much of the materials' normal detail is drawn (1 or 0); y, z, w: padding.
+    pub(crate) detail: [f32; 4],
 }
 
 /// How the shadow maps see the world this frame.
@@ -187,6 +189,7 @@ impl Lighting {
             lamp_color: [[0.0; 4]; LAMPS],
             // An empty footprint (min above max): a lamp not in use lights nothing.
             lamp_room: [[1.0, 1.0, -1.0, -1.0]; LAMPS],
+            detail: [1.0, 0.0, 0.0, 0.0],
         };
         for (k, lamp) in nearest.iter().enumerate() {
             u.lamp_position[k] = lamp.position.extend(1.0).to_array();

@@ -25,6 +25,8 @@ struct Lights {
     lamp_color: array<vec4<f32>, 8>,
     // The footprint each lamp lights: min x, min y, max x, max y.
     lamp_room: array<vec4<f32>, 8>,
+    // x: how much of the materials' normal detail is drawn (1 or 0); y, z, w: padding.
+    detail: vec4<f32>,
 };
 
 @group(1) @binding(0) var<uniform> lights: Lights;
@@ -98,6 +100,12 @@ fn noise(p: vec3<f32>, seed: u32) -> f32 {
 struct Texel {
     tint: vec3<f32>,
     roughness: f32,
+    // The surface's height over its plane, m: grout and seams sunk, threads and grain raised
+    // (the normal detail's source).
+    height: f32,
+    // The width of the relief's features, m: the relief is drawn where they span three pixels
+    // or more, faded out where they span one (finer relief only aliases into speckle).
+    relief: f32,
 };
 
 // Floor boards are 14 cm wide along x and up to 1.4 m long, their ends staggered row by row.
@@ -161,8 +169,9 @@ fn rings(q: vec3<f32>, wobble: f32, fibre: f32) -> f32 {
     return 1.0 - smoothstep(0.55, 0.95, r) * 0.28 - fibre * 0.1;
 }
 
-// The tint of floor boards at `p`: each board its own shade, seams darker, grain in it.
-fn planks(p: vec3<f32>, grain: f32, seed: u32) -> f32 {
+// The tint of floor boards at `p` (each board its own shade, seams darker, grain in it) and its
+// height (the seams sunk 2 mm).
+fn planks(p: vec3<f32>, grain: f32, seed: u32) -> vec2<f32> {
     let row = floor(p.y / BOARD_WIDTH);
     let shift = lattice(vec3<i32>(i32(row), 0, 0), seed) * BOARD_LENGTH;
     let board = floor((p.x + shift) / BOARD_LENGTH);
@@ -171,7 +180,8 @@ fn planks(p: vec3<f32>, grain: f32, seed: u32) -> f32 {
     let seam = min(min(across, 1.0 - across) * BOARD_WIDTH, min(along, 1.0 - along) * BOARD_LENGTH);
     let groove = 1.0 - 0.45 * (1.0 - smoothstep(0.0, 0.003, seam));
     let tone = 0.82 + 0.3 * lattice(vec3<i32>(i32(row), i32(board), 3), seed);
-    return grain * tone * groove;
+    // The boards' edges round down into the seams over 8 mm.
+    return vec2<f32>(grain * tone * groove, 0.0015 * smoothstep(0.0, 0.008, seam));
 }
 
 // Square tiles of 30 or 20 cm with grout; each tile a little its own shade.
@@ -182,7 +192,9 @@ fn tiles(p: vec3<f32>, speck: f32, seed: u32) -> Texel {
     let edge = min(min(f.x, 1.0 - f.x), min(f.y, 1.0 - f.y)) * size;
     let grout = smoothstep(0.002, 0.004, edge);
     let tone = 0.92 + 0.1 * lattice(vec3<i32>(i32(cell.x), i32(cell.y), 5), seed) - 0.04 * speck;
-    return Texel(mix(vec3<f32>(0.55, 0.53, 0.5), vec3<f32>(tone), grout), (1.0 - grout) * 0.6);
+    // The grout lies 2 mm below the tiles, whose edges round down to it over 12 mm.
+    let bevel = smoothstep(0.002, 0.014, edge);
+    return Texel(mix(vec3<f32>(0.55, 0.53, 0.5), vec3<f32>(tone), grout), (1.0 - grout) * 0.6, 0.002 * bevel, 0.012);
 }
 
 // A printed label band of a second colour, with lines of print around it.
@@ -202,27 +214,30 @@ fn texel(pattern: u32, p: vec3<f32>, extent: vec3<f32>, seed: u32, base: vec3<f3
     let a = noise(q * f.first, seed);
     let b = noise(q * f.second, seed + 7u);
     switch pattern {
-        case 1u: { return Texel(vec3<f32>(rings(q, a, b)), 0.0); }
-        case 2u: { return Texel(vec3<f32>(planks(p, rings(q, a, b), seed)), 0.0); }
+        case 1u: { return Texel(vec3<f32>(rings(q, a, b)), 0.0, 0.0003 * b, 0.008); }
+        case 2u: {
+            let board = planks(p, rings(q, a, b), seed);
+            return Texel(vec3<f32>(board.x), 0.0, board.y, 0.008);
+        }
         case 3u: { return tiles(p, a, seed); }
-        case 4u: { return Texel(vec3<f32>(0.78 + 0.22 * a + 0.12 * (b - 0.5)), 0.0); }
-        case 5u: { return Texel(vec3<f32>(1.0 + 0.06 * (0.65 * a + 0.35 * b - 0.5)), 0.0); }
+        case 4u: { return Texel(vec3<f32>(0.78 + 0.22 * a + 0.12 * (b - 0.5)), 0.0, 0.0015 * a, 0.005); }
+        case 5u: { return Texel(vec3<f32>(1.0 + 0.06 * (0.65 * a + 0.35 * b - 0.5)), 0.0, 0.0004 * (0.65 * a + 0.35 * b), 0.05); }
         case 6u: {
             // Stone with dark veins.
             let vein = 1.0 - abs(sin(p.x * 4.0 + p.y * 2.0 + a * 7.0));
             let v4 = vein * vein * vein * vein;
-            return Texel(vec3<f32>(1.0 - v4 * v4 * 0.45 + 0.05 * (b - 0.5)), 0.0);
+            return Texel(vec3<f32>(1.0 - v4 * v4 * 0.45 + 0.05 * (b - 0.5)), 0.0, 0.0, 1.0);
         }
         case 7u: {
             // Warp and weft, about 4 threads a centimetre, with slubs.
             let weave = 0.5 + 0.5 * sin(250.0 * (p.x + p.z)) * sin(250.0 * (p.y - p.z));
-            return Texel(vec3<f32>(0.82 + 0.12 * weave + 0.1 * (a - 0.5)), 0.0);
+            return Texel(vec3<f32>(0.82 + 0.12 * weave + 0.1 * (a - 0.5)), 0.0, 0.0004 * weave, 0.0025);
         }
-        case 8u: { return Texel(vec3<f32>(0.9 + 0.12 * a), 0.1 * a); }
-        case 9u: { return Texel(print(p, extent, a, seed, base), 0.0); }
-        case 10u: { return Texel(vec3<f32>(0.85 + 0.3 * a - 0.25 * step(0.93, b)), 0.0); }
-        case 11u: { return Texel(vec3<f32>(0.6), 0.0); }
-        default: { return Texel(vec3<f32>(0.97 + 0.06 * a), 0.0); }
+        case 8u: { return Texel(vec3<f32>(0.9 + 0.12 * a), 0.1 * a, 0.0001 * a, 0.0025); }
+        case 9u: { return Texel(print(p, extent, a, seed, base), 0.0, 0.0, 1.0); }
+        case 10u: { return Texel(vec3<f32>(0.85 + 0.3 * a - 0.25 * step(0.93, b)), 0.0, 0.0005 * a, 0.04); }
+        case 11u: { return Texel(vec3<f32>(0.6), 0.0, 0.0, 1.0); }
+        default: { return Texel(vec3<f32>(0.97 + 0.06 * a), 0.0, 0.0, 1.0); }
     }
 }
 
@@ -262,6 +277,22 @@ fn sky_open(p: vec3<f32>, n: vec3<f32>) -> f32 {
     let c = sun_through(sky_map, m, centre + vec3<f32>(-0.322, -0.136, 0.0));
     let d = sun_through(sky_map, m, centre + vec3<f32>(0.058, -0.138, 0.0));
     return 0.25 * (a + b + c + d);
+}
+
+// Normal detail: the surface's height `h` (grout, seams, weave, grain) tilts the shading normal
+// `n` at world point `p` by how it changes between neighbouring pixels against how `p` does —
+// bump mapping without tangents (Mikkelsen's surface gradient), so any part in any pose gets it.
+// Called in uniform control flow (the derivatives need the whole 2 × 2 quad).
+fn bumped(n: vec3<f32>, p: vec3<f32>, h: f32) -> vec3<f32> {
+    let dx = dpdx(p);
+    let dy = dpdy(p);
+    let r1 = cross(dy, n);
+    let r2 = cross(n, dx);
+    let det = dot(dx, r1);
+    let grad = sign(det) * (dpdx(h) * r1 + dpdy(h) * r2);
+    let b = abs(det) * n - grad;
+    let len = length(b);
+    return select(n, b / max(len, 1e-20), len > 1e-20);
 }
 
 // Diffuse plus a normalised Blinn-Phong lobe standing in for GGX, with Schlick's Fresnel.
@@ -306,6 +337,11 @@ fn fs_realistic(in: RealisticVertex) -> SurfaceOut {
     let t = texel(pattern, in.local, in.extent, in.surface.y, in.color.rgb);
     let albedo = clamp(in.color.rgb * t.tint, vec3<f32>(0.0), vec3<f32>(1.0));
     let roughness = clamp(roughness0 + t.roughness, 0.04, 1.0);
+    // The lights see the detailed normal; the normal modality, shadows and occlusion the
+    // geometric one.
+    let footprint = max(length(dpdx(in.world)), length(dpdy(in.world)));
+    let drawn = smoothstep(1.0, 3.0, t.relief / max(footprint, 1e-6));
+    let shading = bumped(nw, in.world, t.height * drawn * lights.detail.x);
 
     let up = 0.5 + 0.5 * nw.z;
     // Ambient occlusion: what covers the sky over the point dims its ambient light, and the
@@ -315,7 +351,7 @@ fn fs_realistic(in: RealisticVertex) -> SurfaceOut {
     var light = albedo * (1.0 - 0.6 * metallic) * mix(lights.ground.rgb, lights.sky.rgb, up) * occlusion;
     let sun = lights.sun.xyz;
     if (dot(nw, sun) > 0.0) {
-        light += brdf(nw, sun, vw, albedo, roughness, metallic) * lights.sun_color.rgb * sunlit(in.world, nw);
+        light += brdf(shading, sun, vw, albedo, roughness, metallic) * lights.sun_color.rgb * sunlit(in.world, nw);
     }
     // The first lamp is the camera's room's, the one with a shadow map.
     let lamp_lit = select(1.0, sun_through(lamp_map, lights.lamp_shadow, in.world + nw * 0.02), lights.counts.w != 0u);
@@ -328,7 +364,7 @@ fn fs_realistic(in: RealisticVertex) -> SurfaceOut {
         let d2 = dot(to_lamp, to_lamp);
         let l = to_lamp * inverseSqrt(d2);
         let shade = select(1.0, lamp_lit, k == 0u);
-        light += brdf(nw, l, vw, albedo, roughness, metallic) * lights.lamp_color[k].rgb * occlusion * shade / (d2 + 0.5);
+        light += brdf(shading, l, vw, albedo, roughness, metallic) * lights.lamp_color[k].rgb * occlusion * shade / (d2 + 0.5);
     }
     light += albedo * in.color.w * 3.0;
 

@@ -69,6 +69,8 @@ pub struct Renderer {
     cull: bool,
     /// Whether the realistic profile dims what the fixed geometry covers from above.
     ambient_occlusion: bool,
+    /// Whether the realistic profile's materials tilt the shading normal by their relief.
+    normal_detail: bool,
     stats: FrameStats,
     /// The realistic profile's light and shadow maps, made at its first frame.
     realistic: Option<Realistic>,
@@ -172,6 +174,7 @@ impl Renderer {
             targets: Vec::new(),
             cull: true,
             ambient_occlusion: true,
+            normal_detail: true,
             stats: FrameStats::default(),
             realistic: None,
             models: Arc::new(ModelLibrary::EMPTY),
@@ -207,6 +210,13 @@ impl Renderer {
     /// does (an ablation); the other modalities are the same either way.
     pub fn set_ambient_occlusion(&mut self, on: bool) {
         self.ambient_occlusion = on;
+    }
+
+    /// Turns the realistic profile's normal detail (grout, seams, weave and grain tilting the
+    /// shading normal) on (the default) or off, as an ablation; the other modalities, the
+    /// normal modality included, are the same either way.
+    pub fn set_normal_detail(&mut self, on: bool) {
+        self.normal_detail = on;
     }
 
     /// What the last frame drew.
@@ -364,7 +374,8 @@ impl Renderer {
         }
         let to_world =
             Mat4::from_rotation_translation(camera.pose.rotation, camera.pose.translation);
-        let uniform = lighting.uniform(to_world, camera.pose.translation, shadows);
+        let mut uniform = lighting.uniform(to_world, camera.pose.translation, shadows);
+        uniform.detail[0] = if self.normal_detail { 1.0 } else { 0.0 };
         self.gpu
             .queue
             .write_buffer(&realistic.lights, 0, bytemuck::bytes_of(&uniform));

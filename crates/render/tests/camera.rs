@@ -697,3 +697,60 @@ fn a_model_piece_is_drawn_from_its_meshes_where_the_renderer_holds_them() {
     renderer.set_models(Arc::new(ModelLibrary::default()));
     assert_eq!(draw(&mut renderer, ahead), (boxed, box_rgb));
 }
+
+/// Normal detail: a kitchen's tiled floor, seen from close above, shades the bevelled edges of
+/// its tiles by their relief as well as their colour; turned off, the tiles' faces are the same
+/// and the edges differ, and every other modality (the normal one included) is the same.
+#[test]
+fn a_tiled_floor_shades_its_grout_by_its_relief() {
+    let mut world = World::default();
+    let part = Part::new(Primitive::Box {
+        half_extents: v(2.0, 2.0, 0.05),
+    });
+    let floor = world
+        .add(
+            ObjectSpec::new("floor_kitchen_0", "floor.n.01", vec![part])
+                .looks([200, 200, 200], Material::Stone)
+                .at(v(0.0, 0.0, -0.05))
+                .fixed(),
+        )
+        .unwrap();
+    world.add_room(Room {
+        kind: RoomType::Kitchen,
+        instance: 0,
+        min: [-2.0, -2.0],
+        max: [2.0, 2.0],
+        floor: Some(floor),
+    });
+    // 40 cm above the floor, looking down a little aslant: a pixel is about 3.5 mm there, so the
+    // tiles' 12 mm bevels span enough pixels to be drawn (finer relief fades out), and a grout
+    // line or two of the 20 or 30 cm tiles is in view wherever the tiles start.
+    let eye = Camera::looking_at(v(-0.1, -0.05, 0.4), v(0.05, 0.05, 0.0), 128, 128, 1.0);
+    let categories = categories();
+    let mut renderer = Renderer::new().unwrap();
+    let mut frame = |detail: bool| {
+        renderer.set_normal_detail(detail);
+        let mut view = View::with_profile(eye, ImageProfile::Realistic);
+        renderer
+            .render(&scene(&world, &categories), &mut view, &Modality::ALL)
+            .unwrap()
+    };
+    let (with, without) = (frame(true), frame(false));
+    for m in Modality::ALL.into_iter().filter(|&m| m != Modality::Rgb) {
+        assert_eq!(
+            with.get(m),
+            without.get(m),
+            "{m} changed with normal detail"
+        );
+    }
+    let (a, b) = (u8s(&with, Modality::Rgb), u8s(&without, Modality::Rgb));
+    let changed = (0..a.len() / 3)
+        .filter(|&k| (0..3).any(|c| a[3 * k + c].abs_diff(b[3 * k + c]) > 2))
+        .count();
+    // The grout lines: a few per cent of the floor's pixels, not the tiles' faces.
+    assert!(
+        changed > 50 && changed < a.len() / 3 / 3,
+        "{changed} of {} pixels changed by the relief",
+        a.len() / 3
+    );
+}

@@ -80,12 +80,13 @@ pub fn shared_models() -> Arc<ModelLibrary> {
     static MODELS: OnceLock<Arc<ModelLibrary>> = OnceLock::new();
     let models = MODELS.get_or_init(|| {
         let located = RobotAssets::locate(|line| eprintln!("behavior: {line}"));
-        match located.map_err(ModelError::from).and_then(|assets| {
-            assets
-                .map(|a| fetch_models(&a))
-                .transpose()
-                .map(Option::unwrap_or_default)
-        }) {
+        let loaded = located
+            .map_err(ModelError::from)
+            .and_then(|found| match found {
+                Some(assets) => fetch_models(&assets),
+                None => Ok(ModelLibrary::default()),
+            });
+        match loaded {
             Ok(models) => Arc::new(models),
             Err(e) => {
                 eprintln!("behavior: robots keep their procedural look: {e}");

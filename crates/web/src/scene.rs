@@ -525,7 +525,10 @@ mod tests {
                     _ => None,
                 })
                 .collect();
-            (forms.len(), forms.iter().map(|f| f.triangles.len() / 3).sum())
+            (
+                forms.len(),
+                forms.iter().map(|f| f.triangles.len() / 3).sum(),
+            )
         };
         let (_, with) = describe(&world, &models);
         let (_, without) = describe(&world, &ModelLibrary::EMPTY);
@@ -533,7 +536,11 @@ mod tests {
         // Every link's meshes (the base's four, the gripper's two), on a 4 mm grid.
         assert_eq!(pieces, 15, "{pieces} meshes");
         assert!((8_000..20_000).contains(&sent), "{sent} triangles");
-        assert_eq!(triangles(&without), (0, 0), "without meshes, its primitives");
+        assert_eq!(
+            triangles(&without),
+            (0, 0),
+            "without meshes, its primitives"
+        );
         // The gripper's fingers stay our pads, with or without.
         let fingers = |nodes: &[Node]| nodes.iter().filter(|n| n.link.is_some()).count();
         assert_eq!(fingers(&with), 2);

@@ -158,16 +158,16 @@ impl Lighting {
         shadows: ShadowMatrices,
     ) -> LightsUniform {
         // The main lamp first (its shadows are drawn), then the others, nearest first.
-        let main = self.main_lamp(eye);
         let mut nearest: Vec<&Lamp> = self.lamps.iter().collect();
         nearest.sort_by(|a, b| {
-            let d = |l: &Lamp| {
-                let first = main.is_some_and(|m| std::ptr::eq(m, l));
-                (!first, (l.position - eye).length_squared())
-            };
-            let (da, db) = (d(a), d(b));
-            da.0.cmp(&db.0).then(da.1.total_cmp(&db.1))
+            let d = |l: &Lamp| (l.position - eye).length_squared();
+            d(a).total_cmp(&d(b))
         });
+        if let Some(main) = self.main_lamp(eye)
+            && let Some(k) = nearest.iter().position(|&l| std::ptr::eq(l, main))
+        {
+            nearest[..=k].rotate_right(1);
+        }
         nearest.truncate(LAMPS);
         let mut u = LightsUniform {
             camera_to_world: camera_to_world.to_cols_array_2d(),

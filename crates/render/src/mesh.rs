@@ -204,12 +204,15 @@ pub(crate) enum PieceLevel {
     Shadow,
 }
 
+/// The grid of [`PieceLevel::Fine`], m (also what the viewer gets: [`viewer_piece`]).
+const FINE_CELL: f32 = 0.004;
+
 impl PieceLevel {
     /// The grid's cell, m (none for [`PieceLevel::Made`]).
     fn cell(self) -> Option<f32> {
         match self {
             PieceLevel::Made => None,
-            PieceLevel::Fine => Some(0.004),
+            PieceLevel::Fine => Some(FINE_CELL),
             PieceLevel::Coarse => Some(0.012),
             PieceLevel::Shadow => Some(0.03),
         }
@@ -638,8 +641,7 @@ fn creased(vertices: &[Vector], triangles: &[[u32; 3]]) -> Mesh {
 /// each vertex's normals over its triangles shades it as the cameras do: vertex positions and
 /// counter-clockwise triangles. (Fetch: 14,000 triangles for its 31,700.)
 pub fn viewer_piece(held: &HeldMesh) -> (Vec<[f32; 3]>, Vec<u32>) {
-    let cell = PieceLevel::Fine.cell().unwrap_or(0.004);
-    let (vertices, triangles) = clustered(&held.mesh.vertices, &held.mesh.triangles, cell);
+    let (vertices, triangles) = clustered(&held.mesh.vertices, &held.mesh.triangles, FINE_CELL);
     let mesh = creased(&vertices, &triangles);
     (
         mesh.vertices.iter().map(|v| v.position).collect(),

@@ -423,6 +423,19 @@ fn ground_brightness(frame: &Frame, ground: ObjectId) -> Vec<u32> {
         .collect()
 }
 
+/// The brightness (sum of RGB) of a 64² frame's middle pixel, which must show `object`.
+fn middle_brightness(frame: &Frame, object: ObjectId) -> f32 {
+    let Pixels::U32(ids) = &frame.get(Modality::InsSeg).unwrap().pixels else {
+        panic!("instance ids are u32")
+    };
+    let k = 32 * 64 + 32;
+    assert_eq!(ids[k], object.0 + 1, "the middle pixel is not {object:?}");
+    u8s(frame, Modality::Rgb)[3 * k..3 * k + 3]
+        .iter()
+        .map(|&c| u32::from(c))
+        .sum::<u32>() as f32
+}
+
 /// The post shades part of the ground in the realistic profile; the fast one has no shadows.
 #[test]
 fn the_sun_casts_the_shadow_of_a_post_on_the_ground() {
@@ -483,25 +496,13 @@ fn a_board_overhead_dims_the_ground_under_it_beyond_its_shadow() {
         renderer.render(&scene, &mut view, &Modality::ALL).unwrap()
     };
     let (with, without) = (frame(true), frame(false));
-    let middle = |f: &Frame| {
-        let k = 3 * (32 * 64 + 32);
-        u8s(f, Modality::Rgb)[k..k + 3]
-            .iter()
-            .map(|&c| u32::from(c))
-            .sum::<u32>() as f32
-    };
     let ins = |f: &Frame| f.get(Modality::InsSeg).cloned();
     assert_eq!(ins(&with), ins(&without), "occlusion changed what is seen");
     let ground = world.object_named("ground").unwrap();
-    let Some(Pixels::U32(ids)) = ins(&with).map(|i| i.pixels) else {
-        panic!("instance ids are u32")
-    };
-    assert_eq!(
-        ids[32 * 64 + 32],
-        ground.0 + 1,
-        "the middle pixel is not the ground"
+    let (dim, lit) = (
+        middle_brightness(&with, ground),
+        middle_brightness(&without, ground),
     );
-    let (dim, lit) = (middle(&with), middle(&without));
     assert!(
         dim < 0.85 * lit,
         "the ground under the board is {dim} with occlusion, {lit} without"
@@ -545,15 +546,7 @@ fn the_lamp_of_the_cameras_room_shades_the_floor_under_a_board() {
                 &[Modality::Rgb, Modality::InsSeg],
             )
             .unwrap();
-        let Pixels::U32(ids) = &frame.get(Modality::InsSeg).unwrap().pixels else {
-            panic!("instance ids are u32")
-        };
-        let k = 32 * 64 + 32;
-        assert_eq!(ids[k], ground.0 + 1, "the middle pixel is not the floor");
-        u8s(&frame, Modality::Rgb)[3 * k..3 * k + 3]
-            .iter()
-            .map(|&c| u32::from(c))
-            .sum::<u32>() as f32
+        middle_brightness(&frame, ground)
     };
     let (lit, shaded) = (middle(&bare), middle(&boarded));
     assert!(

@@ -5,6 +5,10 @@
 //! rounded furniture boards, without an asset download, and the same seed gives the same mesh
 //! everywhere.
 //!
+//! Families by file: `household` (boards, cushions, legs, books, cloth, lamps, plants, a
+//! trunk), `produce`, `tableware`, `fittings` (doors and drawer fronts with their pulls, control
+//! panels, a stove's top, a tap), `upholstery` (a made bed, a sofa's seat).
+//!
 //! It owns geometry only: it must not know synsets (which form an object takes is the assets'
 //! choice), GPUs or the world's state. Every mesh lies inside its box, so what is drawn is what
 //! is simulated; [`Mesh::defects`] checks that and that the mesh is closed and wound outward.
@@ -22,6 +26,7 @@
 
 mod check;
 mod dice;
+mod fittings;
 mod grid;
 mod household;
 mod lathe;
@@ -31,6 +36,7 @@ mod rounded;
 mod tableware;
 mod tone;
 mod tube;
+mod upholstery;
 
 pub use behavior_sim::Form;
 pub use check::Defect;
@@ -102,7 +108,7 @@ pub fn mesh(form: Form, half: Vector, seed: u64, detail: Detail) -> Mesh {
         detail,
         dice: &mut dice,
     };
-    match form {
+    let mut made = match form {
         Form::Primitive | Form::Rounded => household::rounded(ctx),
         Form::Soft => household::soft(ctx),
         Form::Turned => household::turned(ctx),
@@ -132,6 +138,42 @@ pub fn mesh(form: Form, half: Vector, seed: u64, detail: Detail) -> Mesh {
         Form::Pot => tableware::pot(ctx),
         Form::Bucket => tableware::bucket(ctx),
         Form::Cake => tableware::cake(ctx),
+        Form::Door => fittings::door(ctx),
+        Form::GlassDoor => fittings::glass_door(ctx),
+        Form::DrawerFront => fittings::drawer_front(ctx),
+        Form::DropDoor => fittings::drop_door(ctx),
+        Form::OvenDoor => fittings::oven_door(ctx),
+        Form::Porthole => fittings::porthole(ctx),
+        Form::Controls => fittings::controls(ctx),
+        Form::Cooktop => fittings::cooktop(ctx),
+        Form::Tap => fittings::tap(ctx),
+        Form::Bedding => upholstery::bedding(ctx),
+        Form::Seat => upholstery::seat(ctx),
+    };
+    // Details of a fixed size (a pull's bar, a book's boards) in a box smaller than they are
+    // would stick out of it: they are pressed flat against its sides instead, so that what is
+    // drawn never leaves what is simulated, whatever size a scene gives.
+    made.keep_inside(half);
+    made
+}
+
+/// A box that `form`'s mesh in the box `[-half, half]` fills wholly, as its centre and half
+/// size, for forms that are boxes with things on them (a rounded board, a front with its pull,
+/// a mattress with its pillows): a renderer may let it hide what lies behind it. `None` for
+/// other forms.
+pub fn solid_core(form: Form, half: Vector) -> Option<(Vector, Vector)> {
+    match form {
+        Form::Rounded => Some((Vector::ZERO, half - Vector::splat(bevel(half)))),
+        Form::Door
+        | Form::GlassDoor
+        | Form::DrawerFront
+        | Form::DropDoor
+        | Form::OvenDoor
+        | Form::Porthole
+        | Form::Controls
+        | Form::Cooktop => Some(fittings::panel_core(form, half)),
+        Form::Bedding | Form::Seat => Some(upholstery::core(form, half)),
+        _ => None,
     }
 }
 

@@ -17,6 +17,10 @@ pub struct Mesh {
     pub tones: Vec<Tone>,
     /// Counter-clockwise seen from outside, as indices into the lists above.
     pub triangles: Vec<[u32; 3]>,
+    /// How far the farthest vertex was pressed back into the box the form was made for, m:
+    /// 0 where the form fits its box, more where the box is smaller than the form's details
+    /// of fixed size (a pull, a book's boards).
+    pub pressed: f32,
 }
 
 impl Mesh {
@@ -71,6 +75,16 @@ impl Mesh {
         }
         for n in &mut self.normals {
             *n = (*n / scale).normalize_or(*n);
+        }
+    }
+
+    /// Moves every vertex outside the box `[-half, half]` onto its nearest side, noting how far
+    /// the farthest went in [`Mesh::pressed`].
+    pub(crate) fn keep_inside(&mut self, half: Vector) {
+        for p in &mut self.positions {
+            let inside = p.clamp(-half, half);
+            self.pressed = self.pressed.max(p.distance(inside));
+            *p = inside;
         }
     }
 

@@ -2,6 +2,7 @@
 //! each face is a grid whose rows bunch at its edges, and each grid point is pushed onto the
 //! rounded surface (the inner box grown by the radius), with its normal known exactly.
 
+use crate::Detail;
 use crate::mesh::Mesh;
 use crate::tone::Tone;
 use rapier3d::math::Vector;
@@ -36,7 +37,10 @@ pub(crate) fn rounded_box(
     steps: usize,
     tone: Tone,
 ) -> Mesh {
-    let radius = radius.clamp(1e-5, 0.9 * half.min_element());
+    // A box made thinner than nothing by a caller's arithmetic on an odd size is drawn flat
+    // rather than turned inside out (or panicking).
+    let half = half.max(Vector::splat(1e-5));
+    let radius = radius.clamp(1e-6, 0.9 * half.min_element());
     let inner = half - Vector::splat(radius);
     let mut mesh = Mesh::default();
     for axis in 0..3 {
@@ -66,6 +70,52 @@ pub(crate) fn rounded_box(
                         mesh.quad(a, d, c, b);
                     }
                 }
+            }
+        }
+    }
+    mesh
+}
+
+/// A box rounded by `radius` with `rows` through each edge at the fine level, plain at the
+/// coarse one: fronts and upholstery are drawn coarse wherever their rounding is under a pixel,
+/// and what is left to see is their parts' outlines (a pull, a pillow).
+pub(crate) fn block(
+    centre: Vector,
+    half: Vector,
+    radius: f32,
+    rows: usize,
+    detail: Detail,
+    tone: Tone,
+) -> Mesh {
+    match detail {
+        Detail::Fine => rounded_box(centre, half, radius, rows, tone),
+        Detail::Coarse => plain_box(centre, half, tone),
+    }
+}
+
+/// A plain box of half size `half` centred at `centre`: four vertices a face with the face's
+/// normal, two triangles a face (a front's coarse level, where no rounding would show).
+pub(crate) fn plain_box(centre: Vector, half: Vector, tone: Tone) -> Mesh {
+    let half = half.max(Vector::splat(1e-5));
+    let mut mesh = Mesh::default();
+    for axis in 0..3 {
+        let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
+        for sign in [1.0f32, -1.0] {
+            let mut normal = Vector::ZERO;
+            normal[axis] = sign;
+            let corner = |a: f32, b: f32| {
+                let mut q = normal * half[axis];
+                q[u] = a * half[u];
+                q[v] = b * half[v];
+                centre + q
+            };
+            let k = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+                .map(|(a, b)| mesh.vertex(corner(a, b), normal, tone));
+            // Counter-clockwise seen from outside: (u, v) turn toward +axis on the + face.
+            if sign > 0.0 {
+                mesh.quad(k[0], k[1], k[2], k[3]);
+            } else {
+                mesh.quad(k[0], k[3], k[2], k[1]);
             }
         }
     }

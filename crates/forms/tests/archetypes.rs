@@ -43,6 +43,12 @@ fn every_archetype_is_drawn_inside_its_colliders() {
                         if let Some(d) = m.defects(half_extents, 1e-6).first() {
                             failures.push(format!("{name} {form:?} {detail:?}: {d}"));
                         }
+                        if m.pressed > 1e-6 {
+                            failures.push(format!(
+                                "{name} {form:?} {detail:?}: pressed {} m into its part's box",
+                                m.pressed
+                            ));
+                        }
                         let outside = m
                             .positions
                             .iter()

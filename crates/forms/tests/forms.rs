@@ -39,6 +39,26 @@ fn boxes(form: Form) -> Vec<Vector> {
         Form::Plant | Form::Lamp => {
             vec![[0.075, 0.075, 0.125], [0.175, 0.175, 0.4], [0.1, 0.1, 0.2]]
         }
+        // Fronts are thin along y: a cabinet's door, a fridge's, a drawer's front, a
+        // microwave's door, a home's door; control panels are low strips.
+        Form::Door
+        | Form::GlassDoor
+        | Form::DrawerFront
+        | Form::DropDoor
+        | Form::OvenDoor
+        | Form::Porthole => vec![
+            [0.3, 0.015, 0.4],
+            [0.4, 0.015, 0.85],
+            [0.2, 0.01, 0.1],
+            [0.25, 0.0105, 0.14],
+            [0.45, 0.05, 1.0],
+        ],
+        Form::Controls => vec![[0.35, 0.025, 0.03], [0.38, 0.025, 0.05], [0.1, 0.01, 0.01]],
+        Form::Cooktop => vec![[0.3, 0.3, 0.45], [0.38, 0.35, 0.475], [0.1, 0.1, 0.1]],
+        Form::Tap => vec![[0.02, 0.02, 0.15], [0.03, 0.03, 0.2]],
+        // A bed's mattress and a sofa's seat.
+        Form::Bedding => vec![[0.48, 0.99, 0.1], [0.98, 1.04, 0.12], [0.3, 0.5, 0.05]],
+        Form::Seat => vec![[0.8, 0.4, 0.225], [1.2, 0.5, 0.2], [0.3, 0.3, 0.1]],
         _ => upright.to_vec(),
     };
     list.into_iter().map(Vector::from_array).collect()
@@ -56,6 +76,13 @@ fn every_form_is_closed_outward_and_inside_its_box() {
                     checked += 1;
                     if let Some(d) = m.defects(half, 1e-6).first() {
                         failures.push(format!("{form:?} {detail:?} {half} seed {seed}: {d}"));
+                    }
+                    // Inside its box by its own proportions, not by being pressed into it.
+                    if m.pressed > 1e-6 {
+                        failures.push(format!(
+                            "{form:?} {detail:?} {half} seed {seed}: pressed {} m into its box",
+                            m.pressed
+                        ));
                     }
                 }
             }
@@ -120,4 +147,37 @@ fn the_coarse_level_has_at_most_half_the_triangles() {
             "{form:?}: {coarse} coarse triangles against {fine} fine"
         );
     }
+}
+
+#[test]
+fn no_form_panics_in_an_odd_box() {
+    // Sizes come from scene files and archetypes' ranges: a form must make some mesh for any
+    // box, however thin, tiny or long, and stay inside it (pressed into it where its details
+    // are bigger than the box).
+    let odd = [
+        [1e-4, 1e-4, 1e-4],
+        [0.003, 0.2, 0.002],
+        [2.0, 0.001, 0.001],
+        [0.001, 0.001, 1.5],
+        [0.01, 0.01, 0.01],
+        [3.0, 3.0, 0.004],
+    ];
+    let mut failures = Vec::new();
+    for form in Form::ALL {
+        for half in odd.map(Vector::from_array) {
+            for detail in Detail::ALL {
+                let m = mesh(form, half, 9, detail);
+                let (lo, hi) = m.bounds();
+                let slack = Vector::splat(1e-4);
+                if m.triangles.is_empty() {
+                    failures.push(format!("{form:?} {detail:?} {half}: no triangles"));
+                } else if lo.cmplt(-half - slack).any() || hi.cmpgt(half + slack).any() {
+                    failures.push(format!(
+                        "{form:?} {detail:?} {half}: drawn over {lo} .. {hi}"
+                    ));
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }

@@ -97,9 +97,28 @@ fn faces(vertices: &[FrameVertex], triangle: &[u32], eye: Vector) -> bool {
     (b - a).cross(c - a).dot(eye - a) > 0.0
 }
 
+/// `instances` in the order they are drawn: by the distance of their origin from `eye`, nearest
+/// first, ties in the gatherer's order. The depth test then turns away most of what lies behind
+/// a nearer surface before its fragments are shaded (lavapipe tests depth ahead of a fragment
+/// shader that writes none), instead of shading a room's floor and walls and then the furniture
+/// over them: the realistic profile's frames took a fifth less time. The order depends on the
+/// scene and the eye alone, so a frame stays the same for the same state.
+fn nearest_first(instances: &[Instance], eye: Vector) -> impl Iterator<Item = &Instance> {
+    let mut order: Vec<(f32, usize)> = instances
+        .iter()
+        .enumerate()
+        .map(|(k, instance)| {
+            let [x, y, z] = instance.model.map(|row| row[3]);
+            (Vector::new(x, y, z).distance_squared(eye), k)
+        })
+        .collect();
+    order.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+    order.into_iter().map(|(_, k)| &instances[k])
+}
+
 impl FrameGeometry {
-    /// Replaces the lists with `instances` placed, in their order, seen from `eye`; with
-    /// where each vertex was last frame if `motion`.
+    /// Replaces the lists with `instances` placed, nearest `eye` first ([`nearest_first`]),
+    /// seen from `eye`; with where each vertex was last frame if `motion`.
     pub(crate) fn fill(
         &mut self,
         instances: &[Instance],
@@ -109,7 +128,7 @@ impl FrameGeometry {
     ) {
         self.vertices.clear();
         self.indices.clear();
-        for instance in instances {
+        for instance in nearest_first(instances, eye) {
             let mesh = meshes.mesh(instance.mesh);
             let base = self.vertices.len();
             let model = affine(&instance.model);

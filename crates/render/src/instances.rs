@@ -9,9 +9,7 @@ use crate::mesh::{Drawn, MeshStore, contains};
 use crate::occlusion::Occlusion;
 use crate::profile::ImageProfile;
 use behavior_core::Predicate;
-use behavior_sim::{
-    Form, Material, ModelLibrary, ObjectId, Primitive, VisualPart, VisualShape, World,
-};
+use behavior_sim::{Material, ModelLibrary, ObjectId, Primitive, VisualPart, VisualShape, World};
 use rapier3d::glamx::{Mat3, Mat4, Vec4};
 use rapier3d::math::{Pose, Vector};
 
@@ -270,12 +268,14 @@ impl<'a> Gatherer<'a> {
                 if local.abs().cmplt(half_extents).all() {
                     continue;
                 }
-                // A rounded board holds the box inside its bevel whole: that box hides what is
-                // behind it as a plain board would.
-                let inner = half_extents - Vector::splat(behavior_forms::bevel(half_extents));
-                if form == Form::Rounded && Occlusion::worth(&part.pose, inner) {
-                    out.occluders.push((part.pose, inner));
-                    backdrop = true;
+                // A rounded board holds the box inside its bevel whole, a door the box of its
+                // panel: that box hides what is behind it as a plain board would.
+                if let Some((centre, inner)) = behavior_forms::solid_core(form, half_extents) {
+                    let core = part.pose * Pose::from_translation(centre);
+                    if Occlusion::worth(&core, inner) {
+                        out.occluders.push((core, inner));
+                        backdrop = true;
+                    }
                 }
             }
             // A camera inside a model piece's box does not draw it, as with a primitive.

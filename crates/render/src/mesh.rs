@@ -98,9 +98,25 @@ const BOX_FORM_BELOW_PIXELS: f32 = 2.5;
 /// box: nobody sees the rounding, and it costs 25 times the triangles.
 const PLAIN_BEVEL_BELOW_PIXELS: f32 = 0.75;
 
+/// Whether a form's shadow is its box's: boxy forms (boards, cushions, books, folded cloth,
+/// fronts whose fittings stand a centimetre proud).
+fn casts_its_box(form: Form) -> bool {
+    matches!(
+        form,
+        Form::Primitive
+            | Form::Soft
+            | Form::Turned
+            | Form::Book
+            | Form::Folded
+            | Form::Plate
+            | Form::Cake
+            | Form::Loaf
+    ) || behavior_forms::solid_core(form, Vector::ONE).is_some()
+}
+
 impl MeshKey {
     /// The mesh a shape casts into a shadow map: round shapes' coarse meshes, pieces' shadow
-    /// level, boxy forms' boxes (boards, books, folded cloth), and other forms' boxes where
+    /// level, boxy forms' boxes ([`casts_its_box`]), and other forms' boxes where
     /// they are under 40 cm from centre to corner and their coarse level where they are bigger
     /// (a torso, a tall plant, a floor lamp), whose box would cast a box's shadow and darken
     /// the form's own surface. (Every form over 15 cm casting its coarse mesh cost a tenth of
@@ -114,18 +130,8 @@ impl MeshKey {
             },
             MeshKey::Form {
                 form, half, seed, ..
-            } if !matches!(
-                form,
-                Form::Primitive
-                    | Form::Rounded
-                    | Form::Soft
-                    | Form::Turned
-                    | Form::Book
-                    | Form::Folded
-                    | Form::Plate
-                    | Form::Cake
-                    | Form::Loaf
-            ) && Vector::from_array(half.map(f32::from_bits)).length() > 0.4 =>
+            } if !casts_its_box(form)
+                && Vector::from_array(half.map(f32::from_bits)).length() > 0.4 =>
             {
                 MeshKey::Form {
                     form,
@@ -152,10 +158,15 @@ impl MeshKey {
             if pixels < BOX_FORM_BELOW_PIXELS {
                 return MeshKey::UnitBox;
             }
-            if matches!(form, Form::Rounded)
-                && pixels * behavior_forms::bevel(half) < PLAIN_BEVEL_BELOW_PIXELS * half.length()
-            {
+            let plain_bevel =
+                pixels * behavior_forms::bevel(half) < PLAIN_BEVEL_BELOW_PIXELS * half.length();
+            if matches!(form, Form::Rounded) && plain_bevel {
                 return MeshKey::UnitBox;
+            }
+            // A front whose rounding would not show: its coarse level, plain boxes with the
+            // fittings on them.
+            if plain_bevel && behavior_forms::solid_core(form, half).is_some() {
+                return self.coarse();
             }
         }
         if pixels >= COARSE_BELOW_PIXELS && !matches!(self, MeshKey::Form { .. })
@@ -163,6 +174,11 @@ impl MeshKey {
         {
             return self;
         }
+        self.coarse()
+    }
+
+    /// This key's coarse level (the key itself where it has none).
+    fn coarse(self) -> MeshKey {
         match self {
             MeshKey::Form {
                 form, half, seed, ..

@@ -78,15 +78,29 @@ fn lattice(c: vec3<i32>, seed: u32) -> f32 {
     return f32(h >> 8u) * (1.0 / 16777215.0);
 }
 
-// Smooth value noise in [0, 1].
+// A number in [0, 1] for a corner's hashed coordinates and a seed (as `lattice`, with the
+// coordinates' products made by the caller).
+fn corner(x: u32, y: u32, z: u32, seed: u32) -> f32 {
+    return f32(mix_bits(x ^ y ^ z ^ seed) >> 8u) * (1.0 / 16777215.0);
+}
+
+// Smooth value noise in [0, 1]. The corners' products are made once and stepped by addition
+// (what `lattice` multiplies anew at each of the eight corners): noise is most of a pattern's
+// cost.
 fn noise(p: vec3<f32>, seed: u32) -> f32 {
     let i = vec3<i32>(floor(p));
     let f = fract(p);
     let u = f * f * (3.0 - 2.0 * f);
-    let x00 = mix(lattice(i, seed), lattice(i + vec3<i32>(1, 0, 0), seed), u.x);
-    let x10 = mix(lattice(i + vec3<i32>(0, 1, 0), seed), lattice(i + vec3<i32>(1, 1, 0), seed), u.x);
-    let x01 = mix(lattice(i + vec3<i32>(0, 0, 1), seed), lattice(i + vec3<i32>(1, 0, 1), seed), u.x);
-    let x11 = mix(lattice(i + vec3<i32>(0, 1, 1), seed), lattice(i + vec3<i32>(1, 1, 1), seed), u.x);
+    let x0 = bitcast<u32>(i.x) * 73856093u;
+    let y0 = bitcast<u32>(i.y) * 19349663u;
+    let z0 = bitcast<u32>(i.z) * 83492791u;
+    let x1 = x0 + 73856093u;
+    let y1 = y0 + 19349663u;
+    let z1 = z0 + 83492791u;
+    let x00 = mix(corner(x0, y0, z0, seed), corner(x1, y0, z0, seed), u.x);
+    let x10 = mix(corner(x0, y1, z0, seed), corner(x1, y1, z0, seed), u.x);
+    let x01 = mix(corner(x0, y0, z1, seed), corner(x1, y0, z1, seed), u.x);
+    let x11 = mix(corner(x0, y1, z1, seed), corner(x1, y1, z1, seed), u.x);
     return mix(mix(x00, x10, u.y), mix(x01, x11, u.y), u.z);
 }
 

@@ -149,11 +149,35 @@ pub enum Form {
     /// A person's trunk from the hips to the neck, with shoulders, 0.6 as deep (along x) as
     /// wide: the BehaviorRobot's body.
     Torso,
+    /// A door leaf facing −y, hinged on −x: a panel (raised in its middle on some seeds) with a
+    /// bar or a knob by its free edge (cabinets, fridges, the homes' doors).
+    Door,
+    /// A side-hinged door glazed over most of its width, a bar by its free edge (microwaves).
+    GlassDoor,
+    /// A drawer's front facing −y: a panel with a bar or a knob at its middle.
+    DrawerFront,
+    /// A door hinged at its bottom edge, facing −y: a panel with a bar along its top
+    /// (dishwashers).
+    DropDoor,
+    /// An oven's door: a drop-down door with a dark window under its bar.
+    OvenDoor,
+    /// A washer's or dryer's door facing −y: a round window in a metal ring.
+    Porthole,
+    /// A control panel facing −y: a row of knobs and a display.
+    Controls,
+    /// A stove: a block with four burners on its top, an oven's window and bar on its front.
+    Cooktop,
+    /// A sink's tap: a metal column on a round foot under a wider head.
+    Tap,
+    /// A made bed's mattress, head at +y: a sheet, a duvet turned back, one or two pillows.
+    Bedding,
+    /// A sofa's seat: a plinth under a row of two or three cushions.
+    Seat,
 }
 
 impl Form {
     /// Every form, in order.
-    pub const ALL: [Form; 30] = [
+    pub const ALL: [Form; 41] = [
         Form::Primitive,
         Form::Rounded,
         Form::Soft,
@@ -184,6 +208,17 @@ impl Form {
         Form::Lamp,
         Form::Plant,
         Form::Torso,
+        Form::Door,
+        Form::GlassDoor,
+        Form::DrawerFront,
+        Form::DropDoor,
+        Form::OvenDoor,
+        Form::Porthole,
+        Form::Controls,
+        Form::Cooktop,
+        Form::Tap,
+        Form::Bedding,
+        Form::Seat,
     ];
 }
 

@@ -4,6 +4,7 @@
 use super::geometry::{carcass, span, v};
 use super::moving_parts::{drawer, side_door};
 use super::{Blank, Built};
+use behavior_sim::Form;
 
 /// A top on four legs (variant 0), or on a trestle: a panel under each end, leaving the middle
 /// free to walk under (variant 1).
@@ -64,7 +65,7 @@ pub(super) fn cabinet(b: &Blank) -> Built {
         ));
         return b
             .body(parts)
-            .with_link(side_door("door", min, max, t, density));
+            .with_link(side_door(Form::Door, min, max, t, density));
     }
     let mid = h / 2.0;
     let bottom = drawer(

@@ -5,7 +5,7 @@
 //! Collision is untouched: what is drawn lies within the colliders' box.
 
 use super::{Archetype, Shape};
-use behavior_sim::{Form, ObjectSpec, Part, Primitive};
+use behavior_sim::{Form, Material, ObjectSpec, Part, Primitive, Visual};
 use rapier3d::math::Vector;
 
 /// The form a synset's body is drawn in, or [`Form::Primitive`] to draw its parts.
@@ -57,21 +57,26 @@ fn rounds_its_boxes(shape: Shape) -> bool {
     !matches!(shape, Shape::Floor | Shape::Agent)
 }
 
-/// The form of one box of a piece of furniture or a fixture: upholstery is soft (a sofa, a
-/// bed's mattress), a thin upright post of a table or chair is a turned leg, the rest has
+/// The form of one box of a piece of furniture or a fixture: a sofa's seat has its cushions and
+/// its back and arms are soft, a bed's mattress is made with a duvet and pillows, a thin
+/// upright post of a table or chair is a turned leg, the rest has
 /// rounded edges.
 fn box_form(shape: Shape, index: usize, half: Vector) -> Form {
     let post = half.z > 3.0 * half.x.max(half.y) && half.x.max(half.y) < 0.04;
     match shape {
+        // The sofa's parts: seat, back, arms.
+        Shape::Sofa if index == 0 => Form::Seat,
         Shape::Sofa => Form::Soft,
         // The bed's parts: base, mattress, headboard.
-        Shape::Bed if index == 1 => Form::Soft,
+        Shape::Bed if index == 1 => Form::Bedding,
         Shape::Table | Shape::Chair if post => Form::Turned,
         _ => Form::Rounded,
     }
 }
 
-/// Sets the forms of a spec built from `archetype`.
+/// Sets the forms of a spec built from `archetype`: its body's, and those of its boxes that
+/// the family building them left unnamed (a family names what only it knows: a door with its
+/// pull, a control panel, a stove's top).
 pub(super) fn dress(spec: &mut ObjectSpec, archetype: &Archetype) {
     spec.form = body_form(archetype.synset, archetype.shape);
     if !rounds_its_boxes(archetype.shape) {
@@ -80,8 +85,17 @@ pub(super) fn dress(spec: &mut ObjectSpec, archetype: &Archetype) {
     let shape = archetype.shape;
     let dress_boxes = |parts: &mut Vec<Part>| {
         for (index, part) in parts.iter_mut().enumerate() {
-            if let Primitive::Box { half_extents } = part.primitive {
+            if let Primitive::Box { half_extents } = part.primitive
+                && part.form == Form::Primitive
+            {
                 part.form = box_form(shape, index, half_extents);
+            }
+            // A bed's duvet is cloth in the bed's colour, whatever its frame is made of.
+            if part.form == Form::Bedding && part.visual.is_none() {
+                part.visual = Some(Visual {
+                    color: archetype.color,
+                    material: Material::Cloth,
+                });
             }
         }
     };

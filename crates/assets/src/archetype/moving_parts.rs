@@ -1,15 +1,17 @@
 //! Links on joints that open an object: side-hinged doors, drop-down doors and drawers. Each is
-//! given in the object's frame, closed (at joint position 0), hanging from the object's body.
+//! given in the object's frame, closed (at joint position 0), hanging from the object's body,
+//! its front drawn in the form given (a door with its pull, a glazed door, a drawer's front).
 
 use super::geometry::{span, tub, v};
-use behavior_sim::{JointKind, JointSpec, LinkSpec};
+use behavior_sim::{Form, JointKind, JointSpec, LinkSpec};
 use rapier3d::math::Vector;
 
-/// A door covering the front of `min..max`, hinged on its left edge (opens outward, to −y).
-pub(super) fn side_door(name: &str, min: Vector, max: Vector, t: f32, density: f32) -> LinkSpec {
+/// A door covering the front of `min..max`, hinged on its left edge (opens outward, to −y),
+/// drawn as `form`.
+pub(super) fn side_door(form: Form, min: Vector, max: Vector, t: f32, density: f32) -> LinkSpec {
     LinkSpec {
-        name: name.into(),
-        parts: vec![span(v(min.x, min.y - t, min.z), v(max.x, min.y, max.z))],
+        name: "door".into(),
+        parts: vec![span(v(min.x, min.y - t, min.z), v(max.x, min.y, max.z)).with_form(form)],
         parent: None,
         joint: JointSpec::opening(
             JointKind::Revolute,
@@ -22,11 +24,12 @@ pub(super) fn side_door(name: &str, min: Vector, max: Vector, t: f32, density: f
     }
 }
 
-/// A door covering the front of `min..max`, hinged at its bottom edge (ovens, dishwashers).
-pub(super) fn drop_door(min: Vector, max: Vector, t: f32, density: f32) -> LinkSpec {
+/// A door covering the front of `min..max`, hinged at its bottom edge (ovens, dishwashers),
+/// drawn as `form`.
+pub(super) fn drop_door(form: Form, min: Vector, max: Vector, t: f32, density: f32) -> LinkSpec {
     LinkSpec {
         name: "door".into(),
-        parts: vec![span(v(min.x, min.y - t, min.z), v(max.x, min.y, max.z))],
+        parts: vec![span(v(min.x, min.y - t, min.z), v(max.x, min.y, max.z)).with_form(form)],
         parent: None,
         joint: JointSpec::opening(
             JointKind::Revolute,
@@ -47,7 +50,9 @@ pub(super) fn drawer(name: &str, min: Vector, max: Vector, t: f32, density: f32)
         t,
     );
     // Its front panel closes the carcass.
-    parts.push(span(v(min.x, min.y - t, min.z), v(max.x, min.y, max.z)));
+    parts.push(
+        span(v(min.x, min.y - t, min.z), v(max.x, min.y, max.z)).with_form(Form::DrawerFront),
+    );
     LinkSpec {
         name: name.into(),
         parts,

@@ -3,26 +3,27 @@
 
 use super::geometry::{span, v};
 use super::{Blank, Built};
-use behavior_sim::{JointKind, JointSpec, LinkSpec};
+use behavior_sim::{Form, JointKind, JointSpec, LinkSpec};
 
-/// A door: the frame stands on the floor.
+/// A door: the frame stands on the floor; the leaf is drawn with its handle.
 pub(super) fn door(b: &Blank) -> Built {
-    framed_leaf(b, 0.0, b.h)
+    framed_leaf(b, 0.0, b.h, Form::Door)
 }
 
 /// A window with a sill at 0.9 m (variant 0), or a floor-length one from 5 cm up and 0.85 m
 /// taller than its size says (variant 1).
 pub(super) fn window(b: &Blank) -> Built {
     if b.variant == 0 {
-        framed_leaf(b, 0.9, b.h)
+        framed_leaf(b, 0.9, b.h, Form::Primitive)
     } else {
-        framed_leaf(b, 0.05, b.h + 0.85)
+        framed_leaf(b, 0.05, b.h + 0.85, Form::Primitive)
     }
 }
 
-/// A frame of height `h` from `sill` up, and its leaf; the button (a handle) at mid-height by the
-/// leaf's free edge.
-fn framed_leaf(b: &Blank, sill: f32, h: f32) -> Built {
+/// A frame of height `h` from `sill` up, and its leaf (drawn as `leaf_form`, or as the
+/// archetype's looks say if that is [`Form::Primitive`]); the button (a handle) at mid-height
+/// by the leaf's free edge.
+fn framed_leaf(b: &Blank, sill: f32, h: f32, leaf_form: Form) -> Built {
     let (d, min, max) = (b.d, b.min, b.max);
     let frame = 0.05;
     let parts = vec![
@@ -32,10 +33,13 @@ fn framed_leaf(b: &Blank, sill: f32, h: f32) -> Built {
     ];
     let leaf = LinkSpec {
         name: "leaf".into(),
-        parts: vec![span(
-            v(min.x + frame, min.y + d / 4.0, sill + 0.01),
-            v(max.x - frame, max.y - d / 4.0, sill + h - frame),
-        )],
+        parts: vec![
+            span(
+                v(min.x + frame, min.y + d / 4.0, sill + 0.01),
+                v(max.x - frame, max.y - d / 4.0, sill + h - frame),
+            )
+            .with_form(leaf_form),
+        ],
         parent: None,
         joint: JointSpec::opening(
             JointKind::Revolute,

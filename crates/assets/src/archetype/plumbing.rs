@@ -3,8 +3,9 @@
 
 use super::geometry::{span, tub, v};
 use super::{Blank, Built};
+use behavior_sim::Form;
 
-/// A basin on a stand, with a spout at the back.
+/// A basin on a stand, with a tap at the back.
 pub(super) fn sink(b: &Blank) -> Built {
     let (h, t, min, max) = (b.h, b.t, b.min, b.max);
     let bowl = 0.25f32.min(h / 2.0);
@@ -13,10 +14,8 @@ pub(super) fn sink(b: &Blank) -> Built {
         v(max.x - t, max.y - t, h - bowl),
     )];
     parts.extend(tub(v(min.x, min.y, h - bowl), max, t));
-    parts.push(span(
-        v(-0.02, max.y - 0.05, h),
-        v(0.02, max.y - 0.01, h + 0.3),
-    ));
+    parts
+        .push(span(v(-0.02, max.y - 0.05, h), v(0.02, max.y - 0.01, h + 0.3)).with_form(Form::Tap));
     let mut built = b.body(parts);
     built.layout.outlet = Some(v(0.0, max.y - 0.1, h + 0.25));
     built.layout.front_button = v(0.08, max.y - 0.03, h + 0.05);

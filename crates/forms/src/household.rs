@@ -1,5 +1,5 @@
 //! Made things about the house: rounded boards and cushions, turned legs, books, folded cloth,
-//! pens, table lamps and potted plants.
+//! pens, table lamps, potted plants and a Christmas tree, shoes and hats.
 
 use crate::grid::sphere_grid;
 use crate::lathe::{even, fold, p, revolve};
@@ -8,7 +8,7 @@ use crate::rounded::rounded_box;
 use crate::tone::Tone;
 use crate::{Ctx, Detail, bevel};
 use rapier3d::math::{Rotation, Vector};
-use std::f32::consts::TAU;
+use std::f32::consts::{FRAC_PI_2, TAU};
 
 /// A box with rounded edges ([`bevel`]).
 pub(crate) fn rounded(ctx: Ctx) -> Mesh {
@@ -219,4 +219,81 @@ pub(crate) fn torso(ctx: Ctx) -> Mesh {
     ];
     let flat = Vector::new(0.6 * ctx.half.x, ctx.half.y, ctx.half.z);
     revolve(&profile, ctx.detail.around(), even).fit(flat)
+}
+
+/// A Christmas tree: a stand, a short trunk and four to six tiers of boughs, each flaring out
+/// and stepping in under the next, up to a point.
+pub(crate) fn conifer(ctx: Ctx) -> Mesh {
+    let stand =
+        [p(0.0, 0.0), fold(0.3, 0.0), fold(0.32, 0.08), p(0.0, 0.08)].map(|pt| pt.tone(Tone::Clay));
+    let trunk = [p(0.0, 0.07), fold(0.07, 0.07), fold(0.07, 0.2), p(0.0, 0.2)]
+        .map(|pt| pt.tone(Tone::Stem));
+    let tiers = ctx.dice.count(4, 6);
+    let mut boughs = vec![p(0.0, 0.15), fold(1.0, 0.16)];
+    for k in 1..tiers {
+        let z = 0.16 + 0.8 * k as f32 / tiers as f32;
+        let reach = 1.0 - 0.8 * k as f32 / tiers as f32;
+        boughs.push(fold(0.55 * reach, z));
+        boughs.push(fold(reach, z + 0.01));
+    }
+    boughs.push(p(0.0, 1.0));
+    let boughs: Vec<_> = boughs.into_iter().map(|pt| pt.tone(Tone::Leaf)).collect();
+    let around = ctx.detail.around();
+    join([
+        revolve(&stand, around, even),
+        revolve(&trunk, around, even),
+        revolve(&boughs, around, even),
+    ])
+    .fit(ctx.half)
+}
+
+/// A shoe, its toe toward +y: a pale sole and an upper that rises from a low toe to the collar
+/// at the heel (a sandal's box makes it low).
+pub(crate) fn shoe(ctx: Ctx) -> Mesh {
+    let collar = ctx.dice.between(0.85, 1.0);
+    let sole = [
+        (0.0, -0.33),
+        (0.3, -0.45),
+        (0.75, -0.5),
+        (0.95, -0.36),
+        (1.0, 0.0),
+        (0.95, 0.36),
+        (0.75, 0.5),
+        (0.3, 0.45),
+        (0.0, 0.33),
+    ];
+    let sole = crate::utensils::prism(&sole, (0.0, 0.16), Tone::Light);
+    let b = ctx.detail.bands();
+    let round = |x: f32| crate::grid::signed_pow(x, 0.5);
+    let upper = sphere_grid(b, 2 * b, |d| {
+        let x = 0.5 + 0.47 * round(d.x);
+        // From the collar's height at the heel (x = 0) to under half of it at the toe.
+        let top = 0.4 + (collar - 0.4) * (1.0 - x).powf(0.7);
+        let z = if d.z >= 0.0 {
+            0.12 + round(d.z) * (top - 0.12)
+        } else {
+            0.12 + round(d.z) * 0.04
+        };
+        Vector::new(x, 0.43 * round(d.y), z)
+    });
+    let mut shoe = join([sole, upper]);
+    shoe.turn(Rotation::from_rotation_z(FRAC_PI_2), Vector::ZERO);
+    shoe.fit(ctx.half)
+}
+
+/// A hat, brim down: a flat brim, a dark band and a crown rounded at its top.
+pub(crate) fn hat(ctx: Ctx) -> Mesh {
+    let crown = ctx.dice.between(0.5, 0.62);
+    let profile = [
+        p(0.0, 0.0),
+        fold(1.0, 0.0),
+        fold(1.0, 0.05),
+        fold(crown + 0.02, 0.06).tone(Tone::Dark),
+        fold(crown + 0.01, 0.22).tone(Tone::Body),
+        p(crown - 0.02, 0.75),
+        p(crown - 0.1, 0.95),
+        p(0.3, 1.0),
+        p(0.0, 1.0),
+    ];
+    revolve(&profile, ctx.detail.around(), even).fit(ctx.half)
 }

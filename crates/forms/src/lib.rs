@@ -6,8 +6,10 @@
 //! everywhere.
 //!
 //! Families by file: `household` (boards, cushions, legs, books, cloth, lamps, plants, a
-//! trunk), `produce`, `tableware`, `fittings` (doors and drawer fronts with their pulls, control
-//! panels, a stove's top, a tap), `upholstery` (a made bed, a sofa's seat).
+//! Christmas tree, shoes, hats, a trunk), `produce` (and a roast chicken), `tableware`,
+//! `utensils` (knives, forks, spoons, brooms and brushes, hammers, screwdrivers, toothbrushes,
+//! umbrellas), `fittings` (doors and drawer fronts with their pulls,
+//! control panels, a stove's top, a tap), `upholstery` (a made bed, a sofa's seat).
 //!
 //! It owns geometry only: it must not know synsets (which form an object takes is the assets'
 //! choice), GPUs or the world's state. Every mesh lies inside its box, so what is drawn is what
@@ -37,6 +39,7 @@ mod tableware;
 mod tone;
 mod tube;
 mod upholstery;
+mod utensils;
 
 pub use behavior_sim::Form;
 pub use check::Defect;
@@ -149,6 +152,18 @@ pub fn mesh(form: Form, half: Vector, seed: u64, detail: Detail) -> Mesh {
         Form::Tap => fittings::tap(ctx),
         Form::Bedding => upholstery::bedding(ctx),
         Form::Seat => upholstery::seat(ctx),
+        Form::Knife => utensils::knife(ctx),
+        Form::Fork => utensils::fork(ctx),
+        Form::Spoon => utensils::spoon(ctx),
+        Form::Broom => utensils::broom(ctx),
+        Form::Conifer => household::conifer(ctx),
+        Form::Roast => produce::roast(ctx),
+        Form::Hammer => utensils::hammer(ctx),
+        Form::Screwdriver => utensils::screwdriver(ctx),
+        Form::Toothbrush => utensils::toothbrush(ctx),
+        Form::Umbrella => utensils::umbrella(ctx),
+        Form::Shoe => household::shoe(ctx),
+        Form::Hat => household::hat(ctx),
     };
     // Details of a fixed size (a pull's bar, a book's boards) in a box smaller than they are
     // would stick out of it: they are pressed flat against its sides instead, so that what is

@@ -7,7 +7,7 @@ use crate::lathe::{Pt, even, fold, p, revolve};
 use crate::mesh::{Mesh, join};
 use crate::tone::Tone;
 use crate::tube::tube;
-use rapier3d::math::Vector;
+use rapier3d::math::{Rotation, Vector};
 use std::f32::consts::{PI, TAU};
 
 /// Points of a round profile from the bottom (z = 0) to the top (z = 1), `radius(z)` wide, in
@@ -265,4 +265,43 @@ pub(crate) fn loaf(ctx: Ctx) -> Mesh {
         )
     })
     .fit(ctx.half)
+}
+
+/// A roast chicken: a plump body, two drumsticks toward +x with their bones' ends showing, and
+/// the wings' bumps at its sides.
+pub(crate) fn roast(ctx: Ctx) -> Mesh {
+    let b = ctx.detail.bands();
+    let lump = |centre: Vector, half: Vector, turn: f32, tone: Tone| {
+        let mut m = sphere_grid(b, 2 * b, |d| d * half).toned(tone);
+        m.turn(Rotation::from_rotation_z(turn), centre);
+        m
+    };
+    let plump = ctx.dice.between(0.36, 0.42);
+    let mut pieces = vec![lump(
+        Vector::new(-0.1, 0.0, plump),
+        Vector::new(0.5, 0.45, plump),
+        0.0,
+        Tone::Body,
+    )];
+    for side in [-1.0f32, 1.0] {
+        pieces.push(lump(
+            Vector::new(0.4, side * 0.28, 0.3),
+            Vector::new(0.3, 0.14, 0.14),
+            side * 0.35,
+            Tone::Body,
+        ));
+        pieces.push(lump(
+            Vector::new(0.7, side * 0.4, 0.34),
+            Vector::new(0.05, 0.05, 0.05),
+            0.0,
+            Tone::Light,
+        ));
+        pieces.push(lump(
+            Vector::new(-0.15, side * 0.42, 0.45),
+            Vector::new(0.25, 0.1, 0.15),
+            0.0,
+            Tone::Body,
+        ));
+    }
+    join(pieces).fit(ctx.half)
 }

@@ -24,7 +24,21 @@ fn boxes(form: Form) -> Vec<Vector> {
     ];
     let list: Vec<[f32; 3]> = match form {
         Form::Primitive | Form::Rounded | Form::Soft => any.to_vec(),
-        Form::Banana | Form::Carrot | Form::Pen => lying.to_vec(),
+        Form::Banana
+        | Form::Carrot
+        | Form::Pen
+        | Form::Knife
+        | Form::Fork
+        | Form::Spoon
+        | Form::Broom
+        | Form::Hammer
+        | Form::Screwdriver
+        | Form::Toothbrush
+        | Form::Umbrella => lying.to_vec(),
+        Form::Shoe => vec![[0.05, 0.15, 0.05], [0.06, 0.16, 0.07], [0.05, 0.14, 0.02]],
+        Form::Hat => vec![[0.15, 0.15, 0.06], [0.17, 0.17, 0.075], [0.04, 0.04, 0.02]],
+        Form::Roast => flat.to_vec(),
+        Form::Conifer => vec![[0.3, 0.3, 0.6], [0.55, 0.55, 1.05], [0.1, 0.1, 0.2]],
         Form::Plate | Form::Book | Form::Folded | Form::Cake => flat.to_vec(),
         Form::Lemon | Form::Egg => [round.as_slice(), &lying[..1], &upright[..1]].concat(),
         Form::Round

@@ -173,11 +173,35 @@ pub enum Form {
     Bedding,
     /// A sofa's seat: a plinth under a row of two or three cushions.
     Seat,
+    /// A knife lying along x: a dark handle toward −x, the blade toward +x.
+    Knife,
+    /// A fork lying along x: a handle, the tines toward +x.
+    Fork,
+    /// A spoon lying along x: a handle, the bowl toward +x.
+    Spoon,
+    /// A broom or a brush lying along x: bristles under a stock toward −x, a handle toward +x.
+    Broom,
+    /// A Christmas tree: a stand, a trunk, tiers of boughs up to a point.
+    Conifer,
+    /// A roast chicken: a plump body, drumsticks toward +x, wings at its sides.
+    Roast,
+    /// A hammer lying along x: a handle, the head across its +x end.
+    Hammer,
+    /// A screwdriver lying along x: a fat handle toward −x, the shaft toward +x.
+    Screwdriver,
+    /// A toothbrush lying along x: a handle, the bristles' head toward +x.
+    Toothbrush,
+    /// A closed umbrella lying along x: a hook toward −x, the furled canopy toward +x.
+    Umbrella,
+    /// A shoe, its toe toward +y: a sole and an upper rising to the heel.
+    Shoe,
+    /// A hat, brim down: a brim, a band, a crown.
+    Hat,
 }
 
 impl Form {
     /// Every form, in order.
-    pub const ALL: [Form; 41] = [
+    pub const ALL: [Form; 53] = [
         Form::Primitive,
         Form::Rounded,
         Form::Soft,
@@ -219,6 +243,18 @@ impl Form {
         Form::Tap,
         Form::Bedding,
         Form::Seat,
+        Form::Knife,
+        Form::Fork,
+        Form::Spoon,
+        Form::Broom,
+        Form::Conifer,
+        Form::Roast,
+        Form::Hammer,
+        Form::Screwdriver,
+        Form::Toothbrush,
+        Form::Umbrella,
+        Form::Shoe,
+        Form::Hat,
     ];
 }
 

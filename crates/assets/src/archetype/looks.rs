@@ -24,10 +24,14 @@ fn body_form(synset: &str, shape: Shape) -> Form {
         "carrot" => Form::Carrot,
         "bread" => Form::Loaf,
         "book" | "hardback" | "notebook" => Form::Book,
-        "cheese" | "soap" | "beef" | "meat" | "pork" | "fish" | "chicken" | "candy"
-        | "snack_food" | "sandwich" | "cracker" | "bow" | "gym_shoe" | "shoe" | "sandal" => {
-            Form::Soft
-        }
+        "cheese" | "soap" | "beef" | "meat" | "pork" | "fish" | "candy" | "snack_food"
+        | "sandwich" | "cracker" | "bow" => Form::Soft,
+        "gym_shoe" | "shoe" | "sandal" => Form::Shoe,
+        "hat" => Form::Hat,
+        "hammer" => Form::Hammer,
+        "screwdriver" => Form::Screwdriver,
+        "toothbrush" => Form::Toothbrush,
+        "umbrella" => Form::Umbrella,
         "bottle" | "beer" | "catsup" | "shampoo" | "perfume" | "vegetable_oil"
         | "cleansing_agent" | "sauce" | "beverage" | "water" | "pop" => Form::Bottle,
         "soup" | "oatmeal" | "yogurt" | "blender" => Form::Can,
@@ -35,7 +39,13 @@ fn body_form(synset: &str, shape: Shape) -> Form {
         "mug" | "kettle" => Form::Mug,
         "cake" | "cookie" | "hamburger" | "salad" | "sushi" | "candle" | "alarm" => Form::Cake,
         "lamp" => Form::Lamp,
-        "pot_plant" | "christmas_tree" => Form::Plant,
+        "pot_plant" => Form::Plant,
+        "christmas_tree" => Form::Conifer,
+        "chicken" => Form::Roast,
+        "knife" | "carving_knife" => Form::Knife,
+        "fork" => Form::Fork,
+        "spoon" => Form::Spoon,
+        "broom" | "brush" => Form::Broom,
         "plate" => Form::Plate,
         "dishtowel" | "hand_towel" | "towel" | "rag" | "piece_of_cloth" | "apparel" | "shirt"
         | "sweater" | "sock" | "underwear" | "sheet" => Form::Folded,

@@ -1,0 +1,294 @@
+//! Things with a handle, lying along x: knives (blade toward +x, where the archetypes put the
+//! slicing edge), forks and spoons (head toward +x), brooms and brushes (bristles toward −x,
+//! where the archetypes put the cleaning area), hammers, screwdrivers, toothbrushes and a
+//! closed umbrella. Each is built in a frame of its own, x from 0 to
+//! 1, and stretched to fill its box.
+
+use crate::grid::sphere_grid;
+use crate::lathe::{even, fold, p, revolve};
+use crate::mesh::{Mesh, join};
+use crate::rounded::rounded_box;
+use crate::tone::Tone;
+use crate::tube::tube;
+use crate::{Ctx, Detail};
+use rapier3d::math::{Rotation, Vector};
+
+/// A flat piece: the convex polygon `outline` (counter-clockwise in x–y) extruded from `z0` to
+/// `z1`, its faces flat.
+pub(crate) fn prism(outline: &[(f32, f32)], (z0, z1): (f32, f32), tone: Tone) -> Mesh {
+    let mut mesh = Mesh::default();
+    let n = outline.len();
+    let at = |k: usize, z: f32| Vector::new(outline[k % n].0, outline[k % n].1, z);
+    // Top and bottom, fanned from the first corner.
+    let top: Vec<u32> = (0..n)
+        .map(|k| mesh.vertex(at(k, z1), Vector::Z, tone))
+        .collect();
+    let bottom: Vec<u32> = (0..n)
+        .map(|k| mesh.vertex(at(k, z0), -Vector::Z, tone))
+        .collect();
+    for k in 1..n - 1 {
+        mesh.triangle(top[0], top[k], top[k + 1]);
+        mesh.triangle(bottom[0], bottom[k + 1], bottom[k]);
+    }
+    // Sides, each its own quad with its outward normal.
+    for k in 0..n {
+        let (a, b) = (at(k, z0), at(k + 1, z0));
+        let normal = Vector::new(b.y - a.y, a.x - b.x, 0.0);
+        let quad = [at(k, z0), at(k + 1, z0), at(k + 1, z1), at(k, z1)]
+            .map(|p| mesh.vertex(p, normal, tone));
+        mesh.quad(quad[0], quad[1], quad[2], quad[3]);
+    }
+    mesh
+}
+
+/// A handle from x = `from` to `to`, `width` and `thick` across (both as fractions of the
+/// frame's y and z), in `tone`, its edges rounded.
+fn handle(from: f32, to: f32, (width, thick): (f32, f32), detail: Detail, tone: Tone) -> Mesh {
+    let half = Vector::new(0.5 * (to - from), 0.5 * width, 0.5 * thick);
+    rounded_box(
+        Vector::new(0.5 * (from + to), 0.0, 0.0),
+        half,
+        0.45 * half.y.min(half.z),
+        detail.bevel_rows(),
+        tone,
+    )
+}
+
+/// A knife: a dark handle, a metal bolster and a blade whose spine runs straight to the point
+/// and whose edge curves up to it.
+pub(crate) fn knife(ctx: Ctx) -> Mesh {
+    let grip = ctx.dice.between(0.34, 0.42);
+    let blade = [
+        (grip + 0.04, -0.5),
+        (0.82, -0.46),
+        (0.95, -0.15),
+        (1.0, 0.5),
+        (grip + 0.04, 0.5),
+    ];
+    join([
+        handle(0.0, grip, (0.8, 1.0), ctx.detail, Tone::Dark),
+        handle(
+            grip - 0.01,
+            grip + 0.05,
+            (0.9, 0.8),
+            ctx.detail,
+            Tone::Metal,
+        ),
+        prism(&blade, (-0.12, 0.12), Tone::Metal),
+    ])
+    .fit(ctx.half)
+}
+
+/// A fork: a handle widening toward its end and rising off the table, a neck, and a head of
+/// four tines lying on it (a few pixels across, the coarse level, one blade where the tines
+/// are). Thin: the box's height is mostly the handle's rise.
+pub(crate) fn fork(ctx: Ctx) -> Mesh {
+    let neck = ctx.dice.between(0.6, 0.66);
+    let head_end = match ctx.detail {
+        Detail::Fine => 0.8,
+        Detail::Coarse => 1.0,
+    };
+    let flat = (-0.5, -0.2);
+    // Into the neck by 2 % of the length: pieces may overlap, not share a face.
+    let mut stick = prism(
+        &[
+            (0.0, -0.2),
+            (neck + 0.02, -0.09),
+            (neck + 0.02, 0.09),
+            (0.0, 0.2),
+        ],
+        flat,
+        Tone::Body,
+    );
+    for p in &mut stick.positions {
+        p.z += 0.7 * (1.0 - p.x / neck).max(0.0);
+    }
+    let mut pieces = vec![
+        stick,
+        prism(
+            &[
+                (neck, -0.1),
+                (0.76, -0.5),
+                (head_end, -0.5),
+                (head_end, 0.5),
+                (0.76, 0.5),
+                (neck, 0.1),
+            ],
+            flat,
+            Tone::Body,
+        ),
+    ];
+    let tines = if ctx.detail == Detail::Fine { 4 } else { 0 };
+    for k in 0..tines {
+        let y = -0.5 + 0.29 * k as f32;
+        pieces.push(prism(
+            &[
+                (0.79, y),
+                (1.0, y + 0.02),
+                (1.0, y + 0.12),
+                (0.79, y + 0.14),
+            ],
+            flat,
+            Tone::Body,
+        ));
+    }
+    join(pieces).fit(ctx.half)
+}
+
+/// A spoon: a slender handle and an oval bowl.
+pub(crate) fn spoon(ctx: Ctx) -> Mesh {
+    let neck = ctx.dice.between(0.58, 0.64);
+    let stick = prism(
+        &[
+            (0.0, -0.16),
+            (neck, -0.07),
+            (neck + 0.04, 0.0),
+            (neck, 0.07),
+            (0.0, 0.16),
+        ],
+        (-0.3, 0.1),
+        Tone::Body,
+    );
+    let bands = ctx.detail.bands();
+    let length = 1.0 - neck;
+    let mut bowl = sphere_grid(bands, 2 * bands, |d| {
+        Vector::new(0.5 * length * d.x, 0.5 * d.y, 0.5 * d.z)
+    });
+    bowl.turn(
+        Rotation::IDENTITY,
+        Vector::new(neck + 0.5 * length, 0.0, 0.0),
+    );
+    join([stick, bowl.toned(Tone::Body)]).fit(ctx.half)
+}
+
+/// A broom or a brush: a block of bristles at −x under a stock, and a handle to +x, as long as
+/// the box allows (a broom's is most of it, a hand brush's a little over half).
+pub(crate) fn broom(ctx: Ctx) -> Mesh {
+    let h = ctx.half;
+    // The head is about as long as the box is wide, at most 30 cm, and at most half of it.
+    let head = ((2.5 * h.y).min(0.3) / (2.0 * h.x)).min(0.5);
+    let stock = handle(0.0, head, (1.0, 0.45), ctx.detail, Tone::Body);
+    let bristles = rounded_box(
+        Vector::new(0.5 * head, 0.0, -0.3),
+        Vector::new(0.48 * head, 0.47, 0.2),
+        0.02,
+        1,
+        Tone::Dark,
+    );
+    let mut stick = handle(head - 0.01, 1.0, (0.5, 0.5), ctx.detail, Tone::Body);
+    stick.turn(Rotation::IDENTITY, Vector::new(0.0, 0.0, 0.1));
+    join([stock, bristles, stick]).fit(h)
+}
+
+/// A hammer: a handle along x and at its +x end a metal head across it, its face toward −y and
+/// its claw toward +y.
+pub(crate) fn hammer(ctx: Ctx) -> Mesh {
+    let neck = ctx.dice.between(0.8, 0.86);
+    let head_half = Vector::new(0.5 * (1.0 - neck), 0.4, 0.5);
+    let head = rounded_box(
+        Vector::new(0.5 * (1.0 + neck), -0.1, 0.0),
+        head_half,
+        0.3 * head_half.x,
+        ctx.detail.bevel_rows(),
+        Tone::Metal,
+    );
+    let claw = prism(
+        &[
+            (neck + 0.02, 0.25),
+            (0.98, 0.25),
+            (0.95, 0.5),
+            (neck + 0.06, 0.5),
+        ],
+        (-0.35, 0.35),
+        Tone::Metal,
+    );
+    join([
+        handle(0.0, neck + 0.02, (0.24, 0.8), ctx.detail, Tone::Body),
+        head,
+        claw,
+    ])
+    .fit(ctx.half)
+}
+
+/// A screwdriver: a fat handle toward −x, a metal shaft and a tip toward +x.
+pub(crate) fn screwdriver(ctx: Ctx) -> Mesh {
+    let grip = ctx.dice.between(0.38, 0.46);
+    let metal = |pt: crate::lathe::Pt| pt.tone(Tone::Metal);
+    let profile = [
+        p(0.0, 0.0),
+        fold(0.85, 0.0),
+        p(1.0, 0.08),
+        p(1.0, grip - 0.08),
+        fold(0.7, grip),
+        metal(fold(0.18, grip)),
+        metal(p(0.18, 0.93)),
+        metal(fold(0.06, 1.0)),
+        metal(p(0.0, 1.0)),
+    ];
+    revolve(&profile, ctx.detail.around(), even)
+        .lay_along_x()
+        .fit(ctx.half)
+}
+
+/// A toothbrush: a slender handle and a head toward +x with a block of white bristles on it.
+pub(crate) fn toothbrush(ctx: Ctx) -> Mesh {
+    let neck = ctx.dice.between(0.72, 0.78);
+    let rows = ctx.detail.bevel_rows();
+    let stick = rounded_box(
+        Vector::new(0.5 * neck, 0.0, -0.3),
+        Vector::new(0.5 * neck, 0.32, 0.2),
+        0.1,
+        rows,
+        Tone::Body,
+    );
+    let head = rounded_box(
+        Vector::new(0.5 * (1.0 + neck) - 0.01, 0.0, -0.35),
+        Vector::new(0.5 * (1.0 - neck) + 0.01, 0.45, 0.15),
+        0.1,
+        rows,
+        Tone::Body,
+    );
+    let bristles = rounded_box(
+        Vector::new(0.5 * (1.0 + neck) + 0.01, 0.0, 0.1),
+        Vector::new(0.5 * (1.0 - neck) - 0.02, 0.4, 0.4),
+        0.05,
+        1,
+        Tone::Light,
+    );
+    join([stick, head, bristles]).fit(ctx.half)
+}
+
+/// A closed umbrella: a J-shaped dark hook toward −x, a metal shaft, and the furled canopy in
+/// eight folds narrowing to its tip toward +x. The hook is bent at its true size (stretching a
+/// bent tube into a long thin box would fold its surface over).
+pub(crate) fn umbrella(ctx: Ctx) -> Mesh {
+    let h = ctx.half;
+    let fullest = ctx.dice.between(0.4, 0.5);
+    let profile = [
+        p(0.0, 0.0),
+        fold(0.25, 0.0),
+        p(0.5, fullest),
+        p(0.3, 0.8),
+        fold(0.08, 0.96),
+        p(0.0, 0.97),
+    ];
+    let folds = |phi: f32| 1.0 - 0.12 * (4.0 * phi).sin().abs();
+    let canopy = revolve(&profile, ctx.detail.around(), folds).lay_along_x();
+    let shaft = handle(-0.3, 1.0, (0.1, 0.1), ctx.detail, Tone::Metal);
+    // The hook takes the first fifth of the length, at most 14 cm.
+    let hook = (0.4 * h.x).min(0.14);
+    let mut furled = join([shaft, canopy]).fit(Vector::new(h.x - 0.5 * hook, h.y, h.z));
+    furled.turn(Rotation::IDENTITY, Vector::new(0.5 * hook, 0.0, 0.0));
+    // A straight grip along the axis, then a half circle down and back, then a short tail.
+    let r = 0.15 * h.y.min(h.z);
+    let bend = 0.5 * (h.z - r);
+    let centre = Vector::new(-h.x + r + bend, 0.0, -bend);
+    let mut path = vec![Vector::new(-h.x + 1.1 * hook, 0.0, 0.0)];
+    for k in 0..=8 {
+        let angle = std::f32::consts::FRAC_PI_2 + std::f32::consts::PI * k as f32 / 8.0;
+        path.push(centre + Vector::new(bend * angle.cos(), 0.0, bend * angle.sin()));
+    }
+    path.push(centre + Vector::new(0.3 * hook, 0.0, -bend));
+    let sides = (ctx.detail.around() / 3).max(4);
+    join([tube(&path, sides, |_, _| r, Tone::Dark), furled])
+}

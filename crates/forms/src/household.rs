@@ -1,7 +1,8 @@
 //! Made things about the house: rounded boards and cushions, turned legs, books, folded cloth,
 //! pens, table lamps, potted plants and a Christmas tree, shoes and hats.
 
-use crate::grid::sphere_grid;
+use crate::extrude::prism;
+use crate::grid::{signed_pow, sphere_grid};
 use crate::lathe::{even, fold, p, revolve};
 use crate::mesh::{Mesh, join};
 use crate::rounded::rounded_box;
@@ -262,9 +263,9 @@ pub(crate) fn shoe(ctx: Ctx) -> Mesh {
         (0.3, 0.45),
         (0.0, 0.33),
     ];
-    let sole = crate::utensils::prism(&sole, (0.0, 0.16), Tone::Light);
+    let sole = prism(&sole, (0.0, 0.16), Tone::Light);
     let b = ctx.detail.bands();
-    let round = |x: f32| crate::grid::signed_pow(x, 0.5);
+    let round = |x: f32| signed_pow(x, 0.5);
     let upper = sphere_grid(b, 2 * b, |d| {
         let x = 0.5 + 0.47 * round(d.x);
         // From the collar's height at the heel (x = 0) to under half of it at the toe.

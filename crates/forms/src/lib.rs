@@ -28,6 +28,7 @@
 
 mod check;
 mod dice;
+mod extrude;
 mod fittings;
 mod grid;
 mod household;

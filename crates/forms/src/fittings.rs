@@ -32,9 +32,11 @@ fn panel_box(h: Vector, proud: f32, rim: f32) -> (Vector, Vector) {
     (Vector::new(0.0, 0.5 * proud, -0.5 * rim), half)
 }
 
-/// The panel behind a front's fittings, its edges rounded.
-fn panel(h: Vector, proud: f32, detail: Detail) -> Mesh {
-    let (centre, half) = panel_box(h, proud, 0.0);
+/// The panel behind a front's fittings (less a stove's burners' `rim` on top), its edges
+/// rounded.
+fn panel(h: Vector, face: Face, rim: f32) -> Mesh {
+    let (centre, half) = panel_box(h, face.proud, rim);
+    let detail = face.detail;
     block(
         centre,
         half,
@@ -214,7 +216,7 @@ fn knob_radius(h: Vector) -> f32 {
 pub(crate) fn door(mut ctx: Ctx) -> Mesh {
     let h = ctx.half;
     let face = Face::of(h, ctx.detail);
-    let mut pieces = vec![panel(h, face.proud, ctx.detail)];
+    let mut pieces = vec![panel(h, face, 0.0)];
     let inset = (0.12 * h.x.min(h.z) * 2.0)
         .clamp(0.02, 0.1)
         .min(0.3 * h.x.min(h.z));
@@ -269,7 +271,7 @@ pub(crate) fn glass_door(ctx: Ctx) -> Mesh {
     let split = h.x - 2.0 * h.x * ctx.dice.between(0.25, 0.32);
     let window = face.window((-h.x + margin, -h.z + margin), (split, h.z - margin));
     let bar = face.bar((0.5 * (split + h.x), 0.0), 1.4 * h.z, true);
-    join([panel(h, face.proud, ctx.detail), window, bar])
+    join([panel(h, face, 0.0), window, bar])
 }
 
 /// A drawer's front: a panel with a lying bar or a knob at its middle, a little above.
@@ -283,7 +285,7 @@ pub(crate) fn drawer_front(mut ctx: Ctx) -> Mesh {
     } else {
         face.knob((0.0, z), knob_radius(h), Tone::Metal)
     };
-    join([panel(h, face.proud, ctx.detail), pull])
+    join([panel(h, face, 0.0), pull])
 }
 
 /// A door hinged at its bottom edge (a dishwasher's): a panel with a lying bar along its top.
@@ -291,7 +293,7 @@ pub(crate) fn drop_door(ctx: Ctx) -> Mesh {
     let h = ctx.half;
     let face = Face::of(h, ctx.detail);
     let bar = face.bar((0.0, top_bar(h, face)), 1.5 * h.x, false);
-    join([panel(h, face.proud, ctx.detail), bar])
+    join([panel(h, face, 0.0), bar])
 }
 
 /// Where a bar along the top of a door hinged at its bottom lies: 85 % of the way up, and
@@ -307,7 +309,7 @@ pub(crate) fn oven_door(ctx: Ctx) -> Mesh {
     let (wx, top) = (0.72 * h.x, ctx.dice.between(0.45, 0.6) * h.z);
     let window = face.window((-wx, -0.55 * h.z), (wx, top));
     let bar = face.bar((0.0, top_bar(h, face)), 1.5 * h.x, false);
-    join([panel(h, face.proud, ctx.detail), window, bar])
+    join([panel(h, face, 0.0), window, bar])
 }
 
 /// A washer's or dryer's door: a panel with a round window in a metal ring, a little above
@@ -318,7 +320,7 @@ pub(crate) fn porthole(ctx: Ctx) -> Mesh {
     let radius = 0.62 * h.x.min(h.z) * ctx.dice.between(0.9, 1.0);
     let window = face.porthole((-0.1 * h.x, 0.1 * h.z), radius);
     let bar = face.bar((0.85 * h.x, 0.1 * h.z), 0.5 * radius, true);
-    join([panel(h, face.proud, ctx.detail), window, bar])
+    join([panel(h, face, 0.0), window, bar])
 }
 
 /// A control panel: a block with a row of three to five knobs and a dark display on its front.
@@ -329,7 +331,7 @@ pub(crate) fn controls(ctx: Ctx) -> Mesh {
     let row = 1.2 * h.x;
     let step = row / knobs as f32;
     let radius = (0.35 * step).min(0.6 * h.z).min(0.02);
-    let mut pieces = vec![panel(h, face.proud, ctx.detail)];
+    let mut pieces = vec![panel(h, face, 0.0)];
     for k in 0..knobs {
         let x = -h.x + 0.1 * h.x + step * (k as f32 + 0.5);
         pieces.push(face.knob((x, 0.0), radius, Tone::Dark));
@@ -349,15 +351,7 @@ pub(crate) fn cooktop(ctx: Ctx) -> Mesh {
     let h = ctx.half;
     let rim = burner_rim(h);
     let face = Face::of(h, ctx.detail);
-    let (centre, body_half) = panel_box(h, face.proud, rim);
-    let body = block(
-        centre,
-        body_half,
-        bevel(body_half),
-        ctx.detail.bevel_rows(),
-        ctx.detail,
-        Tone::Body,
-    );
+    let body = panel(h, face, rim);
     let radius = (0.4 * h.x).min(0.5 * h.y).min(0.11) * ctx.dice.between(0.85, 1.0);
     let mut pieces = vec![body];
     for (fx, fy) in [(-0.5, -0.4), (0.5, -0.4), (-0.5, 0.4), (0.5, 0.4)] {

@@ -72,6 +72,8 @@ fn toned_surface(tone: Tone, surface: [u32; 2]) -> [u32; 2] {
 pub(crate) struct FrameGeometry {
     pub(crate) vertices: Vec<FrameVertex>,
     pub(crate) indices: Vec<u32>,
+    /// The drawing order's list, kept between frames so that a frame allocates none.
+    order: Vec<(f32, usize)>,
 }
 
 /// The affine transform whose rows are `rows`.
@@ -97,23 +99,19 @@ fn faces(vertices: &[FrameVertex], triangle: &[u32], eye: Vector) -> bool {
     (b - a).cross(c - a).dot(eye - a) > 0.0
 }
 
-/// `instances` in the order they are drawn: by the distance of their origin from `eye`, nearest
-/// first, ties in the gatherer's order. The depth test then turns away most of what lies behind
+/// Fills `order` with `instances`' indices in the order they are drawn: by the distance of their
+/// origin from `eye`, nearest first, ties in the gatherer's order. The depth test then turns away most of what lies behind
 /// a nearer surface before its fragments are shaded (lavapipe tests depth ahead of a fragment
 /// shader that writes none), instead of shading a room's floor and walls and then the furniture
 /// over them: the realistic profile's frames took a fifth less time. The order depends on the
 /// scene and the eye alone, so a frame stays the same for the same state.
-fn nearest_first(instances: &[Instance], eye: Vector) -> impl Iterator<Item = &Instance> {
-    let mut order: Vec<(f32, usize)> = instances
-        .iter()
-        .enumerate()
-        .map(|(k, instance)| {
-            let [x, y, z] = instance.model.map(|row| row[3]);
-            (Vector::new(x, y, z).distance_squared(eye), k)
-        })
-        .collect();
+fn nearest_first(instances: &[Instance], eye: Vector, order: &mut Vec<(f32, usize)>) {
+    order.clear();
+    order.extend(instances.iter().enumerate().map(|(k, instance)| {
+        let [x, y, z] = instance.model.map(|row| row[3]);
+        (Vector::new(x, y, z).distance_squared(eye), k)
+    }));
     order.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-    order.into_iter().map(|(_, k)| &instances[k])
 }
 
 impl FrameGeometry {
@@ -128,7 +126,9 @@ impl FrameGeometry {
     ) {
         self.vertices.clear();
         self.indices.clear();
-        for instance in nearest_first(instances, eye) {
+        let mut order = std::mem::take(&mut self.order);
+        nearest_first(instances, eye, &mut order);
+        for instance in order.iter().map(|&(_, k)| &instances[k]) {
             let mesh = meshes.mesh(instance.mesh);
             let base = self.vertices.len();
             let model = affine(&instance.model);
@@ -164,6 +164,7 @@ impl FrameGeometry {
                     .extend(triangle.iter().map(|&i| base as u32 + i));
             }
         }
+        self.order = order;
     }
 
     pub(crate) fn triangles(&self) -> u64 {

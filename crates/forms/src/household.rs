@@ -1,5 +1,6 @@
 //! Made things about the house: rounded boards and cushions, turned legs, books, folded cloth,
-//! pens, table lamps, potted plants and a Christmas tree, shoes and hats.
+//! pens, table lamps, potted plants and a Christmas tree, shoes and hats, a coat hanger (its
+//! wire at its true size), a squeezed tube, a mousetrap.
 
 use crate::extrude::prism;
 use crate::grid::{signed_pow, sphere_grid};
@@ -7,9 +8,10 @@ use crate::lathe::{even, fold, p, revolve};
 use crate::mesh::{Mesh, join};
 use crate::rounded::rounded_box;
 use crate::tone::Tone;
+use crate::tube::{fillet, tube};
 use crate::{Ctx, Detail, bevel};
 use rapier3d::math::{Rotation, Vector};
-use std::f32::consts::{FRAC_PI_2, TAU};
+use std::f32::consts::{FRAC_PI_2, PI, TAU};
 
 /// A box with rounded edges ([`bevel`]).
 pub(crate) fn rounded(ctx: Ctx) -> Mesh {
@@ -297,4 +299,120 @@ pub(crate) fn hat(ctx: Ctx) -> Mesh {
         p(0.0, 1.0),
     ];
     revolve(&profile, ctx.detail.around(), even).fit(ctx.half)
+}
+
+/// A coat hanger lying flat, at its true size: a wire of the box's thickness bent into a
+/// triangle whose bar runs along −y, and a hook rising from its apex and curling over toward +x.
+pub(crate) fn hanger(ctx: Ctx) -> Mesh {
+    let h = ctx.half;
+    let r = h.z.min(0.1 * h.y);
+    let sides = (ctx.detail.around() / 2).max(4);
+    let wire = |path: &[Vector]| tube(path, sides, |_, _| r, Tone::Body);
+    let bar = -(h.y - r);
+    let apex = Vector::new(0.0, bar + ctx.dice.between(0.42, 0.5) * 2.0 * h.y, 0.0);
+    let corner = Vector::new(h.x - r, bar, 0.0);
+    let left = Vector::new(-corner.x, bar, 0.0);
+    // The hook: a circle of radius `bend` whose top touches the box, its left side over the apex.
+    let bend = (0.17 * 2.0 * h.y).min(0.5 * (h.x - r));
+    let centre = Vector::new(bend, h.y - r - bend, 0.0);
+    let steps = ctx.detail.bands();
+    let mut hook = vec![apex - Vector::new(0.0, 0.5 * r, 0.0)];
+    hook.extend((0..=steps).map(|k| {
+        let a = PI - (PI + PI / 6.0) * k as f32 / steps as f32;
+        centre + Vector::new(bend * a.cos(), bend * a.sin(), 0.0)
+    }));
+    // The triangle as one run with rounded corners, its ends passing each other along the
+    // bar from the apex (a ring on a ring would be an open seam), and the hook rising from
+    // inside the wire at the apex.
+    let along = (corner - apex).normalize();
+    let triangle = [
+        apex + along * 0.5 * r,
+        corner,
+        left,
+        apex,
+        apex + along * 2.5 * r,
+    ];
+    let mut hanger = join([wire(&fillet(&triangle, 2.5 * r, steps / 2)), wire(&hook)]);
+    // The rounded corners stop short of the box's ends: the hanger is widened to reach them.
+    let (lo, hi) = hanger.bounds();
+    let widen = h.x / lo.x.abs().max(hi.x).max(1e-9);
+    hanger.stretch(Vector::new(widen, 1.0, 1.0), Vector::ZERO);
+    hanger
+}
+
+/// A squeezed tube lying along x: a round cap toward −x, a body flattening from round at the
+/// cap to flat at the other end, and a crimped seal there.
+pub(crate) fn squeeze_tube(ctx: Ctx) -> Mesh {
+    let cap_end = ctx.dice.between(0.1, 0.14);
+    let b = ctx.detail.bands();
+    // Poles toward ±x: (d.x, d.y, d.z) → (x from d.z, y from d.x, z from d.y), a turn.
+    let body = sphere_grid(b, 2 * b, |d| {
+        let t = 0.5 * (signed_pow(d.z, 0.4) + 1.0);
+        let (wide, flat) = (0.36 + 0.14 * t, 0.34 * (1.0 - t).powf(0.7) + 0.02);
+        Vector::new(
+            cap_end + (0.93 - cap_end) * t,
+            wide * signed_pow(d.x, 0.6),
+            flat * signed_pow(d.y, 0.6),
+        )
+    });
+    let seal = rounded_box(
+        Vector::new(0.955, 0.0, 0.0),
+        Vector::new(0.045, 0.5, 0.025),
+        0.01,
+        1,
+        Tone::Body,
+    );
+    let profile = [
+        p(0.0, 0.0),
+        fold(0.85, 0.0),
+        p(1.0, 0.12),
+        p(1.0, 0.88),
+        fold(0.85, 1.0),
+        p(0.0, 1.0),
+    ]
+    .map(|pt| pt.tone(Tone::Dark));
+    let mut cap = revolve(&profile, ctx.detail.around(), even);
+    cap.stretch(Vector::new(0.3, 0.3, cap_end + 0.02), Vector::ZERO);
+    // The cap's axis from z to x.
+    cap.turn(Rotation::from_rotation_y(FRAC_PI_2), Vector::ZERO);
+    join([body, seal, cap]).fit(ctx.half)
+}
+
+/// A mousetrap: a wooden board, a metal bait plate, and a wire bar (its springs coiled at the
+/// middle) lying open across it.
+pub(crate) fn mousetrap(ctx: Ctx) -> Mesh {
+    let rows = ctx.detail.bevel_rows();
+    let r = 0.06;
+    let sides = (ctx.detail.around() / 3).max(6);
+    let bar = [
+        Vector::new(0.02, -0.78, 0.55),
+        Vector::new(0.8, -0.78, 0.55),
+        Vector::new(0.8, 0.78, 0.55),
+        Vector::new(0.02, 0.78, 0.55),
+    ];
+    let mut pieces = vec![
+        rounded_box(
+            Vector::new(0.0, 0.0, 0.22),
+            Vector::new(1.0, 1.0, 0.22),
+            0.1,
+            rows,
+            Tone::Body,
+        ),
+        tube(&fillet(&bar, 0.2, 3), sides, |_, _| r, Tone::Metal),
+        rounded_box(
+            Vector::new(-0.5, 0.0, 0.47),
+            Vector::new(0.24, 0.3, 0.04),
+            0.02,
+            1,
+            Tone::Metal,
+        ),
+    ];
+    for side in [-1.0f32, 1.0] {
+        let coil = [
+            Vector::new(0.0, side * 0.15, 0.55),
+            Vector::new(0.0, side * 0.6, 0.55),
+        ];
+        pieces.push(tube(&coil, sides, |_, _| 0.14, Tone::Metal));
+    }
+    join(pieces).fit(ctx.half)
 }

@@ -6,10 +6,17 @@
 //! everywhere.
 //!
 //! Families by file: `household` (boards, cushions, legs, books, cloth, lamps, plants, a
-//! Christmas tree, shoes, hats, a trunk), `produce` (and a roast chicken), `tableware`,
-//! `utensils` (knives, forks, spoons, brooms and brushes, hammers, screwdrivers, toothbrushes,
-//! umbrellas), `fittings` (doors and drawer fronts with their pulls,
-//! control panels, a stove's top, a tap), `upholstery` (a made bed, a sofa's seat).
+//! Christmas tree, shoes, hats, a trunk, coat hangers, squeezed tubes, mousetraps), `produce`
+//! (and a roast chicken, fish, herbs, tea bags), `tableware` (and jars with their lids, baking
+//! dishes, kettles, hamburgers, sushi rolls), `groceries` (cartons, jugs, bags of crisps, paper
+//! sacks, steaks, sweets, sandwiches, salads, cookies), `utensils` (knives, forks, spoons,
+//! brooms and brushes, hammers, screwdrivers, toothbrushes, umbrellas, saws, scrapers,
+//! scrubbing brushes, dustpans), `fittings` (doors and drawer fronts with their pulls, control
+//! panels, a stove's top, a tap), `upholstery` (a made bed, a sofa's seat and back),
+//! `machines` (a car, a kettle barbecue, an upright vacuum), `gadgets` (headphones, glasses, a
+//! mouse, office machines, calculators, blenders, smoke alarms), `bags` (backpacks, duffel
+//! bags, briefcases, pencil cases), `decor` (framed pictures, wreaths, teddy bears, bows, spools
+//! of ribbon, stockings), `jewelry` (bangles, rings, necklaces, lipsticks).
 //!
 //! It owns geometry only: it must not know synsets (which form an object takes is the assets'
 //! choice), GPUs or the world's state. Every mesh lies inside its box, so what is drawn is what
@@ -26,13 +33,19 @@
 //! assert!(bottle.triangles.len() > 300);
 //! ```
 
+mod bags;
 mod check;
+mod decor;
 mod dice;
 mod extrude;
 mod fittings;
+mod gadgets;
 mod grid;
+mod groceries;
 mod household;
+mod jewelry;
 mod lathe;
+mod machines;
 mod mesh;
 mod produce;
 mod rounded;
@@ -165,6 +178,56 @@ pub fn mesh(form: Form, half: Vector, seed: u64, detail: Detail) -> Mesh {
         Form::Umbrella => utensils::umbrella(ctx),
         Form::Shoe => household::shoe(ctx),
         Form::Hat => household::hat(ctx),
+        Form::Jar => tableware::jar(ctx),
+        Form::Lid => tableware::lid(ctx),
+        Form::Casserole => tableware::casserole(ctx),
+        Form::Car => machines::car(ctx),
+        Form::Grill => machines::grill(ctx),
+        Form::Vacuum => machines::vacuum(ctx),
+        Form::Headphones => gadgets::headphones(ctx),
+        Form::Glasses => gadgets::glasses(ctx),
+        Form::Mouse => gadgets::mouse(ctx),
+        Form::Office => gadgets::office(ctx),
+        Form::Keypad => gadgets::keypad(ctx),
+        Form::Backpack => bags::backpack(ctx),
+        Form::Duffel => bags::duffel(ctx),
+        Form::Saw => utensils::saw(ctx),
+        Form::Scraper => utensils::scraper(ctx),
+        Form::ScrubBrush => utensils::scrub_brush(ctx),
+        Form::Dustpan => utensils::dustpan(ctx),
+        Form::Hanger => household::hanger(ctx),
+        Form::Tube => household::squeeze_tube(ctx),
+        Form::Painting => decor::painting(ctx),
+        Form::Wreath => decor::wreath(ctx),
+        Form::Teddy => decor::teddy(ctx),
+        Form::Bangle => jewelry::bangle(ctx),
+        Form::Ring => jewelry::ring(ctx),
+        Form::Necklace => jewelry::necklace(ctx),
+        Form::Fish => produce::fish(ctx),
+        Form::Herbs => produce::herbs(ctx),
+        Form::TeaBag => produce::tea_bag(ctx),
+        Form::Burger => tableware::burger(ctx),
+        Form::Maki => tableware::maki(ctx),
+        Form::Kettle => tableware::kettle(ctx),
+        Form::Blender => gadgets::blender(ctx),
+        Form::Detector => gadgets::detector(ctx),
+        Form::Carton => groceries::carton(ctx),
+        Form::Jug => groceries::jug(ctx),
+        Form::Pouch => groceries::pouch(ctx),
+        Form::Sack => groceries::sack(ctx),
+        Form::Steak => groceries::steak(ctx),
+        Form::Sweet => groceries::sweet(ctx),
+        Form::Sandwich => groceries::sandwich(ctx),
+        Form::Salad => groceries::salad(ctx),
+        Form::Cookie => groceries::cookie(ctx),
+        Form::Bow => decor::bow(ctx),
+        Form::Spool => decor::spool(ctx),
+        Form::Stocking => decor::stocking(ctx),
+        Form::Lipstick => jewelry::lipstick(ctx),
+        Form::Mousetrap => household::mousetrap(ctx),
+        Form::Briefcase => bags::briefcase(ctx),
+        Form::PencilCase => bags::pencil_case(ctx),
+        Form::Backrest => upholstery::backrest(ctx),
     };
     // Details of a fixed size (a pull's bar, a book's boards) in a box smaller than they are
     // would stick out of it: they are pressed flat against its sides instead, so that what is
@@ -188,7 +251,7 @@ pub fn solid_core(form: Form, half: Vector) -> Option<(Vector, Vector)> {
         | Form::Porthole
         | Form::Controls
         | Form::Cooktop => Some(fittings::panel_core(form, half)),
-        Form::Bedding | Form::Seat => Some(upholstery::core(form, half)),
+        Form::Bedding | Form::Seat | Form::Backrest => Some(upholstery::core(form, half)),
         _ => None,
     }
 }

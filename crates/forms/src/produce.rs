@@ -1,7 +1,9 @@
 //! Food that grows: fruit, vegetables and a loaf, as turned profiles with a little wobble, tubes
-//! and clusters of balls, each stretched to fill its box.
+//! and clusters of balls, each stretched to fill its box; and a roast chicken, a whole fish, a
+//! bunch of herbs, a tea bag.
 
 use crate::Ctx;
+use crate::extrude::prism;
 use crate::grid::{signed_pow, sphere_grid};
 use crate::lathe::{Pt, even, fold, p, revolve};
 use crate::mesh::{Mesh, join};
@@ -304,4 +306,97 @@ pub(crate) fn roast(ctx: Ctx) -> Mesh {
         ));
     }
     join(pieces).fit(ctx.half)
+}
+
+/// A whole fish lying on its side along x: a body deepest behind its head (−x), a dark eye on
+/// each side, a fin along its back (+y) and a forked tail at +x.
+pub(crate) fn fish(ctx: Ctx) -> Mesh {
+    let b = ctx.detail.bands();
+    let deep = ctx.dice.between(0.42, 0.52);
+    // Poles toward ±x: (d.x, d.y, d.z) → (x from d.z, y from d.x, z from d.y), a turn.
+    let body = sphere_grid(b, 2 * b, |d| {
+        let s = d.z;
+        let taper = 1.0 - 0.35 * s;
+        Vector::new(-0.225 + 0.775 * s, deep * taper * d.x, 0.2 * taper * d.y)
+    });
+    let flat = (-0.04, 0.04);
+    let mut pieces = vec![
+        body,
+        prism(
+            &[(0.42, -0.02), (0.86, 0.05), (1.0, 0.42)],
+            flat,
+            Tone::Body,
+        ),
+        prism(
+            &[(0.42, 0.02), (1.0, -0.42), (0.86, -0.05)],
+            flat,
+            Tone::Body,
+        ),
+        prism(
+            &[(-0.4, 0.3), (0.1, 0.28), (-0.05, 0.5)],
+            (-0.02, 0.02),
+            Tone::Body,
+        ),
+    ];
+    let small = (b / 3).max(3);
+    for side in [-1.0f32, 1.0] {
+        let eye = Vector::new(-0.75, 0.08, side * 0.15);
+        pieces.push(sphere_grid(small, 2 * small, |d| eye + d * 0.05).toned(Tone::Dark));
+    }
+    join(pieces).fit(ctx.half)
+}
+
+/// A bunch of herbs standing: pale stalks gathered low and spreading, a leafy sprig on each.
+pub(crate) fn herbs(ctx: Ctx) -> Mesh {
+    let stalks = ctx.dice.count(6, 9);
+    let spin = ctx.dice.between(0.0, TAU);
+    let sides = (ctx.detail.around() / 4).max(5);
+    let bands = (ctx.detail.bands() / 2).max(3);
+    let mut pieces = Vec::new();
+    for k in 0..stalks {
+        let a = spin + TAU * k as f32 / stalks as f32;
+        let spread = ctx.dice.between(0.35, 0.6);
+        let tip = Vector::new(
+            spread * a.cos(),
+            spread * a.sin(),
+            ctx.dice.between(0.55, 0.7),
+        );
+        let path = [
+            Vector::new(0.06 * a.cos(), 0.06 * a.sin(), 0.0),
+            Vector::new(0.04 * a.cos(), 0.04 * a.sin(), 0.25),
+            tip,
+        ];
+        pieces.push(tube(&path, sides, |_, _| 0.035, Tone::Stalk));
+        let at = tip + Vector::new(0.0, 0.0, 0.12);
+        let lump = ctx.dice.between(0.1, 0.2);
+        pieces.push(sphere_grid(bands, 2 * bands, |d| {
+            let bumpy = 1.0 + lump * (6.0 * d.x).sin() * (5.0 * d.y).cos();
+            at + Vector::new(0.3 * d.x, 0.3 * d.y, 0.2 * d.z) * bumpy
+        }));
+    }
+    join(pieces).fit(ctx.half)
+}
+
+/// A tea bag lying flat: a paper pouch toward −y in the object's colour, a string from its top
+/// to a paper tag toward +y.
+pub(crate) fn tea_bag(ctx: Ctx) -> Mesh {
+    let b = ctx.detail.bands();
+    let pouch = sphere_grid(b, 2 * b, |d| {
+        Vector::new(
+            0.8 * signed_pow(d.x, 0.3),
+            -0.35 + 0.65 * signed_pow(d.y, 0.3),
+            0.5 * d.z,
+        )
+    });
+    let string = crate::rounded::plain_box(
+        Vector::new(0.0, 0.5, 0.2),
+        Vector::new(0.015, 0.25, 0.03),
+        Tone::Paper,
+    );
+    let tag = prism(
+        &[(-0.3, 0.7), (0.3, 0.7), (0.3, 1.0), (-0.3, 1.0)],
+        (0.15, 0.3),
+        Tone::Paper,
+    );
+    join([pouch, string, tag]).fit(ctx.half)
 }

@@ -76,6 +76,23 @@ pub(crate) fn rounded_box(
     mesh
 }
 
+/// [`rounded_box`] with its centre and half size given as arrays (a form's frame's units).
+pub(crate) fn boxed(
+    centre: [f32; 3],
+    half: [f32; 3],
+    radius: f32,
+    rows: usize,
+    tone: Tone,
+) -> Mesh {
+    rounded_box(
+        Vector::from_array(centre),
+        Vector::from_array(half),
+        radius,
+        rows,
+        tone,
+    )
+}
+
 /// A box rounded by `radius` with `rows` through each edge at the fine level, plain at the
 /// coarse one: fronts and upholstery are drawn coarse wherever their rounding is under a pixel,
 /// and what is left to see is their parts' outlines (a pull, a pillow).

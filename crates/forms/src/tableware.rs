@@ -1,13 +1,15 @@
 //! Round things to drink from, eat from and cook in: bottles, cans, cups, mugs, bowls, plates,
-//! pots, buckets and cakes, turned from profiles (`lathe.rs`) with handles swept as tubes.
+//! pots, buckets, cakes, jars and their lids, baking dishes, kettles, hamburgers and sushi
+//! rolls, turned from profiles (`lathe.rs`) with handles swept as tubes.
 //! Profiles are in units of the box (radius 1 at its widest, height 0 to 1) unless a handle needs
 //! room beside the body, when the form is built at its true size.
 
-use crate::Ctx;
 use crate::lathe::{Pt, even, fold, p, revolve};
 use crate::mesh::{Mesh, join};
+use crate::rounded::rounded_box;
 use crate::tone::Tone;
 use crate::tube::tube;
+use crate::{Ctx, Detail};
 use rapier3d::math::Vector;
 use std::f32::consts::{FRAC_PI_2, PI};
 
@@ -210,4 +212,165 @@ pub(crate) fn cake(ctx: Ctx) -> Mesh {
         p(0.0, 1.0).tone(Tone::Light),
     ];
     turned(&profile, &ctx)
+}
+
+/// A glass jar: a flat base, straight sides, a rounded shoulder and a short neck with a thread
+/// (its lid is a part of its own, drawn as a [`lid`]).
+pub(crate) fn jar(ctx: Ctx) -> Mesh {
+    let shoulder = ctx.dice.between(0.68, 0.8);
+    let neck = ctx.dice.between(0.72, 0.82);
+    let profile = [
+        p(0.0, 0.0),
+        fold(0.92, 0.0),
+        p(0.99, 0.03),
+        p(1.0, 0.08),
+        p(1.0, shoulder),
+        p(0.96, shoulder + 0.08),
+        p(neck + 0.04, shoulder + 0.14),
+        fold(neck, shoulder + 0.16),
+        fold(neck, 0.9),
+        fold(neck + 0.03, 0.92),
+        fold(neck + 0.03, 0.96),
+        fold(neck, 0.97),
+        fold(neck, 1.0),
+        p(0.0, 1.0),
+    ];
+    turned(&profile, &ctx)
+}
+
+/// A jar's screw lid: a metal cap a little narrower than the jar's box, its edge knurled.
+pub(crate) fn lid(ctx: Ctx) -> Mesh {
+    let metal = |pt: Pt| pt.tone(Tone::Metal);
+    let profile = [
+        p(0.0, 0.0),
+        fold(0.84, 0.0),
+        fold(0.86, 0.1),
+        fold(0.86, 0.8),
+        p(0.83, 0.98),
+        p(0.0, 1.0),
+    ]
+    .map(metal);
+    let ridges = match ctx.detail {
+        Detail::Fine => 0.012,
+        Detail::Coarse => 0.0,
+    };
+    let knurl = move |phi: f32| 1.0 + ridges * (48.0 * phi).cos();
+    let around = 2 * ctx.detail.around();
+    let mut made = revolve(&profile, around, knurl);
+    // The box's own proportions; the knurl's 1 % swell stays inside it.
+    let h = ctx.half;
+    made.stretch(
+        Vector::new(h.x / 1.02, h.y / 1.02, 2.0 * h.z),
+        Vector::new(0.0, 0.0, -h.z),
+    );
+    made
+}
+
+/// A baking dish with food in it: a pale dish with a rolled rim and a lug at each end (±x),
+/// the food (in the object's colour, which cooking browns) filling it and domed a little.
+pub(crate) fn casserole(ctx: Ctx) -> Mesh {
+    let rows = ctx.detail.bevel_rows();
+    let lug = ctx.dice.between(0.07, 0.1);
+    let dish_half = Vector::new(1.0 - lug, 0.5, 0.36);
+    let dish = rounded_box(
+        Vector::new(0.0, 0.0, 0.36),
+        dish_half,
+        0.12,
+        rows,
+        Tone::Light,
+    );
+    let food = rounded_box(
+        Vector::new(0.0, 0.0, 0.74),
+        Vector::new(dish_half.x - 0.05, 0.45, 0.26),
+        0.12,
+        rows,
+        Tone::Body,
+    );
+    let lugs = [1.0f32, -1.0].map(|side| {
+        rounded_box(
+            Vector::new(side * (1.0 - lug), 0.0, 0.6),
+            Vector::new(lug, 0.3, 0.05),
+            0.03,
+            rows,
+            Tone::Light,
+        )
+    });
+    let [a, b] = lugs;
+    join([dish, food, a, b]).fit(ctx.half)
+}
+
+/// A hamburger: a bun in the object's colour (which cooking browns) around a dark patty and a
+/// leaf of lettuce, its top domed.
+pub(crate) fn burger(ctx: Ctx) -> Mesh {
+    let patty = ctx.dice.between(0.14, 0.2);
+    let bun = 0.25;
+    let profile = [
+        p(0.0, 0.0),
+        fold(0.9, 0.0),
+        p(0.97, 0.08),
+        fold(0.96, bun),
+        fold(1.0, bun + 0.01).tone(Tone::Stem),
+        fold(1.0, bun + patty),
+        fold(0.99, bun + patty + 0.01).tone(Tone::Leaf),
+        fold(1.0, bun + patty + 0.05),
+        fold(0.95, bun + patty + 0.07).tone(Tone::Body),
+        p(0.98, bun + patty + 0.15),
+        p(0.9, 0.84),
+        p(0.6, 0.97),
+        p(0.0, 1.0),
+    ];
+    turned(&profile, &ctx)
+}
+
+/// A sushi roll: dark seaweed around its side, pale rice on its top and bottom, the filling in
+/// the object's colour at the centre of its top.
+pub(crate) fn maki(ctx: Ctx) -> Mesh {
+    let filling = ctx.dice.between(0.3, 0.45);
+    let profile = [
+        p(0.0, 0.0).tone(Tone::Light),
+        fold(0.92, 0.0),
+        fold(1.0, 0.04).tone(Tone::Dark),
+        fold(1.0, 0.96),
+        fold(0.92, 1.0).tone(Tone::Light),
+        fold(filling, 1.0).tone(Tone::Body),
+        p(0.0, 1.0),
+    ];
+    turned(&profile, &ctx)
+}
+
+/// A kettle: a body narrowing to a lid with a dark knob, a spout rising toward +x and a dark
+/// handle arching over the lid along x.
+pub(crate) fn kettle(ctx: Ctx) -> Mesh {
+    let waist = ctx.dice.between(0.5, 0.62);
+    let body = [
+        p(0.0, 0.0),
+        fold(0.68, 0.0),
+        p(0.72, 0.05),
+        p(0.7, 0.35),
+        p(waist, 0.55),
+        p(0.45, 0.64),
+        fold(0.36, 0.68),
+        fold(0.12, 0.7).tone(Tone::Dark),
+        p(0.1, 0.76),
+        p(0.0, 0.78),
+    ];
+    let sides = (ctx.detail.around() / 2).max(6);
+    let spout = [
+        Vector::new(0.5, 0.0, 0.2),
+        Vector::new(0.8, 0.0, 0.42),
+        Vector::new(0.95, 0.0, 0.6),
+    ];
+    let steps = ctx.detail.bands() / 2;
+    let handle: Vec<Vector> = (0..=steps)
+        .map(|k| {
+            let a = PI * k as f32 / steps as f32;
+            Vector::new(-0.07 + 0.38 * a.cos(), 0.0, 0.58 + 0.36 * a.sin())
+        })
+        .collect();
+    join([
+        revolve(&body, ctx.detail.around(), even),
+        tube(&spout, sides, |i, _| 0.09 - 0.02 * i as f32, Tone::Body),
+        tube(&handle, sides, |_, _| 0.05, Tone::Dark),
+    ])
+    .fit(ctx.half)
 }

@@ -66,3 +66,42 @@ pub(crate) fn tube(
     }
     mesh
 }
+
+/// `points` with each inner corner rounded by an arc of radius `bend` (less where the sides
+/// are too short for it), `steps` segments along each arc, so that a tube bent there does not
+/// fold into itself.
+pub(crate) fn fillet(points: &[Vector], bend: f32, steps: usize) -> Vec<Vector> {
+    let n = points.len();
+    let mut out = vec![points[0]];
+    for k in 1..n.saturating_sub(1) {
+        let (corner, before, after) = (points[k], points[k - 1], points[k + 1]);
+        let (u, v) = (
+            (before - corner).normalize_or(Vector::X),
+            (after - corner).normalize_or(Vector::X),
+        );
+        let half_angle = 0.5 * u.dot(v).clamp(-1.0, 1.0).acos();
+        if !(1e-3..=1.5).contains(&half_angle) {
+            // Almost straight on, or turned back on itself: left as it is.
+            out.push(corner);
+            continue;
+        }
+        let reach = 0.45 * corner.distance(before).min(corner.distance(after));
+        let cut = (bend / half_angle.tan()).min(reach);
+        let radius = cut * half_angle.tan();
+        let centre = corner + (u + v).normalize() * (radius / half_angle.sin());
+        let (from, to) = (
+            (corner + u * cut - centre).normalize(),
+            (corner + v * cut - centre).normalize(),
+        );
+        let sweep = from.dot(to).clamp(-1.0, 1.0).acos().max(1e-6);
+        out.extend((0..=steps).map(|s| {
+            let t = s as f32 / steps as f32;
+            let d = (from * ((1.0 - t) * sweep).sin() + to * (t * sweep).sin()) / sweep.sin();
+            centre + d * radius
+        }));
+    }
+    if n > 1 {
+        out.push(points[n - 1]);
+    }
+    out
+}

@@ -1,5 +1,5 @@
-//! Soft furnishings on furniture: a made bed's mattress under a duvet with its pillows, and a
-//! sofa's seat with its row of cushions. Each fills the box of the collider it draws, so that
+//! Soft furnishings on furniture: a made bed's mattress under a duvet with its pillows, a
+//! sofa's seat with its row of cushions and its back with cushions leaning on it. Each fills the box of the collider it draws, so that
 //! whatever rests on it rests where it is seen (a pillow's top is the collider's top; the duvet
 //! lies 2 cm under it, the tolerance within which a drawn surface may differ from the collider).
 
@@ -66,12 +66,19 @@ fn plinth_radius(half: Vector) -> f32 {
 /// The box a form of this file fills wholly (its mattress or plinth inside its rounding), as
 /// centre and half size: what [`crate::solid_core`] says of them.
 pub(crate) fn core(form: Form, h: Vector) -> (Vector, Vector) {
-    let (centre, half, radius) = if form == Form::Bedding {
-        let (c, half) = mattress_box(h);
-        (c, half, mattress_radius(half))
-    } else {
-        let (c, half) = plinth_box(h);
-        (c, half, plinth_radius(half))
+    let (centre, half, radius) = match form {
+        Form::Bedding => {
+            let (c, half) = mattress_box(h);
+            (c, half, mattress_radius(half))
+        }
+        Form::Backrest => {
+            let (c, half) = back_frame(h);
+            (c, half, plinth_radius(half))
+        }
+        _ => {
+            let (c, half) = plinth_box(h);
+            (c, half, plinth_radius(half))
+        }
     };
     (centre, half - Vector::splat(radius))
 }
@@ -129,6 +136,51 @@ pub(crate) fn bedding(ctx: Ctx) -> Mesh {
             Vector::new(0.5 * width, pillow_depth, thick),
             ctx.detail,
             Tone::Light,
+        ));
+    }
+    join(pieces)
+}
+
+/// How far a sofa's back cushions stand in from the ends of its back, m: the sofa's arms are
+/// 15 cm wide (`crates/assets`, `furniture.rs`), and the cushions sit between them.
+const ARM: f32 = 0.15;
+
+/// The frame behind a sofa's back cushions, as centre and half size: the back half of the box.
+fn back_frame(h: Vector) -> (Vector, Vector) {
+    (
+        Vector::new(0.0, 0.5 * h.y, 0.0),
+        Vector::new(h.x, 0.5 * h.y, h.z),
+    )
+}
+
+/// A sofa's back (its front toward −y): a frame in the back half of the box and, leaning on its
+/// front, two cushions (a back under 1.9 m wide) or three between the arms, a little under the
+/// frame's top.
+pub(crate) fn backrest(ctx: Ctx) -> Mesh {
+    let h = ctx.half;
+    let (centre, frame_half) = back_frame(h);
+    let frame = block(
+        centre,
+        frame_half,
+        plinth_radius(frame_half),
+        ctx.detail.bevel_rows(),
+        ctx.detail,
+        Tone::Body,
+    );
+    let count = if h.x < 0.95 { 2 } else { 3 };
+    let inner = (h.x - ARM.min(0.2 * h.x)).max(0.5 * h.x);
+    let gap = 0.01f32.min(0.05 * h.x);
+    let width = (2.0 * inner - gap * (count as f32 - 1.0)) / count as f32;
+    let top = ctx.dice.between(0.8, 0.9);
+    let tall = 0.5 * (1.0 + top) * h.z;
+    let mut pieces = vec![frame];
+    for k in 0..count {
+        let x = -inner + width * (k as f32 + 0.5) + gap * k as f32;
+        pieces.push(puff(
+            Vector::new(x, -0.45 * h.y, -h.z + tall),
+            Vector::new(0.5 * width, 0.55 * h.y, tall),
+            ctx.detail,
+            Tone::Body,
         ));
     }
     join(pieces)

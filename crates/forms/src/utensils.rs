@@ -1,7 +1,7 @@
 //! Things with a handle, lying along x: knives (blade toward +x, where the archetypes put the
 //! slicing edge), forks and spoons (head toward +x), brooms and brushes (bristles toward −x,
-//! where the archetypes put the cleaning area), hammers, screwdrivers, toothbrushes and a
-//! closed umbrella. Each is built in a frame of its own, x from 0 to 1, and stretched to fill
+//! where the archetypes put the cleaning area), hammers, screwdrivers, toothbrushes, a closed
+//! umbrella, saws, scrapers; and, not lying along x, a scrubbing brush and a dustpan. Each is built in a frame of its own, x from 0 to 1, and stretched to fill
 //! its box (an umbrella's hook excepted: it is bent at its true size).
 
 use crate::extrude::prism;
@@ -264,4 +264,131 @@ pub(crate) fn umbrella(ctx: Ctx) -> Mesh {
     path.push(centre + Vector::new(0.3 * hook, 0.0, -bend));
     let sides = (ctx.detail.around() / 3).max(4);
     join([tube(&path, sides, |_, _| r, Tone::Dark), furled])
+}
+
+/// A hand saw: a wooden (or dark) handle at −x with a hole for the hand, and a metal blade
+/// whose back falls from the handle to the toe at +x over a straight edge of teeth (−y).
+pub(crate) fn saw(ctx: Ctx) -> Mesh {
+    let toe = ctx.dice.between(0.25, 0.4);
+    let grip = if ctx.dice.between(0.0, 1.0) < 0.5 {
+        Tone::Stem
+    } else {
+        Tone::Dark
+    };
+    let flat = (-0.08, 0.08);
+    let blade = [(0.28, -0.42), (1.0, -0.42), (1.0, -0.42 + toe), (0.28, 0.5)];
+    let mut pieces = vec![prism(&blade, flat, Tone::Metal)];
+    // The handle: four bars round the hole.
+    let bars = [
+        (0.0, 0.09, -0.35, 0.45),
+        (0.0, 0.3, 0.3, 0.5),
+        (0.0, 0.3, -0.5, -0.28),
+        (0.2, 0.32, -0.5, 0.5),
+    ];
+    for (x0, x1, y0, y1) in bars {
+        let half = Vector::new(0.5 * (x1 - x0), 0.5 * (y1 - y0), 0.5);
+        pieces.push(rounded_box(
+            Vector::new(0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.0),
+            half,
+            0.4 * half.x.min(half.y),
+            ctx.detail.bevel_rows(),
+            grip,
+        ));
+    }
+    if ctx.detail == Detail::Fine {
+        for k in 0..24 {
+            let x = 0.33 + 0.0275 * k as f32;
+            let tooth = [(x, -0.42), (x + 0.012, -0.5), (x + 0.024, -0.42)];
+            pieces.push(prism(&tooth, flat, Tone::Metal));
+        }
+    }
+    join(pieces).fit(ctx.half)
+}
+
+/// A scraper: a dark handle toward −x and a flat blade widening to a straight edge at +x.
+pub(crate) fn scraper(ctx: Ctx) -> Mesh {
+    let neck = ctx.dice.between(0.45, 0.55);
+    let blade = [
+        (neck - 0.05, -0.25),
+        (1.0, -0.5),
+        (1.0, 0.5),
+        (neck - 0.05, 0.25),
+    ];
+    join([
+        handle(0.0, neck, (0.32, 0.9), ctx.detail, Tone::Dark),
+        prism(&blade, (-0.5, -0.2), Tone::Body),
+    ])
+    .fit(ctx.half)
+}
+
+/// A scrubbing brush: a stock in the object's colour, pinched at its waist for the fingers, on
+/// tufts of dark bristles (one block of them at the coarse level).
+pub(crate) fn scrub_brush(ctx: Ctx) -> Mesh {
+    let rows = ctx.detail.bevel_rows();
+    let waist = ctx.dice.between(0.65, 0.8);
+    let mut pieces = vec![
+        rounded_box(
+            Vector::new(0.0, 0.0, 0.55),
+            Vector::new(1.0, waist, 0.12),
+            0.08,
+            rows,
+            Tone::Body,
+        ),
+        rounded_box(
+            Vector::new(0.0, 0.0, 0.78),
+            Vector::new(0.8, 0.5 * waist, 0.2),
+            0.15,
+            rows,
+            Tone::Body,
+        ),
+    ];
+    match ctx.detail {
+        Detail::Fine => {
+            for i in 0..7 {
+                for j in 0..3 {
+                    let at = Vector::new(
+                        -0.84 + 0.28 * i as f32,
+                        (j as f32 - 1.0) * 0.42 * waist,
+                        0.22,
+                    );
+                    let tuft = Vector::new(0.1, 0.16 * waist, 0.22);
+                    pieces.push(crate::rounded::plain_box(at, tuft, Tone::Dark));
+                }
+            }
+        }
+        Detail::Coarse => pieces.push(crate::rounded::plain_box(
+            Vector::new(0.0, 0.0, 0.22),
+            Vector::new(0.94, 0.6 * waist, 0.22),
+            Tone::Dark,
+        )),
+    }
+    join(pieces).fit(ctx.half)
+}
+
+/// A dustpan: a flat floor open toward −y, side walls rising toward a back wall at +y, and a
+/// handle reaching back from the wall.
+pub(crate) fn dustpan(ctx: Ctx) -> Mesh {
+    let rows = ctx.detail.bevel_rows();
+    let wall = ctx.dice.between(0.75, 0.95);
+    let part = |centre: [f32; 3], half: [f32; 3], radius: f32| {
+        crate::rounded::block(
+            Vector::from_array(centre),
+            Vector::from_array(half),
+            radius,
+            rows,
+            ctx.detail,
+            Tone::Body,
+        )
+    };
+    let mut pieces = vec![
+        part([0.0, -0.325, 0.03], [0.97, 0.675, 0.03], 0.02),
+        part([0.0, 0.3, 0.5 * wall], [0.99, 0.05, 0.5 * wall], 0.03),
+        part([0.0, 0.66, 0.45 * wall], [0.13, 0.34, 0.07], 0.05),
+    ];
+    // The side walls, their outline in the y–z plane, laid across x at the pan's sides.
+    let side = [(-1.0, 0.0), (0.35, 0.0), (0.35, wall), (-1.0, 0.06)];
+    for (from, to) in [(0.93, 1.0), (-1.0, -0.93)] {
+        pieces.push(prism(&side, (from, to), Tone::Body).lay_along_x());
+    }
+    join(pieces).fit(ctx.half)
 }

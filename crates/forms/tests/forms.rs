@@ -34,12 +34,51 @@ fn boxes(form: Form) -> Vec<Vector> {
         | Form::Hammer
         | Form::Screwdriver
         | Form::Toothbrush
-        | Form::Umbrella => lying.to_vec(),
+        | Form::Umbrella
+        | Form::Tube => lying.to_vec(),
         Form::Shoe => vec![[0.05, 0.15, 0.05], [0.06, 0.16, 0.07], [0.05, 0.14, 0.02]],
         Form::Hat => vec![[0.15, 0.15, 0.06], [0.17, 0.17, 0.075], [0.04, 0.04, 0.02]],
         Form::Roast => flat.to_vec(),
+        Form::Lid => vec![[0.04, 0.04, 0.008], [0.05, 0.05, 0.01], [0.03, 0.03, 0.005]],
+        Form::Casserole => vec![[0.15, 0.1, 0.04], [0.17, 0.12, 0.045]],
+        // A car at a car's size and at a toy's.
+        Form::Car => vec![[2.0, 0.85, 0.7], [1.8, 0.8, 0.72], [0.1, 0.05, 0.04]],
+        Form::Grill => vec![[0.3, 0.25, 0.5], [0.6, 0.35, 0.55]],
+        Form::Vacuum => vec![[0.15, 0.125, 0.5], [0.2, 0.175, 0.55]],
+        Form::Headphones => vec![[0.08, 0.04, 0.08], [0.1, 0.05, 0.1], [0.02, 0.02, 0.015]],
+        Form::Glasses => vec![[0.07, 0.02, 0.02], [0.075, 0.03, 0.025]],
+        Form::Mouse => vec![[0.03, 0.05, 0.015], [0.035, 0.06, 0.0225]],
+        Form::Office => vec![[0.2, 0.15, 0.1], [0.25, 0.18, 0.06], [0.15, 0.12, 0.06]],
+        Form::Keypad => vec![[0.035, 0.06, 0.005], [0.05, 0.09, 0.0125]],
+        Form::Backpack => vec![[0.14, 0.075, 0.2], [0.175, 0.11, 0.25]],
+        Form::Duffel => vec![[0.22, 0.12, 0.12], [0.35, 0.17, 0.17], [0.3, 0.15, 0.08]],
+        Form::Saw => vec![[0.22, 0.05, 0.01], [0.32, 0.075, 0.015]],
+        Form::Scraper => vec![[0.1, 0.04, 0.01], [0.17, 0.06, 0.015]],
+        Form::ScrubBrush => vec![[0.06, 0.03, 0.02], [0.1, 0.045, 0.035]],
+        Form::Dustpan => vec![[0.11, 0.125, 0.02], [0.16, 0.175, 0.05]],
+        Form::Hanger => vec![[0.19, 0.09, 0.004], [0.22, 0.11, 0.0075]],
+        Form::Painting => vec![[0.15, 0.125, 0.01], [0.45, 0.35, 0.02], [0.3, 0.3, 0.015]],
+        Form::Wreath => vec![[0.15, 0.15, 0.03], [0.3, 0.3, 0.06]],
+        Form::Teddy => vec![[0.025, 0.025, 0.025], [0.125, 0.1, 0.1], [0.1, 0.08, 0.12]],
+        Form::Bangle => vec![[0.03, 0.03, 0.004], [0.04, 0.04, 0.01]],
+        Form::Ring => vec![[0.01, 0.01, 0.0025], [0.03, 0.025, 0.01]],
+        Form::Necklace => vec![[0.025, 0.025, 0.003], [0.06, 0.05, 0.0075]],
+        Form::Fish => vec![[0.075, 0.035, 0.01], [0.175, 0.06, 0.03]],
+        Form::Herbs => vec![[0.03, 0.025, 0.06], [0.05, 0.04, 0.1]],
+        Form::TeaBag => vec![[0.025, 0.03, 0.002], [0.0325, 0.0375, 0.004]],
+        Form::Detector => vec![[0.05, 0.05, 0.0175], [0.07, 0.07, 0.025]],
+        Form::Steak => vec![[0.06, 0.04, 0.0125], [0.125, 0.075, 0.04]],
+        Form::Sweet => vec![[0.01, 0.01, 0.005], [0.04, 0.02, 0.01]],
+        Form::Sandwich | Form::Cookie => flat.to_vec(),
+        Form::Bow => vec![[0.035, 0.035, 0.02], [0.07, 0.07, 0.035]],
+        Form::Spool => vec![[0.03, 0.03, 0.01], [0.05, 0.05, 0.025]],
+        Form::Mousetrap => vec![[0.04, 0.02, 0.0075], [0.055, 0.03, 0.015]],
+        Form::Briefcase => vec![[0.2, 0.15, 0.04], [0.23, 0.17, 0.06]],
+        Form::PencilCase => vec![[0.09, 0.03, 0.015], [0.12, 0.05, 0.03]],
         Form::Conifer => vec![[0.3, 0.3, 0.6], [0.55, 0.55, 1.05], [0.1, 0.1, 0.2]],
-        Form::Plate | Form::Book | Form::Folded | Form::Cake => flat.to_vec(),
+        Form::Plate | Form::Book | Form::Folded | Form::Cake | Form::Burger | Form::Maki => {
+            flat.to_vec()
+        }
         Form::Lemon | Form::Egg => [round.as_slice(), &lying[..1], &upright[..1]].concat(),
         Form::Round
         | Form::Apple
@@ -73,6 +112,7 @@ fn boxes(form: Form) -> Vec<Vector> {
         // A bed's mattress and a sofa's seat.
         Form::Bedding => vec![[0.48, 0.99, 0.1], [0.98, 1.04, 0.12], [0.3, 0.5, 0.05]],
         Form::Seat => vec![[0.8, 0.4, 0.225], [1.2, 0.5, 0.2], [0.3, 0.3, 0.1]],
+        Form::Backrest => vec![[0.8, 0.1, 0.2], [1.2, 0.1, 0.25], [0.3, 0.1, 0.1]],
         _ => upright.to_vec(),
     };
     list.into_iter().map(Vector::from_array).collect()
@@ -118,11 +158,15 @@ fn a_form_fills_its_box() {
         let (lo, hi) = mesh(form, half, 3, Detail::Fine).bounds();
         // Forms stretched to their box touch it on every side; forms built at their true size
         // (a mug's body and handle, a book, folded cloth) come within a fifth of it; a torso
-        // is 0.6 as deep as its (round) collider.
+        // is 0.6 as deep as its (round) collider; a hanger is its wire's thickness.
         let mut filled = (hi - lo) / (2.0 * half);
         if form == Form::Torso {
             assert!((filled.x - 0.6).abs() < 1e-3, "{form:?} fills {filled}");
             filled.x /= 0.6;
+        }
+        // A wire coat hanger is as thick as its wire, whatever the box's height.
+        if form == Form::Hanger {
+            filled.z = 1.0;
         }
         assert!(
             filled.min_element() > 0.8,

@@ -197,11 +197,114 @@ pub enum Form {
     Shoe,
     /// A hat, brim down: a brim, a band, a crown.
     Hat,
+    /// A glass jar: a round body, a shoulder and a short neck (its lid is a part of its own).
+    Jar,
+    /// A jar's screw lid: a flat metal cap with a knurled edge, a little narrower than its box.
+    Lid,
+    /// A baking dish with food in it: a pale dish with a lug at each end (±x), the food on top.
+    Casserole,
+    /// A car, its front toward +x: a body on four wheels, a glazed cabin, headlights.
+    Car,
+    /// A kettle barbecue: a round bowl and domed lid on three legs.
+    Grill,
+    /// An upright vacuum cleaner: a floor head, a body and a handle with a grip at the top.
+    Vacuum,
+    /// Headphones standing: a band arching over two ear cups, which face each other along x.
+    Headphones,
+    /// A pair of glasses, lenses toward −y and the temples back along +y.
+    Glasses,
+    /// A computer mouse, its front toward +y: a dome with a scroll wheel.
+    Mouse,
+    /// An office machine (printer, scanner, fax): a body, a lid, a paper tray at the back
+    /// (+y), a slot and buttons at the front.
+    Office,
+    /// A calculator lying flat: a display toward +y above a grid of keys.
+    Keypad,
+    /// A backpack standing: a soft body, a front pocket toward −y, straps at the back (+y).
+    Backpack,
+    /// A duffel bag lying along x: a soft roll with two handles on top.
+    Duffel,
+    /// A hand saw lying along x: a handle with a grip's hole at −x, the blade narrowing
+    /// toward +x.
+    Saw,
+    /// A scraper lying along x: a handle toward −x, a wide flat blade toward +x.
+    Scraper,
+    /// A scrubbing brush: a shaped wooden stock on a block of bristles.
+    ScrubBrush,
+    /// A dustpan: a scoop open toward −y, walled at its sides and back, a handle toward +y.
+    Dustpan,
+    /// A coat hanger lying flat: a wire triangle, its hook toward +y.
+    Hanger,
+    /// A squeezed tube lying along x (toothpaste): a cap toward −x, flattening to a crimped
+    /// end.
+    Tube,
+    /// A framed picture lying flat: a moulded frame around a painted landscape.
+    Painting,
+    /// A wreath lying flat: a ring of leafy clusters with berries and a bow.
+    Wreath,
+    /// A teddy bear sitting, facing −y: body, head with ears and muzzle, arms and legs.
+    Teddy,
+    /// A bangle lying flat: a ring of rounded section.
+    Bangle,
+    /// A finger ring lying flat with a stone set on it.
+    Ring,
+    /// A necklace lying flat: beads on an oval loop with a pendant.
+    Necklace,
+    /// A whole fish lying on its side along x: head toward −x, a forked tail toward +x, fins.
+    Fish,
+    /// A bunch of herbs standing: stalks tied low, leafy sprigs above.
+    Herbs,
+    /// A tea bag lying flat: a paper pouch toward −y, a string to a tag toward +y.
+    TeaBag,
+    /// A hamburger: a bun in the object's colour around a dark patty and a leaf of lettuce.
+    Burger,
+    /// A sushi roll: dark seaweed around, pale rice on top with the filling at its centre.
+    Maki,
+    /// A kettle: a body narrowing to a lid, a spout toward +x, a handle arching over the lid.
+    Kettle,
+    /// A blender: a base, a jug widening upward with a dark lid, a handle at +x.
+    Blender,
+    /// A smoke alarm lying on its back: a pale disc, a vent ring, a domed middle, a red lamp.
+    Detector,
+    /// A gable-top carton (milk, juice): a box under two slopes meeting at a fin, a cap.
+    Carton,
+    /// A jug (detergent): a rounded body, a handle over the back of its top, a cap at the front.
+    Jug,
+    /// A bag of crisps standing: a puffed pillow crimped flat at its top and bottom.
+    Pouch,
+    /// A paper sack (flour, sugar): a soft-edged box, its top rolled down.
+    Sack,
+    /// A steak lying flat: a thick slab with a lumpy outline and a rim of fat toward −y.
+    Steak,
+    /// A wrapped sweet lying along x: a round middle, the wrapper twisted into fans.
+    Sweet,
+    /// A sandwich cut corner to corner: two slices of bread, lettuce and tomato between.
+    Sandwich,
+    /// A salad: a pale bowl heaped with leaves in the object's colour.
+    Salad,
+    /// A cookie: a flat round with a soft edge and dark chips on top.
+    Cookie,
+    /// A bow lying flat: two loops either side of a knot, two tails toward −y.
+    Bow,
+    /// A spool of ribbon: the ribbon between two pale flanges, a hole through the middle.
+    Spool,
+    /// A Christmas stocking: a leg, its foot toward +x, under a pale cuff.
+    Stocking,
+    /// A lipstick standing: a dark case, a metal ring, the stick with a rounded tip.
+    Lipstick,
+    /// A mousetrap: a wooden board, a bait plate, a wire bar lying open across it.
+    Mousetrap,
+    /// A briefcase lying flat: a case, a handle and two latches at its front (−y).
+    Briefcase,
+    /// A pencil case lying along x: a soft box with a zip along its top.
+    PencilCase,
+    /// A sofa's back, its front toward −y: a frame and a row of cushions leaning on it.
+    Backrest,
 }
 
 impl Form {
     /// Every form, in order.
-    pub const ALL: [Form; 53] = [
+    pub const ALL: [Form; 103] = [
         Form::Primitive,
         Form::Rounded,
         Form::Soft,
@@ -255,6 +358,56 @@ impl Form {
         Form::Umbrella,
         Form::Shoe,
         Form::Hat,
+        Form::Jar,
+        Form::Lid,
+        Form::Casserole,
+        Form::Car,
+        Form::Grill,
+        Form::Vacuum,
+        Form::Headphones,
+        Form::Glasses,
+        Form::Mouse,
+        Form::Office,
+        Form::Keypad,
+        Form::Backpack,
+        Form::Duffel,
+        Form::Saw,
+        Form::Scraper,
+        Form::ScrubBrush,
+        Form::Dustpan,
+        Form::Hanger,
+        Form::Tube,
+        Form::Painting,
+        Form::Wreath,
+        Form::Teddy,
+        Form::Bangle,
+        Form::Ring,
+        Form::Necklace,
+        Form::Fish,
+        Form::Herbs,
+        Form::TeaBag,
+        Form::Burger,
+        Form::Maki,
+        Form::Kettle,
+        Form::Blender,
+        Form::Detector,
+        Form::Carton,
+        Form::Jug,
+        Form::Pouch,
+        Form::Sack,
+        Form::Steak,
+        Form::Sweet,
+        Form::Sandwich,
+        Form::Salad,
+        Form::Cookie,
+        Form::Bow,
+        Form::Spool,
+        Form::Stocking,
+        Form::Lipstick,
+        Form::Mousetrap,
+        Form::Briefcase,
+        Form::PencilCase,
+        Form::Backrest,
     ];
 }
 

@@ -24,8 +24,26 @@ fn body_form(synset: &str, shape: Shape) -> Form {
         "carrot" => Form::Carrot,
         "bread" => Form::Loaf,
         "book" | "hardback" | "notebook" => Form::Book,
-        "cheese" | "soap" | "beef" | "meat" | "pork" | "fish" | "candy" | "snack_food"
-        | "sandwich" | "cracker" | "bow" => Form::Soft,
+        "cheese" | "soap" | "cracker" => Form::Soft,
+        "beef" | "meat" | "pork" => Form::Steak,
+        "candy" => Form::Sweet,
+        "snack_food" | "chip" => Form::Pouch,
+        "sandwich" => Form::Sandwich,
+        "bow" => Form::Bow,
+        "kettle" => Form::Kettle,
+        "blender" => Form::Blender,
+        "alarm" => Form::Detector,
+        "milk" | "juice" => Form::Carton,
+        "detergent" => Form::Jug,
+        "flour" | "sugar" | "sack" => Form::Sack,
+        "salad" => Form::Salad,
+        "cookie" => Form::Cookie,
+        "ribbon" => Form::Spool,
+        "stocking" => Form::Stocking,
+        "makeup" => Form::Lipstick,
+        "mousetrap" => Form::Mousetrap,
+        "briefcase" => Form::Briefcase,
+        "pencil_box" => Form::PencilCase,
         "gym_shoe" | "shoe" | "sandal" => Form::Shoe,
         "hat" => Form::Hat,
         "hammer" => Form::Hammer,
@@ -34,10 +52,12 @@ fn body_form(synset: &str, shape: Shape) -> Form {
         "umbrella" => Form::Umbrella,
         "bottle" | "beer" | "catsup" | "shampoo" | "perfume" | "vegetable_oil"
         | "cleansing_agent" | "sauce" | "beverage" | "water" | "pop" => Form::Bottle,
-        "soup" | "oatmeal" | "yogurt" | "blender" => Form::Can,
+        "soup" | "oatmeal" | "yogurt" => Form::Can,
         "cup" | "vessel" => Form::Cup,
-        "mug" | "kettle" => Form::Mug,
-        "cake" | "cookie" | "hamburger" | "salad" | "sushi" | "candle" | "alarm" => Form::Cake,
+        "mug" => Form::Mug,
+        "cake" | "candle" => Form::Cake,
+        "hamburger" => Form::Burger,
+        "sushi" => Form::Maki,
         "lamp" => Form::Lamp,
         "pot_plant" => Form::Plant,
         "christmas_tree" => Form::Conifer,
@@ -53,6 +73,33 @@ fn body_form(synset: &str, shape: Shape) -> Form {
         "bowl" | "dish" => Form::Bowl,
         "bucket" | "ashcan" => Form::Bucket,
         "pan" | "saucepan" | "caldron" | "teapot" => Form::Pot,
+        "jar" => Form::Jar,
+        "casserole" => Form::Casserole,
+        "car" | "vehicle" => Form::Car,
+        "grill" => Form::Grill,
+        "vacuum" => Form::Vacuum,
+        "headset" | "earphone" => Form::Headphones,
+        "sunglass" => Form::Glasses,
+        "mouse" => Form::Mouse,
+        "printer" | "scanner" | "facsimile" => Form::Office,
+        "calculator" => Form::Keypad,
+        "backpack" => Form::Backpack,
+        "duffel_bag" => Form::Duffel,
+        "saw" => Form::Saw,
+        "scraper" => Form::Scraper,
+        "scrub_brush" => Form::ScrubBrush,
+        "dustpan" => Form::Dustpan,
+        "hanger" => Form::Hanger,
+        "toothpaste" => Form::Tube,
+        "painting" => Form::Painting,
+        "wreath" => Form::Wreath,
+        "plaything" => Form::Teddy,
+        "bracelet" => Form::Bangle,
+        "jewelry" => Form::Ring,
+        "necklace" => Form::Necklace,
+        "fish" => Form::Fish,
+        "parsley" => Form::Herbs,
+        "tea_bag" => Form::TeaBag,
         _ => Form::Primitive,
     };
     match (by_name, shape) {
@@ -67,8 +114,8 @@ fn rounds_its_boxes(shape: Shape) -> bool {
     !matches!(shape, Shape::Floor | Shape::Agent)
 }
 
-/// The form of one box of a piece of furniture or a fixture: a sofa's seat has its cushions and
-/// its back and arms are soft, a bed's mattress is made with a duvet and pillows, a thin
+/// The form of one box of a piece of furniture or a fixture: a sofa's seat and back have their
+/// cushions and its arms are soft, a bed's mattress is made with a duvet and pillows, a thin
 /// upright post of a table or chair is a turned leg, the rest has
 /// rounded edges.
 fn box_form(shape: Shape, index: usize, half: Vector) -> Form {
@@ -76,11 +123,22 @@ fn box_form(shape: Shape, index: usize, half: Vector) -> Form {
     match shape {
         // The sofa's parts: seat, back, arms.
         Shape::Sofa if index == 0 => Form::Seat,
+        Shape::Sofa if index == 1 => Form::Backrest,
         Shape::Sofa => Form::Soft,
         // The bed's parts: base, mattress, headboard.
         Shape::Bed if index == 1 => Form::Bedding,
         Shape::Table | Shape::Chair if post => Form::Turned,
         _ => Form::Rounded,
+    }
+}
+
+/// The form of a lid hinged on a body drawn as `body`: a jar's screw cap, a backpack's soft
+/// flap; `None` for a lid drawn as the rounded board it is.
+fn lid_form(body: Form) -> Option<Form> {
+    match body {
+        Form::Jar => Some(Form::Lid),
+        Form::Backpack => Some(Form::Soft),
+        _ => None,
     }
 }
 
@@ -112,7 +170,13 @@ pub(super) fn dress(spec: &mut ObjectSpec, archetype: &Archetype) {
     if spec.form == Form::Primitive {
         dress_boxes(&mut spec.parts);
     }
+    let lid = lid_form(spec.form);
     for link in &mut spec.links {
+        if let Some(form) = lid {
+            for part in &mut link.parts {
+                part.form = form;
+            }
+        }
         dress_boxes(&mut link.parts);
     }
 }

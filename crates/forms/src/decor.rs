@@ -1,5 +1,5 @@
 //! Things that make a home: a framed picture, a wreath, a teddy bear, a bow, a spool of ribbon,
-//! a Christmas stocking. The picture is built at its true size (its frame as wide on every
+//! a Christmas stocking, a candle. The picture is built at its true size (its frame as wide on every
 //! side); the others in a frame of their own and stretched to fill their box.
 
 use crate::extrude::prism;
@@ -271,4 +271,22 @@ pub(crate) fn stocking(ctx: Ctx) -> Mesh {
         part([-0.3, 0.0, 0.88], [0.5, 1.0, 0.12], 0.1, Tone::Light),
     ])
     .fit(ctx.half)
+}
+
+/// A candle: a pillar in the object's colour, its top rim softened and dipped toward a dark wick
+/// that stands out of its middle.
+pub(crate) fn candle(ctx: Ctx) -> Mesh {
+    let wick = ctx.dice.between(0.06, 0.09);
+    let profile = [
+        crate::lathe::p(0.0, 0.0),
+        crate::lathe::fold(1.0, 0.0),
+        crate::lathe::p(1.0, 1.0 - wick - 0.06),
+        crate::lathe::p(0.94, 1.0 - wick - 0.01),
+        crate::lathe::p(0.7, 1.0 - wick - 0.02),
+        crate::lathe::fold(0.1, 1.0 - wick - 0.035),
+        crate::lathe::fold(0.06, 1.0 - wick - 0.035).tone(Tone::Dark),
+        crate::lathe::p(0.05, 0.99),
+        crate::lathe::p(0.0, 1.0),
+    ];
+    crate::lathe::revolve(&profile, ctx.detail.around(), crate::lathe::even).fit(ctx.half)
 }

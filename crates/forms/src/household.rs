@@ -201,7 +201,8 @@ pub(crate) fn plant(ctx: Ctx) -> Mesh {
 
 /// A person's trunk: rounded hips, a waist, a chest widening to the shoulders, a neck; round in
 /// its profile and flattened front to back, as deep as 0.6 of its width (the BehaviorRobot's
-/// body, whose collider is a round capsule). Seeds vary the chest and the shoulders' slope.
+/// body, whose collider is a round capsule), its neck a little under the box's top. Seeds vary
+/// the chest and the shoulders' slope.
 pub(crate) fn torso(ctx: Ctx) -> Mesh {
     let chest = ctx.dice.between(0.39, 0.44);
     let shoulders = ctx.dice.between(0.74, 0.8);
@@ -220,8 +221,29 @@ pub(crate) fn torso(ctx: Ctx) -> Mesh {
         p(0.13, 0.97),
         p(0.0, 1.0),
     ];
-    let flat = Vector::new(0.6 * ctx.half.x, ctx.half.y, ctx.half.z);
-    revolve(&profile, ctx.detail.around(), even).fit(flat)
+    // Its neck stops 8 % of the height under the box's top, where the head (an object of its
+    // own, round the eye) sits over it.
+    let h = ctx.half;
+    let flat = Vector::new(0.6 * h.x, h.y, 0.92 * h.z);
+    let mut trunk = revolve(&profile, ctx.detail.around(), even).fit(flat);
+    trunk.stretch(Vector::ONE, Vector::new(0.0, 0.0, -0.08 * h.z));
+    trunk
+}
+
+/// The BehaviorRobot's head, its face toward +x: a rounded head, fuller at the back, with a
+/// dark visor wrapping its face as the original's avatar wears one. Seeds vary the visor's
+/// depth.
+pub(crate) fn head(ctx: Ctx) -> Mesh {
+    let b = ctx.detail.bands();
+    let visor = ctx.dice.between(0.3, 0.38);
+    let skull = sphere_grid(b, 2 * b, |d| {
+        let back = if d.x < 0.0 { 1.0 } else { 0.92 };
+        Vector::new(back * d.x, 0.9 * d.y, d.z)
+    });
+    let glass = sphere_grid((b / 2).max(3), 2 * b, |d| {
+        Vector::new(0.3 + 0.66 * d.x, 0.84 * d.y, 0.12 + visor * d.z)
+    });
+    join([skull, glass.toned(Tone::Dark)]).fit(ctx.half)
 }
 
 /// A Christmas tree: a stand, a short trunk and four to six tiers of boughs, each flaring out

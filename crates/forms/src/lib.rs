@@ -16,7 +16,7 @@
 //! `machines` (a car, a kettle barbecue, an upright vacuum), `gadgets` (headphones, glasses, a
 //! mouse, office machines, calculators, blenders, smoke alarms), `bags` (backpacks, duffel
 //! bags, briefcases, pencil cases), `decor` (framed pictures, wreaths, teddy bears, bows, spools
-//! of ribbon, stockings), `jewelry` (bangles, rings, necklaces, lipsticks).
+//! of ribbon, stockings, candles), `jewelry` (bangles, rings, necklaces, lipsticks).
 //!
 //! It owns geometry only: it must not know synsets (which form an object takes is the assets'
 //! choice), GPUs or the world's state. Every mesh lies inside its box, so what is drawn is what
@@ -228,6 +228,8 @@ pub fn mesh(form: Form, half: Vector, seed: u64, detail: Detail) -> Mesh {
         Form::Briefcase => bags::briefcase(ctx),
         Form::PencilCase => bags::pencil_case(ctx),
         Form::Backrest => upholstery::backrest(ctx),
+        Form::Head => household::head(ctx),
+        Form::Candle => decor::candle(ctx),
     };
     // Details of a fixed size (a pull's bar, a book's boards) in a box smaller than they are
     // would stick out of it: they are pressed flat against its sides instead, so that what is

@@ -112,6 +112,7 @@ fn boxes(form: Form) -> Vec<Vector> {
         // A bed's mattress and a sofa's seat.
         Form::Bedding => vec![[0.48, 0.99, 0.1], [0.98, 1.04, 0.12], [0.3, 0.5, 0.05]],
         Form::Seat => vec![[0.8, 0.4, 0.225], [1.2, 0.5, 0.2], [0.3, 0.3, 0.1]],
+        Form::Head => vec![[0.1, 0.085, 0.11], [0.05, 0.05, 0.05]],
         Form::Backrest => vec![[0.8, 0.1, 0.2], [1.2, 0.1, 0.25], [0.3, 0.1, 0.1]],
         _ => upright.to_vec(),
     };

@@ -4,11 +4,12 @@
 //! The body is a capsule of the original's bounding box (0.5 × 0.5 × 1.0 m) and mass (15 kg),
 //! floating with its origin at [`BODY_HEIGHT`] above the floor by default. The eye is a frame,
 //! not a body: the original's eye is a massless link teleported every step, which collides with
-//! nothing, so nothing is lost by not simulating it.
+//! nothing, so nothing is lost by not simulating it. The head the eye looks out of is drawn, not
+//! simulated either: a [`Ghost`] of the body, put round the eye after every step.
 
 use crate::hand::Side;
 use behavior_core::AGENT_SYNSET;
-use behavior_sim::{BodyKind, Form, Material, ObjectSpec, Part, Primitive};
+use behavior_sim::{BodyKind, Form, Ghost, Material, ObjectSpec, Part, Primitive, Visual};
 use rapier3d::math::{Pose, Vector};
 
 /// The body's mass, kg.
@@ -22,6 +23,8 @@ pub const BODY_LENGTH: f32 = 1.0;
 pub const BODY_HEIGHT: f32 = 0.7;
 /// How far a hand may be from its shoulder, m.
 pub const HAND_REACH: f32 = 1.2;
+/// The body's and head's colour (sRGB).
+const BODY_COLOR: [u8; 3] = [200, 204, 212];
 /// How far the eye may be from the neck, m.
 pub const EYE_REACH: f32 = 0.5;
 
@@ -38,6 +41,29 @@ pub(crate) const NECK: Vector = Vector::new(-0.15, 0.0, 0.3);
 /// The eye's starting pose in the body frame: looking along the body's +x.
 pub(crate) fn eye_rest() -> Pose {
     Pose::from_translation(Vector::new(0.05, 0.0, 0.4))
+}
+
+/// Half the head's size, m: about the original avatar's head.
+pub const HEAD_HALF: Vector = Vector::new(0.1, 0.085, 0.11);
+
+/// The head's centre in the eye's frame: the eye looks out of the front of the head, 4 cm
+/// behind its face and a little above its middle, inside its box (a camera inside a shape does
+/// not draw it, so the eye sees past its own head).
+pub(crate) fn head_from_eye() -> Pose {
+    Pose::from_translation(Vector::new(-0.06, 0.0, -0.03))
+}
+
+/// The head round an eye at `eye` (in the world): drawn in the body's colour, out of the physics.
+pub(crate) fn head_round(eye: Pose) -> Ghost {
+    Ghost {
+        form: Form::Head,
+        half_extents: HEAD_HALF,
+        visual: Visual {
+            color: BODY_COLOR,
+            material: Material::Plastic,
+        },
+        pose: eye * head_from_eye(),
+    }
 }
 
 /// A hand's starting pose in the body frame: palm down, fingers forward.
@@ -60,7 +86,7 @@ pub(crate) fn body_spec(name: &str, pose: Pose) -> ObjectSpec {
     let volume = pi * r * r * cylinder + 4.0 / 3.0 * pi * r.powi(3);
     let mut spec = ObjectSpec::new(name, AGENT_SYNSET, vec![Part::new(body_shape())])
         .body(BodyKind::KinematicVelocity)
-        .looks([200, 204, 212], Material::Plastic);
+        .looks(BODY_COLOR, Material::Plastic);
     // Drawn as a trunk with shoulders over its capsule, as the original's body mesh.
     spec.form = Form::Torso;
     spec.pose = pose;

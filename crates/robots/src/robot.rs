@@ -1,7 +1,7 @@
 //! The BehaviorRobot: adding it to a world, stepping it, and reading it.
 
 use crate::action::{Action, ActionError};
-use crate::body::{body_spec, eye_rest, hand_rest};
+use crate::body::{body_spec, eye_rest, hand_rest, head_round};
 use crate::follow::{Follower, HAND_LIMITS, rotation_error, servo, settled};
 use crate::grasp::{
     Grasp, GraspRules, Grasper, Release, centre_on, ignore_between, must_release, overlooked,
@@ -97,7 +97,8 @@ impl RobotParts {
 /// - The fingers are shapes of the hands' bodies, turned toward what the triggers ask each
 ///   substep (see `hand.rs`).
 ///
-/// The eye is a frame on the body, not a body (the original's is massless and teleported).
+/// The eye is a frame on the body, not a body (the original's is massless and teleported);
+/// the head round it is drawn with the body ([`behavior_sim::Ghost`]), not simulated.
 /// Robot parts are in [`groups::ROBOT`]: they collide with neither each other nor water.
 ///
 /// **State.** What the robot was told (targets, triggers, grasps) lives here, the rest in the
@@ -180,6 +181,7 @@ impl BehaviorRobot {
             robot.park(world, side);
         }
         robot.press_with_hands(world);
+        robot.follow_with_head(world);
         Ok(robot)
     }
 
@@ -303,10 +305,17 @@ impl StepHooks for BehaviorRobot {
         if self.moved {
             self.press_with_hands(world);
         }
+        self.follow_with_head(world);
     }
 }
 
 impl BehaviorRobot {
+    /// Draws the head round the eye (the world keeps it only if it moved).
+    fn follow_with_head(&self, world: &mut World) {
+        let head = head_round(self.eye_pose(world));
+        world.core_mut().set_ghost(self.parts.body, Some(head));
+    }
+
     /// Tells the world where the palms and fingertips are, for buttons.
     fn press_with_hands(&self, world: &mut World) {
         let [l, r] = Side::BOTH.map(|s| HandPoints::pressing(world, self.parts.hand(s)));
@@ -480,6 +489,7 @@ impl BehaviorRobot {
             self.put_hand_at_target(world, side, before[side.index()])?;
         }
         self.press_with_hands(world);
+        self.follow_with_head(world);
         Ok(())
     }
 

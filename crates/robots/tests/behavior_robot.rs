@@ -442,3 +442,49 @@ fn what_a_hand_holds_passes_through_the_other_hand_until_let_go_and_clear() {
     assert!(!ignored(&world, &robot, Side::Left));
     assert!(!world.core().contacts_ignored(body.into(), apple.into()));
 }
+
+#[test]
+fn the_head_is_drawn_round_the_eye_and_follows_it_without_entering_the_physics() {
+    let mut world = World::default();
+    floor(&mut world);
+    let mut robot =
+        BehaviorRobot::add(&mut world, Pose::from_translation(v(0.0, 0.0, 0.7))).unwrap();
+    // The floor, the body and two hands: the head is no object of its own.
+    assert_eq!(world.objects().len(), 4);
+    let head = |world: &World, robot: &BehaviorRobot| {
+        let parts = world.core().visual_parts(robot.parts().body);
+        let last = parts.last().copied().expect("the body is drawn");
+        match last.shape {
+            behavior_sim::VisualShape::Formed { form, half_extents } => {
+                assert_eq!(form, behavior_sim::Form::Head, "the body's last drawn part");
+                (last.pose, half_extents)
+            }
+            other => panic!("the body's last drawn part is {other:?}, not its head"),
+        }
+    };
+    let inside = |world: &World, robot: &BehaviorRobot| {
+        let (pose, half) = head(world, robot);
+        let eye = pose.inverse() * robot.eye_pose(world).translation;
+        eye.abs().cmplt(half).all()
+    };
+    assert!(inside(&world, &robot), "the eye starts inside its head");
+    let before = head(&world, &robot).0;
+    // Turn the eye down and move it forward: the head goes with it.
+    for _ in 0..4 {
+        let entries = [(Action::EYE.start, 1.0), (Action::EYE.start + 4, 1.0)];
+        step(&mut world, &mut robot, action(&entries));
+    }
+    let after = head(&world, &robot).0;
+    assert!(
+        (after.translation - before.translation).length() > 0.1,
+        "the head moved from {} to {}",
+        before.translation,
+        after.translation
+    );
+    assert!(inside(&world, &robot), "the eye is still inside its head");
+    assert_eq!(
+        world.objects().len(),
+        4,
+        "the head added no object to the world"
+    );
+}

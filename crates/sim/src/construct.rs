@@ -57,6 +57,7 @@ impl Core {
             model: spec.model,
             replaced_by: None,
             retired: false,
+            ghost: None,
         });
         debug_assert_eq!(pushed, id);
         self.refresh();

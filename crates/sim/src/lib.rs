@@ -104,7 +104,7 @@ pub use states::water::{
 };
 pub use step::StepHooks;
 pub use visual::{
-    Form, HeldMesh, Material, Model, ModelLibrary, ModelPiece, Visual, VisualMesh, VisualPart,
-    VisualShape,
+    Form, Ghost, HeldMesh, Material, Model, ModelLibrary, ModelPiece, Visual, VisualMesh,
+    VisualPart, VisualShape,
 };
 pub use world::{Snapshot, World};

@@ -6,7 +6,7 @@
 //! each on one joint to the object's body or to an earlier link, so a chain is written as it stands
 //! when all its joints read zero.
 
-use crate::visual::{Form, Material, ModelPiece, Visual, VisualMesh};
+use crate::visual::{Form, Ghost, Material, ModelPiece, Visual, VisualMesh};
 use behavior_core::{Ability, AbilityParams, ParamValue};
 use rapier3d::dynamics::{ImpulseJointHandle, MultibodyJointHandle, RigidBodyHandle};
 use rapier3d::geometry::ColliderHandle;
@@ -442,6 +442,9 @@ pub struct Object {
     pub replaced_by: Option<[ObjectId; 2]>,
     /// Taken out of the simulation by [`crate::Core::retire`] (a stand-in a robot replaced).
     pub retired: bool,
+    /// A shape drawn with the object but outside the physics, placed by its owner
+    /// ([`crate::Core::set_ghost`]): the BehaviorRobot's head round its eye.
+    pub ghost: Option<Ghost>,
 }
 
 /// A built link: its body, colliders and joint.

@@ -300,11 +300,15 @@ pub enum Form {
     PencilCase,
     /// A sofa's back, its front toward −y: a frame and a row of cushions leaning on it.
     Backrest,
+    /// The BehaviorRobot's head: a rounded head with a dark visor across its face (+x).
+    Head,
+    /// A candle: a pillar with a softened top rim and a dark wick standing out of its middle.
+    Candle,
 }
 
 impl Form {
     /// Every form, in order.
-    pub const ALL: [Form; 103] = [
+    pub const ALL: [Form; 105] = [
         Form::Primitive,
         Form::Rounded,
         Form::Soft,
@@ -408,7 +412,25 @@ impl Form {
         Form::Briefcase,
         Form::PencilCase,
         Form::Backrest,
+        Form::Head,
+        Form::Candle,
     ];
+}
+
+/// A shape drawn with an object but outside the physics: it touches nothing, no query finds
+/// it, and its owner puts it where it belongs ([`crate::Core::set_ghost`]) — the BehaviorRobot's
+/// head, round an eye that the world does not simulate. Kept out of rapier altogether, so that
+/// it cannot change how anything else moves.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Ghost {
+    /// Its look, filling the box of half size `half_extents` about its pose.
+    pub form: Form,
+    /// m.
+    pub half_extents: Vector,
+    /// Its colour and material.
+    pub visual: Visual,
+    /// Its centre's pose in the world.
+    pub pose: Pose,
 }
 
 /// A visual-only triangle mesh (an imported model's look), in the frame of its body.
@@ -622,7 +644,28 @@ impl Core {
                 }));
             }
         }
+        if let Some(ghost) = &object.ghost {
+            out.push(VisualPart {
+                shape: VisualShape::Formed {
+                    form: ghost.form,
+                    half_extents: ghost.half_extents,
+                },
+                pose: ghost.pose,
+                link: None,
+                visual: ghost.visual,
+            });
+        }
         out
+    }
+
+    /// Puts a drawn-only shape with an object, or takes it away ([`Ghost`]). The physics never
+    /// sees it; the object counts as moved (what is drawn of it changed).
+    pub fn set_ghost(&mut self, id: ObjectId, ghost: Option<Ghost>) {
+        let object = &mut self.objects[id.0 as usize];
+        if object.ghost != ghost {
+            object.ghost = ghost;
+            self.moved(id);
+        }
     }
 }
 

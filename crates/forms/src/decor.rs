@@ -1,6 +1,6 @@
 //! Things that make a home: a framed picture, a wreath, a teddy bear, a bow, a spool of ribbon,
-//! a Christmas stocking, a candle. The picture is built at its true size (its frame as wide on every
-//! side); the others in a frame of their own and stretched to fill their box.
+//! a Christmas stocking, a candle. The picture is built at its true size (its frame as wide on
+//! every side); the others in a frame of their own and stretched to fill their box.
 
 use crate::extrude::prism;
 use crate::grid::sphere_grid;

@@ -1,6 +1,7 @@
 //! Small machines and things worn: headphones, glasses, a computer mouse, office machines
-//! (printers, scanners, fax machines), calculators, a blender and a smoke alarm. Each is built in a frame of its own and
-//! stretched to fill its box, headphones excepted: their cups stay round at their true size.
+//! (printers, scanners, fax machines), calculators, a blender and a smoke alarm. Each is built
+//! in a frame of its own and stretched to fill its box, headphones excepted: their cups stay
+//! round at their true size.
 
 use crate::extrude::prism;
 use crate::grid::{signed_pow, sphere_grid};

@@ -1,7 +1,8 @@
 //! Soft furnishings on furniture: a made bed's mattress under a duvet with its pillows, a
-//! sofa's seat with its row of cushions and its back with cushions leaning on it. Each fills the box of the collider it draws, so that
-//! whatever rests on it rests where it is seen (a pillow's top is the collider's top; the duvet
-//! lies 2 cm under it, the tolerance within which a drawn surface may differ from the collider).
+//! sofa's seat with its row of cushions and its back with cushions leaning on it. Each fills
+//! the box of the collider it draws, so that whatever rests on it rests where it is seen (a
+//! pillow's top is the collider's top; the duvet lies 2 cm under it, the tolerance within which
+//! a drawn surface may differ from the collider).
 
 use crate::grid::{signed_pow, sphere_grid};
 use crate::mesh::{Mesh, join};

@@ -1,8 +1,9 @@
 //! Things with a handle, lying along x: knives (blade toward +x, where the archetypes put the
 //! slicing edge), forks and spoons (head toward +x), brooms and brushes (bristles toward −x,
 //! where the archetypes put the cleaning area), hammers, screwdrivers, toothbrushes, a closed
-//! umbrella, saws, scrapers; and, not lying along x, a scrubbing brush and a dustpan. Each is built in a frame of its own, x from 0 to 1, and stretched to fill
-//! its box (an umbrella's hook excepted: it is bent at its true size).
+//! umbrella, saws, scrapers; and, not lying along x, a scrubbing brush and a dustpan. Each is
+//! built in a frame of its own, x from 0 to 1, and stretched to fill its box (an umbrella's
+//! hook excepted: it is bent at its true size).
 
 use crate::extrude::prism;
 use crate::grid::sphere_grid;

@@ -567,8 +567,9 @@ pub struct VisualPart<'a> {
 impl Core {
     /// What to draw for an object, posed as it is now: its collision parts, each in its form (or,
     /// for a body or link that has visual meshes, those instead; for a body with a form of its
-    /// own, that form filling the box around its parts). Nothing for an object replaced by its
-    /// halves. A model piece is drawn from the parts: see [`Core::visual_parts_with`].
+    /// own, that form filling the box around its parts), and its [`Ghost`], if it has one, last.
+    /// Nothing for an object replaced by its halves. A model piece is drawn from the parts: see
+    /// [`Core::visual_parts_with`].
     pub fn visual_parts(&self, id: ObjectId) -> Vec<VisualPart<'_>> {
         static NO_MODELS: ModelLibrary = ModelLibrary::EMPTY;
         self.visual_parts_with(id, &NO_MODELS)

@@ -1,12 +1,13 @@
 //! What the page is told about the world: what to draw once per episode, the poses every step.
 //!
 //! The world's visual description (`World::visual_parts`) is regrouped into *nodes*, one per
-//! rigid body (an object's base or one of its links): each node carries its parts (a shape, its
-//! pose in the node's frame, a colour) and moves as one, so a step needs only one pose per
-//! node. Convex hulls are sent as triangles (parry's hull), detailed forms as their coarse
-//! meshes (rounded boards as plain boxes), everything else as its primitive. Colours are linear
-//! sRGB in the home's palette, as the cameras' realistic profile gives them for the object's
-//! states, with its roughness and metalness.
+//! rigid body (an object's base or one of its links) and one per ghost (a shape drawn with an
+//! object that the physics does not move: the BehaviorRobot's head): each node carries its
+//! parts (a shape, its pose in the node's frame, a colour) and moves as one, so a step needs
+//! only one pose per node. Convex hulls are sent as triangles (parry's hull), detailed forms as
+//! their coarse meshes (rounded boards as plain boxes), everything else as its primitive.
+//! Colours are linear sRGB in the home's palette, as the cameras' realistic profile gives them
+//! for the object's states, with its roughness and metalness.
 
 use crate::checklist::Checklist;
 use behavior_core::Predicate;
@@ -176,10 +177,19 @@ fn flatten(out: &mut Vec<f32>, points: &[Vector]) {
 /// A part's new colour: `[node, part, r, g, b, emission]`.
 pub(crate) type Recolor = [f32; 6];
 
+/// What a node moves with: an object's base (`Link(None)`), one of its links, or its ghost (a
+/// shape the physics does not move, placed by its owner: the BehaviorRobot's head round its
+/// eye).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Carrier {
+    Link(Option<usize>),
+    Ghost,
+}
+
 /// The server's side of a scene: which body each node is and how each part looked last.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct SceneView {
-    bodies: Vec<(ObjectId, Option<usize>)>,
+    bodies: Vec<(ObjectId, Carrier)>,
     /// The objects present when it was made.
     present: Vec<ObjectId>,
     /// Per node, per part: its appearance and the look last sent.
@@ -198,11 +208,21 @@ pub(crate) fn describe(world: &World, models: &ModelLibrary) -> (SceneView, Vec<
     let finishes = Finishes::of(world);
     for (id, object) in core.objects() {
         let parts = core.visual_parts_with(id, models);
-        let links = std::iter::once(None).chain((0..object.links.len()).map(Some));
-        for link in links {
-            let frame = node_pose(world, id, link);
+        // The ghost is drawn last (if the object is drawn at all); it is a node of its own,
+        // since it moves apart from the body.
+        let ghosted = object.ghost.is_some() && !parts.is_empty();
+        let (parts, ghost) = parts.split_at(parts.len() - usize::from(ghosted));
+        let carriers = std::iter::once(None)
+            .chain((0..object.links.len()).map(Some))
+            .map(Carrier::Link)
+            .chain(object.ghost.map(|_| Carrier::Ghost));
+        for carrier in carriers {
+            let frame = node_pose(world, id, carrier);
             let inverse = frame.inverse();
-            let mine: Vec<_> = parts.iter().filter(|p| p.link == link).collect();
+            let mine: Vec<_> = match carrier {
+                Carrier::Link(link) => parts.iter().filter(|p| p.link == link).collect(),
+                Carrier::Ghost => ghost.iter().collect(),
+            };
             if mine.is_empty() {
                 continue;
             }
@@ -227,9 +247,13 @@ pub(crate) fn describe(world: &World, models: &ModelLibrary) -> (SceneView, Vec<
                 });
             }
             looks.push(node_looks);
-            bodies.push((id, link));
+            bodies.push((id, carrier));
+            let (name, link) = match carrier {
+                Carrier::Link(link) => (object.name.clone(), link),
+                Carrier::Ghost => (format!("{}/ghost", object.name), None),
+            };
             nodes.push(Node {
-                object: object.name.clone(),
+                object: name,
                 category: object.category.clone(),
                 link,
                 parts: drawn,
@@ -256,10 +280,12 @@ fn present(world: &World) -> Vec<ObjectId> {
         .collect()
 }
 
-fn node_pose(world: &World, id: ObjectId, link: Option<usize>) -> Pose {
-    match link {
-        None => world.core().pose(id),
-        Some(l) => world.core().link_pose(id, l),
+fn node_pose(world: &World, id: ObjectId, carrier: Carrier) -> Pose {
+    let core = world.core();
+    match carrier {
+        Carrier::Link(None) => core.pose(id),
+        Carrier::Link(Some(l)) => core.link_pose(id, l),
+        Carrier::Ghost => core.object(id).ghost.map_or(core.pose(id), |g| g.pose),
     }
 }
 
@@ -395,8 +421,8 @@ impl SceneView {
     pub(crate) fn frame(&self, world: &World, step: u32) -> Vec<u8> {
         let mut out = Vec::with_capacity(4 + self.bodies.len() * 28);
         out.extend_from_slice(&step.to_le_bytes());
-        for &(id, link) in &self.bodies {
-            let mut values = pose_values(node_pose(world, id, link));
+        for &(id, carrier) in &self.bodies {
+            let mut values = pose_values(node_pose(world, id, carrier));
             if !world.core().object(id).is_present() {
                 values[..3].fill(f32::NAN);
             }
@@ -545,5 +571,47 @@ mod tests {
         let fingers = |nodes: &[Node]| nodes.iter().filter(|n| n.link.is_some()).count();
         assert_eq!(fingers(&with), 2);
         assert_eq!(fingers(&with), fingers(&without));
+    }
+
+    #[test]
+    fn the_behavior_robots_head_is_a_node_of_its_own_that_follows_the_eye() {
+        let mut world = World::default();
+        let at = Pose::from_translation(Vector::new(0.0, 0.0, behavior_robots::BODY_HEIGHT));
+        let mut robot = behavior_robots::BehaviorRobot::add(&mut world, at).unwrap();
+        let (view, nodes) = describe(&world, &ModelLibrary::EMPTY);
+        let head = nodes
+            .iter()
+            .position(|n| n.object == "robot_body/ghost")
+            .expect("a node for the head");
+        assert_eq!(nodes[head].parts.len(), 1, "the head alone");
+        let body = nodes.iter().position(|n| n.object == "robot_body").unwrap();
+        assert!(
+            body < head,
+            "the body's node comes first, for the page's camera"
+        );
+        // A frame: the step, then seven numbers per node.
+        let pose_in = |frame: &[u8], node: usize| -> Vector {
+            let at = |k: usize| {
+                let start = 4 + 28 * node + 4 * k;
+                f32::from_le_bytes(frame[start..start + 4].try_into().unwrap())
+            };
+            Vector::new(at(0), at(1), at(2))
+        };
+        let before = pose_in(&view.frame(&world, 0), head);
+        let mut values = [0.0; behavior_robots::ACTION_DIM];
+        values[behavior_robots::Action::EYE.start] = 1.0;
+        for _ in 0..4 {
+            robot.step(&mut world, &values).unwrap();
+        }
+        let after = pose_in(&view.frame(&world, 4), head);
+        assert!(
+            (after - before).length() > 0.1,
+            "the head's node moved from {before} to {after} as the eye went forward"
+        );
+        assert_eq!(
+            pose_in(&view.frame(&world, 4), body),
+            pose_in(&view.frame(&world, 0), body),
+            "while the body stood still"
+        );
     }
 }

@@ -106,7 +106,7 @@ pub const CATALOG: &[Archetype] = &[
     Archetype { synset: "marker.n.03", shape: Shape::Rod, min: [0.12, 0.015, 0.015], max: [0.15, 0.02, 0.02], density: 900.0, material: Material::Plastic, color: [30, 30, 160] },
     Archetype { synset: "meat.n.01", shape: Shape::Block, min: [0.12, 0.08, 0.03], max: [0.25, 0.15, 0.08], density: 1050.0, material: Material::Food, color: [180, 50, 60] },
     Archetype { synset: "melon.n.01", shape: Shape::Ball, min: [0.15, 0.15, 0.15], max: [0.25, 0.22, 0.22], density: 950.0, material: Material::Food, color: [180, 210, 120] },
-    Archetype { synset: "microwave.n.02", shape: Shape::Microwave, min: [0.45, 0.35, 0.26], max: [0.6, 0.45, 0.35], density: 1000.0, material: Material::Metal, color: [60, 60, 65] },
+    Archetype { synset: "microwave.n.02", shape: Shape::Microwave, min: [0.45, 0.35, 0.26], max: [0.6, 0.45, 0.35], density: 1000.0, material: Material::Metal, color: [226, 226, 222] }, // white, so that its dark window and panel show
     Archetype { synset: "milk.n.01", shape: Shape::Block, min: [0.07, 0.07, 0.2], max: [0.1, 0.1, 0.26], density: 1000.0, material: Material::Paper, color: [250, 250, 255] }, // milk carton/jug
     Archetype { synset: "modem.n.01", shape: Shape::Block, min: [0.15, 0.12, 0.03], max: [0.25, 0.18, 0.05], density: 600.0, material: Material::Plastic, color: [30, 30, 35] },
     Archetype { synset: "mouse.n.04", shape: Shape::Block, min: [0.06, 0.1, 0.03], max: [0.07, 0.12, 0.045], density: 600.0, material: Material::Plastic, color: [60, 60, 70] }, // computer mouse
@@ -119,7 +119,7 @@ pub const CATALOG: &[Archetype] = &[
     Archetype { synset: "oatmeal.n.01", shape: Shape::Cylinder, min: [0.1, 0.1, 0.15], max: [0.13, 0.13, 0.2], density: 400.0, material: Material::Paper, color: [210, 190, 140] }, // oatmeal canister
     Archetype { synset: "olive.n.04", shape: Shape::Ball, min: [0.015, 0.015, 0.02], max: [0.022, 0.022, 0.03], density: 1000.0, material: Material::Food, color: [110, 120, 40] }, // olive fruit
     Archetype { synset: "orange.n.01", shape: Shape::Ball, min: [0.07, 0.07, 0.07], max: [0.09, 0.09, 0.09], density: 850.0, material: Material::Food, color: [250, 140, 20] },
-    Archetype { synset: "oven.n.01", shape: Shape::Oven, min: [0.6, 0.6, 0.85], max: [0.76, 0.7, 0.95], density: 1000.0, material: Material::Metal, color: [70, 70, 75] },
+    Archetype { synset: "oven.n.01", shape: Shape::Oven, min: [0.6, 0.6, 0.85], max: [0.76, 0.7, 0.95], density: 1000.0, material: Material::Metal, color: [186, 188, 192] }, // stainless, so that its dark window and knobs show
     Archetype { synset: "package.n.02", shape: Shape::LiddedContainer, min: [0.2, 0.15, 0.1], max: [0.5, 0.4, 0.35], density: 700.0, material: Material::Paper, color: [200, 160, 110] }, // parcel/present box that is opened
     Archetype { synset: "pad.n.01", shape: Shape::Slab, min: [0.1, 0.15, 0.005], max: [0.22, 0.3, 0.015], density: 700.0, material: Material::Paper, color: [250, 240, 140] }, // paper notepad (trash)
     Archetype { synset: "painting.n.01", shape: Shape::Slab, min: [0.3, 0.25, 0.02], max: [0.9, 0.7, 0.04], density: 500.0, material: Material::Wood, color: [120, 160, 200] }, // framed picture lying flat

@@ -3,10 +3,10 @@
 //! every side); the others in a frame of their own and stretched to fill their box.
 
 use crate::extrude::prism;
-use crate::grid::sphere_grid;
-use crate::jewelry::{ball, torus};
+use crate::grid::{ball, sphere_grid};
+use crate::lathe::{Pt, even, fold, p, revolve, torus};
 use crate::mesh::{Mesh, join};
-use crate::rounded::{block, plain_box};
+use crate::rounded::{block, boxed, plain_box};
 use crate::tone::Tone;
 use crate::{Ctx, Detail};
 use rapier3d::math::Vector;
@@ -121,12 +121,7 @@ pub(crate) fn wreath(ctx: Ctx) -> Mesh {
             (side * 0.3, -0.98),
             (side * 0.32, -0.7),
         ];
-        let outline: Vec<(f32, f32)> = if side > 0.0 {
-            loop_.to_vec()
-        } else {
-            loop_.iter().rev().copied().collect()
-        };
-        pieces.push(prism(&outline, (0.1, 0.22), Tone::Clay));
+        pieces.push(prism(&loop_, (0.1, 0.22), Tone::Clay));
     }
     pieces.push(ball(
         Vector::new(0.0, -0.82, 0.18),
@@ -212,11 +207,6 @@ pub(crate) fn bow(ctx: Ctx) -> Mesh {
             (side * spread, -0.95),
             (side * (spread - 0.22), -1.0),
         ];
-        let tail: Vec<(f32, f32)> = if side > 0.0 {
-            tail.iter().rev().copied().collect()
-        } else {
-            tail.to_vec()
-        };
         pieces.push(prism(&tail, (-0.12, 0.12), Tone::Body));
     }
     pieces.push(ball(
@@ -232,18 +222,18 @@ pub(crate) fn bow(ctx: Ctx) -> Mesh {
 /// hole through the middle.
 pub(crate) fn spool(ctx: Ctx) -> Mesh {
     let hole = ctx.dice.between(0.22, 0.3);
-    let flange = |pt: crate::lathe::Pt| pt.tone(Tone::Light);
+    let flange = |pt: Pt| pt.tone(Tone::Light);
     let profile = [
-        flange(crate::lathe::fold(hole, 0.0)),
-        crate::lathe::fold(1.0, 0.0),
-        crate::lathe::fold(1.0, 0.08),
-        crate::lathe::fold(0.9, 0.08).tone(Tone::Body),
-        flange(crate::lathe::fold(0.9, 0.92)),
-        crate::lathe::fold(1.0, 0.92),
-        crate::lathe::fold(1.0, 1.0),
-        crate::lathe::fold(hole, 1.0),
+        flange(fold(hole, 0.0)),
+        fold(1.0, 0.0),
+        fold(1.0, 0.08),
+        fold(0.9, 0.08).tone(Tone::Body),
+        flange(fold(0.9, 0.92)),
+        fold(1.0, 0.92),
+        fold(1.0, 1.0),
+        fold(hole, 1.0),
     ];
-    crate::lathe::revolve(&profile, ctx.detail.around(), crate::lathe::even).fit(ctx.half)
+    revolve(&profile, ctx.detail.around(), even).fit(ctx.half)
 }
 
 /// A Christmas stocking hanging: a leg in the object's colour, its foot toward +x, under a
@@ -251,15 +241,7 @@ pub(crate) fn spool(ctx: Ctx) -> Mesh {
 pub(crate) fn stocking(ctx: Ctx) -> Mesh {
     let rows = ctx.detail.bevel_rows();
     let toe = ctx.dice.between(0.85, 1.0);
-    let part = |centre: [f32; 3], half: [f32; 3], radius: f32, tone: Tone| {
-        crate::rounded::rounded_box(
-            Vector::from_array(centre),
-            Vector::from_array(half),
-            radius,
-            rows,
-            tone,
-        )
-    };
+    let part = |centre, half, radius, tone| boxed(centre, half, radius, rows, tone);
     join([
         part([-0.3, 0.0, 0.52], [0.42, 0.85, 0.36], 0.3, Tone::Body),
         part(
@@ -278,15 +260,15 @@ pub(crate) fn stocking(ctx: Ctx) -> Mesh {
 pub(crate) fn candle(ctx: Ctx) -> Mesh {
     let wick = ctx.dice.between(0.06, 0.09);
     let profile = [
-        crate::lathe::p(0.0, 0.0),
-        crate::lathe::fold(1.0, 0.0),
-        crate::lathe::p(1.0, 1.0 - wick - 0.06),
-        crate::lathe::p(0.94, 1.0 - wick - 0.01),
-        crate::lathe::p(0.7, 1.0 - wick - 0.02),
-        crate::lathe::fold(0.1, 1.0 - wick - 0.035),
-        crate::lathe::fold(0.06, 1.0 - wick - 0.035).tone(Tone::Dark),
-        crate::lathe::p(0.05, 0.99),
-        crate::lathe::p(0.0, 1.0),
+        p(0.0, 0.0),
+        fold(1.0, 0.0),
+        p(1.0, 1.0 - wick - 0.06),
+        p(0.94, 1.0 - wick - 0.01),
+        p(0.7, 1.0 - wick - 0.02),
+        fold(0.1, 1.0 - wick - 0.035),
+        fold(0.06, 1.0 - wick - 0.035).tone(Tone::Dark),
+        p(0.05, 0.99),
+        p(0.0, 1.0),
     ];
-    crate::lathe::revolve(&profile, ctx.detail.around(), crate::lathe::even).fit(ctx.half)
+    revolve(&profile, ctx.detail.around(), even).fit(ctx.half)
 }

@@ -3,11 +3,11 @@
 //! in a frame of its own and stretched to fill its box, headphones excepted: their cups stay
 //! round at their true size.
 
-use crate::extrude::prism;
-use crate::grid::{signed_pow, sphere_grid};
-use crate::lathe::{even, fold, p, revolve};
+use crate::extrude::{prism, prism_across_y};
+use crate::grid::{ball, signed_pow, sphere_grid};
+use crate::lathe::{Pt, even, fold, p, revolve};
 use crate::mesh::{Mesh, join};
-use crate::rounded::{boxed, plain_box, rounded_box};
+use crate::rounded::{block, boxed, plain_box, rounded_box};
 use crate::tone::Tone;
 use crate::tube::{fillet, tube};
 use crate::{Ctx, Detail};
@@ -89,14 +89,10 @@ pub(crate) fn glasses(ctx: Ctx) -> Mesh {
     let mut pieces = Vec::new();
     for side in [-1.0f32, 1.0] {
         let centre = (side * 0.5, 0.0);
-        // Extruded across y: a piece from `a` to `b` along its extrusion lies at y −b..−a.
-        pieces.push(lens(
-            ellipse(centre, (0.42, tall), points),
-            (0.9, 1.0),
-            Tone::Dark,
-        ));
+        let lens = ellipse(centre, (0.42, tall), points);
+        pieces.push(prism_across_y(&lens, (-1.0, -0.9), Tone::Dark));
         let rim = ellipse(centre, (0.48, tall + 0.06), points);
-        pieces.push(lens(rim, (0.92, 0.98), Tone::Body));
+        pieces.push(prism_across_y(&rim, (-0.98, -0.92), Tone::Body));
         pieces.push(rod(
             [side * 0.95, 0.02, 0.3],
             [0.04, 0.94, 0.05],
@@ -115,14 +111,7 @@ pub(crate) fn glasses(ctx: Ctx) -> Mesh {
 /// A thin rounded bar of a frame (a plain one at the coarse level).
 fn rod(centre: [f32; 3], half: [f32; 3], detail: Detail) -> Mesh {
     let (centre, half) = (Vector::from_array(centre), Vector::from_array(half));
-    crate::rounded::block(centre, half, 0.02, 1, detail, Tone::Body)
-}
-
-/// A flat piece of outline `outline` in the x–z plane, from y = −`to` to −`from`.
-fn lens(outline: Vec<(f32, f32)>, (from, to): (f32, f32), tone: Tone) -> Mesh {
-    let mut made = prism(&outline, (from, to), tone);
-    made.turn(Rotation::from_rotation_x(FRAC_PI_2), Vector::ZERO);
-    made
+    block(centre, half, 0.02, 1, detail, Tone::Body)
 }
 
 /// A computer mouse, its front toward +y: a dome higher toward its back and wider at it, and a
@@ -232,7 +221,7 @@ pub(crate) fn keypad(ctx: Ctx) -> Mesh {
 /// and a dark handle on its side (+x).
 pub(crate) fn blender(ctx: Ctx) -> Mesh {
     let rows = ctx.detail.bevel_rows();
-    let lid = |pt: crate::lathe::Pt| pt.tone(Tone::Dark);
+    let lid = |pt: Pt| pt.tone(Tone::Dark);
     let jug = [
         p(0.0, 0.24),
         fold(0.5, 0.24),
@@ -284,7 +273,7 @@ pub(crate) fn detector(ctx: Ctx) -> Mesh {
     ];
     join([
         revolve(&profile, ctx.detail.around(), even),
-        crate::jewelry::ball(
+        ball(
             Vector::new(0.3, 0.0, dome - 0.06),
             0.07,
             ctx.detail,

@@ -2,6 +2,7 @@
 //! to a point by a function (an ellipsoid, a rounded box, a lumpy floret), vertices are shared,
 //! and normals are averaged from the triangles, so the surface shades smoothly.
 
+use crate::Detail;
 use crate::mesh::Mesh;
 use crate::tone::Tone;
 use rapier3d::math::Vector;
@@ -49,4 +50,11 @@ pub(crate) fn sphere_grid(rings: usize, segments: usize, at: impl Fn(Vector) -> 
 /// `x` raised to `power`, keeping its sign.
 pub(crate) fn signed_pow(x: f32, power: f32) -> f32 {
     x.signum() * x.abs().powf(power)
+}
+
+/// A ball of radius `radius` at `at`, in `tone`, half as finely cut as a form's own surfaces
+/// (beads, berries, chips, an eye).
+pub(crate) fn ball(at: Vector, radius: f32, detail: Detail, tone: Tone) -> Mesh {
+    let b = (detail.bands() / 2).max(3);
+    sphere_grid(b, 2 * b, |d| at + d * radius).toned(tone)
 }

@@ -3,11 +3,9 @@
 //! in a frame of its own (x and y from −1 to 1, z from 0 to 1 unless it says otherwise) and
 //! stretched to fill its box.
 
-use crate::extrude::prism;
-use crate::grid::{signed_pow, sphere_grid};
-use crate::jewelry::ball;
-use crate::lathe::{even, fold, p, revolve};
-use crate::machines::side_piece;
+use crate::extrude::{prism, prism_across_y};
+use crate::grid::{ball, signed_pow, sphere_grid};
+use crate::lathe::{cylinder, even, fold, p, revolve};
 use crate::mesh::{Mesh, join};
 use crate::rounded::{plain_box, rounded_box};
 use crate::tone::Tone;
@@ -26,11 +24,7 @@ fn slab(centre: [f32; 3], half: [f32; 3], tone: Tone) -> Mesh {
 pub(crate) fn carton(ctx: Ctx) -> Mesh {
     let eaves = ctx.dice.between(0.74, 0.8);
     let roof = [(-1.0, eaves), (1.0, eaves), (0.0, 0.94)];
-    let mut cap = revolve(
-        &[p(0.0, 0.0), fold(1.0, 0.0), fold(1.0, 1.0), p(0.0, 1.0)],
-        ctx.detail.around() / 2,
-        even,
-    );
+    let mut cap = cylinder(ctx.detail.around() / 2);
     let cap_at = Vector::new(0.5, -0.35, eaves + 0.03);
     cap.stretch(Vector::new(0.2, 0.2, 0.1), cap_at);
     // The box reaches a little into the roof: faces shared would be open seams.
@@ -40,7 +34,7 @@ pub(crate) fn carton(ctx: Ctx) -> Mesh {
             [1.0, 1.0, 0.5 * eaves + 0.01],
             Tone::Body,
         ),
-        side_piece(&roof, 1.0, Tone::Body),
+        prism_across_y(&roof, (-1.0, 1.0), Tone::Body),
     ];
     if ctx.detail == Detail::Fine {
         pieces.push(slab([0.0, 0.0, 0.96], [0.05, 0.98, 0.04], Tone::Body));
@@ -60,11 +54,7 @@ pub(crate) fn jug(ctx: Ctx) -> Mesh {
             Vector::new(0.55 + 0.32 * a.cos(), 0.0, 0.78 + 0.14 * a.sin())
         })
         .collect();
-    let mut cap = revolve(
-        &[p(0.0, 0.0), fold(1.0, 0.0), fold(1.0, 1.0), p(0.0, 1.0)],
-        ctx.detail.around() / 2,
-        even,
-    );
+    let mut cap = cylinder(ctx.detail.around() / 2);
     cap.stretch(Vector::new(0.28, 0.28, 0.16), Vector::new(-0.5, 0.0, 0.82));
     join([
         rounded_box(

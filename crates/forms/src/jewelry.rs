@@ -1,33 +1,14 @@
 //! Jewellery lying flat and a lipstick standing: a bangle, a ring with a stone, a necklace of
 //! beads with a pendant, a lipstick in its case. Built in a frame of their own and stretched to
-//! fill their box. Also the shared small pieces: a ring about z ([`torus`]) and a ball.
+//! fill their box.
 
-use crate::grid::sphere_grid;
-use crate::lathe::{Pt, p, revolve};
+use crate::grid::ball;
+use crate::lathe::{fold, p, revolve, torus};
 use crate::mesh::{Mesh, join};
 use crate::tone::Tone;
 use crate::{Ctx, Detail};
 use rapier3d::math::Vector;
 use std::f32::consts::TAU;
-
-/// A ring about z: its tube's centre `radius` from the axis, the tube `thick` in radius.
-pub(crate) fn torus(radius: f32, thick: f32, detail: Detail) -> Mesh {
-    let points = detail.around() / 2;
-    // Counter-clockwise in (r, z): out along the bottom, up the outside, in over the top.
-    let profile: Vec<Pt> = (0..points)
-        .map(|k| {
-            let a = TAU * k as f32 / points as f32 - 0.5 * TAU / 2.0;
-            p(radius + thick * a.cos(), thick * a.sin())
-        })
-        .collect();
-    revolve(&profile, 2 * detail.around(), |_| 1.0)
-}
-
-/// A ball of radius `radius` at `at`.
-pub(crate) fn ball(at: Vector, radius: f32, detail: Detail, tone: Tone) -> Mesh {
-    let b = (detail.bands() / 2).max(3);
-    sphere_grid(b, 2 * b, |d| at + d * radius).toned(tone)
-}
 
 /// A bangle: a ring of rounded section, flatter or rounder by the seed.
 pub(crate) fn bangle(ctx: Ctx) -> Mesh {
@@ -74,11 +55,11 @@ pub(crate) fn lipstick(ctx: Ctx) -> Mesh {
     let case = ctx.dice.between(0.5, 0.6);
     let profile = [
         p(0.0, 0.0).tone(Tone::Dark),
-        crate::lathe::fold(1.0, 0.0),
-        crate::lathe::fold(1.0, case),
-        crate::lathe::fold(0.92, case).tone(Tone::Metal),
-        crate::lathe::fold(0.92, case + 0.07),
-        crate::lathe::fold(0.7, case + 0.07).tone(Tone::Body),
+        fold(1.0, 0.0),
+        fold(1.0, case),
+        fold(0.92, case).tone(Tone::Metal),
+        fold(0.92, case + 0.07),
+        fold(0.7, case + 0.07).tone(Tone::Body),
         p(0.7, 0.86),
         p(0.5, 0.96),
         p(0.0, 1.0),

@@ -1,11 +1,12 @@
 //! Solids of revolution about z from a profile in the (r, z) half plane: bottles, bowls, cups,
 //! legs, fruit. A profile that starts and ends on the axis gives a solid; one that does not is
-//! a closed loop and gives a ring (a lamp shade with thickness).
+//! a closed loop and gives a ring (a lamp shade with thickness, a [`torus`]).
 
+use crate::Detail;
 use crate::mesh::Mesh;
 use crate::tone::Tone;
 use rapier3d::math::Vector;
-use std::f32::consts::TAU;
+use std::f32::consts::{FRAC_PI_2, TAU};
 
 /// A point of a profile: radius and height, whether the surface folds there (a rim, a cap's
 /// edge) rather than runs smoothly through, and the tone of the stretch that starts there.
@@ -151,4 +152,24 @@ fn stitch(mesh: &mut Mesh, from: Ring, to: Ring, segments: u32) {
 /// No wobble: a true solid of revolution.
 pub(crate) fn even(_: f32) -> f32 {
     1.0
+}
+
+/// A ring about z: its tube's centre `radius` from the axis, the tube `thick` in radius (a
+/// bangle, a wreath).
+pub(crate) fn torus(radius: f32, thick: f32, detail: Detail) -> Mesh {
+    let points = detail.around() / 2;
+    // Counter-clockwise in (r, z), from the bottom: out, up the outside, in over the top.
+    let profile: Vec<Pt> = (0..points)
+        .map(|k| {
+            let a = TAU * k as f32 / points as f32 - FRAC_PI_2;
+            p(radius + thick * a.cos(), thick * a.sin())
+        })
+        .collect();
+    revolve(&profile, 2 * detail.around(), even)
+}
+
+/// A plain cylinder of radius 1 from z = 0 to 1, `segments` round (a cap, a hub).
+pub(crate) fn cylinder(segments: usize) -> Mesh {
+    let profile = [p(0.0, 0.0), fold(1.0, 0.0), fold(1.0, 1.0), p(0.0, 1.0)];
+    revolve(&profile, segments, even)
 }

@@ -2,7 +2,7 @@
 //! built at its true size (round wheels under a long body); the others in a frame of their own
 //! and stretched to fill their box.
 
-use crate::extrude::prism;
+use crate::extrude::prism_across_y;
 use crate::lathe::{even, fold, p, revolve};
 use crate::mesh::{Mesh, join};
 use crate::rounded::{boxed, rounded_box};
@@ -31,13 +31,6 @@ pub(crate) fn wheel(at: Vector, radius: f32, width: f32, detail: Detail) -> Mesh
     );
     // About x by a quarter turn: the axis (z) now runs along −y.
     made.turn(Rotation::from_rotation_x(FRAC_PI_2), at);
-    made
-}
-
-/// A flat piece whose outline is in the x–z plane, extruded across y from `-depth` to `depth`.
-pub(crate) fn side_piece(outline: &[(f32, f32)], depth: f32, tone: Tone) -> Mesh {
-    let mut made = prism(outline, (-depth, depth), tone);
-    made.turn(Rotation::from_rotation_x(FRAC_PI_2), Vector::ZERO);
     made
 }
 
@@ -71,7 +64,7 @@ pub(crate) fn car(ctx: Ctx) -> Mesh {
         ((0.97 - slope) * h.x, h.z),
         (-0.95 * h.x, h.z),
     ];
-    pieces.push(side_piece(&cabin, glass, Tone::Dark));
+    pieces.push(prism_across_y(&cabin, (-glass, glass), Tone::Dark));
     // Pillars across the cabin, standing a little proud of the glass, back to front.
     let pillar = 0.035 * h.x;
     for x in [-0.93, -0.35, 0.25] {

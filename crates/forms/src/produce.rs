@@ -7,6 +7,7 @@ use crate::extrude::prism;
 use crate::grid::{signed_pow, sphere_grid};
 use crate::lathe::{Pt, even, fold, p, revolve};
 use crate::mesh::{Mesh, join};
+use crate::rounded::plain_box;
 use crate::tone::Tone;
 use crate::tube::tube;
 use rapier3d::math::{Rotation, Vector};
@@ -388,7 +389,7 @@ pub(crate) fn tea_bag(ctx: Ctx) -> Mesh {
             0.5 * d.z,
         )
     });
-    let string = crate::rounded::plain_box(
+    let string = plain_box(
         Vector::new(0.0, 0.5, 0.2),
         Vector::new(0.015, 0.25, 0.03),
         Tone::Paper,

@@ -7,9 +7,9 @@
 
 use crate::extrude::prism;
 use crate::grid::sphere_grid;
-use crate::lathe::{even, fold, p, revolve};
+use crate::lathe::{Pt, even, fold, p, revolve};
 use crate::mesh::{Mesh, join};
-use crate::rounded::rounded_box;
+use crate::rounded::{block, plain_box, rounded_box};
 use crate::tone::Tone;
 use crate::tube::tube;
 use crate::{Ctx, Detail};
@@ -187,7 +187,7 @@ pub(crate) fn hammer(ctx: Ctx) -> Mesh {
 /// A screwdriver: a fat handle toward −x, a metal shaft and a tip toward +x.
 pub(crate) fn screwdriver(ctx: Ctx) -> Mesh {
     let grip = ctx.dice.between(0.38, 0.46);
-    let metal = |pt: crate::lathe::Pt| pt.tone(Tone::Metal);
+    let metal = |pt: Pt| pt.tone(Tone::Metal);
     let profile = [
         p(0.0, 0.0),
         fold(0.85, 0.0),
@@ -353,11 +353,11 @@ pub(crate) fn scrub_brush(ctx: Ctx) -> Mesh {
                         0.22,
                     );
                     let tuft = Vector::new(0.1, 0.16 * waist, 0.22);
-                    pieces.push(crate::rounded::plain_box(at, tuft, Tone::Dark));
+                    pieces.push(plain_box(at, tuft, Tone::Dark));
                 }
             }
         }
-        Detail::Coarse => pieces.push(crate::rounded::plain_box(
+        Detail::Coarse => pieces.push(plain_box(
             Vector::new(0.0, 0.0, 0.22),
             Vector::new(0.94, 0.6 * waist, 0.22),
             Tone::Dark,
@@ -372,7 +372,7 @@ pub(crate) fn dustpan(ctx: Ctx) -> Mesh {
     let rows = ctx.detail.bevel_rows();
     let wall = ctx.dice.between(0.75, 0.95);
     let part = |centre: [f32; 3], half: [f32; 3], radius: f32| {
-        crate::rounded::block(
+        block(
             Vector::from_array(centre),
             Vector::from_array(half),
             radius,

@@ -27,6 +27,10 @@ const THREE: &[&str] = &[
     "build/three.module.js",
     "build/three.core.js",
     "examples/jsm/controls/OrbitControls.js",
+    // The scene's glTF file, and what its loader imports.
+    "examples/jsm/loaders/GLTFLoader.js",
+    "examples/jsm/utils/BufferGeometryUtils.js",
+    "examples/jsm/utils/SkeletonUtils.js",
 ];
 
 fn main() {

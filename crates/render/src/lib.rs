@@ -22,7 +22,9 @@
 //! particles on the surfaces they lie on, and water drops, as the world has them.
 //!
 //! [`to_glb`] writes the world as a binary glTF 2.0 file with the same meshes and the realistic
-//! profile's materials.
+//! profile's materials, its procedural patterns baked into repeating images (`texture.rs`);
+//! [`GltfWriter`] makes such a file node by node, at the browser viewer's lighter
+//! [`GltfDetail`] where asked.
 //!
 //! Objects that name a model piece (a robot's link) are drawn with the piece's real meshes where
 //! the renderer was handed a library that holds them ([`Renderer::set_models`]; the robots crate
@@ -56,6 +58,7 @@ mod profile;
 mod renderer;
 mod shadow;
 mod targets;
+mod texture;
 
 pub use appearance::{DUST, Look, STAIN, ToneLook, WATER, state_look, to_linear, tone_look};
 pub use camera::{Camera, EYE_FOV, EYE_SIZE, FAR, NEAR};
@@ -63,10 +66,9 @@ pub use categories::{CategoryTable, DUST_CATEGORY, STAIN_CATEGORY, WATER_CATEGOR
 pub use error::RenderError;
 pub use export::{ExportError, save_npy, save_png, to_rgb};
 pub use finish::{Finishes, PartFinish};
-pub use gltf::to_glb;
+pub use gltf::{GltfDetail, GltfWriter, to_glb};
 pub use instances::Scene;
 pub use lidar::{Lidar, Pattern, Scan};
-pub use mesh::viewer_piece;
 pub use modality::{Frame, Image, Modality, Pixels, UnknownModality};
 pub use profile::{ImageProfile, UnknownProfile};
 pub use renderer::{FrameStats, Renderer, View};

@@ -4,7 +4,7 @@
 //! detailed form, size, seed and level of detail (made by `behavior-forms`).
 
 use behavior_forms::{Form, Tone};
-use behavior_sim::{HeldMesh, ModelPiece, Primitive, VisualMesh, VisualShape};
+use behavior_sim::{ModelPiece, Primitive, VisualMesh, VisualShape};
 use rapier3d::math::Vector;
 use std::collections::BTreeMap;
 use std::f32::consts::{PI, TAU};
@@ -220,7 +220,7 @@ pub(crate) enum PieceLevel {
     Shadow,
 }
 
-/// The grid of [`PieceLevel::Fine`], m (also what the viewer gets: [`viewer_piece`]).
+/// The grid of [`PieceLevel::Fine`], m (also what the browser viewer gets).
 const FINE_CELL: f32 = 0.004;
 
 impl PieceLevel {
@@ -650,19 +650,6 @@ fn creased(vertices: &[Vector], triangles: &[[u32; 3]]) -> Mesh {
         }
     }
     mesh
-}
-
-/// A model piece's mesh as the cameras draw it 50 to 150 pixels across (vertices merged on a
-/// 4 mm grid), its vertices split where faces meet at a crease, so that a viewer that averages
-/// each vertex's normals over its triangles shades it as the cameras do: vertex positions and
-/// counter-clockwise triangles. (Fetch: 14,000 triangles for its 31,700.)
-pub fn viewer_piece(held: &HeldMesh) -> (Vec<[f32; 3]>, Vec<u32>) {
-    let (vertices, triangles) = clustered(&held.mesh.vertices, &held.mesh.triangles, FINE_CELL);
-    let mesh = creased(&vertices, &triangles);
-    (
-        mesh.vertices.iter().map(|v| v.position).collect(),
-        mesh.indices,
-    )
 }
 
 /// A mesh with its vertices merged in cubic cells of `cell` metres, each cell's vertices

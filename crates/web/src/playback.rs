@@ -13,7 +13,7 @@
 use crate::checklist::{Checklist, ChecklistStatus};
 use crate::clients::{Clients, Outgoing};
 use crate::protocol::{ClientMessage, ProtocolError, ServerMessage, Status, error_text};
-use crate::scene::{Describe, Particles, Recolor, SceneView};
+use crate::scene::{Describe, Particles, Recolor, SceneFiles, SceneView};
 use crate::server::WebError;
 use crate::session::{Event, ToSim, ticks};
 use axum::body::Bytes;
@@ -22,6 +22,7 @@ use behavior_env::{Env, EpisodeMetrics, Start};
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
+use std::sync::Arc;
 use std::sync::mpsc::Receiver;
 use std::time::{Duration, Instant};
 use tokio::sync::mpsc::Sender;
@@ -91,6 +92,9 @@ struct Viewer {
     checklist: Checklist,
     view: SceneView,
     scenes: Vec<String>,
+    /// Where the scenes' glTF files are published for the pages (all of them: the timeline
+    /// may go back to any).
+    files: Arc<SceneFiles>,
     /// Each different set of particles, in the order they appeared.
     particles: Vec<Particles>,
     snapshots: Vec<Snapshot>,
@@ -110,8 +114,12 @@ struct Viewer {
 }
 
 /// Plays the recording until [`ToSim::Stop`] or until every sender is gone.
-pub(crate) fn run(playback: Playback, inbox: Receiver<ToSim>) -> Result<Vec<PathBuf>, WebError> {
-    let mut viewer = Viewer::start(playback)?;
+pub(crate) fn run(
+    playback: Playback,
+    inbox: Receiver<ToSim>,
+    files: Arc<SceneFiles>,
+) -> Result<Vec<PathBuf>, WebError> {
+    let mut viewer = Viewer::start(playback, files)?;
     ticks(&inbox, |event| {
         match event {
             Event::Message(message) => viewer.handle(message),
@@ -123,7 +131,7 @@ pub(crate) fn run(playback: Playback, inbox: Receiver<ToSim>) -> Result<Vec<Path
 }
 
 impl Viewer {
-    fn start(mut playback: Playback) -> Result<Viewer, WebError> {
+    fn start(mut playback: Playback, files: Arc<SceneFiles>) -> Result<Viewer, WebError> {
         let header = &playback.recording.header;
         let start = Start {
             seed: header.seed,
@@ -147,6 +155,7 @@ impl Viewer {
             checklist,
             view: SceneView::default(),
             scenes: Vec::new(),
+            files,
             particles: Vec::new(),
             snapshots: Vec::new(),
             next: 0,
@@ -169,7 +178,7 @@ impl Viewer {
         let env = &self.playback.env;
         let seed = self.playback.recording.header.seed;
         let described = Describe::episode(env, &self.checklist, seed, 1);
-        if let Some((view, description)) = described.map(Describe::build) {
+        if let Some((view, description)) = described.map(|d| d.build(&self.files, usize::MAX)) {
             self.view = view;
             self.scenes
                 .push(ServerMessage::Scene(&description).to_text());

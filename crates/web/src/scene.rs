@@ -1,93 +1,25 @@
-//! What the page is told about the world: what to draw once per episode, the poses every step.
+//! What the page is told about the world: what to draw once per scene, the poses every step.
 //!
 //! The world's visual description (`World::visual_parts`) is regrouped into *nodes*, one per
 //! rigid body (an object's base or one of its links) and one per ghost (a shape drawn with an
-//! object that the physics does not move: the BehaviorRobot's head): each node carries its
-//! parts (a shape, its pose in the node's frame, a colour) and moves as one, so a step needs
-//! only one pose per node. Convex hulls are sent as triangles (parry's hull), detailed forms as
-//! their coarse meshes (rounded boards as plain boxes), everything else as its primitive.
-//! Colours are linear sRGB in the home's palette, as the cameras' realistic profile gives them
-//! for the object's states, with its roughness and metalness.
+//! object that the physics does not move: the BehaviorRobot's head). Each node moves as one, so
+//! a step needs only one pose per node. What the nodes hold is sent once per scene as a binary
+//! glTF file (`behavior_render::GltfWriter` at its viewer's detail: the cameras' meshes, forms
+//! at their coarse level, and the realistic profile's materials with their patterns baked into
+//! images), a top node per node in the description's order, a child per part; the page fetches
+//! it from the address the description names ([`SceneFiles`]). A part's colour changes with the
+//! object's states (cooked, soaked, on), sent as [`Recolor`]s.
 
 use crate::checklist::Checklist;
+use axum::body::Bytes;
 use behavior_core::Predicate;
 use behavior_env::Env;
-use behavior_forms::Tone;
-use behavior_render::{DUST, Finishes, Look, STAIN, WATER, state_look, tone_look};
-use behavior_sim::{Form, ModelLibrary, ObjectId, Primitive, Visual, VisualShape, World};
+use behavior_render::{DUST, Finishes, GltfDetail, GltfWriter, Look, STAIN, WATER, state_look};
+use behavior_sim::{ModelLibrary, ObjectId, Visual, VisualPart, World};
 use rapier3d::math::{Pose, Vector};
 use serde::Serialize;
 use std::collections::BTreeMap;
-
-/// A shape as the page builds it: in its own frame, z up.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub(crate) enum Shape {
-    Box {
-        half_extents: [f32; 3],
-    },
-    Cylinder {
-        radius: f32,
-        half_height: f32,
-    },
-    Sphere {
-        radius: f32,
-    },
-    Capsule {
-        radius: f32,
-        half_height: f32,
-    },
-    Mesh {
-        vertices: Vec<f32>,
-        triangles: Vec<u32>,
-    },
-    /// A detailed form at its coarse level, smooth (the page averages each vertex's normal
-    /// from its triangles; folds have vertices of their own and stay sharp), its details in
-    /// colours of their own. Why coarse: a home's forms at both levels came to 10 MB of scene
-    /// for the page, and the fine level to too many triangles for a browser drawing on a CPU,
-    /// a headset's two eyes above all; the coarse level is a fifth of that.
-    Form(FormMesh),
-}
-
-/// A detailed form's mesh for the page.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub(crate) struct FormMesh {
-    /// x, y, z after one another, m, to a tenth of a millimetre.
-    vertices: Vec<f32>,
-    triangles: Vec<u32>,
-    /// The form's parts in colours of their own (a stem, a cap): their triangles come after the
-    /// body's, in this order.
-    details: Vec<Detail>,
-}
-
-/// Triangles of a mesh in a colour of their own.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub(crate) struct Detail {
-    /// How many indices (three a triangle).
-    pub(crate) count: u32,
-    /// Linear sRGB, 0–1.
-    pub(crate) color: [f32; 3],
-    /// 0 (mirror) to 1 (chalk).
-    pub(crate) roughness: f32,
-    /// 0 or 1.
-    pub(crate) metallic: f32,
-}
-
-/// One drawn part of a node.
-#[derive(Clone, Debug, Serialize)]
-pub(crate) struct DrawnPart {
-    pub(crate) shape: Shape,
-    /// Position and quaternion (x, y, z, w) in the node's frame.
-    pub(crate) offset: [f32; 7],
-    /// Linear sRGB, 0–1, as the object's states show.
-    pub(crate) color: [f32; 3],
-    /// 0–1: how much it glows (toggled on).
-    pub(crate) emission: f32,
-    /// 0 (mirror) to 1 (chalk), as the realistic profile finishes it.
-    pub(crate) roughness: f32,
-    /// 0 or 1.
-    pub(crate) metallic: f32,
-}
+use std::sync::Mutex;
 
 /// A rigid body: an object's base or one of its links.
 #[derive(Clone, Debug, Serialize)]
@@ -98,7 +30,8 @@ pub(crate) struct Node {
     pub(crate) category: String,
     /// The link's index, or none for the base.
     pub(crate) link: Option<usize>,
-    pub(crate) parts: Vec<DrawnPart>,
+    /// How many parts its glTF node holds (a child each).
+    pub(crate) parts: usize,
 }
 
 /// Everything the page needs to draw an episode, sent on joining and at each new episode.
@@ -112,6 +45,8 @@ pub(crate) struct SceneDescription {
     /// Node names of the robot's parts, for the page's camera to follow.
     pub(crate) robot: Vec<String>,
     pub(crate) nodes: Vec<Node>,
+    /// Where the page fetches the nodes' glTF file.
+    pub(crate) gltf: String,
     /// The goal's ground literals, as text.
     pub(crate) literals: Vec<String>,
     /// The action steps an episode may take.
@@ -199,12 +134,13 @@ pub(crate) struct SceneView {
     changed: BTreeMap<(usize, usize), [f32; 4]>,
 }
 
-/// The world's current parts, grouped into nodes.
-pub(crate) fn describe(world: &World, models: &ModelLibrary) -> (SceneView, Vec<Node>) {
+/// The world's current parts, grouped into nodes, and the nodes' glTF file.
+pub(crate) fn describe(world: &World, models: &ModelLibrary) -> (SceneView, Vec<Node>, Vec<u8>) {
     let core = world.core();
     let mut bodies = Vec::new();
     let mut looks = Vec::new();
     let mut nodes = Vec::new();
+    let mut file = GltfWriter::new(world, GltfDetail::Viewer);
     let finishes = Finishes::of(world);
     for (id, object) in core.objects() {
         let parts = core.visual_parts_with(id, models);
@@ -217,46 +153,37 @@ pub(crate) fn describe(world: &World, models: &ModelLibrary) -> (SceneView, Vec<
             .map(Carrier::Link)
             .chain(object.ghost.map(|_| Carrier::Ghost));
         for carrier in carriers {
-            let frame = node_pose(world, id, carrier);
-            let inverse = frame.inverse();
-            let mine: Vec<_> = match carrier {
-                Carrier::Link(link) => parts.iter().filter(|p| p.link == link).collect(),
-                Carrier::Ghost => ghost.iter().collect(),
+            let mine: Vec<VisualPart> = match carrier {
+                Carrier::Link(link) => parts.iter().filter(|p| p.link == link).copied().collect(),
+                Carrier::Ghost => ghost.to_vec(),
             };
             if mine.is_empty() {
                 continue;
             }
-            let mut drawn = Vec::with_capacity(mine.len());
-            let mut node_looks = Vec::with_capacity(mine.len());
-            for p in mine {
-                // The colour in the home's palette, as the cameras' realistic profile has it.
-                let finish = finishes.part(world, id, p.visual);
-                let visual = Visual {
-                    color: finish.color,
-                    ..p.visual
-                };
-                let look = state_look(world, id, visual);
-                node_looks.push((visual, look_key(&look)));
-                drawn.push(DrawnPart {
-                    shape: shape_of(&p.shape, &object.name),
-                    offset: pose_values(inverse * p.pose),
-                    color: look.albedo,
-                    emission: look.emission,
-                    roughness: finish.roughness,
-                    metallic: finish.metallic,
-                });
-            }
+            // Each part's colour in the home's palette, as the cameras' realistic profile has
+            // it, and its look in the object's states now (what recolouring compares with).
+            let node_looks = mine
+                .iter()
+                .map(|p| {
+                    let visual = Visual {
+                        color: finishes.part(world, id, p.visual).color,
+                        ..p.visual
+                    };
+                    (visual, look_key(&state_look(world, id, visual)))
+                })
+                .collect();
             looks.push(node_looks);
             bodies.push((id, carrier));
             let (name, link) = match carrier {
                 Carrier::Link(link) => (object.name.clone(), link),
                 Carrier::Ghost => (format!("{}/ghost", object.name), None),
             };
+            file.node(&name, id, node_pose(world, id, carrier), &mine);
             nodes.push(Node {
                 object: name,
                 category: object.category.clone(),
                 link,
-                parts: drawn,
+                parts: mine.len(),
             });
         }
     }
@@ -269,6 +196,7 @@ pub(crate) fn describe(world: &World, models: &ModelLibrary) -> (SceneView, Vec<
             changed: BTreeMap::new(),
         },
         nodes,
+        file.finish(),
     )
 }
 
@@ -297,112 +225,6 @@ fn look_key(look: &Look) -> [f32; 4] {
         look.albedo[2],
         look.emission,
     ]
-}
-
-fn shape_of(shape: &VisualShape, name: &str) -> Shape {
-    match shape {
-        // A board's rounded edges are a few millimetres: the page draws the plain board.
-        &VisualShape::Formed {
-            form: Form::Rounded,
-            half_extents: h,
-        } => Shape::Box {
-            half_extents: [h.x, h.y, h.z],
-        },
-        &VisualShape::Formed { form, half_extents } => {
-            let seed = u64::from(behavior_forms::seed_of(name));
-            let coarse = behavior_forms::Detail::Coarse;
-            Shape::Form(formed(&behavior_forms::mesh(
-                form,
-                half_extents,
-                seed,
-                coarse,
-            )))
-        }
-        VisualShape::Primitive(p) => match p {
-            Primitive::Box { half_extents: h } => Shape::Box {
-                half_extents: [h.x, h.y, h.z],
-            },
-            &&Primitive::Cylinder {
-                radius,
-                half_height,
-            } => Shape::Cylinder {
-                radius,
-                half_height,
-            },
-            &&Primitive::Sphere { radius } => Shape::Sphere { radius },
-            &&Primitive::Capsule {
-                radius,
-                half_height,
-            } => Shape::Capsule {
-                radius,
-                half_height,
-            },
-            Primitive::ConvexHull { points } => {
-                let (vertices, triangles) =
-                    rapier3d::parry::transformation::convex_hull(points.as_slice());
-                mesh(&vertices, &triangles)
-            }
-        },
-        VisualShape::Mesh(m) => mesh(&m.vertices, &m.triangles),
-        // A robot's link in its maker's mesh, simplified and creased as the cameras draw it
-        // mid-size: smooth where the page averages its normals, sharp at its edges.
-        VisualShape::Piece { held, .. } => {
-            let (positions, triangles) = behavior_render::viewer_piece(held);
-            Shape::Form(FormMesh {
-                vertices: tenths_of_millimetres(positions.into_iter().flatten().collect()),
-                triangles,
-                details: Vec::new(),
-            })
-        }
-    }
-}
-
-fn mesh(vertices: &[Vector], triangles: &[[u32; 3]]) -> Shape {
-    Shape::Mesh {
-        vertices: tenths_of_millimetres(flat(vertices)),
-        triangles: triangles.iter().flatten().copied().collect(),
-    }
-}
-
-/// Coordinates rounded to 0.1 mm: nobody sees less at the viewer, and the scene's text is
-/// shorter by half.
-fn tenths_of_millimetres(values: Vec<f32>) -> Vec<f32> {
-    values
-        .into_iter()
-        .map(|c| (c * 1e4).round() / 1e4)
-        .collect()
-}
-
-fn flat(points: &[Vector]) -> Vec<f32> {
-    points.iter().flat_map(|v| [v.x, v.y, v.z]).collect()
-}
-
-/// A detailed form's mesh, its triangles grouped by tone (the body's first), each other tone a
-/// detail in its colour, as the cameras draw it.
-fn formed(made: &behavior_forms::Mesh) -> FormMesh {
-    let mut by_tone: std::collections::BTreeMap<Tone, Vec<u32>> = Default::default();
-    for t in &made.triangles {
-        let tone = made.tones[t[0] as usize];
-        by_tone.entry(tone).or_default().extend_from_slice(t);
-    }
-    let mut triangles = by_tone.remove(&Tone::Body).unwrap_or_default();
-    let mut details = Vec::new();
-    for (tone, indices) in by_tone {
-        if let Some(look) = tone_look(tone) {
-            details.push(Detail {
-                count: indices.len() as u32,
-                color: look.albedo,
-                roughness: look.roughness,
-                metallic: look.metallic,
-            });
-        }
-        triangles.extend(indices);
-    }
-    FormMesh {
-        vertices: tenths_of_millimetres(flat(&made.positions)),
-        triangles,
-        details,
-    }
 }
 
 fn pose_values(p: Pose) -> [f32; 7] {
@@ -486,9 +308,11 @@ impl<'a> Describe<'a> {
         })
     }
 
-    pub(crate) fn build(self) -> (SceneView, SceneDescription) {
+    /// The scene's view and description, its glTF file published in `files` with `kept - 1`
+    /// before it.
+    pub(crate) fn build(self, files: &SceneFiles, kept: usize) -> (SceneView, SceneDescription) {
         // Robots in their makers' meshes where this process has them.
-        let (view, nodes) = describe(self.world, &behavior_robots::shared_models());
+        let (view, nodes, file) = describe(self.world, &behavior_robots::shared_models());
         let core = self.world.core();
         let robot = self
             .robot
@@ -502,6 +326,7 @@ impl<'a> Describe<'a> {
             episode: self.episode,
             robot,
             nodes,
+            gltf: files.publish(file, kept),
             literals: self.checklist.texts().to_vec(),
             max_steps: self.max_steps,
             particle_colors: ParticleColors::default(),
@@ -510,32 +335,102 @@ impl<'a> Describe<'a> {
     }
 }
 
+/// The scenes' glTF files the page may fetch, each at an address of its own
+/// (`/scene/<n>.glb`, numbered as published). A live session keeps the last few (a page may
+/// still be loading the one before); a recording's playback keeps every scene it made (a few:
+/// one more per slicing), so that the page scrubbed back finds the earlier ones.
+#[derive(Debug, Default)]
+pub(crate) struct SceneFiles(Mutex<FilesInner>);
+
+#[derive(Debug, Default)]
+struct FilesInner {
+    published: u64,
+    files: BTreeMap<u64, Bytes>,
+}
+
+impl SceneFiles {
+    /// Keeps `file` with the `kept - 1` published before it; returns its address.
+    pub(crate) fn publish(&self, file: Vec<u8>, kept: usize) -> String {
+        // A poisoned lock held only a map: its data is still whole.
+        let mut inner = self.0.lock().unwrap_or_else(|e| e.into_inner());
+        inner.published += 1;
+        let n = inner.published;
+        inner.files.insert(n, Bytes::from(file));
+        while inner.files.len() > kept.max(1) {
+            inner.files.pop_first();
+        }
+        format!("/scene/{n}.glb")
+    }
+
+    /// The file at `path`, if it is one of those kept.
+    pub(crate) fn get(&self, path: &str) -> Option<Bytes> {
+        let n: u64 = path
+            .strip_prefix("/scene/")?
+            .strip_suffix(".glb")?
+            .parse()
+            .ok()?;
+        let inner = self.0.lock().unwrap_or_else(|e| e.into_inner());
+        inner.files.get(&n).cloned()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use behavior_forms::Detail as Level;
+    use serde_json::Value;
 
-    #[test]
-    fn a_form_reaches_the_page_with_its_stem_after_its_body() {
-        let made = behavior_forms::mesh(Form::Apple, Vector::splat(0.04), 1, Level::Fine);
-        let FormMesh {
-            vertices,
-            triangles,
-            details,
-        } = formed(&made);
-        assert_eq!(vertices.len(), 3 * made.positions.len());
-        assert_eq!(triangles.len(), 3 * made.triangles.len());
-        assert_eq!(details.len(), 1, "an apple has one detail, its stem");
-        let [r, _, b] = details[0].color;
-        assert!(r > b, "the stem is not brown: {:?}", details[0].color);
-        let body = triangles.len() - details[0].count as usize;
-        let tone = |t: &[u32]| made.tones[t[0] as usize];
-        assert!(triangles[..body].chunks(3).all(|t| tone(t) == Tone::Body));
-        assert!(triangles[body..].chunks(3).all(|t| tone(t) == Tone::Stem));
+    /// The JSON of a binary glTF file.
+    fn json_of(glb: &[u8]) -> Value {
+        assert_eq!(&glb[..4], b"glTF");
+        let length = u32::from_le_bytes(glb[12..16].try_into().unwrap()) as usize;
+        serde_json::from_slice(&glb[20..20 + length]).unwrap()
+    }
+
+    /// Triangles in every primitive of a glTF file.
+    fn triangles(doc: &Value) -> u64 {
+        let accessors = doc["accessors"].as_array().unwrap();
+        doc["meshes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .flat_map(|m| m["primitives"].as_array().unwrap())
+            .map(|p| {
+                accessors[p["indices"].as_u64().unwrap() as usize]["count"]
+                    .as_u64()
+                    .unwrap()
+                    / 3
+            })
+            .sum()
     }
 
     #[test]
-    fn fetch_reaches_the_page_in_its_makers_meshes_simplified_and_creased() {
+    fn the_scenes_file_holds_a_node_per_body_in_the_descriptions_order() {
+        let mut world = World::default();
+        behavior_robots::Fetch::add(&mut world, Pose::IDENTITY).unwrap();
+        let (_, nodes, glb) = describe(&world, &ModelLibrary::EMPTY);
+        let doc = json_of(&glb);
+        let all = doc["nodes"].as_array().unwrap();
+        let root = all.last().unwrap();
+        let top = root["children"].as_array().unwrap();
+        assert_eq!(top.len(), nodes.len(), "a top node per node");
+        for (node, at) in nodes.iter().zip(top) {
+            let gltf = &all[at.as_u64().unwrap() as usize];
+            assert_eq!(gltf["name"], node.object);
+            assert_eq!(
+                gltf["children"].as_array().unwrap().len(),
+                node.parts,
+                "{}",
+                node.object
+            );
+        }
+        assert!(
+            nodes.iter().any(|n| n.link.is_some()),
+            "the gripper's fingers are nodes"
+        );
+    }
+
+    #[test]
+    fn fetch_reaches_the_page_in_its_makers_meshes_simplified() {
         let mut world = World::default();
         behavior_robots::Fetch::add(&mut world, Pose::IDENTITY).unwrap();
         let models = behavior_robots::shared_models();
@@ -543,30 +438,11 @@ mod tests {
             !models.is_empty(),
             "Fetch's meshes could not be had (gymnasium-robotics from PyPI)"
         );
-        let triangles = |nodes: &[Node]| -> (usize, usize) {
-            let shapes = nodes.iter().flat_map(|n| &n.parts).map(|p| &p.shape);
-            let forms: Vec<&FormMesh> = shapes
-                .filter_map(|s| match s {
-                    Shape::Form(f) => Some(f),
-                    _ => None,
-                })
-                .collect();
-            (
-                forms.len(),
-                forms.iter().map(|f| f.triangles.len() / 3).sum(),
-            )
-        };
-        let (_, with) = describe(&world, &models);
-        let (_, without) = describe(&world, &ModelLibrary::EMPTY);
-        let (pieces, sent) = triangles(&with);
-        // Every link's meshes (the base's four, the gripper's two), on a 4 mm grid.
-        assert_eq!(pieces, 15, "{pieces} meshes");
-        assert!((8_000..20_000).contains(&sent), "{sent} triangles");
-        assert_eq!(
-            triangles(&without),
-            (0, 0),
-            "without meshes, its primitives"
-        );
+        let (_, with, file) = describe(&world, &models);
+        let (_, without, bare) = describe(&world, &ModelLibrary::EMPTY);
+        // Its links' meshes on a 4 mm grid: thousands of triangles (31,700 as made).
+        let added = triangles(&json_of(&file)) - triangles(&json_of(&bare));
+        assert!((8_000..20_000).contains(&added), "{added} triangles more");
         // The gripper's fingers stay our pads, with or without.
         let fingers = |nodes: &[Node]| nodes.iter().filter(|n| n.link.is_some()).count();
         assert_eq!(fingers(&with), 2);
@@ -574,16 +450,31 @@ mod tests {
     }
 
     #[test]
+    fn scene_files_are_found_at_their_address_while_kept() {
+        let files = SceneFiles::default();
+        let first = files.publish(vec![1], 2);
+        let second = files.publish(vec![2], 2);
+        assert_eq!(files.get(&first).as_deref(), Some(&[1u8][..]));
+        let third = files.publish(vec![3], 2);
+        assert!(files.get(&first).is_none(), "only two are kept");
+        assert_eq!(files.get(&second).as_deref(), Some(&[2u8][..]));
+        assert_eq!(files.get(&third).as_deref(), Some(&[3u8][..]));
+        for wrong in ["/scene/x.glb", "/scene/3", "/other/3.glb", "/scene/99.glb"] {
+            assert!(files.get(wrong).is_none(), "{wrong}");
+        }
+    }
+
+    #[test]
     fn the_behavior_robots_head_is_a_node_of_its_own_that_follows_the_eye() {
         let mut world = World::default();
         let at = Pose::from_translation(Vector::new(0.0, 0.0, behavior_robots::BODY_HEIGHT));
         let mut robot = behavior_robots::BehaviorRobot::add(&mut world, at).unwrap();
-        let (view, nodes) = describe(&world, &ModelLibrary::EMPTY);
+        let (view, nodes, _) = describe(&world, &ModelLibrary::EMPTY);
         let head = nodes
             .iter()
             .position(|n| n.object == "robot_body/ghost")
             .expect("a node for the head");
-        assert_eq!(nodes[head].parts.len(), 1, "the head alone");
+        assert_eq!(nodes[head].parts, 1, "the head alone");
         let body = nodes.iter().position(|n| n.object == "robot_body").unwrap();
         assert!(
             body < head,

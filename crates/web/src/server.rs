@@ -8,6 +8,7 @@ use crate::assets::asset;
 use crate::clients::Outgoing;
 use crate::playback::{self, Playback};
 use crate::protocol::{ClientMessage, ProtocolError, error_text};
+use crate::scene::SceneFiles;
 use crate::session::{self, Session, ToSim};
 use axum::Router;
 use axum::extract::ws::{Message, WebSocket, WebSocketUpgrade};
@@ -81,6 +82,8 @@ const CLIENT_QUEUE: usize = 256;
 struct Shared {
     to_sim: Mutex<mpsc::Sender<ToSim>>,
     next_client: AtomicU64,
+    /// The scenes' glTF files, published by the simulation thread.
+    files: Arc<SceneFiles>,
 }
 
 impl Shared {
@@ -121,8 +124,11 @@ impl Server {
         session: Session,
         shutdown: impl Future<Output = ()> + Send + 'static,
     ) -> Result<Vec<PathBuf>, WebError> {
-        self.run_with(move |inbox| session::run(session, inbox), shutdown)
-            .await
+        self.run_with(
+            move |inbox, files| session::run(session, inbox, files),
+            shutdown,
+        )
+        .await
     }
 
     /// Plays the recording to every page that connects until `shutdown` completes.
@@ -131,31 +137,39 @@ impl Server {
         playback: Playback,
         shutdown: impl Future<Output = ()> + Send + 'static,
     ) -> Result<(), WebError> {
-        self.run_with(move |inbox| playback::run(playback, inbox), shutdown)
-            .await
-            .map(|_| ())
+        self.run_with(
+            move |inbox, files| playback::run(playback, inbox, files),
+            shutdown,
+        )
+        .await
+        .map(|_| ())
     }
 
     /// Serves the page with `simulate` running on a thread of its own, fed the pages' messages.
     async fn run_with(
         self,
-        simulate: impl FnOnce(mpsc::Receiver<ToSim>) -> Result<Vec<PathBuf>, WebError> + Send + 'static,
+        simulate: impl FnOnce(mpsc::Receiver<ToSim>, Arc<SceneFiles>) -> Result<Vec<PathBuf>, WebError>
+        + Send
+        + 'static,
         shutdown: impl Future<Output = ()> + Send + 'static,
     ) -> Result<Vec<PathBuf>, WebError> {
         let (to_sim, inbox) = mpsc::channel();
+        let files = Arc::new(SceneFiles::default());
+        let published = files.clone();
         // The simulation failing (an episode that cannot reset, a disk full) stops the server
         // too, and `run` returns its error.
         let (failed, simulation_ended) = tokio::sync::oneshot::channel::<()>();
         let simulation = std::thread::Builder::new()
             .name("simulation".into())
             .spawn(move || {
-                let result = simulate(inbox);
+                let result = simulate(inbox, published);
                 let _ = failed.send(());
                 result
             })?;
         let shared = Arc::new(Shared {
             to_sim: Mutex::new(to_sim),
             next_client: AtomicU64::new(1),
+            files,
         });
         let app = Router::new()
             .route("/ws", get(websocket))
@@ -222,7 +236,10 @@ fn until_ctrl_c<T, F: Future<Output = Result<T, WebError>>>(
     })
 }
 
-async fn file(uri: Uri) -> Response {
+async fn file(uri: Uri, State(shared): State<Arc<Shared>>) -> Response {
+    if let Some(scene) = shared.files.get(uri.path()) {
+        return ([(header::CONTENT_TYPE, "model/gltf-binary")], scene).into_response();
+    }
     match asset(uri.path()) {
         Some((mime, bytes)) => ([(header::CONTENT_TYPE, mime)], bytes).into_response(),
         // Browsers ask for an icon unprompted; there is none, and that is no error.

@@ -9,7 +9,7 @@
 use crate::checklist::Checklist;
 use crate::clients::{Clients, Outgoing};
 use crate::protocol::{ClientMessage, Ended, ProtocolError, ServerMessage, Status, error_text};
-use crate::scene::{Describe, Particles, SceneView};
+use crate::scene::{Describe, Particles, SceneFiles, SceneView};
 use crate::server::WebError;
 use crate::teleop::Drive;
 use crate::xr::{Targets, XrInput, XrRig};
@@ -19,6 +19,7 @@ use behavior_env::record::Recorder;
 use behavior_robots::{ACTION_DIM, Robot, RobotKind};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 use std::sync::mpsc::{Receiver, RecvTimeoutError};
 use std::time::{Duration, Instant};
 use tokio::sync::mpsc::Sender;
@@ -74,6 +75,8 @@ struct Running {
     checklist: Checklist,
     view: SceneView,
     scene_text: String,
+    /// Where the scenes' glTF files are published for the pages.
+    files: Arc<SceneFiles>,
     recorder: Option<Recorder>,
     recording: Option<PathBuf>,
     episodes: u32,
@@ -90,8 +93,12 @@ struct Running {
 
 /// Runs the simulation until [`ToSim::Stop`] or until every sender is gone; returns the
 /// recordings written.
-pub(crate) fn run(session: Session, inbox: Receiver<ToSim>) -> Result<Vec<PathBuf>, WebError> {
-    let mut running = Running::start(session)?;
+pub(crate) fn run(
+    session: Session,
+    inbox: Receiver<ToSim>,
+    files: Arc<SceneFiles>,
+) -> Result<Vec<PathBuf>, WebError> {
+    let mut running = Running::start(session, files)?;
     ticks(&inbox, |event| match event {
         Event::Message(message) => running.handle(message),
         Event::Tick if running.driver.is_some() => running.step(),
@@ -132,7 +139,7 @@ pub(crate) fn ticks(
 }
 
 impl Running {
-    fn start(mut session: Session) -> Result<Running, WebError> {
+    fn start(mut session: Session, files: Arc<SceneFiles>) -> Result<Running, WebError> {
         let seed = session.seed;
         session.env.reset(seed)?;
         let kind = session.env.robot().map(|r| r.kind());
@@ -145,6 +152,7 @@ impl Running {
             checklist,
             view: SceneView::default(),
             scene_text: String::new(),
+            files,
             recorder: None,
             recording: None,
             episodes: 1,
@@ -165,7 +173,8 @@ impl Running {
     fn describe(&mut self) {
         let env = &self.session.env;
         let described = Describe::episode(env, &self.checklist, self.seed, self.episodes);
-        let Some((view, description)) = described.map(Describe::build) else {
+        // A page may still be fetching the scene before.
+        let Some((view, description)) = described.map(|d| d.build(&self.files, 4)) else {
             return;
         };
         self.view = view;

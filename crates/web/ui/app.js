@@ -37,6 +37,9 @@ state.position = (name) => {
   return node && node.visible ? [...node.position.toArray(), ...node.quaternion.toArray()] : null;
 };
 state.triangles = () => view.renderer.info.render.triangles;
+// Whether the scene's glTF file has been loaded and drawn from, and the images it brought.
+state.loaded = () => !!state.scene && view.loaded === state.scene.gltf;
+state.textures = () => view.renderer.info.memory.textures;
 
 socket.onopen = () => { state.connected = true; panel.connection('connected'); };
 socket.onclose = () => { state.connected = false; panel.connection('disconnected: reload to join again'); };

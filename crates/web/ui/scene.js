@@ -1,7 +1,10 @@
-// The 3-D view: the scene's nodes built once per episode from the server's description, posed
-// from each binary frame. The world is z-up; a root group turns it into three.js's y-up.
+// The 3-D view: the scene's nodes loaded once per scene from the glTF file the server's
+// description names (the cameras' meshes and the realistic profile's materials, patterns baked
+// into images), posed from each binary frame. The world is z-up; a root group turns it into
+// three.js's y-up.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 
 const FLOATS_PER_NODE = 7;
 
@@ -39,20 +42,58 @@ export class View {
     this.camera.updateProjectionMatrix();
   }
 
-  // A new episode (or a world whose objects changed): every node rebuilt.
+  // A new episode (or a world whose objects changed): every node rebuilt from the scene's
+  // glTF file, a top node per node of the description, in its order. Frames that come while
+  // it loads are kept: the latest poses the nodes once they are there.
   build(description) {
+    this.particleColors = description.particle_colors;
+    // The same file again (a recording scrubbed within one scene): the nodes stay.
+    if (description.gltf === this.wanted) return;
     for (const node of this.nodes) this.root.remove(node);
-    this.nodes = description.nodes.map((node) => {
-      const group = new THREE.Group();
+    this.nodes = [];
+    this.robot = null;
+    this.loaded = null;
+    const wanted = (this.wanted = description.gltf);
+    fetch(description.gltf)
+      .then((response) => {
+        if (!response.ok) throw new Error(`${description.gltf}: ${response.status}`);
+        return response.arrayBuffer();
+      })
+      .then((bytes) => new GLTFLoader().parseAsync(bytes, ''))
+      .then((gltf) => {
+        if (this.wanted !== wanted) return;
+        this.place(description, gltf.scene);
+        this.loaded = wanted;
+      })
+      .catch((error) => {
+        console.warn('scene:', error.message);
+        this.failed = `${wanted}: ${error.message}`;
+      });
+  }
+
+  // The file's top nodes (under its z-up root, whose turn our root makes) become the nodes.
+  place(description, scene) {
+    const top = scene.children[0]?.children ?? [];
+    if (top.length !== description.nodes.length) {
+      throw new Error(`the scene's file has ${top.length} nodes, its description ${description.nodes.length}`);
+    }
+    this.nodes = top.slice().map((group, i) => {
+      const node = description.nodes[i];
       group.name = node.link === null ? node.object : `${node.object}/${node.link}`;
-      for (const part of node.parts) group.add(mesh(part));
+      // Each part recolours on its own: its materials are its own.
+      for (const part of group.children) {
+        part.traverse((m) => {
+          if (m.material) m.material = m.material.clone();
+        });
+      }
       this.root.add(group);
       return group;
     });
     const first = description.nodes.findIndex((n) => n.object === description.robot[0] && n.link === null);
     this.robot = first >= 0 ? this.nodes[first] : null;
     this.centred = false;
-    this.particleColors = description.particle_colors;
+    if (this.lastFrame) this.frame(this.lastFrame);
+    if (this.lastRecolor) this.recolor(this.lastRecolor);
   }
 
   // Dust, stains and water drops where the server says they are now ({kind: [x, y, z, ...]}),
@@ -82,6 +123,7 @@ export class View {
 
   // One frame of poses; returns its step.
   frame(buffer) {
+    this.lastFrame = buffer;
     const view = new DataView(buffer);
     const step = view.getUint32(0, true);
     const count = Math.min(this.nodes.length, (buffer.byteLength - 4) / (4 * FLOATS_PER_NODE));
@@ -115,15 +157,19 @@ export class View {
     this.orbit.target.copy(at);
   }
 
-  // [node, part, r, g, b, emission] for each surface whose states changed its colour.
+  // [node, part, r, g, b, emission] for each surface whose states changed its colour: the
+  // part's body material (the one with a reference colour: its image was made for that colour)
+  // takes the new colour over its reference.
   recolor(changes) {
+    this.lastRecolor = changes;
     for (const [node, part, r, g, b, glow] of changes) {
-      // A detailed form has a material per colour; its body's is the first.
-      const materials = this.nodes[node]?.children[part]?.material;
-      const material = Array.isArray(materials) ? materials[0] : materials;
-      if (!material) continue;
-      material.color.setRGB(r, g, b, THREE.LinearSRGBColorSpace);
-      material.emissive.setRGB(r * glow, g * glow, b * glow, THREE.LinearSRGBColorSpace);
+      this.nodes[node]?.children[part]?.traverse((m) => {
+        const reference = m.material?.userData?.reference;
+        if (!reference) return;
+        const [x, y, z] = reference;
+        m.material.color.setRGB(Math.min(r / x, 1), Math.min(g / y, 1), Math.min(b / z, 1), THREE.LinearSRGBColorSpace);
+        m.material.emissive.setRGB(r * glow, g * glow, b * glow, THREE.LinearSRGBColorSpace);
+      });
     }
   }
 
@@ -140,77 +186,3 @@ const DOT_SHAPES = {
   stain: () => new THREE.CylinderGeometry(0.02, 0.02, 0.004, 12).rotateX(Math.PI / 2),
   water: () => new THREE.SphereGeometry(0.009, 6, 4),
 };
-
-// A part as the cameras' realistic profile finishes it: its colour in the home's palette and its
-// states, roughness and metalness; a detailed form's details (a stem, a cap) in their own colours.
-function mesh(part) {
-  const [r, g, b] = part.color;
-  const color = new THREE.Color().setRGB(r, g, b, THREE.LinearSRGBColorSpace);
-  const body = new THREE.MeshStandardMaterial({
-    color,
-    emissive: color.clone().multiplyScalar(part.emission),
-    roughness: part.roughness,
-    metalness: part.metallic,
-  });
-  const m = part.shape.kind === 'form' ? form(part.shape, body) : new THREE.Mesh(geometry(part.shape), body);
-  const o = part.offset;
-  m.position.set(o[0], o[1], o[2]);
-  m.quaternion.set(o[3], o[4], o[5], o[6]);
-  return m;
-}
-
-// A detailed form in the body's material and its details' own (the body's first, which
-// recolouring changes).
-function form(shape, body) {
-  const materials = [body, ...shape.details.map((d) => new THREE.MeshStandardMaterial({
-    color: new THREE.Color().setRGB(d.color[0], d.color[1], d.color[2], THREE.LinearSRGBColorSpace),
-    roughness: d.roughness,
-    metalness: d.metallic,
-  }))];
-  return new THREE.Mesh(formGeometry(shape), materials);
-}
-
-// A form's geometry: normals averaged over each vertex's triangles (a fold's vertices are its
-// own, so it stays sharp), and a group per colour (the body's first).
-function formGeometry(level) {
-  const g = new THREE.BufferGeometry();
-  g.setAttribute('position', new THREE.Float32BufferAttribute(level.vertices, 3));
-  g.setIndex(level.triangles);
-  g.computeVertexNormals();
-  const body = level.triangles.length - level.details.reduce((n, d) => n + d.count, 0);
-  g.addGroup(0, body, 0);
-  let start = body;
-  level.details.forEach((d, k) => {
-    g.addGroup(start, d.count, k + 1);
-    start += d.count;
-  });
-  return g;
-}
-
-// Shapes in their own z-up frames (three's cylinders and capsules stand along y: turned).
-function geometry(shape) {
-  switch (shape.kind) {
-    case 'box': {
-      const [x, y, z] = shape.half_extents;
-      return new THREE.BoxGeometry(2 * x, 2 * y, 2 * z);
-    }
-    case 'sphere':
-      return new THREE.SphereGeometry(shape.radius, 24, 16);
-    case 'cylinder':
-      return new THREE.CylinderGeometry(shape.radius, shape.radius, 2 * shape.half_height, 24)
-        .rotateX(Math.PI / 2);
-    case 'capsule':
-      return new THREE.CapsuleGeometry(shape.radius, 2 * shape.half_height, 6, 16)
-        .rotateX(Math.PI / 2);
-    case 'mesh': {
-      const g = new THREE.BufferGeometry();
-      g.setAttribute('position', new THREE.Float32BufferAttribute(shape.vertices, 3));
-      g.setIndex(shape.triangles);
-      const flat = g.toNonIndexed();
-      flat.computeVertexNormals();
-      return flat;
-    }
-    default:
-      return new THREE.BufferGeometry();
-  }
-}

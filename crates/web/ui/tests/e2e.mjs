@@ -52,13 +52,18 @@ async function drive() {
     const pageErrors = [];
     page.on('pageerror', (e) => pageErrors.push(e.message));
     await page.goto(url);
-    await page.waitForFunction(() => behavior.scene && behavior.frames > 2 && behavior.checklist,
+    await page.waitForFunction(() => behavior.loaded() && behavior.frames > 2 && behavior.checklist,
       null, { timeout: 60_000 });
+    // A frame drawn since the file was loaded.
+    const drawn = await page.evaluate(() => behavior.frames);
+    await page.waitForFunction((n) => behavior.frames > n, drawn, { timeout: 60_000 });
     const scene = await page.evaluate(() => ({
-      driving: behavior.driving, nodes: behavior.scene.nodes.length,
+      driving: behavior.driving, nodes: behavior.scene.nodes.length, textures: behavior.textures(),
       robot: behavior.scene.robot, literals: behavior.scene.literals, triangles: behavior.triangles(),
     }));
-    log(`scene: ${scene.nodes} nodes, ${scene.triangles} triangles drawn, robot ${scene.robot}`);
+    log(`scene: ${scene.nodes} nodes, ${scene.triangles} triangles and ${scene.textures} images drawn, robot ${scene.robot}`);
+    // The realistic profile's patterns came in the file, baked into images (wood, floor, walls).
+    assert.ok(scene.textures >= 3, `only ${scene.textures} images drawn`);
     assert.equal(scene.driving, true);
     // The page was sent the particles (none in this kitchen: nothing dusty, no water running).
     assert.deepEqual(await page.evaluate(() => behavior.particles), { dust: 0, stain: 0, water: 0 });
@@ -148,8 +153,8 @@ async function view() {
   try {
     const page = await browser.newPage({ viewport: { width: 640, height: 360 } });
     await page.goto(await address);
-    await page.waitForFunction((steps) => behavior.timeline?.computed === steps, recorded.steps,
-      { timeout: 60_000 });
+    await page.waitForFunction((steps) => behavior.timeline?.computed === steps && behavior.loaded(),
+      recorded.steps, { timeout: 60_000 });
     const timeline = await page.evaluate(() => behavior.timeline);
     log(`view: ${timeline.steps} steps re-simulated, teleoperated ${JSON.stringify(timeline.devices)}, ` +
       `differs from ${timeline.differs_from}`);

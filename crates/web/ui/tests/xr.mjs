@@ -40,9 +40,9 @@ async function main() {
     });
     page.on('console', (m) => process.env.XR_DEBUG && log('console:', m.text()));
     await page.goto(url);
-    await page.waitForFunction(() => behavior.scene && behavior.frames > 2 && behavior.xr?.supported,
+    await page.waitForFunction(() => behavior.loaded() && behavior.frames > 2 && behavior.xr?.supported,
       null, { timeout: 60_000 }).catch(async (e) => {
-      const seen = await page.evaluate(() => JSON.stringify({ scene: !!behavior.scene, frames: behavior.frames, xr: behavior.xr, errors: behavior.errors }));
+      const seen = await page.evaluate(() => JSON.stringify({ scene: !!behavior.scene, loaded: behavior.loaded(), frames: behavior.frames, xr: behavior.xr, errors: behavior.errors }));
       throw new Error(`the page did not offer immersive VR: ${seen}; page errors ${pageErrors}: ${e.message}`);
     });
     const [body, , right] = await page.evaluate(() => behavior.scene.robot);

@@ -362,7 +362,19 @@ fn fs_realistic(in: RealisticVertex) -> SurfaceOut {
     // rooms' lamps (which hang above) as much: a soft shade under tables and in corners.
     let open = select(1.0, sky_open(in.world, nw), lights.counts.x != 0u);
     let occlusion = 0.3 + 0.7 * open;
-    var light = albedo * (1.0 - 0.6 * metallic) * mix(lights.ground.rgb, lights.sky.rgb, up) * occlusion;
+    // Ambient light: diffuse from the sky and the ground around the normal, and the sky and
+    // the ground seen mirrored in the surface — the one light a metal has besides its
+    // highlights (without it a stainless oven read near black) — by Schlick's Fresnel with
+    // roughness, a rough surface's mirror direction leaning to its normal (it sees them blurred).
+    let nv = max(dot(shading, vw), 0.0);
+    let f0 = mix(vec3<f32>(0.04), albedo, metallic);
+    let g = 1.0 - nv;
+    let g2 = g * g;
+    let mirrored = f0 + (max(vec3<f32>(1.0 - roughness), f0) - f0) * (g2 * g2 * g);
+    let mirror = normalize(mix(reflect(-vw, shading), shading, roughness * roughness));
+    let around = mix(lights.ground.rgb, lights.sky.rgb, up);
+    let seen = mix(lights.ground.rgb, lights.sky.rgb, 0.5 + 0.5 * mirror.z);
+    var light = (albedo * (1.0 - metallic) * (vec3<f32>(1.0) - mirrored) * around + mirrored * seen) * occlusion;
     let sun = lights.sun.xyz;
     if (dot(nw, sun) > 0.0) {
         light += brdf(shading, sun, vw, albedo, roughness, metallic) * lights.sun_color.rgb * sunlit(in.world, nw);

@@ -5,7 +5,7 @@ outputs. A difference must be explained: by the reference's enumeration caps (op
 by set counting, in which case ours with `--reference-counting` must equal the reference's.
 
 Usage (from the repository root, after `cargo build --release -p behavior-cli`):
-  python3 bench/conformance_table.py [../shared/reference/bddl-1.0.1-conformance.json]
+  python3 bench/conformance_table.py [crates/bddl/tests/fixtures/bddl-1.0.1-conformance.json]
 Standard library only.
 """
 
@@ -14,8 +14,9 @@ import subprocess
 import sys
 
 BIN = "target/release/behavior"
-# Activities whose reference option lists are cut short by its enumeration caps (quirk 10 in
-# ../shared/reference/bddl-1.0-reference.md); pinned by crates/bddl/tests/reference_emulation.rs.
+# Activities whose reference option lists are cut short by its enumeration caps (at most 20
+# tuples from truncated_product, 10 permutations in forpairs: bddl 1.0.1's
+# condition_evaluation.py); pinned by crates/bddl/tests/reference_emulation.rs.
 CAPPED = {
     "assembling_gift_baskets": "forpairs: first 10 permutations",
     "clearing_the_table_after_dinner": "truncated_product: 20 tuples",
@@ -38,7 +39,7 @@ def same(a, b):
 
 
 def main():
-    path = sys.argv[1] if len(sys.argv) > 1 else "../shared/reference/bddl-1.0.1-conformance.json"
+    path = sys.argv[1] if len(sys.argv) > 1 else "crates/bddl/tests/fixtures/bddl-1.0.1-conformance.json"
     reference = json.load(open(path))["activities"]
     ours, as_lists = stats(), stats("--reference-counting")
     print("| activity | volume | ref. volume | Q at init | ref. Q at init | options | ref. options | why they differ |")

@@ -1,6 +1,7 @@
 //! Tests on the 100 official BEHAVIOR-100 definitions (fetched from PyPI on first use, see
 //! `behavior_data`), compared with the reference implementation's recorded outputs in
-//! `../shared/reference/bddl-1.0.1-conformance.json`.
+//! `tests/fixtures/bddl-1.0.1-conformance.json` (made by `tests/fixtures/conformance.py` from bddl
+//! 1.0.1 on PyPI).
 
 mod common;
 
@@ -33,7 +34,7 @@ fn all_activities() -> (DataDir, Knowledge, Vec<(String, Source, Activity)>) {
 
 fn conformance() -> Value {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/reference/bddl-1.0.1-conformance.json");
+        .join("tests/fixtures/bddl-1.0.1-conformance.json");
     let text = std::fs::read_to_string(&path)
         .unwrap_or_else(|e| panic!("the conformance file {} is needed: {e}", path.display()));
     serde_json::from_str(&text).unwrap()

@@ -1,6 +1,6 @@
 //! Where our semantics differ from the reference implementation's (Python `bddl` 1.0.1), each
-//! case named after the quirk in `../shared/reference/bddl-1.0-reference.md` §12 and shown on a
-//! small goal. The reference's answer is stated in each test; ours is asserted. Each test counts
+//! case named after the reference's behaviour (the guide's chapter on semantics lists them) and
+//! shown on a small goal. The reference's answer is stated in each test; ours is asserted. Each test counts
 //! options as the reference does (`Counting::Reference`) so that it shows one difference only,
 //! except the last, which is about counting itself. None of these situations but counting occurs
 //! in the 100 official activities (see `official.rs`).

@@ -1,11 +1,12 @@
 //! A re-creation of the reference implementation's option enumeration (Python `bddl` 1.0.1, as
-//! described in `../shared/reference/bddl-1.0-reference.md` §6.2–6.5), including its caps: at most
+//! its `bddl/condition_evaluation.py`: `flattened_condition_options`, `truncated_product`,
+//! `truncated_permutations`, `get_ground_goal_state_options`), including its caps: at most
 //! 20 tuples from `truncated_product` in `forall`/`forn`/`forpairs`, at most 10 permutations in
 //! `forpairs`. It must reproduce the recorded option lists bit for bit (count, volume, SHA-256 of
 //! the JSON list) for all 100 activities; our uncapped options, listed with the reference's
 //! counting (`Counting::Reference`: lists, a repeated literal kept), must then contain exactly the same
 //! options wherever no cap was hit, and strictly more where one was. That pins every difference in
-//! option counts to the reference's truncation (quirk 10 of the reference doc).
+//! option counts to the reference's truncation (the guide's chapter on semantics lists it).
 
 use behavior_bddl::activity::{Activity, Atom, Goal, InstanceId, Term};
 use behavior_bddl::load::{Knowledge, read_source};
@@ -341,7 +342,7 @@ fn canonical(options: Options) -> Vec<Vec<RLit>> {
 #[test]
 fn the_emulated_reference_reproduces_the_recorded_options_and_ours_are_them_uncapped() {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/reference/bddl-1.0.1-conformance.json");
+        .join("tests/fixtures/bddl-1.0.1-conformance.json");
     let reference: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
     let data = DataDir::locate(None, |m| eprintln!("{m}")).unwrap();
     let knowledge = Knowledge::read(&data.taxonomy_path(), &data.domain_path()).unwrap();

@@ -13,7 +13,7 @@ use support::{behavior, behavior_ok, scratch, stdout};
 
 fn conformance() -> Value {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/reference/bddl-1.0.1-conformance.json");
+        .join("../bddl/tests/fixtures/bddl-1.0.1-conformance.json");
     serde_json::from_str(&std::fs::read_to_string(path).expect("conformance file")).unwrap()
 }
 

@@ -121,7 +121,7 @@ struct Config {
 ///
 /// Measured (`tests/timing.rs`, dev profile, a table with 20 objects, 10 × 1/300 s): 0.2 µs per
 /// step standing still, ≈ 0.25 ms driving, ≈ 0.45 ms moving the arm — a simulated 9-link arm
-/// costs 0.65–3 ms driving (DESIGN.md §4).
+/// costs 0.65–3 ms driving (`docs/design.md` §4).
 ///
 /// **State.** As the BehaviorRobot's: what it was told lives here, the rest in the world;
 /// clone it with [`World::snapshot`] and the pair continues bit-identically. Step the world with

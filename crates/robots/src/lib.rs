@@ -21,7 +21,7 @@
 //! and arm are kinematic links placed by forward kinematics each substep, not a simulated
 //! chain: measured in `tests/timing.rs` (dev profile, one core, a table with 20 objects, 10 ×
 //! 1/300 s), an action step costs 0.2 µs standing still, ≈ 0.25 ms driving and ≈ 0.45 ms
-//! moving the arm (IK, the fixed-body checks and the awake fingers) — where DESIGN.md §4
+//! moving the arm (IK, the fixed-body checks and the awake fingers) — where `docs/design.md` §4
 //! measured 0.65–3 ms for a simulated 9-link arm while driving.
 //!
 //! **Looks.** Fetch's links name model pieces whose real meshes ([`shared_models`]) come from

@@ -1,4 +1,4 @@
-//! Robots stand on the world and nothing above it (DESIGN.md §3): among our crates the manifest
+//! Robots stand on the world and nothing above it (`docs/design.md` §3): among our crates the manifest
 //! names `behavior-sim`, the vocabulary crate and `behavior-data` (a leaf that finds fetched
 //! files, for Fetch's meshes) only — no BDDL, assets, sampling or episode.
 

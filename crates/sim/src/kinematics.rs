@@ -2,7 +2,7 @@
 //! the solver's contact cache, so a predicate has the same value for sleeping and awake bodies
 //! and right after a teleport.
 //!
-//! Definitions (after iGibson 2.0's, see `../shared/reference/igibson-2.0-reference.md` §1.2–1.3):
+//! Definitions (after iGibson 2.0's kinematic states, `igibson/object_states/` in its code):
 //! - `touching(a, b)`: some collider of `a` is within [`TOUCH_DISTANCE`] of some collider of `b`.
 //! - `ontop(a, b)`: `b` supports `a` and is not above it: they touch at a point where `b`'s
 //!   surface faces up (its outward normal within 45° of +z), and a ray cast up from the centre of

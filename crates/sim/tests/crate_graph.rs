@@ -1,4 +1,4 @@
-//! The world knows nothing of the language (DESIGN.md §2–3): its manifest depends on the shared
+//! The world knows nothing of the language (`docs/design.md` §2–3): its manifest depends on the shared
 //! vocabulary crate and never on `behavior-bddl`, not even for its tests.
 
 #[test]

@@ -323,6 +323,10 @@ impl Viewer {
     }
 
     fn said(&mut self, client: u64, message: ClientMessage) {
+        if let ClientMessage::Seen { frames } = message {
+            self.clients.seen(client, frames);
+            return;
+        }
         let t = &mut self.timeline;
         let refused = match message {
             ClientMessage::Play => {

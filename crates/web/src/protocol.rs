@@ -2,7 +2,8 @@
 //!
 //! Client → server: JSON text messages, [`ClientMessage`]: `drive` (keyboard or gamepad rates),
 //! `xr` (a headset's poses, see `xr.rs`), `end` for a live episode; `play`, `pause`, `rate`,
-//! `seek` for a recording played back (`playback.rs`). Each is parsed and checked before it
+//! `seek` for a recording played back (`playback.rs`); `seen` from any page, how many frames it
+//! has drawn (see [`crate::clients`]). Each is parsed and checked before it
 //! reaches the simulation; one that is not valid JSON, not a known message, too large, binary,
 //! or carries a bad number is answered with `{"type": "error", "message": …}` and changes
 //! nothing.
@@ -51,6 +52,12 @@ pub enum ClientMessage {
     Seek {
         /// The step.
         step: u32,
+    },
+    /// The page has taken this many binary frames since it joined: from then on the server
+    /// keeps it only a few frames ahead of what it has drawn (any page may say it).
+    Seen {
+        /// Frames taken.
+        frames: u64,
     },
 }
 
@@ -124,6 +131,7 @@ impl ClientMessage {
             ClientMessage::Pause => "pause",
             ClientMessage::Rate { .. } => "rate",
             ClientMessage::Seek { .. } => "seek",
+            ClientMessage::Seen { .. } => "seen",
         }
     }
 }

@@ -208,6 +208,10 @@ impl Running {
     }
 
     fn said(&mut self, client: u64, message: ClientMessage) -> Result<(), WebError> {
+        if let ClientMessage::Seen { frames } = message {
+            self.clients.seen(client, frames);
+            return Ok(());
+        }
         if self.driver != Some(client) {
             let error = ProtocolError::NotDriver(message.name());
             self.clients

@@ -47,6 +47,10 @@ socket.onmessage = (event) => {
   if (event.data instanceof ArrayBuffer) {
     state.step = view.frame(event.data);
     state.frames += 1;
+    // Said after every frame: the server keeps a page that is slow to take them (a headset
+    // drawn on a CPU) only a few frames ahead, so its rig and the episode's end are not stuck
+    // behind a backlog.
+    socket.send(JSON.stringify({ type: 'seen', frames: state.frames }));
     return;
   }
   const message = JSON.parse(event.data);

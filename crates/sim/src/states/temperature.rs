@@ -7,7 +7,8 @@
 //! burners) is within its distance threshold of the object's centre, or, for sources that need it
 //! inside (ovens, microwaves, fridges), when the object is inside it. A source is active when it is toggled on (if it needs
 //! to be) and closed (if it needs to be). Constants and per-synset parameters are iGibson 2.0's
-//! (`../shared/reference/igibson-2.0-reference.md` §1.4), read from the taxonomy's abilities.
+//! (`igibson/object_states/temperature.py`'s and its heat sources'), read from the taxonomy's
+//! abilities.
 
 use crate::core::Core;
 use crate::object::{Object, ObjectId, PointKind};

@@ -107,7 +107,7 @@ pub struct ArmBody {
     pub head: [f32; 2],
     /// Each moving link's shapes in its own frame, in [`FetchLink::ALL`] order from the torso.
     pub links: Vec<Vec<(Primitive, Pose)>>,
-    /// What the gripper holds, in the gripper's frame, grown by [`HELD_MARGIN`].
+    /// What the gripper holds, in the gripper's frame, grown by `HELD_MARGIN`.
     pub held: Vec<(Primitive, Pose)>,
     /// What the links' and the held object's checks against the world ignore: the robot and
     /// what it holds.
@@ -187,7 +187,7 @@ impl ArmBody {
     }
 
     /// The arm's planning resolution, rad (m for the torso): [`ARM_RESOLUTION`], finer for what
-    /// reaches farther than [`HELD_REACH`] from the gripper, so that its far end moves no more
+    /// reaches farther than `HELD_REACH` from the gripper, so that its far end moves no more
     /// per step than that of something within it. At 0.05 rad a step, the far end of a sheet
     /// of plywood held by its edge moves about 5 cm between checked configurations: the sheet
     /// met the torso while the arm moved and its grasp broke. The arm also moves it slower,
@@ -208,7 +208,7 @@ impl ArmBody {
     }
 
     /// How big the base's footprint is as it drives with the arm at `c`, m: how far the arm and
-    /// what it holds reach to either side of the base's heading, plus [`REACH_WEIGHT`] of how
+    /// what it holds reach to either side of the base's heading, plus `REACH_WEIGHT` of how
     /// far they reach out from its vertical axis. The width decides which doors it passes; the
     /// reach, where it can turn. (By reach alone, a sheet of plywood carried flat, 0.94 m
     /// across, ranked before the same sheet carried upright along the way, and passed no door.)

@@ -55,7 +55,7 @@ pub const FETCH_APPROACH: f32 = 0.05;
 /// How far the fingertips reach beyond the end effector's frame along its x, m (the pads'
 /// ends).
 const TIP: f32 = 0.031;
-/// The longest descent onto the object, m, [`DESCENT_STEP`] a step.
+/// The longest descent onto the object, m, `DESCENT_STEP` a step.
 pub const FETCH_DESCENT: f32 = 0.12;
 /// How far the gripper moves a step in its descent, m.
 const DESCENT_STEP: f32 = 0.004;

@@ -90,7 +90,7 @@ const PRE_FRONT: [f32; 3] = [0.3, 0.2, 0.1];
 /// One step of the descent onto the object, m.
 pub const DESCENT_STEP: f32 = 0.005;
 /// The most steps of descent from [`APPROACH_HEIGHT`] (the original's 25), more from a raised
-/// approach (see [`APPROACH_RAISES`]).
+/// approach (see `APPROACH_RAISES`).
 pub const DESCENT_STEPS: u32 = 25;
 /// The most steps the trigger is pressed for (the original closes for 50).
 pub const CLOSE_STEPS: u32 = 50;
@@ -477,8 +477,8 @@ fn on_top(world: &World, object: ObjectId, toward: Vector, inset: f32) -> Vector
 }
 
 /// Whether a hand of the robot, its body down or up if need be, reaches the nearest point of the
-/// object's box within its reach less [`REACH_MARGIN`] (for a small object, over it; for a
-/// shelf, its near side), and the top of the box there lies [`open_to`] the shoulder (a
+/// object's box within its reach less `REACH_MARGIN` (for a small object, over it; for a
+/// shelf, its near side), and the top of the box there lies `open_to` the shoulder (a
 /// necklace in a cabinet is not in reach from beside the cabinet).
 pub fn hand_reaches(world: &World, robot: &Robot, object: ObjectId) -> bool {
     let Robot::Behavior(robot, _) = robot else {
@@ -733,7 +733,7 @@ fn straight(from: &HandConfig, to: &HandConfig) -> Vec<HandConfig> {
 
 /// Hand poses over the object, palm down, best first: over the top of its box near the
 /// shoulder, jittered, at headings around the one from the body to the object; then the same
-/// higher up, by each of [`APPROACH_RAISES`] (fingers that would touch a tilted tile at
+/// higher up, by each of `APPROACH_RAISES` (fingers that would touch a tilted tile at
 /// [`APPROACH_HEIGHT`] clear it higher, and the descent still reaches it), those raised more
 /// than the first only above a column the hand can come down clear of everything but the
 /// object.

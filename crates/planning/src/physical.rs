@@ -96,7 +96,7 @@ pub fn drive_to(
     Ok(Ok(path))
 }
 
-/// The edit that opens the home's doors before a drive ([`open_doors`]), for replays to do
+/// The edit that opens the home's doors before a drive (`open_doors`), for replays to do
 /// again.
 pub const DOORS_OPENED: &str = "open_doors";
 
@@ -124,7 +124,7 @@ fn open_doors(steps: &mut Stepper<'_>) -> Result<(), RunError> {
     Ok(())
 }
 
-/// [`open_doors`] in a world whose activity objects are `bindings`: whether any door was
+/// `open_doors` in a world whose activity objects are `bindings`: whether any door was
 /// closed.
 pub(crate) fn open_doors_in(world: &mut World, bindings: &[Option<ObjectId>]) -> bool {
     let closed: Vec<ObjectId> = world
@@ -387,7 +387,7 @@ fn straight(a: &BaseConfig, b: &BaseConfig, resolution: f32) -> Vec<BaseConfig> 
 }
 
 /// Every object's links — the leaves of doors, the doors, lids and drawers of furniture — but
-/// those of the home's open doors ([`open_doors`]): a leaf open against the wall stands beside
+/// those of the home's open doors (`open_doors`): a leaf open against the wall stands beside
 /// the way, and what the robot carries must pass it.
 fn hinged_parts(world: &World) -> Vec<BodyRef> {
     world

@@ -102,6 +102,12 @@ mod proprioception;
 mod relative;
 mod robot;
 
+/// The guide's chapter on robots (`docs/guide/09-robots.md`), whose Rust snippets are compiled
+/// and run with this crate's doctests, so that the guide stays true.
+#[cfg(doctest)]
+#[doc = include_str!("../../../docs/guide/09-robots.md")]
+struct GuideChapter;
+
 pub use action::{ACTION_DIM, ACTION_SCALE, Action, ActionError, ActionSpace};
 pub use body::{BODY_HEIGHT, BODY_LENGTH, BODY_MASS, BODY_RADIUS, EYE_REACH, HAND_REACH};
 pub use embodiment::{Robot, RobotKind, TrackedPart};

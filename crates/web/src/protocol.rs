@@ -73,7 +73,7 @@ pub enum ProtocolError {
     /// A device value no headset reports.
     #[error(transparent)]
     BadDevice(#[from] BadDevice),
-    /// Larger than [`MAX_CLIENT_MESSAGE`].
+    /// Larger than `MAX_CLIENT_MESSAGE`.
     #[error("a message of {0} bytes; at most {MAX_CLIENT_MESSAGE} are accepted")]
     TooLarge(usize),
     /// A binary message: the client speaks JSON text.
@@ -90,7 +90,7 @@ pub enum ProtocolError {
         /// What serves it.
         needs: &'static str,
     },
-    /// A playback rate outside [`RATES`].
+    /// A playback rate outside `RATES`.
     #[error("a rate of {0}; it must lie in [{min}, {max}]", min = RATES.0, max = RATES.1)]
     BadPlayRate(f32),
     /// A step after the recording's last.

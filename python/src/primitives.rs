@@ -4,7 +4,7 @@
 
 use behavior_env::record::Recorder;
 use behavior_env::{Env, Step};
-use behavior_planning::{Mode, PrimitiveSet, PrimitiveSpace, RunError, run};
+use behavior_planning::{Mode, PrimitiveSet, PrimitiveSpace, RunError, Watcher, run};
 
 /// Which primitives, run how, over which objects (the episode's, found again at each reset).
 pub struct Primitives {
@@ -88,7 +88,8 @@ impl Primitives {
             .world()
             .map(|w| w.object(call.object).name.clone())
             .unwrap_or_default();
-        let outcome = run(env, call, self.mode, recorder)?;
+        let watcher = recorder.map(|r| r as &mut dyn Watcher);
+        let outcome = run(env, call, self.mode, watcher)?;
         Ok(Done {
             reward: outcome.step.info.score.q - before,
             step: outcome.step,

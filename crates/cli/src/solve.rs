@@ -1,16 +1,19 @@
 //! `behavior solve` and `behavior solve-all`: the task planner agent doing activities with
-//! action primitives, scored by Q and the metrics, optionally recorded.
+//! action primitives, scored by Q and the metrics, optionally recorded and filmed.
 
 use crate::episode::EpisodeArgs;
 use crate::prelude::{Prelude, counting_bar, median};
 use crate::sample::all_covering;
 use crate::scene::with_clutter;
+use crate::video::Video;
 use anyhow::{Context, Result, bail};
 use behavior_env::record::{CHECKPOINT_EVERY, Recorder};
-use behavior_env::{Env, EnvConfig, EpisodeMetrics};
+use behavior_env::{Env, EnvConfig, EpisodeMetrics, categories};
 use behavior_planning::{
-    Executed, GivenUp, Limits, Mode, PrimitiveSet, PrimitiveSpace, Solution, Solver,
+    Executed, GivenUp, Limits, Mode, PrimitiveSet, PrimitiveSpace, RecordedCall, RunError,
+    Solution, Solver, Watcher,
 };
+use behavior_render::ImageProfile;
 use behavior_sim::STEP_SECONDS;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -30,9 +33,20 @@ pub struct SolveArgs {
     /// symbolic (check, then set the outcome) or physical (plans run with physics).
     #[arg(long, default_value = "symbolic")]
     mode: String,
-    /// Record the episode to an MCAP file (`behavior replay --verify` re-does it).
+    /// Record the episode to an MCAP file (`behavior replay --verify` re-does it; `behavior
+    /// view` plays it in the browser).
     #[arg(long)]
     record: Option<PathBuf>,
+    /// A video of the episode: the robot's eye and an overview of the home side by side over
+    /// Q's curve, 10 frames per simulated second, as an animated GIF.
+    #[arg(long, value_name = "FILE.gif")]
+    video: Option<PathBuf>,
+    /// The video's pictures' width and height, pixels.
+    #[arg(long, default_value_t = 256)]
+    video_size: u32,
+    /// How the video's pictures are drawn: realistic or fast.
+    #[arg(long, default_value = "realistic")]
+    profile: ImageProfile,
     /// Primitives run at most.
     #[arg(long, default_value_t = Limits::default().primitives)]
     max_primitives: usize,
@@ -86,7 +100,7 @@ pub fn solve(args: SolveArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         c.action_space = mode.action_space(c.robot);
     })?;
     let mut env = built.env;
-    let mut recorder = match &args.record {
+    let recorder = match &args.record {
         Some(path) => Some(Recorder::create(
             path,
             &env,
@@ -95,6 +109,16 @@ pub fn solve(args: SolveArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         )?),
         None => None,
     };
+    let video = match &args.video {
+        Some(path) => {
+            let table = categories(&prelude.knowledge.taxonomy);
+            let mut video = Video::create(path, &env, (args.video_size, args.profile), table)?;
+            video.capture(&env, 0, env.score().map_or(0.0, |s| s.q), false)?;
+            Some(video)
+        }
+        None => None,
+    };
+    let mut watch = Watch { recorder, video };
     let limits = Limits {
         primitives: args.max_primitives,
         ..Limits::default()
@@ -106,18 +130,34 @@ pub fn solve(args: SolveArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         }
     };
     let start = Instant::now();
-    let solution = Solver::new(&mut env, mode, limits, recorder.as_mut(), &mut print).solve()?;
+    let watching = watch.recorder.is_some() || watch.video.is_some();
+    let watcher = watching.then_some(&mut watch as &mut dyn Watcher);
+    let solution = Solver::new(&mut env, mode, limits, watcher, &mut print).solve()?;
     let wall = start.elapsed().as_secs_f64();
-    if let Some(r) = recorder {
+    if let Some(r) = watch.recorder {
         r.finish()?;
     }
+    let frames = match watch.video {
+        Some(mut video) => {
+            // The last state, whatever step it came at.
+            video.capture(&env, env.steps(), env.score().map_or(0.0, |s| s.q), true)?;
+            Some(video.finish()?)
+        }
+        None => None,
+    };
     let report = report(&env, &args.episode.robot, mode, solution, wall);
     if json {
         println!("{}", serde_json::to_string_pretty(&report)?);
     } else {
         print_report(&report);
         if let Some(path) = &args.record {
-            println!("  recorded to {}", path.display());
+            println!(
+                "  recorded to {} (`behavior view` plays it in the browser)",
+                path.display()
+            );
+        }
+        if let (Some(path), Some(frames)) = (&args.video, frames) {
+            println!("  video of {frames} frames in {}", path.display());
         }
     }
     Ok(if report.success {
@@ -125,6 +165,33 @@ pub fn solve(args: SolveArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     } else {
         ExitCode::FAILURE
     })
+}
+
+/// What watches a solve besides its printout: its recording and its video, either or both.
+struct Watch {
+    recorder: Option<Recorder>,
+    video: Option<Video>,
+}
+
+impl Watcher for Watch {
+    fn stepped(&mut self, env: &Env, action: &[f32]) -> Result<(), RunError> {
+        if let Some(r) = &mut self.recorder {
+            r.stepped(env, action)?;
+        }
+        if let Some(v) = &mut self.video {
+            let q = env.score().map_or(0.0, |s| s.q);
+            v.capture(env, env.steps(), q, false)
+                .map_err(|e| RunError::Watcher(format!("{e:#}")))?;
+        }
+        Ok(())
+    }
+
+    fn edited(&mut self, env: &Env, edit: &RecordedCall) -> Result<(), RunError> {
+        match &mut self.recorder {
+            Some(r) => r.edited(env, edit),
+            None => Ok(()),
+        }
+    }
 }
 
 fn report(env: &Env, robot: &str, mode: Mode, solution: Solution, wall_s: f64) -> Report {

@@ -1,5 +1,6 @@
-//! `behavior run --video`: an episode for people to watch, the robot's eye and an overview of the
-//! home side by side, captioned with the step and Q, as an animated GIF (through `gif`).
+//! `behavior run --video` and `behavior solve --video`: an episode for people to watch, the
+//! robot's eye and an overview of the home side by side, captioned with the step and Q, over Q's
+//! curve so far, as an animated GIF (through `gif`).
 //!
 //! A frame is drawn every [`FRAME_EVERY`] action steps (10 frames a second of simulated time),
 //! by a renderer of its own, so the agent's observations are untouched. Frames go to the file as
@@ -21,6 +22,8 @@ use std::path::{Path, PathBuf};
 pub const FRAME_EVERY: u32 = 3;
 /// The caption strip under the pictures, pixels.
 const CAPTION: u32 = 20;
+/// The strip under the caption where Q's curve is drawn, pixels.
+const CURVE: u32 = 40;
 /// GIF palette quantization speed (1 best … 30 fastest): 10 keeps a frame in milliseconds.
 const QUANTIZE_SPEED: i32 = 10;
 /// The sizes a picture may have, pixels.
@@ -37,6 +40,8 @@ pub struct Video {
     partial: PathBuf,
     path: PathBuf,
     frames: u32,
+    /// Q at every frame so far.
+    q: Vec<f32>,
 }
 
 impl Video {
@@ -80,7 +85,7 @@ impl Video {
         let cannot = || format!("cannot write {}", partial.display());
         let file = File::create(&partial).with_context(cannot)?;
         // Both sides fit in u16: SIZES keeps them under 4,200 pixels.
-        let (width, height) = ((2 * size) as u16, (size + CAPTION) as u16);
+        let (width, height) = ((2 * size) as u16, (size + CAPTION + CURVE) as u16);
         let mut encoder =
             Encoder::new(BufWriter::new(file), width, height, &[]).with_context(cannot)?;
         encoder.set_repeat(Repeat::Infinite).with_context(cannot)?;
@@ -95,6 +100,7 @@ impl Video {
             partial,
             path: path.to_path_buf(),
             frames: 0,
+            q: Vec::new(),
         })
     }
 
@@ -107,7 +113,8 @@ impl Video {
         let world = env.world().context("no episode")?;
         self.eye.camera.pose = env.robot().context("no robot")?.camera_pose(world);
         let size = self.eye.camera.width;
-        let mut picture = RgbImage::from_pixel(2 * size, size + CAPTION, Rgb([255, 255, 255]));
+        let mut picture =
+            RgbImage::from_pixel(2 * size, size + CAPTION + CURVE, Rgb([255, 255, 255]));
         for (k, view) in [&mut self.eye, &mut self.overview].into_iter().enumerate() {
             let frame = draw(
                 env,
@@ -138,6 +145,8 @@ impl Video {
             black,
         );
         text(&mut picture, "overview", size as f32 * 1.75, y, 1, black);
+        self.q.push(q as f32);
+        curve(&mut picture, &self.q, size + CAPTION);
         let (width, height) = (picture.width() as u16, picture.height() as u16);
         let mut frame = Frame::from_rgb_speed(width, height, picture.as_raw(), QUANTIZE_SPEED);
         // In hundredths of a second: 1/30 s per action step.
@@ -163,5 +172,37 @@ impl Video {
             )
         })?;
         Ok(self.frames)
+    }
+}
+
+/// Q over the frames so far, in the strip from row `top` to the picture's bottom: the whole
+/// episode so far across the picture's width, 0 at the strip's bottom and 1 at its top, on a
+/// light grey ground with the two lines faint.
+fn curve(picture: &mut RgbImage, q: &[f32], top: u32) {
+    let (width, bottom) = (picture.width(), picture.height() - 3);
+    let top = top + 3;
+    for x in 0..width {
+        for y in top - 3..picture.height() {
+            picture.put_pixel(x, y, Rgb([236, 238, 240]));
+        }
+        picture.put_pixel(x, top, Rgb([200, 204, 210]));
+        picture.put_pixel(x, bottom, Rgb([200, 204, 210]));
+    }
+    let row = |v: f32| bottom - ((bottom - top) as f32 * v.clamp(0.0, 1.0)).round() as u32;
+    let last = q.len().saturating_sub(1).max(1) as f32;
+    let mut previous: Option<(u32, u32)> = None;
+    for (i, &v) in q.iter().enumerate() {
+        let x = ((width - 1) as f32 * i as f32 / last).round() as u32;
+        let y = row(v);
+        // A vertical run joins each point to the one before, so steps in Q show as steps.
+        let (from, to) = previous.map_or((y, y), |(_, py)| (py.min(y), py.max(y)));
+        let from_x = previous.map_or(x, |(px, _)| px);
+        for xx in from_x..=x {
+            picture.put_pixel(xx, previous.map_or(y, |(_, py)| py), Rgb([30, 130, 70]));
+        }
+        for yy in from..=to {
+            picture.put_pixel(x, yy, Rgb([30, 130, 70]));
+        }
+        previous = Some((x, y));
     }
 }

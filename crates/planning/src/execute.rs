@@ -77,6 +77,37 @@ pub enum RunError {
     /// The recording could not be written.
     #[error(transparent)]
     Record(#[from] behavior_env::record::RecordError),
+    /// Another [`Watcher`] failed (a video could not be written): why.
+    #[error("{0}")]
+    Watcher(String),
+}
+
+/// What sees each step a primitive takes and each edit of the world it makes between steps: a
+/// recording ([`Recorder`] is one), a video, a viewer. Its error ends the run.
+pub trait Watcher {
+    /// After a step taken with `action`.
+    fn stepped(&mut self, env: &Env, action: &[f32]) -> Result<(), RunError>;
+    /// After an edit of the world between steps (a symbolic primitive's outcome, a switch).
+    fn edited(&mut self, env: &Env, edit: &RecordedCall) -> Result<(), RunError>;
+}
+
+/// The watcher once more, for one call (an `Option<&mut dyn Watcher>` does not reborrow as
+/// another by itself).
+pub(crate) fn again<'b>(watcher: &'b mut Option<&mut dyn Watcher>) -> Option<&'b mut dyn Watcher> {
+    match watcher {
+        Some(w) => Some(&mut **w),
+        None => None,
+    }
+}
+
+impl Watcher for Recorder {
+    fn stepped(&mut self, env: &Env, action: &[f32]) -> Result<(), RunError> {
+        Ok(self.record(env, action)?)
+    }
+
+    fn edited(&mut self, env: &Env, edit: &RecordedCall) -> Result<(), RunError> {
+        Ok(self.record_edit(env, edit)?)
+    }
 }
 
 /// What one primitive did.
@@ -102,18 +133,18 @@ pub struct RecordedCall {
     pub hand: usize,
 }
 
-/// Runs one primitive in `mode` and the steps after it, recording both if asked.
+/// Runs one primitive in `mode` and the steps after it, each shown to `watcher` if given.
 pub fn run(
     env: &mut Env,
     call: Call,
     mode: Mode,
-    mut recorder: Option<&mut Recorder>,
+    mut watcher: Option<&mut dyn Watcher>,
 ) -> Result<Outcome, RunError> {
     let began = std::time::Instant::now();
     let result = match (mode, call.primitive) {
         (_, Primitive::Wait) => Ok(()),
         (Mode::Physical, Primitive::NavigateTo) => {
-            physical::drive_to(env, &call, recorder.as_deref_mut())?.map(|_| ())
+            physical::drive_to(env, &call, again(&mut watcher))?.map(|_| ())
         }
         // Switches are kinematic in the original's motion-planning mode too.
         (Mode::Symbolic, _)
@@ -122,16 +153,16 @@ pub fn run(
             Primitive::Open | Primitive::Close | Primitive::ToggleOn | Primitive::ToggleOff,
         ) => env.edit(|edit| symbolic::apply(edit, &call))?,
         (Mode::Physical, Primitive::Grasp) if drives_fetch(env) => {
-            fetch_manipulate::grasp(env, &call, recorder.as_deref_mut())?.map(|_| ())
+            fetch_manipulate::grasp(env, &call, again(&mut watcher))?.map(|_| ())
         }
         (Mode::Physical, Primitive::Grasp) => {
-            manipulate::grasp(env, &call, recorder.as_deref_mut())?.map(|_| ())
+            manipulate::grasp(env, &call, again(&mut watcher))?.map(|_| ())
         }
         (Mode::Physical, p) => match p.relation() {
             Some(r) if drives_fetch(env) => {
-                fetch_manipulate::place(env, &call, r, recorder.as_deref_mut())?.map(|_| ())
+                fetch_manipulate::place(env, &call, r, again(&mut watcher))?.map(|_| ())
             }
-            Some(r) => manipulate::place(env, &call, r, recorder.as_deref_mut())?.map(|_| ()),
+            Some(r) => manipulate::place(env, &call, r, again(&mut watcher))?.map(|_| ()),
             None => Err(Failure::Unavailable(
                 "physical slice, wipe and soak are not built yet",
             )),
@@ -142,9 +173,9 @@ pub fn run(
     if result.is_ok()
         && edited
         && call.primitive != Primitive::Wait
-        && let Some(r) = recorder.as_deref_mut()
+        && let Some(r) = again(&mut watcher)
     {
-        r.record_edit(env, &describe(env, &call))?;
+        r.edited(env, &describe(env, &call))?;
     }
     let steps = if call.primitive == Primitive::Wait {
         WAIT_STEPS
@@ -164,8 +195,8 @@ pub fn run(
     let mut last = None;
     for _ in 0..steps {
         let step = env.step(&still)?;
-        if let Some(r) = recorder.as_deref_mut() {
-            r.record(env, &still)?;
+        if let Some(r) = again(&mut watcher) {
+            r.stepped(env, &still)?;
         }
         let over = step.terminated || step.truncated;
         last = Some(step);

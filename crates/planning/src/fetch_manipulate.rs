@@ -33,6 +33,7 @@
 use crate::arm::{ArmBody, ArmConfig, ArmSpace};
 use crate::base::BaseConfig;
 use crate::execute::RunError;
+use crate::execute::Watcher;
 use crate::manipulate::{
     CLOSE_STEPS, GRASP_JITTER, RELEASE_STEPS, SETTLE_STEPS, grasp_point, placement_goals, rng_seed,
 };
@@ -42,7 +43,6 @@ use crate::rrt::{PlanParams, plan, steps_along};
 use crate::symbolic::check;
 use behavior_core::rng::{SimRng, seeded, uniform};
 use behavior_env::Env;
-use behavior_env::record::Recorder;
 use behavior_robots::{
     ActionSpace, FETCH_JOINT_ACTION_DIM, Fetch, FetchCommand, FetchJoint, FetchJointAction, Robot,
 };
@@ -89,7 +89,7 @@ pub struct ArmPath {
 }
 
 /// GRASP with Fetch's arm and physics (see the module docs).
-pub fn grasp(env: &mut Env, call: &Call, recorder: Option<&mut Recorder>) -> Attempt<ArmPath> {
+pub fn grasp(env: &mut Env, call: &Call, watcher: Option<&mut dyn Watcher>) -> Attempt<ArmPath> {
     if let Err(failure) = precondition(env, call) {
         return Ok(Err(failure));
     }
@@ -97,7 +97,7 @@ pub fn grasp(env: &mut Env, call: &Call, recorder: Option<&mut Recorder>) -> Att
     let goals = fetch(env).map_or(Vec::new(), |(world, fetch)| {
         grasp_goals(world, fetch, call.object, &mut rng)
     });
-    let mut steps = Stepper { env, recorder };
+    let mut steps = Stepper { env, watcher };
     let start = arm_now(steps.env);
     let mut path = attempt!(reach(&mut steps, &goals, OPEN, &mut rng));
     attempt!(descend(&mut steps, call.object, &mut path.after));
@@ -120,7 +120,7 @@ pub fn place(
     env: &mut Env,
     call: &Call,
     relation: Relation,
-    recorder: Option<&mut Recorder>,
+    watcher: Option<&mut dyn Watcher>,
 ) -> Attempt<ArmPath> {
     if let Err(failure) = precondition(env, call) {
         return Ok(Err(failure));
@@ -134,7 +134,7 @@ pub fn place(
         Ok(goals) => goals,
         Err(failure) => return Ok(Err(failure)),
     };
-    let mut steps = Stepper { env, recorder };
+    let mut steps = Stepper { env, watcher };
     let start = arm_now(steps.env);
     let mut path = attempt!(reach(&mut steps, &goals, CLOSED, &mut rng));
     attempt!(open(&mut steps));
@@ -394,7 +394,7 @@ fn goal_seed(goal: &Pose) -> u64 {
 /// thing, low and ahead, the arm made the base's footprint too big for most ways through the
 /// home. Planned with what the gripper holds; where no plan gets to any of these, the arm
 /// stays.
-pub(crate) fn tuck(steps: &mut Stepper<'_>) -> Attempt<()> {
+pub(crate) fn tuck(steps: &mut Stepper<'_, '_>) -> Attempt<()> {
     let Some((_, arm)) = fetch(steps.env) else {
         return Ok(Ok(()));
     };
@@ -555,7 +555,7 @@ const TUCKED: [f32; 7] = [1.1708, 1.4708, -0.4, 1.6708, 0.0, FRAC_PI_2, 0.0];
 /// its joint space gets to, the gripper held at `gripper`, every step of the way checked free
 /// ([`follow`]). Stopped on the way, the arm is brought back.
 fn reach(
-    steps: &mut Stepper<'_>,
+    steps: &mut Stepper<'_, '_>,
     goals: &[Pose],
     gripper: f32,
     rng: &mut SimRng,
@@ -617,7 +617,7 @@ const UNSTICK: [[f32; 3]; 4] = [
 /// [`UNSTICK`] that ends clear: the planner starts only from a free configuration, and every
 /// later grasp of a can by a window failed there. Where none ends clear, the arm stays and
 /// the planner says why.
-fn unstick(steps: &mut Stepper<'_>, gripper: f32) -> Attempt<()> {
+fn unstick(steps: &mut Stepper<'_, '_>, gripper: f32) -> Attempt<()> {
     let Some((world, fetch)) = fetch(steps.env) else {
         return Ok(Ok(()));
     };
@@ -726,7 +726,7 @@ enum Check {
 /// configuration reached goes to `executed`. A step that leaves the arm short of its
 /// prediction was stopped by something fixed: [`Failure::HandBlocked`].
 fn follow(
-    steps: &mut Stepper<'_>,
+    steps: &mut Stepper<'_, '_>,
     path: &[ArmConfig],
     gripper: f32,
     check: Check,
@@ -737,7 +737,7 @@ fn follow(
 
 /// [`follow`], stopping before a step once `done` holds.
 fn follow_until(
-    steps: &mut Stepper<'_>,
+    steps: &mut Stepper<'_, '_>,
     path: &[ArmConfig],
     gripper: f32,
     check: Check,
@@ -796,7 +796,7 @@ fn line(fetch: &Fetch, offset: Vector, step: f32) -> Option<Vec<ArmConfig>> {
 
 /// The gripper straight up by `height`, m, not checked: what it takes still touches the table.
 fn straight_up(
-    steps: &mut Stepper<'_>,
+    steps: &mut Stepper<'_, '_>,
     height: f32,
     gripper: f32,
     executed: &mut Vec<ArmConfig>,
@@ -810,7 +810,7 @@ fn straight_up(
 
 /// Still steps with the gripper at `gripper` (a still Fetch action closes it).
 fn hold(
-    steps: &mut Stepper<'_>,
+    steps: &mut Stepper<'_, '_>,
     n: u32,
     gripper: f32,
     mut done: impl FnMut(&Env) -> bool,
@@ -826,13 +826,13 @@ fn hold(
     Ok(Ok(()))
 }
 
-fn wait(steps: &mut Stepper<'_>, n: u32) -> Attempt<()> {
+fn wait(steps: &mut Stepper<'_, '_>, n: u32) -> Attempt<()> {
     hold(steps, n, OPEN, |_| false)
 }
 
 /// On toward the object, the way the gripper points, until the palm or a finger touches it.
 fn descend(
-    steps: &mut Stepper<'_>,
+    steps: &mut Stepper<'_, '_>,
     object: ObjectId,
     executed: &mut Vec<ArmConfig>,
 ) -> Attempt<()> {
@@ -854,7 +854,7 @@ fn descend(
 
 /// Closes the gripper until it holds the object; touching it and not holding it once closed,
 /// forces the grasp ([`force_grasp`]).
-fn close(steps: &mut Stepper<'_>, call: &Call) -> Result<(), RunError> {
+fn close(steps: &mut Stepper<'_, '_>, call: &Call) -> Result<(), RunError> {
     let holds = |env: &Env| fetch(env).is_some_and(|(_, f)| f.is_holding(call.object));
     if hold(steps, CLOSE_STEPS, CLOSED, holds)?.is_err() || holds(steps.env) {
         return Ok(());
@@ -863,7 +863,7 @@ fn close(steps: &mut Stepper<'_>, call: &Call) -> Result<(), RunError> {
 }
 
 /// Opens the gripper until it holds nothing and the fingers are apart.
-fn open(steps: &mut Stepper<'_>) -> Attempt<()> {
+fn open(steps: &mut Stepper<'_, '_>) -> Attempt<()> {
     hold(steps, RELEASE_STEPS, OPEN, |env| {
         fetch(env).is_none_or(|(world, f)| {
             let [a, b] = f.fingers(world);
@@ -875,7 +875,7 @@ fn open(steps: &mut Stepper<'_>) -> Attempt<()> {
 /// The arm planned back to `start`, with what it now holds; where that is not free, with the
 /// torso higher.
 fn come_back(
-    steps: &mut Stepper<'_>,
+    steps: &mut Stepper<'_, '_>,
     start: ArmConfig,
     gripper: f32,
     executed: &mut Vec<ArmConfig>,

@@ -47,7 +47,7 @@ pub use arm::{ARM_RESOLUTION, ArmBody, ArmConfig, ArmSpace};
 pub use base::{BaseConfig, BaseSpace, Footprint, home_extent};
 pub use error::PlanError;
 pub use execute::{
-    ARM_REACH, FETCH_ARM_REACH, Mode, Outcome, RecordedCall, RunError, replay_edit, run,
+    ARM_REACH, FETCH_ARM_REACH, Mode, Outcome, RecordedCall, RunError, Watcher, replay_edit, run,
 };
 pub use fetch_manipulate::{ArmPath, FETCH_APPROACH, FETCH_DESCENT};
 pub use fetch_manipulate::{grasp as fetch_grasp, place as fetch_place, reaches as fetch_reaches};

@@ -25,6 +25,7 @@
 //! back, so that the next NAVIGATE_TO finds the robot as compact as it started.
 
 use crate::base::BaseConfig;
+use crate::execute::Watcher;
 use crate::execute::{RecordedCall, RunError};
 use crate::hand::{HandBody, HandConfig, HandSpace};
 use crate::navigate::shapes_in;
@@ -37,7 +38,6 @@ use crate::rrt::{PlanParams, plan, steps_along};
 use crate::symbolic::{check, put};
 use behavior_core::rng::{SimRng, uniform};
 use behavior_env::Env;
-use behavior_env::record::Recorder;
 use behavior_robots::{ACTION_SCALE, Action, ActionSpace, BehaviorRobot, HAND_REACH, Robot, Side};
 use behavior_sim::{BodyRef, ObjectId, QueryFilter, Relation, World};
 use rapier3d::glamx::EulerRot;
@@ -129,7 +129,7 @@ pub struct HandPath {
 }
 
 /// GRASP with physics (see the module docs). The paths it planned and executed come back.
-pub fn grasp(env: &mut Env, call: &Call, recorder: Option<&mut Recorder>) -> Attempt<HandPath> {
+pub fn grasp(env: &mut Env, call: &Call, watcher: Option<&mut dyn Watcher>) -> Attempt<HandPath> {
     let side = match hand_side(env, call) {
         Ok(side) => side,
         Err(failure) => return Ok(Err(failure)),
@@ -139,7 +139,7 @@ pub fn grasp(env: &mut Env, call: &Call, recorder: Option<&mut Recorder>) -> Att
         Some((world, robot)) => approach_goals(world, robot, call, side, &mut rng),
         None => Vec::new(),
     };
-    let mut steps = Stepper { env, recorder };
+    let mut steps = Stepper { env, watcher };
     let mut reached = attempt!(reach(&mut steps, side, &goals, &mut rng));
     attempt!(descend(
         &mut steps,
@@ -171,7 +171,7 @@ pub fn place(
     env: &mut Env,
     call: &Call,
     relation: Relation,
-    recorder: Option<&mut Recorder>,
+    watcher: Option<&mut dyn Watcher>,
 ) -> Attempt<HandPath> {
     let side = match hand_side(env, call) {
         Ok(side) => side,
@@ -186,7 +186,7 @@ pub fn place(
         Ok(goals) => goals,
         Err(failure) => return Ok(Err(failure)),
     };
-    let mut steps = Stepper { env, recorder };
+    let mut steps = Stepper { env, watcher };
     let mut reached = attempt!(reach(&mut steps, side, &goals, &mut rng));
     attempt!(open(&mut steps, side));
     attempt!(steps.wait_until(SETTLE_STEPS, |_| false));
@@ -242,7 +242,7 @@ fn tucked(side: Side) -> Pose {
 /// Draws a BehaviorRobot's hands in to [`tucked`] poses, with what they hold (nothing for Fetch,
 /// or for hands already there), each along a straight line. Tucking only empty hands did worse:
 /// summed Q over the 12 Table 1 activities and seeds 0–2, 6.7 against 8.9.
-pub(crate) fn tuck(steps: &mut Stepper<'_>) -> Attempt<()> {
+pub(crate) fn tuck(steps: &mut Stepper<'_, '_>) -> Attempt<()> {
     for side in Side::BOTH {
         let Some((world, robot)) = behavior_robot(steps.env) else {
             return Ok(Ok(()));
@@ -273,7 +273,7 @@ pub(crate) fn tuck(steps: &mut Stepper<'_>) -> Attempt<()> {
 /// Puts back at its target, at once, each palm its servo left more than [`STRANDED`] behind
 /// (pinned behind furniture the body moved past: 300 N cannot pull it through), as the
 /// original robot's reset entry does; recorded as an edit, [`HAND_RESET`], for replays.
-fn free_stranded(steps: &mut Stepper<'_>) -> Result<(), RunError> {
+fn free_stranded(steps: &mut Stepper<'_, '_>) -> Result<(), RunError> {
     for side in Side::BOTH {
         let behind = behavior_robot(steps.env).map_or(0.0, |(world, robot)| {
             let target = robot.body_pose(world) * robot.hand_target(side);
@@ -311,7 +311,7 @@ struct Reached {
 /// first if need be, [`choose_goals`]), the next tried where no plan is found. On failure the
 /// hand and the body are brought back.
 fn reach(
-    steps: &mut Stepper<'_>,
+    steps: &mut Stepper<'_, '_>,
     side: Side,
     goals: &[Pose],
     rng: &mut SimRng,
@@ -361,7 +361,7 @@ fn reach(
 
 /// The hand back where it was told to be before the primitive, the body at its height (even
 /// where the hand could not come back).
-fn retreat(steps: &mut Stepper<'_>, side: Side, reached: &mut Reached) -> Attempt<()> {
+fn retreat(steps: &mut Stepper<'_, '_>, side: Side, reached: &mut Reached) -> Attempt<()> {
     if let Some(exit) = reached.exit {
         back_out(steps, side, exit, &mut reached.path.after)?;
     }
@@ -635,7 +635,7 @@ fn choose_goals(
 }
 
 /// Lowers (or raises, for a negative `depth`) the body by `depth`, m, with body actions.
-fn crouch(steps: &mut Stepper<'_>, depth: f32) -> Attempt<()> {
+fn crouch(steps: &mut Stepper<'_, '_>, depth: f32) -> Attempt<()> {
     let Some((world, robot)) = behavior_robot(steps.env) else {
         return Ok(Err(Failure::Unavailable("no episode")));
     };
@@ -958,7 +958,7 @@ fn robot_dim(env: &Env) -> usize {
 /// Executes a hand path, one step per configuration (more where a turn needs them), then lets
 /// the palm arrive. The palm's poses go to `executed`.
 fn follow(
-    steps: &mut Stepper<'_>,
+    steps: &mut Stepper<'_, '_>,
     side: Side,
     path: &[HandConfig],
     executed: &mut Vec<Pose>,
@@ -985,7 +985,7 @@ fn follow(
 /// Down onto the object until the hand touches it: at most [`DESCENT_STEPS`], more from an
 /// approach raised above [`APPROACH_HEIGHT`] (by as many steps as the raise).
 fn descend(
-    steps: &mut Stepper<'_>,
+    steps: &mut Stepper<'_, '_>,
     side: Side,
     object: ObjectId,
     executed: &mut Vec<Pose>,
@@ -1014,7 +1014,7 @@ fn descend(
 /// it once the trigger is past its threshold and the hand touches it, forces the grasp as the
 /// original does after closing (recorded as an
 /// edit, [`FORCED_GRASP`], for replays to do again).
-fn close(steps: &mut Stepper<'_>, call: &Call) -> Result<(), RunError> {
+fn close(steps: &mut Stepper<'_, '_>, call: &Call) -> Result<(), RunError> {
     let side = Side::BOTH[call.hand];
     let mut action = vec![0.0; robot_dim(steps.env)];
     action[Action::trigger_index(side)] = 1.0;
@@ -1033,7 +1033,7 @@ fn close(steps: &mut Stepper<'_>, call: &Call) -> Result<(), RunError> {
 }
 
 /// Lets the trigger go until the hand is open and holds nothing.
-fn open(steps: &mut Stepper<'_>, side: Side) -> Attempt<()> {
+fn open(steps: &mut Stepper<'_, '_>, side: Side) -> Attempt<()> {
     let mut action = vec![0.0; robot_dim(steps.env)];
     action[Action::trigger_index(side)] = -1.0;
     for _ in 0..RELEASE_STEPS {
@@ -1051,7 +1051,7 @@ fn open(steps: &mut Stepper<'_>, side: Side) -> Attempt<()> {
 /// carries, as far as that is free: out of the cabinet or up from the table before the way
 /// back is planned (from where it let go, the placed object under its fingers, no plan starts).
 fn back_out(
-    steps: &mut Stepper<'_>,
+    steps: &mut Stepper<'_, '_>,
     side: Side,
     exit: Vector,
     executed: &mut Vec<Pose>,
@@ -1082,7 +1082,7 @@ fn back_out(
 /// The hand planned back to `start` with what it now carries, raised where that would not
 /// fit.
 fn come_back(
-    steps: &mut Stepper<'_>,
+    steps: &mut Stepper<'_, '_>,
     side: Side,
     start: Pose,
     executed: &mut Vec<Pose>,

@@ -7,6 +7,7 @@
 
 use crate::base::{BaseConfig, BaseSpace, home_extent};
 use crate::error::PlanError;
+use crate::execute::Watcher;
 use crate::execute::{ARM_REACH, FETCH_ARM_REACH, Mode, RecordedCall, RunError};
 use crate::lattice::{LATTICE_EXPANSIONS, lattice_plan};
 use crate::navigate::Standing;
@@ -16,7 +17,6 @@ use crate::symbolic::{call_seed, limited_links, open_all_the_way, stand_for};
 use behavior_core::Predicate;
 use behavior_core::rng::{SimRng, seeded};
 use behavior_env::Env;
-use behavior_env::record::Recorder;
 use behavior_robots::{ACTION_SCALE, FetchAction, MAX_ANGULAR_SPEED, MAX_LINEAR_SPEED, Robot};
 use behavior_sim::{BodyRef, ObjectId, STEP_SECONDS, World};
 use std::f32::consts::{FRAC_PI_2, PI};
@@ -53,15 +53,15 @@ pub struct BasePath {
 }
 
 /// NAVIGATE_TO with physics: a place to stand (the symbolic search), a base path there
-/// (RRT-Connect in [`BaseSpace`]), then the path driven step by step, each recorded if a
-/// recorder is given. The outer error ends the
-/// run (the episode refused a step, or the recording failed); the inner one is the primitive's.
+/// (RRT-Connect in [`BaseSpace`]), then the path driven step by step, each shown to the
+/// watcher if one is given. The outer error ends the run (the episode refused a step, or the
+/// watcher failed: a recording not written); the inner one is the primitive's.
 pub fn drive_to(
     env: &mut Env,
     call: &Call,
-    recorder: Option<&mut Recorder>,
+    watcher: Option<&mut dyn Watcher>,
 ) -> Result<Result<BasePath, Failure>, RunError> {
-    let mut steps = Stepper { env, recorder };
+    let mut steps = Stepper { env, watcher };
     open_doors(&mut steps)?;
     // Best effort: a hand that cannot get there is planned around where it is.
     let _ = crate::manipulate::tuck(&mut steps)?;
@@ -110,7 +110,7 @@ const DOOR_SYNSET: &str = "door.n.01";
 /// (their leaves are pushed aside, see [`plan_base`]), but what a robot carries beside or
 /// ahead of its base met a leaf as the base pushed it: a sheet of plywood's grasp broke on
 /// one. A door the activity names keeps its state: its openness may be the goal.
-fn open_doors(steps: &mut Stepper<'_>) -> Result<(), RunError> {
+fn open_doors(steps: &mut Stepper<'_, '_>) -> Result<(), RunError> {
     let opened = steps
         .env
         .edit(|edit| open_doors_in(edit.world, edit.bindings))?;
@@ -166,7 +166,7 @@ pub(crate) fn call_rng(env: &Env, call: &Call) -> SimRng {
 /// Forces the assisted grasp of `call.object` by `call.hand` where the hand touches it, as
 /// the original does after closing, recorded as the edit [`crate::FORCED_GRASP`] for replays to do
 /// again; nothing where it does not touch it.
-pub(crate) fn force_grasp(steps: &mut Stepper<'_>, call: &Call) -> Result<(), RunError> {
+pub(crate) fn force_grasp(steps: &mut Stepper<'_, '_>, call: &Call) -> Result<(), RunError> {
     let forced = steps.env.edit(|edit| {
         edit.robot
             .grasp_touching(edit.world, call.hand, call.object)
@@ -186,19 +186,19 @@ pub(crate) fn force_grasp(steps: &mut Stepper<'_>, call: &Call) -> Result<(), Ru
     Ok(())
 }
 
-/// The steps a physical primitive takes, each recorded if a recorder is given.
-pub(crate) struct Stepper<'a> {
+/// The steps a physical primitive takes, each shown to the watcher if one is given.
+pub(crate) struct Stepper<'a, 'w> {
     pub(crate) env: &'a mut Env,
-    pub(crate) recorder: Option<&'a mut Recorder>,
+    pub(crate) watcher: Option<&'w mut dyn Watcher>,
 }
 
-impl Stepper<'_> {
+impl Stepper<'_, '_> {
     /// One step with `action`. The outer error ends the run (the episode refused the step, or
     /// the recording failed); the inner one fails the primitive: the episode ended.
     pub(crate) fn act(&mut self, action: &[f32]) -> Result<Result<(), Failure>, RunError> {
         self.env.step(action)?;
-        if let Some(r) = self.recorder.as_deref_mut() {
-            r.record(self.env, action)?;
+        if let Some(r) = crate::execute::again(&mut self.watcher) {
+            r.stepped(self.env, action)?;
         }
         if self.env.is_over() {
             return Ok(Err(Failure::Unavailable("the episode ended on the way")));
@@ -208,8 +208,8 @@ impl Stepper<'_> {
 
     /// Records an edit done between steps, if recording.
     pub(crate) fn record_edit(&mut self, edit: &RecordedCall) -> Result<(), RunError> {
-        if let Some(r) = self.recorder.as_deref_mut() {
-            r.record_edit(self.env, edit)?;
+        if let Some(r) = crate::execute::again(&mut self.watcher) {
+            r.edited(self.env, edit)?;
         }
         Ok(())
     }

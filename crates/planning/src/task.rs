@@ -12,6 +12,7 @@
 //! The BehaviorRobot carries objects in its right hand and tools (slicer, cleaning tool) in its
 //! left; Fetch, with one gripper, puts one down to take the other.
 
+use crate::execute::Watcher;
 use crate::execute::{Mode, RunError, run};
 use crate::fetch_manipulate::reaches as arm_reaches;
 use crate::manipulate::{hand_reaches, placement_in_reach};
@@ -21,7 +22,6 @@ use crate::symbolic::{container_where, wide_open, within};
 use behavior_bddl::{GroundGoal, Literal, Predicate, PredicateOracle};
 use behavior_core::{Ability, FLOOR_SYNSET};
 use behavior_env::Env;
-use behavior_env::record::Recorder;
 use behavior_robots::Robot;
 use behavior_sim::{BoundWorld, ObjectId, World};
 use serde::Serialize;
@@ -116,7 +116,7 @@ pub struct Solver<'a> {
     env: &'a mut Env,
     mode: Mode,
     limits: Limits,
-    recorder: Option<&'a mut Recorder>,
+    watcher: Option<&'a mut dyn Watcher>,
     observer: &'a mut dyn FnMut(&Executed),
     log: Vec<Executed>,
     /// How often each literal was tried and still did not hold.
@@ -138,19 +138,19 @@ type Reason = String;
 
 impl<'a> Solver<'a> {
     /// A planner for the episode `env` has just reset; `observer` sees every primitive as it
-    /// ends, and `recorder`, if given, records the episode.
+    /// ends, and `watcher`, if given, every step and edit (a recording, a video).
     pub fn new(
         env: &'a mut Env,
         mode: Mode,
         limits: Limits,
-        recorder: Option<&'a mut Recorder>,
+        watcher: Option<&'a mut dyn Watcher>,
         observer: &'a mut dyn FnMut(&Executed),
     ) -> Solver<'a> {
         Solver {
             env,
             mode,
             limits,
-            recorder,
+            watcher,
             observer,
             log: Vec::new(),
             tries: BTreeMap::new(),
@@ -368,7 +368,12 @@ impl<'a> Solver<'a> {
             ));
         }
         let before = self.env.steps();
-        let outcome = match run(self.env, call, self.mode, self.recorder.as_deref_mut()) {
+        let outcome = match run(
+            self.env,
+            call,
+            self.mode,
+            crate::execute::again(&mut self.watcher),
+        ) {
             Ok(outcome) => outcome,
             Err(e) => {
                 let reason = e.to_string();

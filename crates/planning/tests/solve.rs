@@ -6,7 +6,7 @@
 mod common;
 
 use behavior_env::record::{Recorder, read, replay, replay_with};
-use behavior_planning::{Limits, Mode, Solution, Solver, replay_edit};
+use behavior_planning::{Limits, Mode, Solution, Solver, Watcher, replay_edit};
 use behavior_robots::RobotKind;
 
 fn solve(
@@ -26,7 +26,8 @@ fn solve_in(
     mode: Mode,
     recorder: Option<&mut Recorder>,
 ) -> Result<Solution, behavior_planning::RunError> {
-    Solver::new(env, mode, Limits::default(), recorder, &mut |_| {}).solve()
+    let watcher = recorder.map(|r| r as &mut dyn Watcher);
+    Solver::new(env, mode, Limits::default(), watcher, &mut |_| {}).solve()
 }
 
 #[test]

@@ -173,7 +173,11 @@ mod tests {
             got.push(matches!(m, Outgoing::Text(_)));
         }
         assert_eq!(got.len(), SKIPPABLE_QUEUED + 1, "{got:?}");
-        assert_eq!(got.last(), Some(&true), "the rig comes after {SKIPPABLE_QUEUED} frames and statuses");
+        assert_eq!(
+            got.last(),
+            Some(&true),
+            "the rig comes after {SKIPPABLE_QUEUED} frames and statuses"
+        );
     }
 
     /// A page that says what it has taken is sent frames and statuses only a few frames ahead

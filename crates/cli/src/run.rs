@@ -3,11 +3,10 @@
 use crate::episode::{Built, EpisodeArgs};
 use crate::plot::plot_episode;
 use crate::prelude::Prelude;
-use crate::video::Video;
+use crate::video::{Video, VideoArgs};
 use anyhow::{Context, Result};
 use behavior_env::record::{CHECKPOINT_EVERY, Recorder};
-use behavior_env::{Agent, EpisodeMetrics, categories};
-use behavior_render::ImageProfile;
+use behavior_env::{Agent, EpisodeMetrics};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -33,17 +32,8 @@ pub struct RunArgs {
     /// Draw Q and the efficiency metrics over time.
     #[arg(long, value_name = "FILE.png")]
     plot: Option<PathBuf>,
-    /// A video of the episode: the robot's eye and an overview of the home side by side, 10
-    /// frames per simulated second, as an animated GIF.
-    #[arg(long, value_name = "FILE.gif")]
-    video: Option<PathBuf>,
-    /// The video's pictures' width and height, pixels.
-    #[arg(long, default_value_t = 256)]
-    video_size: u32,
-    /// How the video's pictures are drawn: realistic (materials, the home's sun with shadows,
-    /// room lamps) or fast (flat colours).
-    #[arg(long, default_value = "realistic")]
-    profile: ImageProfile,
+    #[command(flatten)]
+    video: VideoArgs,
     #[arg(long)]
     json: bool,
 }
@@ -85,15 +75,7 @@ pub fn run(args: RunArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         )?),
         None => None,
     };
-    let mut video = match &args.video {
-        Some(path) => {
-            let table = categories(&prelude.knowledge.taxonomy);
-            let mut video = Video::create(path, &env, (args.video_size, args.profile), table)?;
-            video.capture(&env, 0, env.score().map_or(0.0, |s| s.q), false)?;
-            Some(video)
-        }
-        None => None,
-    };
+    let mut video = args.video.start(&env, &prelude.knowledge.taxonomy)?;
     let bar = progress(args.steps, args.json);
     let dim = env.robot().map_or(0, |r| r.action_dim());
     let mut action = Vec::with_capacity(dim);
@@ -183,7 +165,7 @@ fn print_report(r: &RunReport, args: &RunArgs) {
     if let Some(path) = &args.plot {
         println!("  plotted to {}", path.display());
     }
-    if let (Some(path), Some(frames)) = (&args.video, r.video_frames) {
+    if let (Some(path), Some(frames)) = (&args.video.video, r.video_frames) {
         println!("  video of {frames} frames in {}", path.display());
     }
 }

@@ -5,15 +5,14 @@ use crate::episode::EpisodeArgs;
 use crate::prelude::{Prelude, counting_bar, median};
 use crate::sample::all_covering;
 use crate::scene::with_clutter;
-use crate::video::Video;
+use crate::video::{Video, VideoArgs};
 use anyhow::{Context, Result, bail};
 use behavior_env::record::{CHECKPOINT_EVERY, Recorder};
-use behavior_env::{Env, EnvConfig, EpisodeMetrics, categories};
+use behavior_env::{Env, EnvConfig, EpisodeMetrics};
 use behavior_planning::{
     Executed, GivenUp, Limits, Mode, PrimitiveSet, PrimitiveSpace, RecordedCall, RunError,
     Solution, Solver, Watcher,
 };
-use behavior_render::ImageProfile;
 use behavior_sim::STEP_SECONDS;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -37,16 +36,8 @@ pub struct SolveArgs {
     /// view` plays it in the browser).
     #[arg(long)]
     record: Option<PathBuf>,
-    /// A video of the episode: the robot's eye and an overview of the home side by side over
-    /// Q's curve, 10 frames per simulated second, as an animated GIF.
-    #[arg(long, value_name = "FILE.gif")]
-    video: Option<PathBuf>,
-    /// The video's pictures' width and height, pixels.
-    #[arg(long, default_value_t = 256)]
-    video_size: u32,
-    /// How the video's pictures are drawn: realistic or fast.
-    #[arg(long, default_value = "realistic")]
-    profile: ImageProfile,
+    #[command(flatten)]
+    video: VideoArgs,
     /// Primitives run at most.
     #[arg(long, default_value_t = Limits::default().primitives)]
     max_primitives: usize,
@@ -109,15 +100,7 @@ pub fn solve(args: SolveArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         )?),
         None => None,
     };
-    let video = match &args.video {
-        Some(path) => {
-            let table = categories(&prelude.knowledge.taxonomy);
-            let mut video = Video::create(path, &env, (args.video_size, args.profile), table)?;
-            video.capture(&env, 0, env.score().map_or(0.0, |s| s.q), false)?;
-            Some(video)
-        }
-        None => None,
-    };
+    let video = args.video.start(&env, &prelude.knowledge.taxonomy)?;
     let mut watch = Watch { recorder, video };
     let limits = Limits {
         primitives: args.max_primitives,
@@ -156,7 +139,7 @@ pub fn solve(args: SolveArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
                 path.display()
             );
         }
-        if let (Some(path), Some(frames)) = (&args.video, frames) {
+        if let (Some(path), Some(frames)) = (&args.video.video, frames) {
             println!("  video of {frames} frames in {}", path.display());
         }
     }

@@ -10,7 +10,8 @@
 use crate::map::text;
 use crate::render::{OVERVIEW_FOV, draw};
 use anyhow::{Context, Result, bail};
-use behavior_env::Env;
+use behavior_bddl::Taxonomy;
+use behavior_env::{Env, categories};
 use behavior_render::{Camera, CategoryTable, ImageProfile, Modality, Pixels, Renderer, View};
 use gif::{Encoder, Frame, Repeat};
 use image::{Rgb, RgbImage};
@@ -28,6 +29,39 @@ const CURVE: u32 = 40;
 const QUANTIZE_SPEED: i32 = 10;
 /// The sizes a picture may have, pixels.
 const SIZES: std::ops::RangeInclusive<u32> = 64..=2048;
+
+/// The command line's video options (`run`, `solve`).
+#[derive(clap::Args)]
+pub struct VideoArgs {
+    /// A video of the episode: the robot's eye and an overview of the home side by side over
+    /// Q's curve, 10 frames per simulated second, as an animated GIF.
+    #[arg(long, value_name = "FILE.gif")]
+    pub video: Option<PathBuf>,
+    /// The video's pictures' width and height, pixels.
+    #[arg(long, default_value_t = 256)]
+    pub video_size: u32,
+    /// How the video's pictures are drawn: realistic (materials, the home's sun with shadows,
+    /// room lamps) or fast (flat colours).
+    #[arg(long, default_value = "realistic")]
+    pub profile: ImageProfile,
+}
+
+impl VideoArgs {
+    /// The video asked for, started on `env`'s episode (its first frame drawn), or none.
+    pub fn start(&self, env: &Env, taxonomy: &Taxonomy) -> Result<Option<Video>> {
+        let Some(path) = &self.video else {
+            return Ok(None);
+        };
+        let mut video = Video::create(
+            path,
+            env,
+            (self.video_size, self.profile),
+            categories(taxonomy),
+        )?;
+        video.capture(env, 0, env.score().map_or(0.0, |s| s.q), false)?;
+        Ok(Some(video))
+    }
+}
 
 /// An episode's video being written.
 pub struct Video {

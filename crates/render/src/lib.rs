@@ -57,6 +57,7 @@ mod pipeline;
 mod profile;
 mod renderer;
 mod shadow;
+mod sunlight;
 mod targets;
 mod texture;
 

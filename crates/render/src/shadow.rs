@@ -6,6 +6,10 @@
 //! Two maps because a CPU rasterizer pays for every triangle: a home's fixed geometry is most
 //! of its triangles and stays put, while what moves is little and near.
 //!
+//! Where asked (`Renderer::set_sun_through_windows`), the fixed map sees the walls cut at their
+//! windows and a roof over them (`sunlight.rs`), so that the sun comes in through the windows
+//! only.
+//!
 //! A third map, the sky map, sees the fixed geometry straight from above: how much of the sky
 //! over a point's neighbourhood is covered by something higher (a table top, a shelf, the walls
 //! of a corner) is how much ambient light it loses — ambient occlusion from the fixed geometry,
@@ -21,9 +25,10 @@ use crate::camera::fixed_bounds;
 use crate::finish::object_seed;
 use crate::instances::rows;
 use crate::lighting::{Lamp, ShadowMatrices};
-use crate::mesh::{Drawn, MeshStore, hash_words};
+use crate::mesh::{Drawn, MeshKey, MeshStore, hash_words};
 use crate::pipeline::uniform_layout;
-use behavior_sim::{BodyKind, Material, ModelLibrary, ObjectId, World};
+use crate::sunlight::{Slab, sun_casters};
+use behavior_sim::{BodyKind, Material, ModelLibrary, ObjectId, Primitive, VisualShape, World};
 use rapier3d::glamx::{Mat4, Vec3A, Vec4};
 use rapier3d::math::Vector;
 
@@ -300,16 +305,31 @@ impl ShadowMaps {
         looked_at: Vector,
         half: f32,
     ) -> ShadowMatrices {
-        let (fixed, moving) = casters(ctx.world, ctx.hidden, ctx.meshes, ctx.models);
+        let Casters {
+            fixed,
+            moving,
+            walls,
+        } = casters(
+            ctx.world,
+            ctx.hidden,
+            ctx.meshes,
+            ctx.models,
+            ctx.through_windows,
+        );
+        let sunlit = if ctx.through_windows {
+            sunlit(ctx.world, ctx.meshes, &fixed, &walls)
+        } else {
+            fixed.clone()
+        };
         let Some((lo, hi)) = bounds(ctx.world) else {
             return ShadowMatrices::default();
         };
         let sun = ctx.sun;
         let lamp = ctx.lamp.and_then(|l| self.lamp(ctx, &l, [&fixed, &moving]));
-        let fixed_key = key(&fixed, &sun.to_array());
+        let fixed_key = key(&sunlit, &sun.to_array()) ^ key(&fixed, &[]);
         if self.fixed_key.map(|(k, _)| k) != Some(fixed_key) {
             let matrix = light_matrix(sun, lo, hi, None);
-            let drawn = self.draw(ctx, (Which::Fixed, Facing::Along(sun)), &fixed, matrix);
+            let drawn = self.draw(ctx, (Which::Fixed, Facing::Along(sun)), &sunlit, matrix);
             self.fixed_key = Some((fixed_key, drawn.then_some(matrix)));
             let above = light_matrix(Vector::Z, lo, hi, None);
             let drawn = self.draw(ctx, (Which::Sky, Facing::Along(Vector::Z)), &fixed, above);
@@ -480,6 +500,8 @@ pub(crate) struct ShadowContext<'a> {
     pub(crate) sun: Vector,
     /// The lamp of the camera's room, whose shadows are drawn.
     pub(crate) lamp: Option<Lamp>,
+    /// Whether the sun comes in through the windows only (`sunlight.rs`).
+    pub(crate) through_windows: bool,
 }
 
 #[derive(Clone, Copy)]
@@ -525,22 +547,59 @@ fn bounds(world: &World) -> Option<(Vector, Vector)> {
     Some((lo - Vector::splat(0.5), hi + Vector::new(0.5, 0.5, 1.0)))
 }
 
+/// The world's casters.
+struct Casters {
+    /// Of fixed objects' bodies.
+    fixed: Vec<Caster>,
+    /// Of everything else.
+    moving: Vec<Caster>,
+    /// Which of `fixed` are walls' (the sun's map casts them cut at the windows).
+    walls: Vec<usize>,
+}
+
+/// What the sun's map of the fixed geometry casts: `fixed` with the walls (`walls`) cut at their
+/// windows and a roof over them, where the world has walls; `fixed` as it is otherwise.
+fn sunlit(world: &World, meshes: &mut MeshStore, fixed: &[Caster], walls: &[usize]) -> Vec<Caster> {
+    let Some(sun) = sun_casters(world) else {
+        return fixed.to_vec();
+    };
+    let unit = Primitive::Box {
+        half_extents: Vector::ONE,
+    };
+    let mesh = meshes.id(MeshKey::UnitBox, &VisualShape::Primitive(&unit));
+    let slab = |s: &Slab| Caster {
+        mesh,
+        model: rows(&s.pose, s.half),
+        centre: s.pose.translation,
+        reach: s.half.length(),
+    };
+    let kept = fixed
+        .iter()
+        .enumerate()
+        .filter(|(k, _)| walls.binary_search(k).is_err())
+        .map(|(_, c)| *c);
+    kept.chain(sun.slabs.iter().map(slab)).collect()
+}
+
 /// The world's casters: fixed ones (bodies of fixed objects) and moving ones (the rest).
 fn casters(
     world: &World,
     hidden: &[ObjectId],
     meshes: &mut MeshStore,
     models: &ModelLibrary,
-) -> (Vec<Caster>, Vec<Caster>) {
-    let (mut fixed, mut moving) = (Vec::new(), Vec::new());
+    through_windows: bool,
+) -> Casters {
+    let (mut fixed, mut moving, mut walls) = (Vec::new(), Vec::new(), Vec::new());
     for (id, object) in world.objects() {
         if !object.is_present() || hidden.contains(&id) {
             continue;
         }
         let still = object.body_kind == BodyKind::Fixed;
         let seed = object_seed(world, id);
+        // A window's casement is glazed: the sun comes through it (its frame casts).
+        let glazed = through_windows && object.category == "window.n.01";
         for part in world.core().visual_parts_with(id, models) {
-            if part.visual.material == Material::Glass {
+            if part.visual.material == Material::Glass || glazed && part.link.is_some() {
                 continue;
             }
             let drawn = Drawn::of(&part.shape, seed);
@@ -551,13 +610,20 @@ fn casters(
                 reach: drawn.reach,
             };
             if still && part.link.is_none() {
+                if object.category == "wall.n.01" {
+                    walls.push(fixed.len());
+                }
                 fixed.push(caster);
             } else {
                 moving.push(caster);
             }
         }
     }
-    (fixed, moving)
+    Casters {
+        fixed,
+        moving,
+        walls,
+    }
 }
 
 /// Appends a caster's triangles, placed in the world; of a closed mesh only those that face

@@ -176,7 +176,7 @@ impl Renderer {
             targets: Vec::new(),
             cull: true,
             ambient_occlusion: true,
-            sun_through_windows: false,
+            sun_through_windows: true,
             normal_detail: true,
             stats: FrameStats::default(),
             realistic: None,
@@ -215,11 +215,10 @@ impl Renderer {
         self.ambient_occlusion = on;
     }
 
-    /// Lets the sun into a home through its windows only (a roof over the walls and the walls cut
-    /// at the windows, in the sun's map alone), or from above as well (the default: the homes
-    /// have no ceilings). Off by default while it is checked in whole homes: in a test room it
-    /// lights the floor under the windows and nothing else; in the sampled homes looked at so
-    /// far no sunlit patch showed.
+    /// Lets the sun into a home through its windows only (the default: a roof over the walls and
+    /// the walls cut at the windows, in the sun's map alone, as a home with ceilings has it), or
+    /// from above as well (off: the homes have no ceilings, so that an overview sees into every
+    /// room), to compare. A world without walls is lit from above either way.
     pub fn set_sun_through_windows(&mut self, on: bool) {
         self.sun_through_windows = on;
     }

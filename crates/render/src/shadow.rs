@@ -6,9 +6,9 @@
 //! Two maps because a CPU rasterizer pays for every triangle: a home's fixed geometry is most
 //! of its triangles and stays put, while what moves is little and near.
 //!
-//! Where asked (`Renderer::set_sun_through_windows`), the fixed map sees the walls cut at their
-//! windows and a roof over them (`sunlight.rs`), so that the sun comes in through the windows
-//! only.
+//! The fixed map sees the walls cut at their windows and a roof over them (`sunlight.rs`), so
+//! that the sun comes in through the windows only (`Renderer::set_sun_through_windows` turns
+//! that off, to compare).
 //!
 //! A third map, the sky map, sees the fixed geometry straight from above: how much of the sky
 //! over a point's neighbourhood is covered by something higher (a table top, a shelf, the walls

@@ -795,19 +795,21 @@ fn room(windows: bool) -> (World, ObjectId, Camera) {
     (world, floor, above)
 }
 
-/// Asked to (`Renderer::set_sun_through_windows`), the sun comes into a walled room through its
-/// windows only: a windowless room's floor is all in shade (the homes have no ceilings, but the
-/// sun's map lays a roof over the walls), and with a window in each wall the sun lights patches
-/// of the floor under the one it faces. (Off, the default, the sun falls from above: in a room
-/// this small the walls shade most of the floor then too, 319 against 316 as the floor's median
-/// brightness, so that is left to the post's test above.)
+/// The sun comes into a walled room through its windows only (the default): a windowless
+/// room's floor is all in shade (the homes have no ceilings, but the sun's map lays a roof over
+/// the walls), and with a window in each wall the sun lights patches of the floor under the one
+/// it faces. (`Renderer::set_sun_through_windows(false)` lets the sun fall from above too; in a
+/// room this small the walls shade most of the floor from the side anyway, 319 against 316 as
+/// the floor's median brightness, so that is left to the post's test.)
 #[test]
-fn the_sun_comes_into_a_room_through_its_windows_when_asked() {
-    let lit_with = |windows, through: bool| {
+fn the_sun_comes_into_a_room_through_its_windows() {
+    let lit_with = |windows, through: Option<bool>| {
         let (world, floor, above) = room(windows);
         let categories = categories();
         let mut renderer = Renderer::new().unwrap();
-        renderer.set_sun_through_windows(through);
+        if let Some(on) = through {
+            renderer.set_sun_through_windows(on);
+        }
         let mut view = View::with_profile(above, ImageProfile::Realistic);
         let frame = renderer
             .render(&scene(&world, &categories), &mut view, &Modality::ALL)
@@ -824,7 +826,8 @@ fn the_sun_comes_into_a_room_through_its_windows_when_asked() {
             .count();
         (bright, b.len())
     };
-    let lit = |windows| lit_with(windows, true);
+    // The default.
+    let lit = |windows| lit_with(windows, None);
     let (closed, seen) = lit(false);
     assert!(seen > 1000, "the floor fills the view: {seen} pixels");
     assert!(
@@ -833,6 +836,11 @@ fn the_sun_comes_into_a_room_through_its_windows_when_asked() {
     );
     let (open, seen) = lit(true);
     // Measured: none closed; 143 of 1,936 (7 %) through the windows.
+    assert_eq!(
+        lit_with(true, Some(true)),
+        (open, seen),
+        "the default is through the windows"
+    );
     assert!(
         open > seen / 30,
         "only {open} of {seen} floor pixels sunlit through the windows"

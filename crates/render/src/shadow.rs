@@ -309,13 +309,7 @@ impl ShadowMaps {
             fixed,
             moving,
             walls,
-        } = casters(
-            ctx.world,
-            ctx.hidden,
-            ctx.meshes,
-            ctx.models,
-            ctx.through_windows,
-        );
+        } = casters(ctx.world, ctx.hidden, ctx.meshes, ctx.models);
         let sunlit = if ctx.through_windows {
             sunlit(ctx.world, ctx.meshes, &fixed, &walls)
         } else {
@@ -587,7 +581,6 @@ fn casters(
     hidden: &[ObjectId],
     meshes: &mut MeshStore,
     models: &ModelLibrary,
-    through_windows: bool,
 ) -> Casters {
     let (mut fixed, mut moving, mut walls) = (Vec::new(), Vec::new(), Vec::new());
     for (id, object) in world.objects() {
@@ -596,10 +589,8 @@ fn casters(
         }
         let still = object.body_kind == BodyKind::Fixed;
         let seed = object_seed(world, id);
-        // A window's casement is glazed: the sun comes through it (its frame casts).
-        let glazed = through_windows && object.category == "window.n.01";
         for part in world.core().visual_parts_with(id, models) {
-            if part.visual.material == Material::Glass || glazed && part.link.is_some() {
+            if part.visual.material == Material::Glass {
                 continue;
             }
             let drawn = Drawn::of(&part.shape, seed);

@@ -1,4 +1,4 @@
-"""The benchmark's evaluation protocol (reference §6.2): per activity nine episodes over seen
+"""The benchmark's evaluation protocol (BEHAVIOR's `behavior/benchmark/behavior_benchmark.py`): per activity nine episodes over seen
 and unseen instances, each episode's metrics, and their summary.
 
 Instances are named by the original's ids: 0–9 *seen poses* (seeds 0–9 in the activity's first

@@ -39,9 +39,9 @@ fn covering_homes(py: Python<'_>, activity: String) -> PyResult<Vec<String>> {
         .map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
-/// The benchmark protocol's summary (reference §6.2) of episodes, each `(activity, metrics)`
-/// with the metrics as `Env.metrics_json()` gives them: a JSON object (success score, its top
-/// 5 per-activity means, and the efficiency metrics' means).
+/// The benchmark protocol's summary (BEHAVIOR's `behavior/benchmark/behavior_benchmark.py`) of
+/// episodes, each `(activity, metrics)` with the metrics as `Env.metrics_json()` gives them: a JSON
+/// object (success score, its top 5 per-activity means, and the efficiency metrics' means).
 #[pyfunction]
 fn aggregate(episodes: Vec<(String, String)>) -> PyResult<String> {
     let parsed = episodes

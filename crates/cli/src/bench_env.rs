@@ -1,8 +1,9 @@
 //! `behavior bench env`: environment steps per second for both robots, idle and random agents,
 //! physics at 1/300 and 1/120 s, state only; then the BehaviorRobot with its eye camera's RGB,
 //! depth and segmentation at 128² and 512², in the image profiles asked for (realistic and fast
-//! by default) side by side, rendered on whatever adapter there is (lavapipe on a CPU). On the original's speed-benchmark activities in a covering home with clutter; the time
-//! split as the original reports it (the images are the observation time), and memory per env.
+//! by default) side by side, rendered on whatever adapter there is (lavapipe on a CPU). On the
+//! original's speed-benchmark activities in a covering home with clutter; the time split as the
+//! original reports it (the images are the observation time), and memory per env.
 
 use crate::episode::{physics, robot_kind};
 use crate::prelude::Prelude;
@@ -17,7 +18,7 @@ use std::path::Path;
 use std::process::ExitCode;
 use std::sync::Arc;
 
-/// The original's runtime activities (reference §8).
+/// The original's runtime activities (iGibson's speed benchmark, `envs/benchmark_env.py`).
 const ACTIVITIES: [&str; 3] = [
     "bringing_in_wood",
     "re-shelving_library_books",

@@ -21,7 +21,7 @@ use std::process::ExitCode;
 use std::sync::Arc;
 use std::time::Instant;
 
-/// The original's runtime activities (reference §8).
+/// The original's runtime activities (iGibson's speed benchmark, `envs/benchmark_env.py`).
 const ACTIVITIES: [&str; 3] = [
     "bringing_in_wood",
     "re-shelving_library_books",

@@ -12,9 +12,10 @@ use std::sync::Arc;
 /// The default episode length, in action steps (1/30 s each): 6,000 steps, 200 s simulated.
 ///
 /// The original truncates at twice the mean length of the human demonstrations of the activity
-/// (reference §6.2). Until our own demonstrations exist there is no such mean, so every activity
-/// gets this one limit: long enough for a person to do any of the 100 activities at a calm pace
-/// in our homes, short enough that a random agent's episode ends in seconds of wall time.
+/// (BEHAVIOR's `behavior/benchmark/behavior_benchmark.py`). Until our own demonstrations exist
+/// there is no such mean, so every activity gets this one limit: long enough for a person to do any
+/// of the 100 activities at a calm pace in our homes, short enough that a random agent's episode
+/// ends in seconds of wall time.
 pub const DEFAULT_MAX_STEPS: u32 = 6000;
 
 /// Where each episode's initial state comes from.
@@ -83,7 +84,8 @@ pub struct EnvConfig {
     pub instances: Instances,
     /// The embodiment.
     pub robot: RobotKind,
-    /// The BehaviorRobot's action space (its reduced spaces, reference §4.2).
+    /// The BehaviorRobot's action space (its reduced spaces, iGibson 2.0.3's
+    /// `robots/behavior_robot.py`).
     pub action_space: ActionSpace,
     /// Physics substeps of each 1/30 s action step: 1/300 s (default) or 1/120 s.
     pub physics: Substeps,

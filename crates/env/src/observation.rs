@@ -1,7 +1,8 @@
 //! What the agent perceives: proprioception, the full-observability `task_obs` vector, and
 //! what [`Sensor`]s add (the robot's camera and lidar of `sensors.rs`, or one's own).
 //!
-//! `task_obs` follows iGibson 2.0's full-observability layout (reference §4.2), 456 numbers:
+//! `task_obs` follows iGibson 2.0's full-observability layout (iGibson 2.0.3's
+//! `robots/behavior_robot.py`), 456 numbers:
 //!
 //! | index | value |
 //! |---|---|

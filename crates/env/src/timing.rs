@@ -1,6 +1,6 @@
-//! Where a step's time goes, split as the original's speed benchmark reports it (reference §8):
-//! physics (the substeps with the robot's control), the state rules (non-physics), the goal
-//! check with the metrics, and the observations.
+//! Where a step's time goes, split as the original's speed benchmark reports it (iGibson's speed
+//! benchmark, `envs/benchmark_env.py`): physics (the substeps with the robot's control), the state
+//! rules (non-physics), the goal check with the metrics, and the observations.
 
 use behavior_sim::{StepHooks, World};
 use std::time::{Duration, Instant};

@@ -1,7 +1,7 @@
-//! The primitive action space of the original (reference §5): `Discrete(n × K)` over the
-//! activity's objects and a set of primitives, action `a` meaning object `a mod n` and primitive
-//! `a div n`, with a mask of the actions whose preconditions hold now (for sb3-contrib's
-//! MaskablePPO).
+//! The primitive action space of the original (iGibson 2.0.3's `envs/behavior_mp_env.py`):
+//! `Discrete(n × K)` over the activity's objects and a set of primitives, action `a` meaning object
+//! `a mod n` and primitive `a div n`, with a mask of the actions whose preconditions hold now (for
+//! sb3-contrib's MaskablePPO).
 //!
 //! PLACE_ONTOP on a room's floor places on the floor (the `onfloor` relation), as the
 //! original's does on a RoomFloor: the paper's six have no other way to put a thing down on a

@@ -548,7 +548,7 @@ fn beside_base(body: &ArmBody, [x, z]: [f32; 2], way: Rotation, side: f32) -> Op
 /// Carrying goals planned to before the arm stays as it is.
 const CARRY_TRIES: usize = 3;
 
-/// iGibson's tucked arm joints (robots reference §1.6).
+/// iGibson's tucked arm joints (iGibson 2.0.3's `robots/fetch_gripper_robot.py`).
 const TUCKED: [f32; 7] = [1.1708, 1.4708, -0.4, 1.6708, 0.0, FRAC_PI_2, 0.0];
 
 /// The arm taken to the first of `goals` (in the world) with a free IK solution that a plan in

@@ -1,6 +1,7 @@
 //! The BehaviorRobot's hand as a free-flying 6-D body — position and roll, pitch, yaw in the
-//! world — for the hand planner of the original's motion-planning primitives (reference §5:
-//! bounds the box of the hand and the goal ±0.5 m, weights (1, 1, 1, 5, 5, 5), resolution
+//! world — for the hand planner of the original's motion-planning primitives (iGibson 2.0.3's
+//! `envs/behavior_mp_env.py`: bounds the box of the hand and the goal ±0.5 m, weights (1, 1, 1, 5,
+//! 5, 5), resolution
 //! 0.02). What the hand holds moves with it and is checked with it; the hand must stay within
 //! its reach of the shoulder (a target beyond it would be pulled back and leave the plan).
 

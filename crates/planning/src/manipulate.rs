@@ -1,7 +1,8 @@
 //! Physical GRASP and PLACE_* for the BehaviorRobot (the paper's fully simulated primitives,
-//! reference §5): the hand's motion planned in [`HandSpace`] and executed as the robot's own
-//! hand actions, one step of physics each; the grasp made by the assisted grasp as the trigger
-//! closes, the placement by letting go above a pose the world's sampler found, then settling.
+//! iGibson 2.0.3's `envs/behavior_mp_env.py`): the hand's motion planned in [`HandSpace`] and
+//! executed as the robot's own hand actions, one step of physics each; the grasp made by the
+//! assisted grasp as the trigger closes, the placement by letting go above a pose the world's
+//! sampler found, then settling.
 //!
 //! - GRASP: palm down over the top of the object's box ([`APPROACH_HEIGHT`] above it, ±
 //!   [`GRASP_JITTER`], a random heading), down in steps of [`DESCENT_STEP`] until the hand
@@ -19,10 +20,11 @@
 //!   it backs out the same way after ([`plan_with_approach`], [`back_out`]).
 //!
 //! Where we differ: the original retracts along the reversed approach, we back out of the
-//! last straight stretch and then plan the way back with what the hand now carries (a carton lifted off a table, retraced, drags through the
-//! table's edge); it forces the assisted grasp after closing if the hand touches the object, we
-//! report the miss; after placing, the original leaves the hand where it let go, ours comes
-//! back, so that the next NAVIGATE_TO finds the robot as compact as it started.
+//! last straight stretch and then plan the way back with what the hand now carries (a carton lifted
+//! off a table, retraced, drags through the table's edge); it forces the assisted grasp after
+//! closing if the hand touches the object, we report the miss; after placing, the original leaves
+//! the hand where it let go, ours comes back, so that the next NAVIGATE_TO finds the robot as
+//! compact as it started.
 
 use crate::base::BaseConfig;
 use crate::execute::Watcher;

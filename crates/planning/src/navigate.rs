@@ -1,5 +1,5 @@
-//! Where the base may stand to act on an object — NAVIGATE_TO's pose search (reference §5) — and
-//! the robot's footprint, read from the world.
+//! Where the base may stand to act on an object — NAVIGATE_TO's pose search (iGibson 2.0.3's
+//! `envs/behavior_mp_env.py`) — and the robot's footprint, read from the world.
 
 use crate::base::{BaseConfig, Footprint, KEEL, stands_inside};
 use behavior_core::FLOOR_SYNSET;

@@ -1,4 +1,5 @@
-//! The action primitives (reference §5 and OmniGibson's symbolic set) and why one fails.
+//! The action primitives (iGibson 2.0.3's `envs/behavior_mp_env.py` and OmniGibson's symbolic set)
+//! and why one fails.
 
 use behavior_sim::{ObjectId, PlacementError, Relation, StateError};
 use serde::{Deserialize, Serialize};

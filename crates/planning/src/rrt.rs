@@ -1,5 +1,6 @@
 //! Bidirectional RRT (RRT-Connect) with restarts and shortcut smoothing, over any [`Space`]; the
-//! search of the original's `birrt` (reference §5), its parameters the defaults.
+//! search of the original's `birrt` (iGibson 2.0.3's `envs/behavior_mp_env.py`), its parameters the
+//! defaults.
 
 use crate::error::PlanError;
 use behavior_core::rng::{SimRng, seeded, uniform};

@@ -1,6 +1,6 @@
-//! Symbolic ("magic") primitives: the feasibility checks of reference §5, then the outcome set
-//! at once — the robot teleported, the object put in the hand, placed by the world's sampler,
-//! joints opened, states set.
+//! Symbolic ("magic") primitives: the feasibility checks of iGibson 2.0.3's
+//! `envs/behavior_mp_env.py`, then the outcome set at once — the robot teleported, the object put
+//! in the hand, placed by the world's sampler, joints opened, states set.
 
 use crate::base::BaseConfig;
 use crate::navigate::{Standing, floor_gap};
@@ -345,11 +345,11 @@ fn carry_contents(world: &mut World, object: ObjectId, contents: &[Contents]) {
 }
 
 /// OPEN's outcome: the object opened as the world's setter opens it (a random non-empty subset
-/// of its joints, as the original's `Open.set_value(True)`, reference §5) where it is shut,
-/// what lies in a drawer carried with it ([`carry_contents`]), then each of its doors and
-/// lids swung all the way. A fridge door opened a tenth of its swing reads as open, and a hand
-/// carrying a box into the fridge meets the door. Drawers keep the setter's subset: pulled all
-/// the way, an upper drawer covers the one below it.
+/// of its joints, as the original's `Open.set_value(True)`, iGibson 2.0.3's
+/// `envs/behavior_mp_env.py`) where it is shut, what lies in a drawer carried with it
+/// ([`carry_contents`]), then each of its doors and lids swung all the way. A fridge door opened a
+/// tenth of its swing reads as open, and a hand carrying a box into the fridge meets the door.
+/// Drawers keep the setter's subset: pulled all the way, an upper drawer covers the one below it.
 fn open_wide(world: &mut World, object: ObjectId, robot: &[ObjectId]) -> Result<(), Failure> {
     let contents = contents(world, object, robot);
     if !world.state(object, Predicate::Open) {

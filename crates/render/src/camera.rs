@@ -42,7 +42,8 @@ pub struct Camera {
     pub vertical_fov: f32,
 }
 
-/// The BehaviorRobot's eye camera: 128 × 128 pixels, 120° vertically (reference §4.2).
+/// The BehaviorRobot's eye camera: 128 × 128 pixels, 120° vertically (iGibson 2.0.3's
+/// `robots/behavior_robot.py`).
 pub const EYE_SIZE: u32 = 128;
 /// The eye camera's vertical field of view, rad (120°).
 pub const EYE_FOV: f32 = 2.0 * std::f32::consts::FRAC_PI_3;

@@ -1,7 +1,7 @@
 //! Lidar: beams cast through the world's batched ray queries ([`behavior_sim::Core::cast_rays`]),
 //! as points and as a range image.
 //!
-//! Fetch's base laser (robots reference §1.4): a SICK TIM571 mounted at (0.235, 0, 0.2878) on the
+//! Fetch's base laser (Fetch's URDF): a SICK TIM571 mounted at (0.235, 0, 0.2878) on the
 //! base, 220°, 0.05–25 m; iGibson casts 220 rays over the 220°. [`Lidar::fetch_base`] is that.
 //! A 3-D scan is rows of such fans at elevations spread over a vertical field of view.
 

@@ -1,8 +1,8 @@
 //! The BehaviorRobot's action: 26 numbers in [−1, 1], checked once when it is made, so a robot
 //! only ever sees a valid one.
 //!
-//! Layout (iGibson 2.0's `BehaviorEnv`, reference §4.2: the 28-d raw vector without its two
-//! "reset" entries):
+//! Layout (iGibson 2.0's `BehaviorEnv`, iGibson 2.0.3's `robots/behavior_robot.py`: the 28-d raw
+//! vector without its two "reset" entries):
 //!
 //! | index | part | meaning |
 //! |---|---|---|
@@ -221,8 +221,8 @@ impl ActionSpace {
         ActionSpace::ALL.into_iter().find(|s| s.name() == name)
     }
 
-    /// How many values a BehaviorRobot action of this space has (Fetch's: [`ActionSpace::fetch_dim`]);
-    /// 0 for [`ActionSpace::Joints`], which it has not.
+    /// How many values a BehaviorRobot action of this space has (Fetch's:
+    /// [`ActionSpace::fetch_dim`]); 0 for [`ActionSpace::Joints`], which it has not.
     pub fn dim(self) -> usize {
         match self {
             ActionSpace::Full => ACTION_DIM,

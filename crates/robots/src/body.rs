@@ -1,5 +1,5 @@
 //! The BehaviorRobot's body and eye, and where its hands and eye may go relative to the body
-//! (reference §2.1–2.2, tracked mode, the default).
+//! (iGibson 2.0.3's `robots/behavior_robot.py`, tracked mode, the default).
 //!
 //! The body is a capsule of the original's bounding box (0.5 × 0.5 × 1.0 m) and mass (15 kg),
 //! floating with its origin at [`BODY_HEIGHT`] above the floor by default. The eye is a frame,
@@ -30,7 +30,7 @@ pub const EYE_REACH: f32 = 0.5;
 
 /// A shoulder, in the body frame: the centre of its hand's reach sphere. (The original's
 /// constants for tracked and untracked bodies are swapped in its code, twice, so that the net
-/// effect is z = +0.3; this is that effect — reference §2.4.)
+/// effect is z = +0.3; this is that effect — iGibson 2.0.3's `robots/behavior_robot.py`.)
 pub(crate) fn shoulder(side: Side) -> Vector {
     Vector::new(-0.15, side.sign() * 0.15, 0.3)
 }

@@ -90,10 +90,11 @@ struct Config {
     joints: FetchJoints,
 }
 
-/// The Fetch mobile manipulator (iGibson 2.0's `FetchGripper`, reference §4.3): a
-/// differential-drive base, a torso lift, a pan/tilt head with the camera, a 7-joint arm and a
-/// parallel gripper, driven by an 11-d [`FetchAction`] whose end-effector part goes through
-/// inverse kinematics ([`IkSolver`]), holding things by assisted grasping ([`GraspRules`]).
+/// The Fetch mobile manipulator (iGibson 2.0's `FetchGripper`, iGibson 2.0.3's
+/// `robots/fetch_gripper_robot.py`): a differential-drive base, a torso lift, a pan/tilt head with
+/// the camera, a 7-joint arm and a parallel gripper, driven by an 11-d [`FetchAction`] whose
+/// end-effector part goes through inverse kinematics ([`IkSolver`]), holding things by assisted
+/// grasping ([`GraspRules`]).
 ///
 /// **Body model.** Every link is a kinematic body, moved each substep to where the joint
 /// positions put it (forward kinematics from the URDF's joint table, `fetch_body.rs`):
@@ -658,9 +659,10 @@ impl Fetch {
         }
     }
 
-    /// The assisted grasp (reference §4.3): a body touching both fingers, the one closest to
-    /// the gripper's centre, if the rules let it be held; attached to the palm where it
-    /// touches, its contacts with the gripper off and the fingers frozen while held.
+    /// The assisted grasp (iGibson 2.0.3's `robots/fetch_gripper_robot.py`): a body touching both
+    /// fingers, the one closest to the gripper's centre, if the rules let it be held; attached to
+    /// the palm where it touches, its contacts with the gripper off and the fingers frozen while
+    /// held.
     fn try_grasp(&mut self, world: &mut World) {
         let Some((body, at)) = self.candidate(world) else {
             return;

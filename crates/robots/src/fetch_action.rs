@@ -1,10 +1,12 @@
-//! Fetch's action: 11 numbers in [−1, 1], as iGibson 2.0's `FetchGripper` (reference §4.3, and
-//! robots-reference §3 for the scaling), checked once when it is made.
+//! Fetch's action: 11 numbers in [−1, 1], as iGibson 2.0's `FetchGripper` (iGibson 2.0.3's
+//! `robots/fetch_gripper_robot.py`, and iGibson 2.0.3's `fetch_gripper_robot.py` for the scaling),
+//! checked once when it is made.
 //!
 //! | index | meaning | 1.0 means |
 //! |---|---|---|
 //! | 0 | base linear velocity (differential drive) | 1 m/s forward |
-//! | 1 | base angular velocity | π rad/s counter-clockwise (iGibson 2.0.3 turns clockwise, a wheel-order bug) |
+//! | 1 | base angular velocity | π rad/s counter-clockwise (iGibson 2.0.3 turns clockwise, a
+//! wheel-order bug) |
 //! | 2, 3 | head pan and tilt velocity | 1.57 rad/s |
 //! | 4–6 | end-effector Δ position in the base frame | 0.05 m |
 //! | 7–9 | end-effector Δ orientation (axis-angle, base frame) | 0.262 rad |
@@ -26,7 +28,8 @@
 //! |---|---|---|
 //! | 0–3 | base and head, as above | |
 //! | 4 | torso lift velocity | its maximum, 0.1 m/s |
-//! | 5–11 | arm joint velocities, shoulder pan to wrist roll | each joint's maximum (1.26–2.27 rad/s) |
+//! | 5–11 | arm joint velocities, shoulder pan to wrist roll | each joint's maximum (1.26–2.27
+//! rad/s) |
 //! | 12 | gripper, as above | |
 //!
 //! The first four and the last have the same meaning in both, so [`FetchCommand`] reads them

@@ -1,15 +1,15 @@
-//! Fetch's joints, links and numbers (reference §1, from Fetch's own URDF), its forward
+//! Fetch's joints, links and numbers (from Fetch's own URDF), its forward
 //! kinematics, and the world objects its parts are built as.
 //!
 //! Frames as in the URDF: x forward, y left, z up; every link frame sits on its joint, so a
 //! chain is a product of "go to the joint's origin, then move along or about its axis". The
 //! robot's origin (`base_link`) is on the floor between the wheels.
 //!
-//! Shapes are our own primitives with the bounding boxes of the real links (reference §1.2):
-//! the base a cylinder (raised 3 cm, as iGibson raises its base mesh), the torso and head boxes,
-//! the arm segments capsules along x, the palm a box, each finger a pad box. The wheels, the
-//! laser and the head camera are frames, not bodies: the wheels lie inside the base's cylinder.
-//! The head tilt has no +15° offset (Fetch's URDF; iGibson's own copy adds one).
+//! Shapes are our own primitives with the bounding boxes of the real links (Fetch's URDF and its
+//! STL meshes): the base a cylinder (raised 3 cm, as iGibson raises its base mesh), the torso and
+//! head boxes, the arm segments capsules along x, the palm a box, each finger a pad box. The
+//! wheels, the laser and the head camera are frames, not bodies: the wheels lie inside the base's
+//! cylinder. The head tilt has no +15° offset (Fetch's URDF; iGibson's own copy adds one).
 
 use behavior_core::AGENT_SYNSET;
 use behavior_sim::{
@@ -58,7 +58,7 @@ pub enum FetchJoint {
 /// How many joints Fetch reports.
 pub const FETCH_JOINTS: usize = 14;
 
-/// One joint's numbers from Fetch's URDF (reference §1.1).
+/// One joint's numbers from Fetch's URDF.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct JointInfo {
     /// The URDF name.
@@ -102,7 +102,7 @@ const X: [f32; 3] = [1.0, 0.0, 0.0];
 const Y: [f32; 3] = [0.0, 1.0, 0.0];
 const Z: [f32; 3] = [0.0, 0.0, 1.0];
 
-/// Fetch's joints in [`FetchJoint`] order (reference §1.1).
+/// Fetch's joints in [`FetchJoint`] order (Fetch's URDF).
 const JOINTS: [JointInfo; FETCH_JOINTS] = [
     joint(
         "r_wheel_joint",
@@ -292,8 +292,9 @@ pub const BASE_RADIUS: f32 = 0.28;
 /// The whole robot's mass as built, kg (the URDF's links; the real robot ≈ 113 kg).
 pub const FETCH_MASS: f32 = 121.0;
 
-/// The arm joints of iGibson's BEHAVIOR start pose, `diagonal30` (reference §1.6): the gripper
-/// in front of the robot, pointing down and 30° toward +y.
+/// The arm joints of iGibson's BEHAVIOR start pose, `diagonal30` (iGibson 2.0.3's
+/// `robots/fetch_gripper_robot.py`): the gripper in front of the robot, pointing down and 30°
+/// toward +y.
 pub const DIAGONAL30: [f32; 7] = [
     -1.06595, -0.22184, 1.53448, 1.46076, -0.84995, 1.36904, 1.90996,
 ];
@@ -453,8 +454,8 @@ impl FetchJoints {
     }
 }
 
-/// Link masses from the URDF, kg (reference §1.2): the base with its wheels and fixed torso,
-/// the wrist roll with the palm.
+/// Link masses from the URDF, kg (Fetch's URDF and its STL meshes): the base with its wheels and
+/// fixed torso, the wrist roll with the palm.
 const MASSES: [f32; FETCH_LINKS] = [
     70.13 + 2.0 * 4.354 + 13.28,
     10.78,
@@ -514,7 +515,7 @@ fn base_cylinder() -> Part {
     )
 }
 
-/// A link's collision parts in its own frame (bounding boxes of reference §1.2).
+/// A link's collision parts in its own frame (bounding boxes of Fetch's URDF and its STL meshes).
 pub(crate) fn link_parts(link: FetchLink) -> Vec<Part> {
     use FetchLink as L;
     match link {
@@ -675,7 +676,7 @@ mod tests {
 
     #[test]
     fn forward_kinematics_matches_the_reference_poses() {
-        // All zero: the eef at (1.128, 0, 0.786 + q), pointing +x (reference §1.5).
+        // All zero: the eef at (1.128, 0, 0.786 + q), pointing +x (Fetch's URDF).
         let zero = FetchJoints {
             torso: 0.1,
             head: [0.0; 2],
@@ -686,7 +687,8 @@ mod tests {
             close(eef.translation, [1.1281, 0.0, 0.886], 1e-3),
             "{eef:?}"
         );
-        // diagonal30 at torso 0.385: (0.553, −0.127, 0.982), pointing down (reference §1.6).
+        // diagonal30 at torso 0.385: (0.553, −0.127, 0.982), pointing down (iGibson 2.0.3's
+        // `robots/fetch_gripper_robot.py`).
         let start = FetchJoints::default().eef();
         assert!(
             close(start.translation, [0.553, -0.127, 0.982], 2e-3),
@@ -695,7 +697,7 @@ mod tests {
         // Its x axis points down, tilted 30° toward +y.
         let x = start.rotation * Vector::X;
         assert!(close(x, [0.0, 0.5, -0.866], 0.02), "{x:?}");
-        // The camera: the tilt axis at (0.1088, 0, 1.0384 + q) (reference §1.4) plus the
+        // The camera: the tilt axis at (0.1088, 0, 1.0384 + q) (Fetch's URDF) plus the
         // camera's offset turned 0.45 rad down. (§1.4's "≈ (0.165, 0, 1.405)" disagrees with
         // its own axis by 1.5 cm in z; the axis follows from the joint table.)
         let camera = FetchJoints::default().camera();

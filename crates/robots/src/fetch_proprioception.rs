@@ -1,4 +1,5 @@
-//! What Fetch feels of itself: 49 numbers, as iGibson 2.0's `FetchGripper` (reference §4.3).
+//! What Fetch feels of itself: 49 numbers, as iGibson 2.0's `FetchGripper` (iGibson 2.0.3's
+//! `robots/fetch_gripper_robot.py`).
 //!
 //! | index | value |
 //! |---|---|

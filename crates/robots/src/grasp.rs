@@ -1,5 +1,5 @@
-//! Assisted grasping, as the original's (reference §4.2, §2.3): the fingers only touch, a
-//! constraint holds.
+//! Assisted grasping, as the original's (iGibson 2.0.3's `robots/behavior_robot.py`): the fingers
+//! only touch, a constraint holds.
 //!
 //! While a hand's trigger is above [`GraspRules::threshold`] and it holds nothing, after each step
 //! it looks for something to hold:

@@ -1,7 +1,7 @@
 //! A BehaviorRobot hand, built from our own shapes with the original's mass: one dynamic body of
 //! 2 kg (the original's 1 kg palm and five fingers of two 0.1 kg phalanges), made of a palm (a
-//! box) and five fingers (capsules), friction 2.5 (reference §2.1, §2.3). Its mass is spread over
-//! the shapes by volume.
+//! box) and five fingers (capsules), friction 2.5 (iGibson 2.0.3's `robots/behavior_robot.py`). Its
+//! mass is spread over the shapes by volume.
 //!
 //! The hand's frame: x along the fingers, y to the hand's left, z out of its back; the palm faces
 //! −z. At rest the fingers lie straight in the palm's plane and the thumb sticks out sideways and

@@ -1,11 +1,12 @@
 //! Inverse kinematics for Fetch's arm: which torso and arm positions put the end effector at a
 //! pose in the base frame.
 //!
-//! Numeric, as pybullet's `calculateInverseKinematics` that iGibson uses (reference §3): damped
-//! least squares on the geometric Jacobian of the 8 joints that move the end effector (torso
-//! lift and the 7 arm joints), each iterate clamped to the joint limits, with a pull toward a
-//! rest pose (iGibson: the untucked default) projected into the Jacobian's null space so that it
-//! never fights the target. It starts from the given positions (the robot's current ones: small
+//! Numeric, as pybullet's `calculateInverseKinematics` that iGibson uses (iGibson 2.0.3's Fetch IK
+//! controller): damped least squares on the geometric Jacobian of the 8 joints that move the end
+//! effector (torso lift and the 7 arm joints), each iterate clamped to the joint limits, with a
+//! pull toward a rest pose (iGibson: the untucked default) projected into the Jacobian's null space
+//! so that it never fights the target. It starts from the given positions (the robot's current
+//! ones: small
 //! steps converge in a few iterations) and, failing that, once more from the rest pose.
 //!
 //! A target it cannot reach within [`IkSolver::position_tolerance`] and

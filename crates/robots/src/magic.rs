@@ -1,6 +1,6 @@
-//! Moves outside physics, for symbolic ("magic") action primitives (reference §5: the original
-//! teleports the robot for NAVIGATE_TO, puts the object in the hand and forces the assisted grasp
-//! for GRASP, and forces the release for PLACE_*).
+//! Moves outside physics, for symbolic ("magic") action primitives (iGibson 2.0.3's
+//! `envs/behavior_mp_env.py`: the original teleports the robot for NAVIGATE_TO, puts the object in
+//! the hand and forces the assisted grasp for GRASP, and forces the release for PLACE_*).
 //!
 //! Each move leaves the robot at rest and consistent with the world: a teleported robot stands
 //! with its hands parked where its targets put them, carrying what it holds along; a grasp made

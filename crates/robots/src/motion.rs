@@ -1,5 +1,6 @@
 //! Where an action sends each part: the targets of the step, composed as the original does
-//! (reference §2.4), clipped to the reach spheres, and kept out of fixed things.
+//! (iGibson 2.0.3's `robots/behavior_robot.py`), clipped to the reach spheres, and kept out of
+//! fixed things.
 //!
 //! - The body's Δ is in its own frame and right-multiplied: `new = old · Δ`.
 //! - The eye's and hands' targets live in the body frame; their Δ position is added there and

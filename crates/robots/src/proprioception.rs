@@ -1,4 +1,5 @@
-//! What the BehaviorRobot feels of itself: 22 numbers, as iGibson 2.0.3's (reference §4.2).
+//! What the BehaviorRobot feels of itself: 22 numbers, as iGibson 2.0.3's
+//! (`robots/behavior_robot.py`).
 //!
 //! | index | value |
 //! |---|---|

@@ -1,5 +1,5 @@
-//! Robot-relative predicates, as the original's object states (reference §1.10), for metrics
-//! and primitives. Each is computed from geometry now, with no memo.
+//! Robot-relative predicates, as the original's object states (iGibson 2.0.3's `object_states/`),
+//! for metrics and primitives. Each is computed from geometry now, with no memo.
 //!
 //! - in hand: a hand holds the object (any of its bodies) by an assisted grasp;
 //! - in reach: the centre of the object's box is less than [`REACH_DISTANCE`] from the body's

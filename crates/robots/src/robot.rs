@@ -514,9 +514,9 @@ impl BehaviorRobot {
         Ok(())
     }
 
-    /// The raw action's reset entry (reference §4.2, left out of the env's 26): the palm put
-    /// at its target at once, with what it holds, at rest and parked. For a hand pinned behind
-    /// furniture that its servo cannot pull free.
+    /// The raw action's reset entry (iGibson 2.0.3's `robots/behavior_robot.py`, left out of the
+    /// env's 26): the palm put at its target at once, with what it holds, at rest and parked. For a
+    /// hand pinned behind furniture that its servo cannot pull free.
     pub(crate) fn reset_hand(&mut self, world: &mut World, side: Side) -> Result<(), MagicError> {
         if let Some(id) = self.parked[side.index()].take() {
             world.core_mut().detach(id);

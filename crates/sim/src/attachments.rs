@@ -1,7 +1,7 @@
 //! Attachments: a constraint added at run time between two bodies at a point, as assisted
 //! grasping makes between a hand and what it holds (iGibson 2.0: a fixed constraint of at most
 //! 500 N, or point-to-point for a link of articulated furniture, released when its violation
-//! exceeds 0.1 m — reference §4.2).
+//! exceeds 0.1 m — iGibson 2.0.3's `robots/behavior_robot.py`).
 //!
 //! An attachment pulls with at most its maximum force: rapier's joints have no force limit, so the
 //! world reads the force each constraint applied in every substep and removes one that needed

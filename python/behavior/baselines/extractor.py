@@ -1,4 +1,4 @@
-"""The original RL baseline's network in front of the policy (reference §5): each image through
+"""The original RL baseline's network in front of the policy (BEHAVIOR's `BehaviorExtractor`): each image through
 its own CNN (32 8×8 stride 4, 64 4×4 stride 2, 64 3×3 stride 1, then 128 units), each vector
 (``proprioception``, ``task_obs``, ``lidar``) through 128 units, the features concatenated.
 

@@ -1,5 +1,5 @@
-//! The robot's own metrics (reference §6.1, `agent.py`): how far its base and each hand moved,
-//! how far each hand moved while touching or holding something, and the work its parts did.
+//! The robot's own metrics (iGibson 2.0.3's `metrics/`, `agent.py`): how far its base and each hand
+//! moved, how far each hand moved while touching or holding something, and the work its parts did.
 //!
 //! Per step and part: Δ = the distance its origin moved, clipped at [`MAX_STEP_DISTANCE`] so that
 //! a teleport does not count. Distance navigated is the base's ΣΔ; a hand's displacement is its

@@ -1,5 +1,5 @@
-//! The benchmark protocol's summary over episodes (reference §6.2) and the human-normalized
-//! metrics.
+//! The benchmark protocol's summary over episodes (BEHAVIOR's
+//! `behavior/benchmark/behavior_benchmark.py`) and the human-normalized metrics.
 //!
 //! The summary: Success Score (mean final Q), Success Score Top 5 (the mean of the five best
 //! per-activity mean Qs), and the means of simulated time, kinematic disarrangement (relative),
@@ -7,11 +7,12 @@
 //!
 //! Human-normalized metrics: the paper reports each efficiency metric relative to the best human
 //! demonstration of the same activity and instance. The original code has no implementation
-//! (reference §6.2), so ours is: agent value / best (smallest) human value, per metric, where
-//! the demonstrations' values come from the same metric code run on their recordings. 1 is as
-//! efficient as the best person; 2 twice as wasteful. A metric whose best human value is 0 is
-//! 1 when the agent's is 0 too and undefined (`None`) otherwise. Where no person did that
-//! instance, [`HumanReference::normalize_by_activity`] compares with the best person on any
+//! (BEHAVIOR's `behavior/benchmark/behavior_benchmark.py`), so ours is: agent value / best
+//! (smallest) human value, per metric, where the demonstrations' values come from the same metric
+//! code run on their recordings. 1 is as efficient as the best person; 2 twice as wasteful. A
+//! metric whose best human value is 0 is 1 when the agent's is 0 too and undefined (`None`)
+//! otherwise. Where no person did that instance, [`HumanReference::normalize_by_activity`] compares
+//! with the best person on any
 //! instance of the activity, and says so.
 //!
 //! Per-activity statistics of the demonstrations ([`HumanStatistics`]): how many, how many

@@ -1,4 +1,4 @@
-//! Kinematic disarrangement (reference §6.1): how far the home's objects moved.
+//! Kinematic disarrangement (iGibson 2.0.3's `metrics/`): how far the home's objects moved.
 //!
 //! Every movable object but the robot's parts and the agent's stand-in is followed by the
 //! position of its origin. Per step: the sum of the distances moved. Integrated: the sum of the

@@ -1,4 +1,5 @@
-//! Logical disarrangement (reference §6.1): how many of the home's logical states changed.
+//! Logical disarrangement (iGibson 2.0.3's `metrics/`): how many of the home's logical states
+//! changed.
 //!
 //! For every object but walls, floors, the robot and the agent's stand-in, a picture holds its
 //! unary states (cooked, burnt, frozen, soaked, open, dusty, stained, sliced, toggled on) and

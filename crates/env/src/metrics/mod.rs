@@ -1,7 +1,7 @@
-//! The paper's metrics (reference §6): the success score Q every step, success, simulated
-//! time, kinematic and logical disarrangement, distance navigated, hand displacement and work;
-//! per episode ([`EpisodeMetrics`]), over the benchmark's episodes ([`aggregate`]) and relative
-//! to people ([`HumanReference`]).
+//! The paper's metrics (the BEHAVIOR paper and iGibson 2.0.3's `metrics/`): the success score Q
+//! every step, success, simulated time, kinematic and logical disarrangement, distance navigated,
+//! hand displacement and work; per episode ([`EpisodeMetrics`]), over the benchmark's episodes
+//! ([`aggregate`]) and relative to people ([`HumanReference`]).
 //!
 //! Each metric lives in its own module: `kinematic.rs`, `logical.rs`, `agent.rs` (the robot's),
 //! `aggregate.rs` (the benchmark protocol and human normalization).

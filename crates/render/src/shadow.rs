@@ -310,19 +310,22 @@ impl ShadowMaps {
             moving,
             walls,
         } = casters(ctx.world, ctx.hidden, ctx.meshes, ctx.models);
-        let sunlit = if ctx.through_windows {
-            sunlit(ctx.world, ctx.meshes, &fixed, &walls)
-        } else {
-            fixed.clone()
-        };
         let Some((lo, hi)) = bounds(ctx.world) else {
             return ShadowMatrices::default();
         };
         let sun = ctx.sun;
         let lamp = ctx.lamp.and_then(|l| self.lamp(ctx, &l, [&fixed, &moving]));
-        let fixed_key = key(&sunlit, &sun.to_array()) ^ key(&fixed, &[]);
+        // The walls cut at the windows and the roof follow from the fixed casters (windows and
+        // walls are fixed objects): made only when the map is drawn again.
+        let through = f32::from(u8::from(ctx.through_windows));
+        let fixed_key = key(&fixed, &[sun.x, sun.y, sun.z, through]);
         if self.fixed_key.map(|(k, _)| k) != Some(fixed_key) {
             let matrix = light_matrix(sun, lo, hi, None);
+            let sunlit = if ctx.through_windows {
+                sunlit(ctx.world, ctx.meshes, &fixed, &walls)
+            } else {
+                fixed.clone()
+            };
             let drawn = self.draw(ctx, (Which::Fixed, Facing::Along(sun)), &sunlit, matrix);
             self.fixed_key = Some((fixed_key, drawn.then_some(matrix)));
             let above = light_matrix(Vector::Z, lo, hi, None);

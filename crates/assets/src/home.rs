@@ -22,10 +22,16 @@
 //! the rooms and their doorways, `walls` raises the walls (and places the doors and windows in
 //! them), `furnish` fills each room; `footprint` holds the floor rectangles they share.
 
+mod connect;
 mod footprint;
 mod furnish;
+mod layout;
+mod legacy;
 mod plan;
+mod program;
 mod walls;
+
+pub use program::{Family, RoomSpec, UnknownFamily, room_spec};
 
 use crate::library::{AssetError, Library};
 use crate::scene::Scene;
@@ -74,16 +80,62 @@ pub fn named_home(name: &str, library: &Library) -> Option<Result<Scene, AssetEr
     Some(generate(n, *seed, library))
 }
 
-/// Generates the home of a seed. Named homes pass their name; any other seed makes a new home.
+/// How many programs and layouts a home draws before giving up on its seed: over thousands of
+/// seeds of every family the most any took was far below this (see the tests).
+const ATTEMPTS: usize = 400;
+
+/// Generates the home of a seed. Named homes pass their name; any other seed makes a new home
+/// of the family [`Family::of_seed`] gives it.
 pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, AssetError> {
+    if NAMED_HOMES.contains(&(name, seed)) {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let plan = legacy::plan(name, seed, &mut rng);
+        return finish(name, seed, None, plan, library, &mut rng);
+    }
+    generate_family(name, seed, Family::of_seed(seed), library)
+}
+
+/// Generates a home of `family` from a seed: a program of rooms drawn for the family, laid out,
+/// joined by doors and openings, with windows, then furnished. A program whose layout breaks a
+/// room's specification, or leaves a room unreachable, is drawn again.
+pub fn generate_family(
+    name: &str,
+    seed: u64,
+    family: Family,
+    library: &Library,
+) -> Result<Scene, AssetError> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let kinds = plan::program(name, seed, &mut rng);
-    let plan = plan::lay_out(&kinds, &mut rng);
+    for _ in 0..ATTEMPTS {
+        let wants = program::program(family, &mut rng);
+        let Some(layout) = layout::lay_out(family, &wants, &mut rng) else {
+            continue;
+        };
+        let rooms = connect::rooms(&layout);
+        if let Some(plan) = connect::connect(family, rooms, &mut rng) {
+            return finish(name, seed, Some(family), plan, library, &mut rng);
+        }
+    }
+    Err(AssetError::NoPlan {
+        family: family.name(),
+        seed,
+    })
+}
+
+/// The home of a plan: its walls and its furnishing.
+fn finish(
+    name: &str,
+    seed: u64,
+    family: Option<Family>,
+    plan: plan::Plan,
+    library: &Library,
+    rng: &mut ChaCha8Rng,
+) -> Result<Scene, AssetError> {
     let walls = walls::walls(&plan);
-    let objects = furnish::furnish(&plan, library, &mut rng)?;
+    let objects = furnish::furnish(&plan, library, rng)?;
     Ok(Scene {
         name: name.to_string(),
         seed,
+        family,
         rooms: plan.rooms,
         walls,
         objects,

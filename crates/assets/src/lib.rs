@@ -37,8 +37,8 @@ pub use catalog::CATALOG;
 pub use clutter::{ClutterError, clutter};
 pub use coverage::{Requirements, covering, first_covering, missing, requirements};
 pub use home::{
-    CORRIDOR_WIDTH, DOOR_CLEARANCE, DOORWAY, NAMED_HOMES, WALL_THICKNESS, generate, named_home,
-    named_homes,
+    CORRIDOR_WIDTH, DOOR_CLEARANCE, DOORWAY, Family, NAMED_HOMES, RoomSpec, UnknownFamily,
+    WALL_THICKNESS, generate, generate_family, named_home, named_homes, room_spec,
 };
 pub use library::{AssetError, Library};
 pub use scene::{

@@ -20,6 +20,14 @@ pub enum AssetError {
     /// catalog: the catalog needs an entry.
     #[error("no object archetype for `{0}` or any synset below it")]
     NoArchetype(String),
+    /// No draw of a seed gave a home of its family that meets every room's specification.
+    #[error("seed {seed} gave no {family} home that meets every room's specification")]
+    NoPlan {
+        /// The family's name.
+        family: &'static str,
+        /// The seed.
+        seed: u64,
+    },
 }
 
 /// The catalog indexed by synset, with the taxonomy to resolve and equip synsets.

@@ -47,6 +47,10 @@ pub struct Scene {
     pub name: String,
     /// The seed it was generated from, kept so that it can be generated again.
     pub seed: u64,
+    /// The plan family it was generated as; none for a home made otherwise (and for the named
+    /// homes' original corridor plan), and then left out of the file.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub family: Option<crate::Family>,
     /// Its rooms, each of which gets a floor.
     pub rooms: Vec<RoomPlan>,
     /// Its wall pieces, doorways already cut out.

@@ -5,7 +5,7 @@ use crate::episode::{Built, EpisodeArgs};
 use crate::prelude::{Prelude, named_homes};
 use anyhow::{Context, Result, bail};
 use behavior_assets::covering;
-use behavior_assets::{Library, NAMED_HOMES, Scene, clutter, generate};
+use behavior_assets::{Family, Library, NAMED_HOMES, Scene, clutter, generate, generate_family};
 use clap::Subcommand;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -19,6 +19,10 @@ pub enum SceneCommand {
     Generate {
         #[arg(long)]
         seed: u64,
+        /// The plan family: corridor, central_hall, open_plan, l_shaped, two_wings or studio
+        /// (default: the one the seed gives, cycling through them).
+        #[arg(long)]
+        family: Option<Family>,
         #[arg(long, value_name = "FILE.json")]
         out: PathBuf,
         /// Furniture only: no books, dishes, food and the like lying about.
@@ -64,12 +68,16 @@ pub fn run(command: SceneCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
     let library = prelude.library();
     match command {
         SceneCommand::List => {
-            println!("{:<10} {:>5} {:>8}  rooms", "home", "seed", "objects");
+            println!(
+                "{:<10} {:>5} {:<22} {:>8}  rooms",
+                "home", "seed", "family", "objects"
+            );
             for (name, seed) in NAMED_HOMES {
                 let scene = generate(name, seed, &library)?;
                 let rooms: Vec<String> = scene.rooms.iter().map(|r| r.label()).collect();
                 println!(
-                    "{name:<10} {seed:>5} {:>8}  {}",
+                    "{name:<10} {seed:>5} {:<22} {:>8}  {}",
+                    family_name(&scene),
                     scene.objects.len(),
                     rooms.join(", ")
                 );
@@ -77,16 +85,19 @@ pub fn run(command: SceneCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
         }
         SceneCommand::Generate {
             seed,
+            family,
             out,
             no_clutter,
         } => {
-            let scene = generate(&format!("seed_{seed}"), seed, &library)?;
+            let family = family.unwrap_or(Family::of_seed(seed));
+            let scene = generate_family(&format!("seed_{seed}"), seed, family, &library)?;
             let scene = with_clutter(scene, &library, !no_clutter)?;
             std::fs::write(&out, scene.to_json())
                 .with_context(|| format!("cannot write {}", out.display()))?;
             eprintln!(
-                "{}: {} rooms, {} objects, {} things of clutter",
+                "{}: a {} home, {} rooms, {} objects, {} things of clutter",
                 out.display(),
+                family_name(&scene),
                 scene.rooms.len(),
                 scene.objects.len(),
                 scene.clutter.len()
@@ -135,6 +146,11 @@ fn export(prelude: &Prelude, args: ExportArgs) -> Result<()> {
         file.len() as f64 / 1e6
     );
     Ok(())
+}
+
+/// A home's plan family as `scene list` shows it.
+fn family_name(scene: &Scene) -> &'static str {
+    scene.family.map_or("corridor (original)", |f| f.name())
 }
 
 /// For each official activity, the named homes that cover it.

@@ -6,7 +6,7 @@
 
 use super::WALL_THICKNESS;
 use super::footprint::{Rect, footprint};
-use super::plan::{Opening, Plan};
+use super::plan::{Opening, Plan, into_room};
 use crate::library::{AssetError, Library};
 use crate::scene::ObjectPlan;
 use behavior_core::RoomType;
@@ -17,6 +17,9 @@ use std::collections::BTreeMap;
 
 /// Between pieces of furniture (m).
 const GAP: f32 = 0.05;
+
+/// Kept free on each side of a wide opening that the plan keeps clear (m).
+const OPENING_CLEARANCE: f32 = 0.8;
 
 /// What stands in a room of each type, biggest first; `table` and `chair` go in the middle.
 fn furniture(kind: RoomType) -> &'static [&'static str] {
@@ -55,7 +58,8 @@ fn furniture(kind: RoomType) -> &'static [&'static str] {
         RoomType::HomeOffice => &["cabinet.n.01", "table.n.02", "chair.n.01"],
         RoomType::StorageRoom => &["shelf.n.01", "sink.n.01", "table.n.02"],
         RoomType::UtilityRoom => &["washer.n.03", "dryer.n.01", "sink.n.01", "cabinet.n.01"],
-        _ => &["shelf.n.01", "cabinet.n.01"], // closet
+        RoomType::Closet => &["shelf.n.01", "cabinet.n.01"],
+        RoomType::Corridor => &[], // halls stay clear
     }
 }
 
@@ -74,7 +78,21 @@ pub(super) struct Furnisher<'a, 't> {
 pub(super) struct Furnishing {
     pub(super) index: usize,
     inner: Rect,
+    /// Where the room is entered (its doorways' clearances, its open sides), when paths between
+    /// them must be kept for the robots; empty for the named homes' original plan.
+    ways: Vec<Rect>,
+    /// The footprints of the furniture on its floor so far.
+    placed: Vec<Rect>,
     pub(super) taken: Vec<Rect>,
+}
+
+/// A living-room table standing across the opening onto a dining room: both rooms furnish
+/// around its footprint, and it is one of the living room's tables.
+#[derive(Clone, Copy)]
+struct SharedTable {
+    living: usize,
+    dining: usize,
+    rect: Rect,
 }
 
 /// Places the doors, windows and furniture of every room; the objects in the order placed.
@@ -90,17 +108,27 @@ pub(super) fn furnish(
         objects: Vec::new(),
         names: BTreeMap::new(),
     };
-    let shared_table = match &plan.opening {
-        Some(open) => home.table_at_the_opening(open)?,
-        None => None,
-    };
-    for index in 0..plan.rooms.len() {
-        if index == plan.corridor {
-            // The corridor stays clear except for the front door.
-            home.front_door()?;
-        } else {
-            home.room(index, shared_table)?;
+    let mut shared = Vec::new();
+    for open in &plan.openings {
+        let kinds = open.rooms.map(|r| plan.rooms[r].kind);
+        let (living, dining) = match kinds {
+            [RoomType::LivingRoom, RoomType::DiningRoom] => (open.rooms[0], open.rooms[1]),
+            [RoomType::DiningRoom, RoomType::LivingRoom] => (open.rooms[1], open.rooms[0]),
+            _ => continue,
+        };
+        if shared.iter().any(|t: &SharedTable| t.living == living) {
+            continue;
         }
+        if let Some(rect) = home.table_at_the_opening(open, living, dining)? {
+            shared.push(SharedTable {
+                living,
+                dining,
+                rect,
+            });
+        }
+    }
+    for index in 0..plan.rooms.len() {
+        home.room(index, &shared)?;
     }
     Ok(home.objects)
 }
@@ -116,18 +144,24 @@ impl Furnisher<'_, '_> {
 
     /// The living room's table across the opening onto the dining room, if one fits; its
     /// footprint, which both rooms then furnish around.
-    fn table_at_the_opening(&mut self, open: &Opening) -> Result<Option<Rect>, AssetError> {
+    fn table_at_the_opening(
+        &mut self,
+        open: &Opening,
+        living: usize,
+        dining: usize,
+    ) -> Result<Option<Rect>, AssetError> {
         let (size, variant) = self.library.sample("table.n.02", self.rng)?;
-        let Some((position, rect)) = at_the_opening(open, self.plan, size) else {
+        let Some((position, turns, rect)) = at_the_opening(open, self.plan, [living, dining], size)
+        else {
             return Ok(None);
         };
         let name = self.name("table.n.02");
         self.objects.push(ObjectPlan {
             name,
             synset: "table.n.02".into(),
-            room: open.living,
+            room: living,
             position,
-            yaw_quarter_turns: 0,
+            yaw_quarter_turns: turns,
             size: size.to_array(),
             variant,
             joints: Vec::new(),
@@ -135,8 +169,9 @@ impl Furnisher<'_, '_> {
         Ok(Some(rect))
     }
 
-    /// A room off the corridor: its door, its windows, then its furniture.
-    fn room(&mut self, index: usize, shared_table: Option<Rect>) -> Result<(), AssetError> {
+    /// A room: its doors, its windows, then its furniture, kept out of its doorways' way (and
+    /// of the wide openings' where the plan asks).
+    fn room(&mut self, index: usize, shared: &[SharedTable]) -> Result<(), AssetError> {
         let plan = self.plan;
         let room = &plan.rooms[index];
         let half = WALL_THICKNESS / 2.0;
@@ -147,21 +182,33 @@ impl Furnisher<'_, '_> {
                 max: [room.max[0] - half - 0.02, room.max[1] - half - 0.02],
             },
             taken: Vec::new(),
+            ways: Vec::new(),
+            placed: Vec::new(),
         };
         let mut tables_to_skip = 0;
-        if let (Some(open), Some(rect)) = (&plan.opening, shared_table) {
-            if index == open.living || index == open.dining {
-                f.taken.push(rect);
+        for table in shared {
+            if index == table.living || index == table.dining {
+                f.taken.push(table.rect);
+                f.placed.push(table.rect);
             }
-            if index == open.living {
-                tables_to_skip = 1; // it is one of the living room's tables
+            if index == table.living {
+                tables_to_skip += 1; // it is one of the living room's tables
             }
         }
-        // Keep the room's doorway clear, on both sides of its wall.
-        for doorway in plan.doorways.iter().filter(|d| d.room == index) {
-            f.taken.push(doorway.clearance());
+        // Keep the doorways clear, on both sides of their walls.
+        for door in plan.doors.iter().filter(|d| d.touches(index)) {
+            f.taken.push(door.clearance());
+            if plan.keep_paths {
+                f.ways.push(door.clearance());
+            }
         }
-        self.room_door(index)?;
+        for open in plan.openings.iter().filter(|o| o.keep_clear) {
+            if open.rooms.contains(&index) {
+                f.taken.push(open.gap.band(OPENING_CLEARANCE, 0.0));
+                f.ways.push(open.gap.band(OPENING_CLEARANCE, 0.0));
+            }
+        }
+        self.doors(index)?;
         self.windows(&mut f)?;
         self.furniture(&mut f, room.kind, tables_to_skip)
     }
@@ -207,6 +254,74 @@ impl Furnisher<'_, '_> {
     }
 }
 
+/// The radius of the widest robot base a room's paths are kept for, m: Fetch's 0.28 m and a
+/// little to spare.
+const PATH_RADIUS: f32 = 0.32;
+/// The cell of the grid paths are looked for on, m.
+const PATH_CELL: f32 = 0.1;
+
+/// Whether, with `extra` standing in the room too, a base of [`PATH_RADIUS`] can still go
+/// between every pair of the room's ways in (true when there are none to keep).
+fn paths_kept(f: &Furnishing, extra: &Rect) -> bool {
+    if f.ways.is_empty() {
+        return true;
+    }
+    let r = f.inner;
+    let n = [
+        ((r.max[0] - r.min[0]) / PATH_CELL).floor() as usize,
+        ((r.max[1] - r.min[1]) / PATH_CELL).floor() as usize,
+    ];
+    let centre = |i: usize, j: usize| {
+        [
+            r.min[0] + (i as f32 + 0.5) * PATH_CELL,
+            r.min[1] + (j as f32 + 0.5) * PATH_CELL,
+        ]
+    };
+    let near = |p: [f32; 2], q: &Rect| {
+        let dx = (q.min[0] - p[0]).max(p[0] - q.max[0]).max(0.0);
+        let dy = (q.min[1] - p[1]).max(p[1] - q.max[1]).max(0.0);
+        dx * dx + dy * dy < PATH_RADIUS * PATH_RADIUS
+    };
+    let inside = |p: [f32; 2], q: &Rect| {
+        (q.min[0]..=q.max[0]).contains(&p[0]) && (q.min[1]..=q.max[1]).contains(&p[1])
+    };
+    // A way's cells reach to the walls (a doorway is in one), so only furniture blocks them.
+    let free = |p: [f32; 2]| !f.placed.iter().chain([extra]).any(|q| near(p, q));
+    let mut seen = vec![false; n[0] * n[1]];
+    let mut queue = Vec::new();
+    let (mut i0, mut j0) = (0, 0);
+    'start: for i in 0..n[0] {
+        for j in 0..n[1] {
+            if inside(centre(i, j), &f.ways[0]) && free(centre(i, j)) {
+                (i0, j0) = (i, j);
+                break 'start;
+            }
+        }
+    }
+    if !free(centre(i0, j0)) || !inside(centre(i0, j0), &f.ways[0]) {
+        return false;
+    }
+    seen[i0 * n[1] + j0] = true;
+    queue.push((i0, j0));
+    while let Some((i, j)) = queue.pop() {
+        let steps = [
+            (i.wrapping_sub(1), j),
+            (i + 1, j),
+            (i, j.wrapping_sub(1)),
+            (i, j + 1),
+        ];
+        for (a, b) in steps {
+            if a < n[0] && b < n[1] && !seen[a * n[1] + b] && free(centre(a, b)) {
+                seen[a * n[1] + b] = true;
+                queue.push((a, b));
+            }
+        }
+    }
+    f.ways[1..].iter().all(|way| {
+        (0..n[0]).any(|i| (0..n[1]).any(|j| seen[i * n[1] + j] && inside(centre(i, j), way)))
+    })
+}
+
 /// Stands the microwave on the room's first countertop.
 fn on_countertop(objects: &[ObjectPlan], room: usize, size: Vector) -> Option<([f32; 3], u8)> {
     let counter = objects
@@ -250,8 +365,12 @@ fn against_a_wall(
                 _ => (r.min[0] + d / 2.0, t),
             };
             let rect = footprint(x, y, w, d, turns);
-            if rect.within(&r) && f.taken.iter().all(|o| !rect.overlaps(o, GAP)) {
+            if rect.within(&r)
+                && f.taken.iter().all(|o| !rect.overlaps(o, GAP))
+                && paths_kept(f, &rect)
+            {
                 f.taken.push(rect);
+                f.placed.push(rect);
                 return Some(([x, y, 0.0], turns));
             }
             t += 0.1;
@@ -284,8 +403,10 @@ fn in_the_middle(f: &mut Furnishing, size: Vector, chair: bool) -> Option<([f32;
     }
     for ([x, y], turns) in candidates {
         let rect = footprint(x, y, size.x, size.y, turns);
-        if rect.within(&r) && f.taken.iter().all(|o| !rect.overlaps(o, 0.3)) {
+        if rect.within(&r) && f.taken.iter().all(|o| !rect.overlaps(o, 0.3)) && paths_kept(f, &rect)
+        {
             f.taken.push(rect);
+            f.placed.push(rect);
             return Some(([x, y, 0.0], turns));
         }
     }
@@ -317,33 +438,49 @@ fn beside_the_last_table(f: &Furnishing, size: Vector) -> Vec<([f32; 2], u8)> {
     ]
 }
 
-/// A table across the opening, long side along x, its centre 0.15 m inside the living room, clear
-/// of both rooms' doorways and the walls; its position and footprint.
-fn at_the_opening(open: &Opening, plan: &Plan, size: Vector) -> Option<([f32; 3], Rect)> {
-    let x = open.x - open.toward_dining * 0.15;
+/// A table across the opening, its long side crossing it and its centre 0.15 m inside the
+/// living room, clear of both rooms' doorways and of the walls; its position, turns and
+/// footprint.
+fn at_the_opening(
+    open: &Opening,
+    plan: &Plan,
+    [living, dining]: [usize; 2],
+    size: Vector,
+) -> Option<([f32; 3], u8, Rect)> {
+    let gap = open.gap;
+    // Across the opening's line, and along it.
+    let (across, along) = if gap.vertical { (0, 1) } else { (1, 0) };
+    let toward_dining = into_room(gap.vertical, gap.at, &plan.rooms[dining])[across];
+    let c = gap.at - toward_dining * 0.15;
+    let turns = u8::from(!gap.vertical);
     let half = WALL_THICKNESS / 2.0 + 0.3;
     let clear: Vec<Rect> = plan
-        .doorways
+        .doors
         .iter()
-        .filter(|d| d.room == open.living || d.room == open.dining)
+        .filter(|d| d.touches(living) || d.touches(dining))
         .map(|d| d.clearance())
         .collect();
-    let (l, d) = (&plan.rooms[open.living], &plan.rooms[open.dining]);
-    let (west, east) = (l.min[0].min(d.min[0]), l.max[0].max(d.max[0]));
-    let mid = (open.y[0] + open.y[1]) / 2.0;
+    let (l, d) = (&plan.rooms[living], &plan.rooms[dining]);
+    let low = l.min[across].min(d.min[across]);
+    let high = l.max[across].max(d.max[across]);
+    let mid = (gap.span[0] + gap.span[1]) / 2.0;
+    let at = |t: f32| if gap.vertical { (c, t) } else { (t, c) };
     // From the middle of the opening outwards, in 10 cm steps.
     (0..40)
         .map(|k| mid + 0.1 * (k / 2) as f32 * if k % 2 == 0 { 1.0 } else { -1.0 })
-        .map(|y| footprint(x, y, size.x, size.y, 0))
+        .map(|t| {
+            let (x, y) = at(t);
+            footprint(x, y, size.x, size.y, turns)
+        })
         .find(|rect| {
-            rect.min[1] >= open.y[0] + half
-                && rect.max[1] <= open.y[1] - half
+            rect.min[along] >= gap.span[0] + half
+                && rect.max[along] <= gap.span[1] - half
                 && clear.iter().all(|c| !rect.overlaps(c, GAP))
-                && rect.min[0] > west + half
-                && rect.max[0] < east - half
+                && rect.min[across] > low + half
+                && rect.max[across] < high - half
         })
         .map(|rect| {
-            let y = (rect.min[1] + rect.max[1]) / 2.0;
-            ([x, y, 0.0], rect)
+            let (x, y) = at((rect.min[along] + rect.max[along]) / 2.0);
+            ([x, y, 0.0], turns, rect)
         })
 }

@@ -1,227 +1,169 @@
-//! The floor plan: which rooms a home has, in which order along the corridor, how large, where
-//! each room's doorway is, and where the living room opens onto a dining room.
+//! The floor plan every home is laid out from, whatever its family: rectangular rooms, the doors
+//! and wide openings between them (and to the outside), and the stretches of outside wall that
+//! hold windows. Walls and furnishing read only this, so a new family is a new way of filling it.
 
 use super::footprint::Rect;
-use super::{CORRIDOR_WIDTH, DOOR_CLEARANCE, DOORWAY, NAMED_HOMES};
+use super::{DOOR_CLEARANCE, DOORWAY, WALL_THICKNESS};
 use crate::scene::RoomPlan;
-use behavior_core::RoomType;
-use rand_chacha::ChaCha8Rng;
-use rand_chacha::rand_core::Rng;
-use std::collections::BTreeMap;
 
-/// Room types every home has.
-const CORE_ROOMS: [RoomType; 4] = [
-    RoomType::Kitchen,
-    RoomType::LivingRoom,
-    RoomType::Bathroom,
-    RoomType::Bedroom,
-];
-
-/// Room types the three other rooms are drawn from.
-const EXTRA_ROOMS: [RoomType; 6] = [
-    RoomType::DiningRoom,
-    RoomType::Garage,
-    RoomType::HomeOffice,
-    RoomType::StorageRoom,
-    RoomType::UtilityRoom,
-    RoomType::Closet,
-];
-
-/// A home's rooms and their openings: everything walls and furnishing are laid out from.
-pub(super) struct Plan {
-    /// The rooms along the corridor, west to east and alternating sides, then the corridor.
-    pub(super) rooms: Vec<RoomPlan>,
-    /// One per room along the corridor, in `rooms` order.
-    pub(super) doorways: Vec<Doorway>,
-    /// The corridor's index in `rooms` (the last).
-    pub(super) corridor: usize,
-    /// Where the living room opens onto a dining room, if the home has one beside it.
-    pub(super) opening: Option<Opening>,
+/// A stretch of a wall line: vertical (constant x) or not (constant y), at coordinate `at`,
+/// from `span[0]` to `span[1]` along it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Segment {
+    pub(super) vertical: bool,
+    pub(super) at: f32,
+    pub(super) span: [f32; 2],
 }
 
-/// A room's doorway onto the corridor.
+impl Segment {
+    /// Its length, m.
+    pub(super) fn length(&self) -> f32 {
+        self.span[1] - self.span[0]
+    }
+
+    /// The floor point at `t` along it, as (x, y).
+    pub(super) fn point(&self, t: f32) -> [f32; 2] {
+        if self.vertical {
+            [self.at, t]
+        } else {
+            [t, self.at]
+        }
+    }
+
+    /// The rectangle reaching `depth` to both sides of it, `extra` beyond its ends.
+    pub(super) fn band(&self, depth: f32, extra: f32) -> Rect {
+        let (a, b) = (self.span[0] - extra, self.span[1] + extra);
+        if self.vertical {
+            Rect {
+                min: [self.at - depth, a],
+                max: [self.at + depth, b],
+            }
+        } else {
+            Rect {
+                min: [a, self.at - depth],
+                max: [b, self.at + depth],
+            }
+        }
+    }
+}
+
+/// The unit normal of a wall line pointing into `room` (which has an edge on it), as (x, y).
+pub(super) fn into_room(vertical: bool, at: f32, room: &RoomPlan) -> [f32; 2] {
+    let axis = usize::from(!vertical);
+    let centre = (room.min[axis] + room.max[axis]) / 2.0;
+    let sign = if centre > at { 1.0 } else { -1.0 };
+    if vertical { [sign, 0.0] } else { [0.0, sign] }
+}
+
+/// Quarter turns that make an object's front (its −y side when unturned) face `normal`.
+pub(super) fn turns_facing(normal: [f32; 2]) -> u8 {
+    match normal {
+        [_, y] if y < -0.5 => 0,
+        [x, _] if x > 0.5 => 1,
+        [_, y] if y > 0.5 => 2,
+        _ => 3,
+    }
+}
+
+/// A doorway with its door: in a wall between two rooms, or between a room and the outside.
 #[derive(Clone, Copy, Debug)]
-pub(super) struct Doorway {
-    /// The room's index in `rooms`.
+pub(super) struct Door {
+    /// The room the door belongs to and whose furnishing draws it.
     pub(super) room: usize,
-    /// The x of the doorway's centre.
-    pub(super) x: f32,
-    /// The y of the wall it cuts (a side of the corridor).
-    pub(super) y: f32,
+    /// The room on the other side, or `None` for the outside.
+    pub(super) other: Option<usize>,
+    /// The doorway: a [`DOORWAY`]-wide stretch of wall.
+    pub(super) gap: Segment,
+    /// Where the door's bottom centre stands and its quarter turns.
+    pub(super) leaf: ([f32; 2], u8),
 }
 
-impl Doorway {
+impl Door {
+    /// A door in `room` centred at `t` along `line`, its leaf just inside `room` and swinging
+    /// into it.
+    pub(super) fn into(
+        room: usize,
+        other: Option<usize>,
+        line: Segment,
+        t: f32,
+        r: &RoomPlan,
+    ) -> Door {
+        let normal = into_room(line.vertical, line.at, r);
+        let [x, y] = line.point(t);
+        Door {
+            room,
+            other,
+            gap: Segment {
+                span: [t - DOORWAY / 2.0, t + DOORWAY / 2.0],
+                ..line
+            },
+            leaf: (
+                [x + 0.15 * normal[0], y + 0.15 * normal[1]],
+                turns_facing(normal),
+            ),
+        }
+    }
+
     /// The floor kept free in front of the doorway, on both sides of its wall.
     pub(super) fn clearance(&self) -> Rect {
-        Rect {
-            min: [self.x - DOORWAY / 2.0 - 0.1, self.y - DOOR_CLEARANCE],
-            max: [self.x + DOORWAY / 2.0 + 0.1, self.y + DOOR_CLEARANCE],
-        }
+        self.gap.band(DOOR_CLEARANCE, 0.1)
+    }
+
+    /// Whether it joins `room` to anything.
+    pub(super) fn touches(&self, room: usize) -> bool {
+        self.room == room || self.other == Some(room)
     }
 }
 
-/// Where the living room opens onto the dining room: the rooms and their shared edge.
+/// A wide opening with no wall between two rooms (an open plan's living and dining rooms).
+#[derive(Clone, Copy, Debug)]
 pub(super) struct Opening {
-    pub(super) living: usize,
-    pub(super) dining: usize,
-    /// The x of the shared edge.
-    pub(super) x: f32,
-    /// The shared span along y.
-    pub(super) y: [f32; 2],
-    /// +1 when the dining room lies east of the living room, −1 when west.
-    pub(super) toward_dining: f32,
+    pub(super) rooms: [usize; 2],
+    pub(super) gap: Segment,
+    /// Whether furnishing keeps a band along it clear (the plans of the named homes did not).
+    pub(super) keep_clear: bool,
 }
 
-/// Width and depth ranges (m) of a room type.
-fn room_size(kind: RoomType) -> ([f32; 2], [f32; 2]) {
-    match kind {
-        RoomType::Kitchen => ([4.4, 5.4], [4.2, 5.0]),
-        RoomType::LivingRoom => ([4.8, 6.0], [4.5, 5.5]),
-        RoomType::Bedroom => ([3.8, 4.6], [3.8, 4.6]),
-        RoomType::Bathroom => ([3.0, 3.6], [3.2, 3.8]),
-        RoomType::DiningRoom => ([3.6, 4.4], [3.6, 4.4]),
-        RoomType::Garage => ([5.0, 6.0], [5.0, 6.0]),
-        RoomType::HomeOffice => ([3.2, 4.0], [3.2, 4.0]),
-        RoomType::StorageRoom => ([2.8, 3.6], [2.8, 3.4]),
-        RoomType::UtilityRoom => ([3.0, 3.6], [3.0, 3.4]),
-        _ => ([2.4, 3.0], [2.4, 3.0]), // closet
-    }
+/// A stretch of outside wall of a room holding `count` windows, evenly spaced along it.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct WindowWall {
+    pub(super) room: usize,
+    pub(super) wall: Segment,
+    pub(super) count: usize,
 }
 
-fn uniform(rng: &mut ChaCha8Rng, range: [f32; 2]) -> f32 {
-    behavior_core::rng::uniform(rng, range[0], range[1])
-}
-
-/// The program: the core rooms and three others, in their order along the corridor. The named
-/// homes cycle through the other types so that each appears in several of them; the dining
-/// room goes beside the living room, on the same side of the corridor.
-pub(super) fn program(name: &str, seed: u64, rng: &mut ChaCha8Rng) -> Vec<RoomType> {
-    let mut kinds: Vec<RoomType> = CORE_ROOMS.to_vec();
-    let named = NAMED_HOMES
-        .iter()
-        .position(|&(n, s)| n == name && s == seed);
-    for k in 0..3 {
-        let pick = match named {
-            Some(i) => EXTRA_ROOMS[(i + 2 * k) % EXTRA_ROOMS.len()],
-            None => EXTRA_ROOMS[rng.next_u32() as usize % EXTRA_ROOMS.len()],
-        };
-        kinds.push(pick);
-    }
-    // Shuffle the order along the corridor (Fisher–Yates with the home's generator).
-    for i in (1..kinds.len()).rev() {
-        let j = rng.next_u32() as usize % (i + 1);
-        kinds.swap(i, j);
-    }
-    if let Some(d) = kinds.iter().position(|&k| k == RoomType::DiningRoom) {
-        kinds.remove(d);
-        let l = kinds
-            .iter()
-            .position(|&k| k == RoomType::LivingRoom)
-            .expect("a core room");
-        // Two places on is the next room on the same side.
-        if l + 2 <= kinds.len() {
-            kinds.insert(l + 2, RoomType::DiningRoom);
-        } else {
-            kinds.insert(l - 1, RoomType::DiningRoom);
-        }
-    }
-    kinds
-}
-
-/// Lays the rooms out along the corridor: sizes drawn per type, rows evened out at the east end,
-/// the corridor the whole length, and the open plan found.
-pub(super) fn lay_out(kinds: &[RoomType], rng: &mut ChaCha8Rng) -> Plan {
-    let (mut rooms, doorways, length) = rows(kinds, rng);
-    // Even out the rows' ends, then the corridor runs the whole length.
-    for side in 0..2 {
-        if let Some(last) = rooms
-            .iter_mut()
-            .enumerate()
-            .filter(|(k, _)| k % 2 == side)
-            .map(|(_, r)| r)
-            .last()
-        {
-            last.max[0] = length;
-        }
-    }
-    rooms.push(RoomPlan {
-        kind: RoomType::Corridor,
-        instance: 0,
-        min: [0.0, 0.0],
-        max: [length, CORRIDOR_WIDTH],
-    });
-    let opening = open_plan(&rooms);
-    Plan {
-        corridor: rooms.len() - 1,
-        rooms,
-        doorways,
-        opening,
+impl WindowWall {
+    /// Where window `k` stands (its bottom centre, just inside the wall), its quarter turns and
+    /// the unit normal into the room.
+    pub(super) fn place(&self, k: usize, room: &RoomPlan) -> ([f32; 2], u8, [f32; 2]) {
+        let w = self.wall;
+        let t = w.span[0] + (k as f32 + 1.0) * w.length() / (self.count as f32 + 1.0);
+        let normal = into_room(w.vertical, w.at, room);
+        let [x, y] = w.point(t);
+        // Half the wall, then 5 cm (added in that order, as the named homes were made).
+        let half = WALL_THICKNESS / 2.0;
+        (
+            [
+                x + normal[0] * half + normal[0] * 0.05,
+                y + normal[1] * half + normal[1] * 0.05,
+            ],
+            turns_facing(normal),
+            normal,
+        )
     }
 }
 
-/// Alternates rooms north (even places) and south (odd) of the corridor, west to east, each
-/// with a doorway at a random place along its corridor wall; the rooms, their doorways and the
-/// longer row's length.
-fn rows(kinds: &[RoomType], rng: &mut ChaCha8Rng) -> (Vec<RoomPlan>, Vec<Doorway>, f32) {
-    let mut rooms: Vec<RoomPlan> = Vec::new();
-    let mut cursor = [0.0f32, 0.0f32];
-    let mut counts: BTreeMap<RoomType, u32> = BTreeMap::new();
-    let mut doorways = Vec::new();
-    for (k, kind) in kinds.iter().enumerate() {
-        let (wr, dr) = room_size(*kind);
-        let (w, d) = (
-            (uniform(rng, wr) * 10.0).round() / 10.0,
-            (uniform(rng, dr) * 10.0).round() / 10.0,
-        );
-        let side = k % 2;
-        let x0 = cursor[side];
-        let (y0, y1) = if side == 0 {
-            (CORRIDOR_WIDTH, CORRIDOR_WIDTH + d)
-        } else {
-            (-d, 0.0)
-        };
-        let instance = counts.entry(*kind).or_insert(0);
-        rooms.push(RoomPlan {
-            kind: *kind,
-            instance: *instance,
-            min: [x0, y0],
-            max: [x0 + w, y1],
-        });
-        *instance += 1;
-        cursor[side] += w;
-        let door_x = x0 + 0.4 + DOORWAY / 2.0 + uniform(rng, [0.0, (w - 0.8 - DOORWAY).max(0.0)]);
-        doorways.push(Doorway {
-            room: rooms.len() - 1,
-            x: door_x,
-            y: if side == 0 { CORRIDOR_WIDTH } else { 0.0 },
-        });
-    }
-    (rooms, doorways, cursor[0].max(cursor[1]))
-}
-
-/// The opening between the living room and a dining room beside it (the first, if a home drawn
-/// from a free seed has several), if the home has both and they share more than a metre of wall.
-fn open_plan(rooms: &[RoomPlan]) -> Option<Opening> {
-    let living = rooms.iter().position(|r| r.kind == RoomType::LivingRoom)?;
-    let l = &rooms[living];
-    rooms.iter().enumerate().find_map(|(dining, d)| {
-        if d.kind != RoomType::DiningRoom {
-            return None;
-        }
-        let (x, toward_dining) = if (l.max[0] - d.min[0]).abs() < 1e-4 {
-            (l.max[0], 1.0)
-        } else if (l.min[0] - d.max[0]).abs() < 1e-4 {
-            (l.min[0], -1.0)
-        } else {
-            return None;
-        };
-        let y = [l.min[1].max(d.min[1]), l.max[1].min(d.max[1])];
-        (y[1] - y[0] > 1.0).then_some(Opening {
-            living,
-            dining,
-            x,
-            y,
-            toward_dining,
-        })
-    })
+/// A home's plan: everything walls and furnishing are laid out from.
+pub(super) struct Plan {
+    /// The rooms, each an axis-aligned rectangle; halls are rooms of type corridor.
+    pub(super) rooms: Vec<RoomPlan>,
+    /// Every doorway, inner and outer, in the order their doors are drawn.
+    pub(super) doors: Vec<Door>,
+    /// Wide openings between rooms.
+    pub(super) openings: Vec<Opening>,
+    /// Where the windows go.
+    pub(super) windows: Vec<WindowWall>,
+    /// Whether furnishing keeps a path for the robots between each room's ways in (the named
+    /// homes' original plan did not, and is kept as it was).
+    pub(super) keep_paths: bool,
 }

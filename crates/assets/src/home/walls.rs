@@ -1,13 +1,11 @@
-//! What stands in the walls: the walls themselves along every room edge, with the doorways, the
-//! front door's gap and the open plan's opening cut out; the doors in the doorways; the windows
-//! in the rooms' outer walls.
+//! What stands in the walls: the walls themselves along every room edge, with the doorways and
+//! the wide openings cut out; the doors in the doorways; the windows in the outside walls.
 
 use super::furnish::{Furnisher, Furnishing};
 use super::plan::Plan;
-use super::{CORRIDOR_WIDTH, DOORWAY, WALL_THICKNESS};
+use super::{DOORWAY, WALL_THICKNESS};
 use crate::library::AssetError;
 use crate::scene::{ObjectPlan, WALL_HEIGHT, WallPlan};
-use behavior_core::RoomType;
 use std::collections::BTreeMap;
 
 /// A wall line: vertical (along y) or not, and its coordinate in millimetres (so that edges of
@@ -57,31 +55,14 @@ fn lines(plan: &Plan) -> BTreeMap<Line, Vec<[f32; 2]>> {
     lines
 }
 
-/// What is cut out of the walls: the doorways, the front door at the corridor's west end, and
-/// the open plan's opening.
+/// What is cut out of the walls: every doorway, inner and outer, and every wide opening.
 fn gaps(plan: &Plan) -> Vec<(Line, [f32; 2])> {
-    let mut gaps: Vec<(Line, [f32; 2])> = plan
-        .doorways
-        .iter()
-        .map(|d| {
-            (
-                (false, key(d.y)),
-                [d.x - DOORWAY / 2.0, d.x + DOORWAY / 2.0],
-            )
-        })
-        .collect();
-    let c = &plan.rooms[plan.corridor];
-    gaps.push((
-        (true, key(c.min[0])),
-        [
-            CORRIDOR_WIDTH / 2.0 - DOORWAY / 2.0,
-            CORRIDOR_WIDTH / 2.0 + DOORWAY / 2.0,
-        ],
-    ));
-    if let Some(open) = &plan.opening {
-        gaps.push(((true, key(open.x)), open.y));
-    }
-    gaps
+    let doors = plan.doors.iter().map(|d| d.gap);
+    let openings = plan.openings.iter().map(|o| o.gap);
+    doors
+        .chain(openings)
+        .map(|g| ((g.vertical, key(g.at)), g.span))
+        .collect()
 }
 
 /// Intervals on one line, sorted and merged where they touch.
@@ -134,96 +115,59 @@ fn slab((vertical, at): Line, [a, b]: [f32; 2]) -> WallPlan {
     WallPlan { min, max }
 }
 
-/// How many windows a room type gets on its outer wall.
-fn windows(kind: RoomType) -> usize {
-    match kind {
-        RoomType::LivingRoom => 2,
-        RoomType::Kitchen | RoomType::Bedroom | RoomType::DiningRoom | RoomType::HomeOffice => 1,
-        _ => 0,
-    }
-}
-
 impl Furnisher<'_, '_> {
-    /// The front door, just inside the corridor's west end, its front facing −x.
-    pub(super) fn front_door(&mut self) -> Result<(), AssetError> {
-        let at = [0.0 + WALL_THICKNESS / 2.0 + 0.15, CORRIDOR_WIDTH / 2.0];
-        let door = self.door(self.plan.corridor, at, 3)?;
-        self.objects.push(door);
-        Ok(())
-    }
-
-    /// A room's door. It stands just inside its room and its leaf swings into the room (a door's
-    /// front is its −y side), so an open door still stands in its room.
-    pub(super) fn room_door(&mut self, room: usize) -> Result<(), AssetError> {
-        let doorway = self.plan.doorways[room];
-        let into_room = doorway.y > self.plan.rooms[room].min[1];
-        let inward = if into_room { -0.15 } else { 0.15 };
-        let turns = if into_room { 0 } else { 2 };
-        let door = self.door(room, [doorway.x, doorway.y + inward], turns)?;
-        self.objects.push(door);
-        Ok(())
-    }
-
-    /// A door of a drawn size (narrow enough for a doorway) standing at `at`.
-    fn door(&mut self, room: usize, at: [f32; 2], turns: u8) -> Result<ObjectPlan, AssetError> {
-        let name = self.name("door.n.01");
-        let (mut size, variant) = self.library.sample("door.n.01", self.rng)?;
-        size.x = size.x.min(DOORWAY - 0.05);
-        Ok(ObjectPlan {
-            name,
-            synset: "door.n.01".into(),
-            room,
-            position: [at[0], at[1], 0.0],
-            yaw_quarter_turns: turns,
-            size: size.to_array(),
-            variant,
-            joints: vec![0.0],
-        })
-    }
-
-    /// The room's windows, evenly spaced along its outer wall (the one away from the corridor).
-    /// Their casements open into the room; a floor-length one (variant 1) sweeps the floor in
-    /// front of it, which is kept clear.
-    pub(super) fn windows(&mut self, f: &mut Furnishing) -> Result<(), AssetError> {
-        let room = &self.plan.rooms[f.index];
-        let door_y = self.plan.doorways[f.index].y;
-        let outer_y = if door_y > room.min[1] {
-            room.min[1]
-        } else {
-            room.max[1]
-        };
-        let half = WALL_THICKNESS / 2.0;
-        let count = windows(room.kind);
-        for k in 0..count {
-            let (size, variant) = self.library.sample("window.n.01", self.rng)?;
-            let x =
-                room.min[0] + (k as f32 + 1.0) * (room.max[0] - room.min[0]) / (count as f32 + 1.0);
-            let y = if outer_y < door_y {
-                outer_y + half + 0.05
-            } else {
-                outer_y - half - 0.05
-            };
-            let turns = if outer_y < door_y { 2 } else { 0 };
-            let sweep = if variant == 1 { size.x } else { 0.0 };
-            let inward = if outer_y < door_y { 1.0 } else { -1.0 };
-            f.taken.push(super::footprint::footprint(
-                x,
-                y + inward * sweep / 2.0,
-                size.x,
-                0.12 + sweep,
-                0,
-            ));
-            let name = self.name("window.n.01");
+    /// The doors that belong to a room, each just inside it in its doorway (a door's front is
+    /// its −y side, and its leaf swings to the front).
+    pub(super) fn doors(&mut self, room: usize) -> Result<(), AssetError> {
+        for door in self.plan.doors.iter().filter(|d| d.room == room) {
+            let name = self.name("door.n.01");
+            let (mut size, variant) = self.library.sample("door.n.01", self.rng)?;
+            size.x = size.x.min(DOORWAY - 0.05);
+            let ([x, y], turns) = door.leaf;
             self.objects.push(ObjectPlan {
                 name,
-                synset: "window.n.01".into(),
-                room: f.index,
+                synset: "door.n.01".into(),
+                room,
                 position: [x, y, 0.0],
                 yaw_quarter_turns: turns,
                 size: size.to_array(),
                 variant,
                 joints: vec![0.0],
             });
+        }
+        Ok(())
+    }
+
+    /// The room's windows, evenly spaced along the stretches of outside wall the plan gives it.
+    /// Their casements open into the room; a floor-length one (variant 1) sweeps the floor in
+    /// front of it, which is kept clear.
+    pub(super) fn windows(&mut self, f: &mut Furnishing) -> Result<(), AssetError> {
+        let room = &self.plan.rooms[f.index];
+        for wall in self.plan.windows.iter().filter(|w| w.room == f.index) {
+            for k in 0..wall.count {
+                let (size, variant) = self.library.sample("window.n.01", self.rng)?;
+                let ([x, y], turns, normal) = wall.place(k, room);
+                let sweep = if variant == 1 { size.x } else { 0.0 };
+                let across = u8::from(wall.wall.vertical);
+                f.taken.push(super::footprint::footprint(
+                    x + normal[0] * sweep / 2.0,
+                    y + normal[1] * sweep / 2.0,
+                    size.x,
+                    0.12 + sweep,
+                    across,
+                ));
+                let name = self.name("window.n.01");
+                self.objects.push(ObjectPlan {
+                    name,
+                    synset: "window.n.01".into(),
+                    room: f.index,
+                    position: [x, y, 0.0],
+                    yaw_quarter_turns: turns,
+                    size: size.to_array(),
+                    variant,
+                    joints: vec![0.0],
+                });
+            }
         }
         Ok(())
     }

@@ -4,8 +4,9 @@
 //! the shape families are built in `archetype/`); the [`Library`] resolves any synset to an
 //! archetype (its own or a descendant's in the taxonomy), samples an instance's size and variant
 //! from the episode's random number generator, and equips it with the abilities of its synset and
-//! the named points they need (`library.rs`). [`generate`] lays out homes with furniture from a
-//! seed (`home/`: plan, walls, furnish), [`clutter`] fills a home with the everyday things no
+//! the named points they need (`library.rs`). [`generate`] lays out homes of six plan
+//! [`Family`]s with furniture from a seed (`home/`: program, layout, connect, walls, furnish),
+//! [`clutter`] fills a home with the everyday things no
 //! activity asks for — books on shelves, dishes in cabinets, food in the fridge — placed and
 //! settled with the world's physics (`clutter/`: rules, scatter, settle), [`Scene`] saves, loads
 //! and builds them, everything starting asleep (`scene.rs`), [`covering`] finds the homes an
@@ -37,8 +38,8 @@ pub use catalog::CATALOG;
 pub use clutter::{ClutterError, clutter};
 pub use coverage::{Requirements, covering, first_covering, missing, requirements};
 pub use home::{
-    CORRIDOR_WIDTH, DOOR_CLEARANCE, DOORWAY, Family, NAMED_HOMES, RoomSpec, UnknownFamily,
-    WALL_THICKNESS, generate, generate_family, named_home, named_homes, room_spec,
+    DOOR_CLEARANCE, DOORWAY, Family, NAMED_HOMES, RoomSpec, UnknownFamily, WALL_THICKNESS,
+    generate, generate_family, named_family, named_home, named_homes, room_spec,
 };
 pub use library::{AssetError, Library};
 pub use scene::{

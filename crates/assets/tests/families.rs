@@ -8,7 +8,7 @@ use behavior_data::DataDir;
 use std::collections::{BTreeMap, BTreeSet};
 
 /// Seeds per family.
-const SEEDS: u64 = 30;
+const SEEDS: u64 = 100;
 /// The BehaviorRobot's body radius and Fetch's base radius with 2 cm to spare, m.
 const ROBOTS: [(&str, f32); 2] = [("BehaviorRobot", 0.25), ("Fetch", 0.30)];
 /// The reachability grid's cell, m.

@@ -150,7 +150,7 @@ fn export(prelude: &Prelude, args: ExportArgs) -> Result<()> {
 
 /// A home's plan family as `scene list` shows it.
 fn family_name(scene: &Scene) -> &'static str {
-    scene.family.map_or("corridor (original)", |f| f.name())
+    scene.family.map_or("-", |f| f.name())
 }
 
 /// For each official activity, the named homes that cover it.

@@ -138,7 +138,6 @@ pub(super) fn connect(family: Family, rooms: Vec<RoomPlan>, rng: &mut ChaCha8Rng
             openings.push(Opening {
                 rooms: s.rooms,
                 gap: s.wall,
-                keep_clear: true,
             });
         }
     }
@@ -148,11 +147,12 @@ pub(super) fn connect(family: Family, rooms: Vec<RoomPlan>, rng: &mut ChaCha8Rng
     doors.push(outer_door(entry, &rooms, &outside, rng)?);
     inner_doors(&rooms, &walls, &openings, &mut doors, rng);
     repair(&rooms, &walls, &openings, &mut doors, rng)?;
-    for extra in [RoomType::Garage, RoomType::Kitchen] {
+    // A garage's door, a back door at a hall's end, and half the time one from the kitchen.
+    for extra in [RoomType::Garage, RoomType::Kitchen, RoomType::Corridor] {
         let Some(room) = rooms.iter().position(|r| r.kind == extra) else {
             continue;
         };
-        if room != entry && (extra == RoomType::Garage || chance(rng, 0.5)) {
+        if room != entry && (extra != RoomType::Kitchen || chance(rng, 0.5)) {
             doors.extend(outer_door(room, &rooms, &outside, rng));
         }
     }
@@ -162,7 +162,6 @@ pub(super) fn connect(family: Family, rooms: Vec<RoomPlan>, rng: &mut ChaCha8Rng
         doors,
         openings,
         windows,
-        keep_paths: true,
     })
 }
 

@@ -17,12 +17,13 @@ impl Rect {
             && other.min[1] < self.max[1] + margin
     }
 
-    /// Whether it lies entirely inside `other`.
-    pub(super) fn within(&self, other: &Rect) -> bool {
-        self.min[0] >= other.min[0]
-            && self.min[1] >= other.min[1]
-            && self.max[0] <= other.max[0]
-            && self.max[1] <= other.max[1]
+    /// Whether it lies inside `other` but for `rounding` (m): a footprint computed back from a
+    /// centre placed against a west or south wall falls an ulp outside it.
+    pub(super) fn within_by(&self, other: &Rect, rounding: f32) -> bool {
+        self.min[0] >= other.min[0] - rounding
+            && self.min[1] >= other.min[1] - rounding
+            && self.max[0] <= other.max[0] + rounding
+            && self.max[1] <= other.max[1] + rounding
     }
 }
 

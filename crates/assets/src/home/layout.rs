@@ -215,8 +215,10 @@ fn hall_width(rng: &mut ChaCha8Rng) -> f32 {
 /// Lays out a program as a home of `family`; `None` when the draw gives no usable layout (the
 /// caller draws again).
 pub(super) fn lay_out(family: Family, wants: &[Want], rng: &mut ChaCha8Rng) -> Option<Layout> {
-    let zones = Zones::of(wants);
-    let layout = match family {
+    let (garage, rest): (Vec<Want>, Vec<Want>) =
+        wants.iter().partition(|w| w.kind == RoomType::Garage);
+    let zones = Zones::of(&rest);
+    let mut layout = match family {
         Family::Studio => studio(&zones, rng),
         Family::OpenPlan => open_plan(&zones, rng),
         Family::CentralHall => central_hall(&zones, rng),
@@ -224,12 +226,25 @@ pub(super) fn lay_out(family: Family, wants: &[Want], rng: &mut ChaCha8Rng) -> O
         Family::TwoWings => two_wings(&zones, rng),
         Family::Corridor => corridor(&zones, rng),
     }?;
+    if let Some(garage) = garage.first() {
+        layout.push(attached(garage, &layout, rng)?);
+    }
     let mirrored = chance(rng, 0.5);
     let layout: Layout = if mirrored { mirror(layout) } else { layout };
     layout
         .iter()
         .all(|(kind, r)| fits(*kind, r))
         .then_some(layout)
+}
+
+/// An attached garage: a block of its own against the house's west end, from the front, as
+/// near square as its area allows (its rooms' bands are too shallow for a car turned any way).
+fn attached(garage: &Want, layout: &Layout, rng: &mut ChaCha8Rng) -> Option<(RoomType, Rect)> {
+    let s = room_spec(RoomType::Garage);
+    let west = layout.iter().map(|(_, r)| r.min[0]).fold(f32::MAX, f32::min);
+    let side = on_grid(uniform(rng, s.min_side, 6.2), s.min_side, 6.2)?;
+    let depth = on_grid(garage.area / side, s.min_side, s.area[1] / side)?;
+    Some((RoomType::Garage, rect([west - side, 0.0], [west, depth])))
 }
 
 /// Whether a room's rectangle meets its type's specification.
@@ -296,7 +311,11 @@ fn open_plan(z: &Zones, rng: &mut ChaCha8Rng) -> Option<Layout> {
 /// A hall through the middle from the front: the public and service rooms one behind the other
 /// on one side, the private rooms on the other.
 fn central_hall(z: &Zones, rng: &mut ChaCha8Rng) -> Option<Layout> {
-    let west_rooms: Vec<Want> = z.public.iter().chain(&z.service).copied().collect();
+    let mut west_rooms = public_row(&z.public, rng);
+    if west_rooms[0].kind != RoomType::LivingRoom {
+        west_rooms.reverse(); // the living room by the front door
+    }
+    west_rooms.extend(z.service.iter().copied());
     let (west, east) = (draw_depth(&west_rooms, rng)?, draw_depth(&z.private, rng)?);
     let depth = common_length(&[(&west_rooms, west), (&z.private, east)])?;
     let h = snap(uniform(rng, 1.8, 2.2));
@@ -427,7 +446,11 @@ mod tests {
             want(RoomType::Closet, 4.0),
         ];
         let [lo, hi] = depths(&rooms).expect("a bedroom, a bathroom and a closet share a band");
-        assert!(lo >= 3.0 && hi <= 7.0 / 1.8, "depths {lo}..{hi}");
+        let closet = room_spec(RoomType::Closet);
+        assert!(
+            lo >= 3.0 && hi <= closet.area[1] / closet.min_side,
+            "depths {lo}..{hi}"
+        );
         let depth = 3.5;
         let [shortest, longest] = lengths(&rooms, depth).unwrap();
         for length in [shortest, (shortest + longest) / 2.0, longest] {

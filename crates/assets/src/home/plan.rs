@@ -120,8 +120,6 @@ impl Door {
 pub(super) struct Opening {
     pub(super) rooms: [usize; 2],
     pub(super) gap: Segment,
-    /// Whether furnishing keeps a band along it clear (the plans of the named homes did not).
-    pub(super) keep_clear: bool,
 }
 
 /// A stretch of outside wall of a room holding `count` windows, evenly spaced along it.
@@ -140,7 +138,6 @@ impl WindowWall {
         let t = w.span[0] + (k as f32 + 1.0) * w.length() / (self.count as f32 + 1.0);
         let normal = into_room(w.vertical, w.at, room);
         let [x, y] = w.point(t);
-        // Half the wall, then 5 cm (added in that order, as the named homes were made).
         let half = WALL_THICKNESS / 2.0;
         (
             [
@@ -163,7 +160,4 @@ pub(super) struct Plan {
     pub(super) openings: Vec<Opening>,
     /// Where the windows go.
     pub(super) windows: Vec<WindowWall>,
-    /// Whether furnishing keeps a path for the robots between each room's ways in (the named
-    /// homes' original plan did not, and is kept as it was).
-    pub(super) keep_paths: bool,
 }

@@ -4,7 +4,9 @@
 //! The areas are ranges around the sizes of rooms in detached homes (a bedroom 11–18 m², a
 //! bathroom 6–10 m², a kitchen 16–26 m²), widened upwards where the furniture the official
 //! activities look for in a room must fit in it (a kitchen's run of twelve pieces, a bathroom's
-//! bathtub and shower). The shortest side keeps a room usable by both robots and its furniture.
+//! bathtub and shower). The shortest side keeps a room usable by both robots and its furniture;
+//! a garage's lets a car turned any way stand in it (the sampler turns what it sets on a floor
+//! by a random yaw).
 
 use behavior_core::RoomType;
 use rand_chacha::ChaCha8Rng;
@@ -118,10 +120,10 @@ pub fn room_spec(kind: RoomType) -> RoomSpec {
         RoomType::Bedroom => ([11.0, 18.0], 3.0),
         RoomType::Bathroom => ([6.5, 11.0], 2.4),
         RoomType::HomeOffice => ([8.0, 14.0], 2.6),
-        RoomType::Garage => ([18.0, 34.0], 3.4),
+        RoomType::Garage => ([24.0, 40.0], 4.8),
         RoomType::UtilityRoom => ([6.0, 11.0], 2.4),
-        RoomType::StorageRoom => ([4.5, 10.0], 2.0),
-        RoomType::Closet => ([3.5, 7.0], 1.8),
+        RoomType::StorageRoom => ([5.0, 11.0], 2.2),
+        RoomType::Closet => ([4.0, 8.0], 1.8),
         RoomType::Corridor => ([2.0, 80.0], 1.4),
     };
     RoomSpec { area, min_side }
@@ -135,6 +137,9 @@ pub(super) fn zone(kind: RoomType) -> Zone {
         _ => Zone::Private,
     }
 }
+
+/// The most rooms a home has, its hall included.
+pub(super) const MAX_ROOMS: usize = 12;
 
 /// A room the program asks for: its type and its drawn area.
 #[derive(Clone, Copy, Debug)]
@@ -186,7 +191,18 @@ pub(super) fn program(family: Family, rng: &mut ChaCha8Rng) -> Vec<Want> {
     for _ in 0..count(rng, extras.0, extras.1) {
         let pick = pool.remove(rng.next_u32() as usize % pool.len());
         kinds.push(pick);
+        // A garage mostly comes with a storage room beside it.
+        if pick == Garage && pool.contains(&StorageRoom) && chance(rng, 0.6) {
+            pool.retain(|&k| k != StorageRoom);
+            kinds.push(StorageRoom);
+        }
     }
+    // Half the homes with bedrooms have a walk-in closet besides.
+    if family != Family::Studio && !kinds.contains(&Closet) && chance(rng, 0.5) {
+        kinds.push(Closet);
+    }
+    // At most eleven rooms besides the one hall a layout may add: twelve in all.
+    kinds.truncate(MAX_ROOMS - 1);
     // Public, then private, then service, each in the order drawn.
     let mut ordered: Vec<RoomType> = Vec::new();
     for z in [Zone::Public, Zone::Private, Zone::Service] {

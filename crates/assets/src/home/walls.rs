@@ -1,7 +1,8 @@
 //! What stands in the walls: the walls themselves along every room edge, with the doorways and
 //! the wide openings cut out; the doors in the doorways; the windows in the outside walls.
 
-use super::furnish::{Furnisher, Furnishing};
+use super::arrange::Furnishing;
+use super::furnish::Furnisher;
 use super::plan::Plan;
 use super::{DOORWAY, WALL_THICKNESS};
 use crate::library::AssetError;
@@ -140,7 +141,8 @@ impl Furnisher<'_, '_> {
 
     /// The room's windows, evenly spaced along the stretches of outside wall the plan gives it.
     /// Their casements open into the room; a floor-length one (variant 1) sweeps the floor in
-    /// front of it, which is kept clear.
+    /// front of it, which is kept clear; under a sill-height one (variant 0) only furniture no
+    /// taller than the sill may stand.
     pub(super) fn windows(&mut self, f: &mut Furnishing) -> Result<(), AssetError> {
         let room = &self.plan.rooms[f.index];
         for wall in self.plan.windows.iter().filter(|w| w.room == f.index) {
@@ -149,13 +151,19 @@ impl Furnisher<'_, '_> {
                 let ([x, y], turns, normal) = wall.place(k, room);
                 let sweep = if variant == 1 { size.x } else { 0.0 };
                 let across = u8::from(wall.wall.vertical);
-                f.taken.push(super::footprint::footprint(
+                let before = super::footprint::footprint(
                     x + normal[0] * sweep / 2.0,
                     y + normal[1] * sweep / 2.0,
                     size.x,
                     0.12 + sweep,
                     across,
-                ));
+                );
+                // Low furniture may stand under a sill-height window.
+                if variant == 0 {
+                    f.sills.push(before);
+                } else {
+                    f.taken.push(before);
+                }
                 let name = self.name("window.n.01");
                 self.objects.push(ObjectPlan {
                     name,

@@ -29,25 +29,28 @@ fn a_reset_puts_the_robot_where_the_agent_stood_and_observes() {
 
 #[test]
 fn a_seed_whose_own_sampling_fails_starts_from_a_seed_derived_from_it() {
-    // This seed leaves no room on alder's kitchen floor for the third plank of the goal
-    // (`behavior sample bringing_in_wood --seed 6711016283805236356` fails); Gymnasium's
-    // `check_env` once drew it, and a reset must not fail on a seed the environment drew.
-    let seed = 6_711_016_283_805_236_356;
-    let activity = common::activity("bringing_in_wood");
+    // Some seeds leave no room for an object of the activity (Gymnasium's `check_env` once drew
+    // one for bringing_in_wood), and a reset must not fail on a seed the environment drew. The
+    // first such seed of throwing_away_leftovers from a fixed start, found by sampling (about one
+    // in seven fails in its first covering home: a plate finds no room on the countertop).
+    let activity = common::activity("throwing_away_leftovers");
     let home = common::home(&activity, false);
     let library = Library::new(&common::knowledge().taxonomy);
-    let own = instantiate(
-        &activity,
-        &home,
-        seed,
-        &library,
-        &common::knowledge().taxonomy,
-    );
-    assert!(
-        own.is_err(),
-        "the seed samples by itself now; pick one that fails"
-    );
-    let mut env = common::env("bringing_in_wood");
+    let start = 6_711_016_283_805_236_356u64;
+    let seed = (start..start + 2_000)
+        .find(|&seed| {
+            let own = instantiate(
+                &activity,
+                &home,
+                seed,
+                &library,
+                &common::knowledge().taxonomy,
+            );
+            own.is_err()
+        })
+        .expect("one of 2,000 seeds fails to sample by itself");
+    eprintln!("seed {seed} fails to sample by itself");
+    let mut env = common::env("throwing_away_leftovers");
     let digest = |env: &mut Env| {
         env.reset(seed).unwrap();
         state_digest(env.world().unwrap(), env.robot().unwrap(), 0)

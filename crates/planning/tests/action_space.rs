@@ -103,9 +103,9 @@ fn the_mask_is_the_preconditions_and_discrete_actions_solve_an_activity() {
 #[test]
 fn the_papers_six_put_things_on_a_floor_by_place_ontop() {
     // bringing_in_wood: every plywood on the kitchen's floor, which only a placement on a floor
-    // does.
+    // does (seed 1: at seed 0 a sheet is drawn too heavy for the hand).
     let mut env = common::env("bringing_in_wood");
-    env.reset(0).unwrap();
+    env.reset(1).unwrap();
     let space = PrimitiveSpace::of(&env, PrimitiveSet::Paper).unwrap();
     let n = space.objects().len();
     let names: Vec<String> = space

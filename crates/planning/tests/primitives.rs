@@ -224,19 +224,36 @@ fn drawers_under(env: &Env, object: ObjectId, thing: ObjectId) -> Vec<usize> {
 
 #[test]
 fn what_lies_in_a_drawer_comes_out_and_goes_back_in_with_it() {
-    let mut env = episode("collect_misplaced_items", 0);
-    let (cabinet, necklace) = (
-        object(&env, "cabinet.n.01_1"),
-        object(&env, "necklace.n.01_1"),
-    );
-    act(&mut env, Primitive::NavigateTo, cabinet, 1).unwrap();
-    if state(&env, cabinet, Predicate::Open) {
-        act(&mut env, Primitive::Close, cabinet, 1).unwrap();
+    // The necklace lies in the living room's cabinet; the first named home covering the activity
+    // whose cabinet puts it in a drawer (a cabinet of doors and shelves has none), at seed 4.
+    let activity = common::activity("collect_misplaced_items");
+    let library = behavior_assets::Library::new(&common::knowledge().taxonomy);
+    let needs = behavior_assets::requirements(&activity);
+    let mut found = None;
+    for (name, seed) in behavior_assets::NAMED_HOMES {
+        let home = behavior_assets::generate(name, seed, &library).unwrap();
+        if !behavior_assets::missing(&home, &needs, &common::knowledge().taxonomy).is_empty() {
+            continue;
+        }
+        let config =
+            behavior_env::EnvConfig::new(activity.clone(), common::taxonomy(), vec![home]);
+        let mut env = Env::new(config);
+        env.reset(4).unwrap();
+        let (cabinet, necklace) = (
+            object(&env, "cabinet.n.01_1"),
+            object(&env, "necklace.n.01_1"),
+        );
+        act(&mut env, Primitive::NavigateTo, cabinet, 1).unwrap();
+        if state(&env, cabinet, Predicate::Open) {
+            act(&mut env, Primitive::Close, cabinet, 1).unwrap();
+        }
+        if let &[drawer] = drawers_under(&env, cabinet, necklace).as_slice() {
+            found = Some((env, cabinet, necklace, drawer));
+            break;
+        }
     }
-    let drawers = drawers_under(&env, cabinet, necklace);
-    let &[drawer] = drawers.as_slice() else {
-        panic!("the necklace lies in one drawer: {drawers:?}");
-    };
+    let (mut env, cabinet, necklace, drawer) =
+        found.expect("in some named home the necklace lies in one drawer");
     let at = |env: &Env| {
         let world = env.world().unwrap();
         let link = world.core().link_pose(cabinet, drawer).translation;

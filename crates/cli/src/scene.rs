@@ -39,6 +39,18 @@ pub enum SceneCommand {
         #[arg(long, default_value_t = 60.0)]
         scale: f32,
     },
+    /// Maps of several homes on one sheet: the named homes, or two homes of each plan family
+    /// from free seeds.
+    Sheet {
+        #[arg(long, value_name = "OUT.png")]
+        png: PathBuf,
+        /// Two homes of each family from seeds FIRST, FIRST+1, … instead of the named homes.
+        #[arg(long, value_name = "FIRST")]
+        families_from: Option<u64>,
+        /// Maps per row.
+        #[arg(long, default_value_t = 4, value_parser = clap::value_parser!(u32).range(1..=8))]
+        columns: u32,
+    },
     /// For each official activity, the named homes holding every room and piece of furniture its
     /// `inroom` literals require.
     Coverage {
@@ -113,6 +125,20 @@ pub fn run(command: SceneCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
                 .with_context(|| format!("cannot write {}", png.display()))?;
             eprintln!("{}: map of {}", png.display(), scene.name);
         }
+        SceneCommand::Sheet {
+            png,
+            families_from,
+            columns,
+        } => {
+            let homes = match families_from {
+                None => named_homes(&library)?,
+                Some(first) => two_of_each_family(first, &library)?,
+            };
+            crate::map::sheet(&homes, columns, (640, 520))
+                .save(&png)
+                .with_context(|| format!("cannot write {}", png.display()))?;
+            eprintln!("{}: maps of {} homes", png.display(), homes.len());
+        }
         SceneCommand::Coverage { json } => coverage(&prelude, &library, json)?,
         SceneCommand::Export(args) => export(&prelude, args)?,
     }
@@ -146,6 +172,18 @@ fn export(prelude: &Prelude, args: ExportArgs) -> Result<()> {
         file.len() as f64 / 1e6
     );
     Ok(())
+}
+
+/// Two homes of each plan family, from seeds `first`, `first + 1`, … (each family its own seeds).
+fn two_of_each_family(first: u64, library: &Library) -> Result<Vec<Scene>> {
+    let mut homes = Vec::new();
+    for family in Family::ALL {
+        for k in 0..2 {
+            let seed = first.checked_add(k).context("the seed is too large")?;
+            homes.push(generate_family(&format!("seed {seed}"), seed, family, library)?);
+        }
+    }
+    Ok(homes)
 }
 
 /// A home's plan family as `scene list` shows it.

@@ -241,7 +241,10 @@ pub(super) fn lay_out(family: Family, wants: &[Want], rng: &mut ChaCha8Rng) -> O
 /// near square as its area allows (its rooms' bands are too shallow for a car turned any way).
 fn attached(garage: &Want, layout: &Layout, rng: &mut ChaCha8Rng) -> Option<(RoomType, Rect)> {
     let s = room_spec(RoomType::Garage);
-    let west = layout.iter().map(|(_, r)| r.min[0]).fold(f32::MAX, f32::min);
+    let west = layout
+        .iter()
+        .map(|(_, r)| r.min[0])
+        .fold(f32::MAX, f32::min);
     let side = on_grid(uniform(rng, s.min_side, 6.2), s.min_side, 6.2)?;
     let depth = on_grid(garage.area / side, s.min_side, s.area[1] / side)?;
     Some((RoomType::Garage, rect([west - side, 0.0], [west, depth])))
@@ -275,18 +278,18 @@ fn mirror(layout: Layout) -> Layout {
         .collect()
 }
 
-/// A living room along the front; behind it the kitchen, open onto it, and the private rooms
-/// in a row.
+/// A living room along the front with the bedroom, if there is one, beside it; behind them the
+/// kitchen, open onto the living room, the bathroom and the closet.
 fn studio(z: &Zones, rng: &mut ChaCha8Rng) -> Option<Layout> {
-    let (living, back): (Vec<Want>, Vec<Want>) = z
+    let (front, back): (Vec<Want>, Vec<Want>) = z
         .public
         .iter()
         .chain(&z.private)
-        .partition(|w| w.kind == RoomType::LivingRoom);
-    let (front, deep) = (draw_depth(&living, rng)?, draw_depth(&back, rng)?);
-    let width = common_length(&[(&living, front), (&back, deep)])?;
-    let mut layout = band(&living, rect([0.0, 0.0], [width, front]), 0)?;
-    layout.extend(band(&back, rect([0.0, front], [width, front + deep]), 0)?);
+        .partition(|w| matches!(w.kind, RoomType::LivingRoom | RoomType::Bedroom));
+    let (a, b) = (draw_depth(&front, rng)?, draw_depth(&back, rng)?);
+    let width = common_length(&[(&front, a), (&back, b)])?;
+    let mut layout = band(&front, rect([0.0, 0.0], [width, a]), 0)?;
+    layout.extend(band(&back, rect([0.0, a], [width, a + b]), 0)?);
     Some(layout)
 }
 
@@ -327,8 +330,8 @@ fn central_hall(z: &Zones, rng: &mut ChaCha8Rng) -> Option<Layout> {
 }
 
 /// The service and public rooms in a row along the front; at the living room's end a wing of
-/// private rooms going back, along a hall on the wing's outer side that opens onto the living
-/// room.
+/// private rooms going back along a hall that opens onto the public rooms: on the hall's inner
+/// side only, or on both sides where there are four or more.
 fn l_shaped(z: &Zones, rng: &mut ChaCha8Rng) -> Option<Layout> {
     let mut row: Vec<Want> = z.service.clone();
     let mut public = public_row(&z.public, rng);
@@ -340,15 +343,37 @@ fn l_shaped(z: &Zones, rng: &mut ChaCha8Rng) -> Option<Layout> {
     let length = free_length(&row, depth)?;
     let mut layout = band(&row, rect([0.0, 0.0], [length, depth]), 0)?;
     let h = hall_width(rng);
-    let column = draw_depth(&z.private, rng)?;
-    let wing = free_length(&z.private, column)?;
-    if h + column > length {
+    // Rooms alternate between the hall's sides, so each side is about as long.
+    let (inner, outer): (Vec<Want>, Vec<Want>) = if z.private.len() >= 4 {
+        let (a, b): (Vec<_>, Vec<_>) = z.private.iter().enumerate().partition(|(k, _)| k % 2 == 0);
+        (
+            a.into_iter().map(|p| *p.1).collect(),
+            b.into_iter().map(|p| *p.1).collect(),
+        )
+    } else {
+        (z.private.clone(), Vec::new())
+    };
+    let a = draw_depth(&inner, rng)?;
+    let b = if outer.is_empty() {
+        0.0
+    } else {
+        draw_depth(&outer, rng)?
+    };
+    let wing = if outer.is_empty() {
+        free_length(&inner, a)?
+    } else {
+        common_length(&[(&inner, a), (&outer, b)])?
+    };
+    if a + h + b > length {
         return None;
     }
-    let (x0, x1) = (length - column - h, length - h);
+    let (x0, x1) = (length - b - h - a, length - b - h);
     let top = depth + wing;
-    layout.extend(band(&z.private, rect([x0, depth], [x1, top]), 1)?);
-    layout.push((RoomType::Corridor, rect([x1, depth], [length, top])));
+    layout.extend(band(&inner, rect([x0, depth], [x1, top]), 1)?);
+    layout.push((RoomType::Corridor, rect([x1, depth], [x1 + h, top])));
+    if !outer.is_empty() {
+        layout.extend(band(&outer, rect([x1 + h, depth], [length, top]), 1)?);
+    }
     Some(layout)
 }
 

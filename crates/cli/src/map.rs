@@ -128,13 +128,25 @@ fn draw(scene: &Scene, scale: f32, names: bool) -> RgbImage {
         );
     }
     for (from, to) in openings(scene) {
-        dashed(&mut img, px(from[0], from[1]), px(to[0], to[1]), Rgb([120, 120, 120]));
+        dashed(
+            &mut img,
+            px(from[0], from[1]),
+            px(to[0], to[1]),
+            Rgb([120, 120, 120]),
+        );
     }
     let size = if names { 2 } else { 1 };
     for r in &scene.rooms {
         let (cx, _) = px((r.min[0] + r.max[0]) / 2.0, r.max[1]);
         let (_, top) = px(r.min[0], r.max[1] - 0.25);
-        text(&mut img, &r.label(), cx, top + 10.0, size, Rgb([20, 20, 120]));
+        text(
+            &mut img,
+            &r.label(),
+            cx,
+            top + 10.0,
+            size,
+            Rgb([20, 20, 120]),
+        );
     }
     let family = scene.family.map_or(String::new(), |f| format!(", {f}"));
     text(
@@ -168,7 +180,10 @@ fn openings(scene: &Scene) -> Vec<([f32; 2], [f32; 2])> {
                 } else {
                     continue;
                 };
-                let (lo, hi) = (a.min[along].max(b.min[along]), a.max[along].min(b.max[along]));
+                let (lo, hi) = (
+                    a.min[along].max(b.min[along]),
+                    a.max[along].min(b.max[along]),
+                );
                 let mut t = lo + 0.05;
                 while t < hi {
                     let p = if across == 0 { [at, t] } else { [t, at] };

@@ -180,7 +180,12 @@ fn two_of_each_family(first: u64, library: &Library) -> Result<Vec<Scene>> {
     for family in Family::ALL {
         for k in 0..2 {
             let seed = first.checked_add(k).context("the seed is too large")?;
-            homes.push(generate_family(&format!("seed {seed}"), seed, family, library)?);
+            homes.push(generate_family(
+                &format!("seed {seed}"),
+                seed,
+                family,
+                library,
+            )?);
         }
     }
     Ok(homes)

@@ -12,12 +12,12 @@
 //! - **The task planner** ([`Solver`]): goal options, the next literal, the primitives that make
 //!   it true, re-planning from the facts after each.
 //! - **Motion planning**: [`plan`] finds a collision-free path between two configurations of any
-//! [`Space`] the way the original does (iGibson 2.0.3's `envs/behavior_mp_env.py`,
-//! pybullet-planning's `birrt`): the direct path if free, else RRT-Connect with restarts, then
-//! shortcut smoothing, re-checked at half the space's resolution. [`BaseSpace`] is the base in (x,
-//! y, yaw), swept by the original's base motion and checked with the world's overlap queries
-//! without stepping; where RRT-Connect finds no base path in physical mode, [`lattice_plan`]
-//! searches a 0.1 m,
+//!   [`Space`] the way the original does (iGibson 2.0.3's `envs/behavior_mp_env.py`,
+//!   pybullet-planning's `birrt`): the direct path if free, else RRT-Connect with restarts, then
+//!   shortcut smoothing, re-checked at half the space's resolution. [`BaseSpace`] is the base in
+//!   (x, y, yaw), swept by the original's base motion and checked with the world's overlap
+//!   queries without stepping; where RRT-Connect finds no base path in physical mode,
+//!   [`lattice_plan`] searches a 0.1 m,
 //!   eight-heading lattice of the same space with A* (the way through a door that random
 //!   samples miss, or a fast "none" where the goal's cells are cut off). [`Standing`]
 //!   finds where the base may stand to act on an object (NAVIGATE_TO's pose search).

@@ -235,8 +235,7 @@ fn what_lies_in_a_drawer_comes_out_and_goes_back_in_with_it() {
         if !behavior_assets::missing(&home, &needs, &common::knowledge().taxonomy).is_empty() {
             continue;
         }
-        let config =
-            behavior_env::EnvConfig::new(activity.clone(), common::taxonomy(), vec![home]);
+        let config = behavior_env::EnvConfig::new(activity.clone(), common::taxonomy(), vec![home]);
         let mut env = Env::new(config);
         env.reset(4).unwrap();
         let (cabinet, necklace) = (

@@ -25,7 +25,8 @@ function ahead(from, to, body) {
 }
 
 async function main() {
-  const { server, address, stopped } = startServer(demos);
+  // Seed 2: at seed 1 the body starts facing furniture within half a metre.
+  const { server, address, stopped } = startServer(demos, { seed: 2 });
   const url = await address;
   const browser = await launchBrowser();
   try {

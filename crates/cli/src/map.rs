@@ -64,8 +64,9 @@ pub fn render(scene: &Scene, scale: f32) -> RgbImage {
     draw(scene, scale, true)
 }
 
-/// Draws the scene at `scale` pixels per metre; with `names`, furniture named and room labels
-/// large, else room labels small and furniture as outlines only (for a sheet of many homes).
+/// Draws the scene at `scale` pixels per metre; with `names`, furniture named, room labels large
+/// and a title, else room labels small, furniture as outlines only and no title (for a sheet of
+/// many homes, which captions each).
 fn draw(scene: &Scene, scale: f32, names: bool) -> RgbImage {
     let (lo, hi) = extent(scene);
     let width = ((hi[0] - lo[0] + 2.0 * MARGIN) * scale).ceil() as u32;
@@ -148,15 +149,17 @@ fn draw(scene: &Scene, scale: f32, names: bool) -> RgbImage {
             Rgb([20, 20, 120]),
         );
     }
-    let family = scene.family.map_or(String::new(), |f| format!(", {f}"));
-    text(
-        &mut img,
-        &format!("{} (seed {}{family})", scene.name, scene.seed),
-        width as f32 / 2.0,
-        10.0,
-        2,
-        Rgb([0, 0, 0]),
-    );
+    if names {
+        let family = scene.family.map_or(String::new(), |f| format!(", {f}"));
+        text(
+            &mut img,
+            &format!("{} (seed {}{family})", scene.name, scene.seed),
+            width as f32 / 2.0,
+            10.0,
+            2,
+            Rgb([0, 0, 0]),
+        );
+    }
     img
 }
 
@@ -238,12 +241,6 @@ pub fn sheet(scenes: &[Scene], columns: u32, cell: (u32, u32)) -> RgbImage {
             let (tx, ty) = (x0 + dx + x, y0 + 24 + y);
             if x < cell.0 && y + 24 < cell.1 && tx < img.width() && ty < img.height() {
                 img.put_pixel(tx, ty, *p);
-            }
-        }
-        // The map's own title is replaced by the caption.
-        for y in y0..(y0 + 24 + 20).min(img.height()) {
-            for x in x0..(x0 + cell.0).min(img.width()) {
-                img.put_pixel(x, y, Rgb([255, 255, 255]));
             }
         }
         let family = scene.family.map_or("-", |f| f.name());

@@ -407,6 +407,45 @@ fn scene_list_names_fifteen_homes() {
     let out = stdout(&output);
     assert_eq!(out.lines().count(), 16, "{out}");
     assert!(out.contains("alder") && out.contains("willow") && out.contains("kitchen_0"));
+    for family in behavior_assets::Family::ALL {
+        assert!(
+            out.contains(family.name()),
+            "no {family} home listed: {out}"
+        );
+    }
+}
+
+#[test]
+fn scene_generate_takes_a_family_and_scene_sheet_draws_two_of_each() {
+    let path = scratch("seed_5_studio.json");
+    let file = path.to_str().unwrap();
+    let generate = |family: &str| {
+        let args = ["scene", "generate", "--seed", "5", "--no-clutter"];
+        behavior(&[&args[..], &["--family", family, "--out", file]].concat())
+    };
+    assert!(generate("studio").status.success());
+    let scene =
+        behavior_assets::Scene::from_json(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    assert_eq!(scene.family, Some(behavior_assets::Family::Studio));
+    let wrong = generate("castle");
+    assert_eq!(wrong.status.code(), Some(2));
+    let said = String::from_utf8_lossy(&wrong.stderr);
+    assert!(said.contains("unknown plan family `castle`"), "{said}");
+    let png = scratch("families.png");
+    behavior_ok(&[
+        "scene",
+        "sheet",
+        "--families-from",
+        "1",
+        "--png",
+        png.to_str().unwrap(),
+    ]);
+    let sheet = image::open(&png).unwrap();
+    assert_eq!(
+        (sheet.width(), sheet.height()),
+        (4 * 640, 3 * 520),
+        "12 maps, 4 a row"
+    );
 }
 
 #[test]

@@ -77,7 +77,7 @@ const NAMED: [(&str, u64, Family); 15] = [
     ("willow", 135, Family::Studio),
 ];
 
-/// The default homes: name and seed (their families: [`named_family`]).
+/// The default homes: name and seed (a generated home's `family` names its family).
 pub const NAMED_HOMES: [(&str, u64); 15] = {
     let mut homes = [("", 0); 15];
     let mut k = 0;
@@ -87,11 +87,6 @@ pub const NAMED_HOMES: [(&str, u64); 15] = {
     }
     homes
 };
-
-/// The plan family of the named home called `name`.
-pub fn named_family(name: &str) -> Option<Family> {
-    NAMED.iter().find(|h| h.0 == name).map(|h| h.2)
-}
 
 /// Of every wall (m); walls stand centred on room edges, half in each room.
 pub const WALL_THICKNESS: f32 = 0.1;

@@ -39,7 +39,7 @@ pub use clutter::{ClutterError, clutter};
 pub use coverage::{Requirements, covering, first_covering, missing, requirements};
 pub use home::{
     DOOR_CLEARANCE, DOORWAY, Family, NAMED_HOMES, RoomSpec, UnknownFamily, WALL_THICKNESS,
-    generate, generate_family, named_family, named_home, named_homes, room_spec,
+    generate, generate_family, named_home, named_homes, room_spec,
 };
 pub use library::{AssetError, Library};
 pub use scene::{

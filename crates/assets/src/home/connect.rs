@@ -249,7 +249,7 @@ fn outer_door(
         .filter(south)
         .max_by(longest)
         .or_else(|| walls.max_by(longest))?;
-    Some(door_in(room, None, *wall, OUTER_DOOR_WALL, rooms, rng))
+    Some(door_in(room, None, *wall, OUTER_DOOR_WALL, rng))
 }
 
 /// A door in `room` somewhere along `wall` (at least `needs` long), clear of its ends.
@@ -258,13 +258,17 @@ fn door_in(
     other: Option<usize>,
     wall: Segment,
     needs: f32,
-    rooms: &[RoomPlan],
     rng: &mut ChaCha8Rng,
 ) -> Door {
     let margin = needs / 2.0;
     let t = uniform(rng, wall.span[0] + margin, wall.span[1] - margin);
     let t = (t * 20.0).round() / 20.0;
-    Door::into(room, other, wall, t, &rooms[room])
+    Door {
+        room,
+        other,
+        line: wall,
+        t,
+    }
 }
 
 /// The door between `room` and `other`, belonging to whichever is not a hall, so that its leaf
@@ -281,7 +285,7 @@ fn inner_door(
     } else {
         (room, other)
     };
-    door_in(owner, Some(beyond), wall, DOOR_WALL, rooms, rng)
+    door_in(owner, Some(beyond), wall, DOOR_WALL, rng)
 }
 
 /// Whether `a` and `b` are joined by a door or an opening.
@@ -440,7 +444,7 @@ fn window_walls(rooms: &[RoomPlan], outside: &[Vec<Segment>], doors: &[Door]) ->
 fn clear_of_doors(wall: Segment, doors: &[Door]) -> Vec<Segment> {
     let mut pieces = vec![wall.span];
     for d in doors.iter().filter(|d| d.other.is_none()) {
-        let g = d.gap;
+        let g = d.gap();
         if g.vertical != wall.vertical || (g.at - wall.at).abs() > 1e-3 {
             continue;
         }

@@ -241,10 +241,7 @@ pub(super) fn lay_out(family: Family, wants: &[Want], rng: &mut ChaCha8Rng) -> O
 /// near square as its area allows (its rooms' bands are too shallow for a car turned any way).
 fn attached(garage: &Want, layout: &Layout, rng: &mut ChaCha8Rng) -> Option<(RoomType, Rect)> {
     let s = room_spec(RoomType::Garage);
-    let west = layout
-        .iter()
-        .map(|(_, r)| r.min[0])
-        .fold(f32::MAX, f32::min);
+    let (west, _) = west_and_east(layout);
     let side = on_grid(uniform(rng, s.min_side, 6.2), s.min_side, 6.2)?;
     let depth = on_grid(garage.area / side, s.min_side, s.area[1] / side)?;
     Some((RoomType::Garage, rect([west - side, 0.0], [west, depth])))
@@ -258,16 +255,16 @@ fn fits(kind: RoomType, r: &Rect) -> bool {
     w.min(d) >= s.min_side - 1e-3 && (s.area[0] - 1e-3..=s.area[1] + 1e-3).contains(&area)
 }
 
+/// The x of the layout's west and east edges.
+fn west_and_east(layout: &Layout) -> (f32, f32) {
+    layout.iter().fold((f32::MAX, f32::MIN), |(w, e), (_, r)| {
+        (w.min(r.min[0]), e.max(r.max[0]))
+    })
+}
+
 /// The layout turned over west for east, then moved back to start at x = 0.
 fn mirror(layout: Layout) -> Layout {
-    let east = layout
-        .iter()
-        .map(|(_, r)| r.max[0])
-        .fold(f32::MIN, f32::max);
-    let west = layout
-        .iter()
-        .map(|(_, r)| r.min[0])
-        .fold(f32::MAX, f32::min);
+    let (west, east) = west_and_east(&layout);
     layout
         .into_iter()
         .map(|(k, r)| {
@@ -423,10 +420,7 @@ fn two_wings(z: &Zones, rng: &mut ChaCha8Rng) -> Option<Layout> {
 
 /// The layout moved so that its west edge is at x = 0.
 fn shifted(layout: Layout) -> Layout {
-    let west = layout
-        .iter()
-        .map(|(_, r)| r.min[0])
-        .fold(f32::MAX, f32::min);
+    let (west, _) = west_and_east(&layout);
     layout
         .into_iter()
         .map(|(k, r)| {

@@ -56,7 +56,7 @@ pub(super) fn into_room(vertical: bool, at: f32, room: &RoomPlan) -> [f32; 2] {
 }
 
 /// Quarter turns that make an object's front (its −y side when unturned) face `normal`.
-pub(super) fn turns_facing(normal: [f32; 2]) -> u8 {
+fn turns_facing(normal: [f32; 2]) -> u8 {
     match normal {
         [_, y] if y < -0.5 => 0,
         [x, _] if x > 0.5 => 1,
@@ -68,45 +68,40 @@ pub(super) fn turns_facing(normal: [f32; 2]) -> u8 {
 /// A doorway with its door: in a wall between two rooms, or between a room and the outside.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Door {
-    /// The room the door belongs to and whose furnishing draws it.
+    /// The room the door belongs to: its leaf stands just inside it and swings into it, and
+    /// its furnishing draws it.
     pub(super) room: usize,
     /// The room on the other side, or `None` for the outside.
     pub(super) other: Option<usize>,
-    /// The doorway: a [`DOORWAY`]-wide stretch of wall.
-    pub(super) gap: Segment,
-    /// Where the door's bottom centre stands and its quarter turns.
-    pub(super) leaf: ([f32; 2], u8),
+    /// The wall line it is in.
+    pub(super) line: Segment,
+    /// Its centre along `line`.
+    pub(super) t: f32,
 }
 
 impl Door {
-    /// A door in `room` centred at `t` along `line`, its leaf just inside `room` and swinging
-    /// into it.
-    pub(super) fn into(
-        room: usize,
-        other: Option<usize>,
-        line: Segment,
-        t: f32,
-        r: &RoomPlan,
-    ) -> Door {
-        let normal = into_room(line.vertical, line.at, r);
-        let [x, y] = line.point(t);
-        Door {
-            room,
-            other,
-            gap: Segment {
-                span: [t - DOORWAY / 2.0, t + DOORWAY / 2.0],
-                ..line
-            },
-            leaf: (
-                [x + 0.15 * normal[0], y + 0.15 * normal[1]],
-                turns_facing(normal),
-            ),
+    /// The doorway: a [`DOORWAY`]-wide stretch of its wall.
+    pub(super) fn gap(&self) -> Segment {
+        Segment {
+            span: [self.t - DOORWAY / 2.0, self.t + DOORWAY / 2.0],
+            ..self.line
         }
+    }
+
+    /// Where the door's bottom centre stands (15 cm inside its room, `room` being
+    /// `rooms[self.room]`) and its quarter turns, its front facing into the room.
+    pub(super) fn leaf(&self, room: &RoomPlan) -> ([f32; 2], u8) {
+        let normal = into_room(self.line.vertical, self.line.at, room);
+        let [x, y] = self.line.point(self.t);
+        (
+            [x + 0.15 * normal[0], y + 0.15 * normal[1]],
+            turns_facing(normal),
+        )
     }
 
     /// The floor kept free in front of the doorway, on both sides of its wall.
     pub(super) fn clearance(&self) -> Rect {
-        self.gap.band(DOOR_CLEARANCE, 0.1)
+        self.gap().band(DOOR_CLEARANCE, 0.1)
     }
 
     /// Whether it joins `room` to anything.

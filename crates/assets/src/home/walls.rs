@@ -58,7 +58,7 @@ fn lines(plan: &Plan) -> BTreeMap<Line, Vec<[f32; 2]>> {
 
 /// What is cut out of the walls: every doorway, inner and outer, and every wide opening.
 fn gaps(plan: &Plan) -> Vec<(Line, [f32; 2])> {
-    let doors = plan.doors.iter().map(|d| d.gap);
+    let doors = plan.doors.iter().map(|d| d.gap());
     let openings = plan.openings.iter().map(|o| o.gap);
     doors
         .chain(openings)
@@ -124,7 +124,7 @@ impl Furnisher<'_, '_> {
             let name = self.name("door.n.01");
             let (mut size, variant) = self.library.sample("door.n.01", self.rng)?;
             size.x = size.x.min(DOORWAY - 0.05);
-            let ([x, y], turns) = door.leaf;
+            let ([x, y], turns) = door.leaf(&self.plan.rooms[room]);
             self.objects.push(ObjectPlan {
                 name,
                 synset: "door.n.01".into(),

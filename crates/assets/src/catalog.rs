@@ -74,7 +74,7 @@ pub const CATALOG: &[Archetype] = &[
     Archetype { synset: "egg.n.02", shape: Shape::Ball, min: [0.04, 0.04, 0.05], max: [0.045, 0.045, 0.06], density: 1030.0, material: Material::Food, color: [245, 235, 215] },
     Archetype { synset: "electric_refrigerator.n.01", shape: Shape::Fridge, min: [0.6, 0.6, 1.6], max: [0.9, 0.8, 1.9], density: 1000.0, material: Material::Metal, color: [225, 230, 235] },
     Archetype { synset: "envelope.n.01", shape: Shape::Slab, min: [0.16, 0.11, 0.002], max: [0.24, 0.16, 0.008], density: 700.0, material: Material::Paper, color: [245, 240, 225] },
-    Archetype { synset: "facsimile.n.02", shape: Shape::Block, min: [0.3, 0.25, 0.12], max: [0.42, 0.35, 0.2], density: 700.0, material: Material::Plastic, color: [70, 70, 75] }, // fax machine
+    Archetype { synset: "facsimile.n.02", shape: Shape::Block, min: [0.3, 0.25, 0.12], max: [0.42, 0.35, 0.2], density: 250.0, material: Material::Plastic, color: [70, 70, 75] }, // hollow casing: a fax machine weighs 2–7 kg
     Archetype { synset: "fish.n.02", shape: Shape::Block, min: [0.15, 0.07, 0.02], max: [0.35, 0.12, 0.06], density: 1050.0, material: Material::Food, color: [220, 140, 120] }, // fish as food (fillet or whole)
     Archetype { synset: "floor.n.01", shape: Shape::Floor, min: [4.0, 4.0, 0.1], max: [4.0, 4.0, 0.1], density: 600.0, material: Material::Wood, color: [185, 175, 160] },
     Archetype { synset: "flour.n.01", shape: Shape::Block, min: [0.12, 0.08, 0.2], max: [0.16, 0.11, 0.28], density: 600.0, material: Material::Paper, color: [245, 245, 235] }, // bag of flour

@@ -1,8 +1,8 @@
 //! Procedural homes from a seed: a floor plan of one of six families, walls with doorways and
 //! doors, windows, and furniture per room type.
 //!
-//! [`generate_family`] runs five steps, each in a private module of its own, all drawing from the
-//! home's one generator in a fixed order (so a seed gives one home, bit for bit):
+//! [`generate_family`] runs these steps, each in a private module of its own, all drawing from
+//! the home's generators in a fixed order (so a seed gives one home, bit for bit):
 //!
 //! - `program`: the rooms a home of the [`Family`] asks for: living room, kitchen (and a dining
 //!   room but in a studio), bedrooms, bathrooms and a few of office, closet, utility room,
@@ -10,6 +10,8 @@
 //!   [`RoomSpec`].
 //! - `layout`: the family's outline cut into bands and halls, each band into its rooms, so that
 //!   every room meets its specification (a draw that cannot is drawn again).
+//! - `lshape`: perhaps a room grown into a corner of a neighbour, both then L-shaped (from a
+//!   stream of their own, so a home without one is what its seed gave before).
 //! - `connect`: wide openings between the public rooms (a hall's end opens onto one too), a door
 //!   from each room to the room it is expected off (a bathroom off a hall or a bedroom, a closet
 //!   off a bedroom, a garage off the utility room or the kitchen), doors added until every room
@@ -23,6 +25,8 @@
 //!   sofa and a cabinet across from it, nightstands at the head of the bed, chairs round a table),
 //!   out of the doorways' way, with a path kept between each room's ways in for the widest robot
 //!   base. An item that does not fit is left out (coverage reports what a home lacks).
+//! - `rugs`: rugs under the dining table, the sofa's low table and beds, from the furniture alone
+//!   (no draw).
 //!
 //! A dining room beside the living room opens onto it with no wall between, as in iGibson's
 //! scans, where the rooms are told apart by the floor map only. One of the living room's tables
@@ -30,7 +34,8 @@
 //! dining room's floor: this is what makes `collect_misplaced_items` possible as written (its
 //! shoe lies under a living-room table and on the dining room's floor).
 //!
-//! Rooms are rectangles and homes have one storey. [`NAMED_HOMES`] are fifteen fixed homes
+//! Rooms are rectangles or L-shapes (a main rectangle and annexes) and homes have one storey.
+//! [`NAMED_HOMES`] are fifteen fixed homes
 //! spanning the families, the default set; `footprint` holds the floor rectangles the steps share
 //! and `plan` the plan they hand on.
 
@@ -39,8 +44,10 @@ mod connect;
 mod footprint;
 mod furnish;
 mod layout;
+mod lshape;
 mod plan;
 mod program;
+mod rugs;
 mod walls;
 
 pub use program::{Family, RoomSpec, UnknownFamily, room_spec};
@@ -115,6 +122,9 @@ pub fn named_home(name: &str, library: &Library) -> Option<Result<Scene, AssetEr
 /// costs microseconds (furnishing comes after).
 const ATTEMPTS: usize = 2_000;
 
+/// Mixed into a home's seed for the stream its L-shapes draw from.
+const L_SHAPE_STREAM: u64 = 0x4c5f_5348_4150_4553;
+
 /// Generates the home of a seed: a named home (name and seed as [`NAMED_HOMES`] gives them) in
 /// its family, any other in the family [`Family::of_seed`] gives it.
 pub fn generate(name: &str, seed: u64, library: &Library) -> Result<Scene, AssetError> {
@@ -135,13 +145,17 @@ pub fn generate_family(
     library: &Library,
 ) -> Result<Scene, AssetError> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    // L-shapes draw from a stream of their own, so that a home with none is the home its seed
+    // gave before rooms could be L-shaped.
+    let mut bends = ChaCha8Rng::seed_from_u64(seed ^ L_SHAPE_STREAM);
     for _ in 0..ATTEMPTS {
         let wants = program::program(family, &mut rng);
         let Some(layout) = layout::lay_out(family, &wants, &mut rng) else {
             continue;
         };
-        let rooms = connect::rooms(&layout);
-        if let Some(plan) = connect::connect(family, rooms, &mut rng) {
+        let mut rooms = connect::rooms(&layout);
+        let annexes = lshape::grow(&mut rooms, &mut bends);
+        if let Some(plan) = connect::connect(family, rooms, annexes, &mut rng) {
             return finish(name, seed, family, plan, library, &mut rng);
         }
     }
@@ -162,11 +176,13 @@ fn finish(
 ) -> Result<Scene, AssetError> {
     let walls = walls::walls(&plan);
     let objects = furnish::furnish(&plan, library, rng)?;
+    let (mut rooms, objects) = lshape::merge(plan.rooms, &plan.annexes, objects);
+    rugs::lay(&mut rooms, &objects, seed);
     Ok(Scene {
         name: name.to_string(),
         seed,
         family: Some(family),
-        rooms: plan.rooms,
+        rooms,
         walls,
         objects,
         clutter: Vec::new(),

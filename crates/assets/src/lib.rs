@@ -43,7 +43,7 @@ pub use home::{
 };
 pub use library::{AssetError, Library};
 pub use scene::{
-    BuiltScene, ClutterPlan, FLOOR_THICKNESS, ObjectPlan, RoomPlan, Scene, SceneError, WALL_HEIGHT,
-    WallPlan,
+    BuiltScene, ClutterPlan, FLOOR_THICKNESS, ObjectPlan, RUG_THICKNESS, RoomPlan, RugPlan, Scene,
+    SceneError, WALL_HEIGHT, WallPlan,
 };
 pub use urdf::{ImportError, import_urdf};

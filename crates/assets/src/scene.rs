@@ -6,7 +6,10 @@
 //! ```json
 //! {
 //!   "name": "alder", "seed": 1,
-//!   "rooms":   [{"kind": "kitchen", "instance": 0, "min": [0.0, 1.6], "max": [4.5, 6.0]}],
+//!   "rooms":   [{"kind": "kitchen", "instance": 0, "min": [0.0, 1.6], "max": [4.5, 6.0]},
+//!               {"kind": "bedroom", "instance": 0, "min": [4.5, 1.6], "max": [8.0, 6.0],
+//!                "annexes": [{"min": [8.0, 4.0], "max": [9.6, 6.0]}],
+//!                "rugs": [{"min": [5.0, 2.0], "max": [7.2, 4.8], "color": [150, 52, 48]}]}],
 //!   "walls":   [{"min": [0.0, 1.55, 0.0], "max": [4.5, 1.65, 2.5]}],
 //!   "objects": [{"name": "cabinet_0", "synset": "cabinet.n.01", "room": 0,
 //!                "position": [0.5, 5.6, 0.0], "yaw_quarter_turns": 2,
@@ -21,7 +24,9 @@
 //! A thing of the clutter has a full pose instead (its frame's origin, its bottom centre as
 //! built, and a unit quaternion x, y, z, w), where it came to rest; `clutter` may be left out
 //! (a furniture-only home, which is then written without it). Every room gets a floor object
-//! named `floor_<kind>_<instance>`.
+//! named `floor_<kind>_<instance>`: a slab under its rectangle and under each of its `annexes`
+//! (an L-shaped room's further rectangles, each sharing a whole side with the first), and its
+//! `rugs` on top, 1 cm slabs of pile; both are left out of the file where there are none.
 //!
 //! A scene file describes a home at rest, so the world it builds starts asleep: the doors,
 //! drawers and lids of its furniture and all its clutter (see [`behavior_sim::ObjectSpec::asleep`]).
@@ -29,7 +34,9 @@
 
 use crate::library::{AssetError, Library};
 use behavior_core::RoomType;
-use behavior_sim::{ObjectId, ObjectSpec, Part, Primitive, Room, World, WorldError};
+use behavior_sim::{
+    FloorRect, Material, ObjectId, ObjectSpec, Part, Primitive, Room, Visual, World, WorldError,
+};
 use rapier3d::math::{Pose, Rotation, Vector};
 use serde::{Deserialize, Serialize};
 
@@ -64,7 +71,8 @@ pub struct Scene {
     pub clutter: Vec<ClutterPlan>,
 }
 
-/// A room: its type and its axis-aligned extent on the floor.
+/// A room: its type, its extent on the floor (a rectangle, with annexes for an L-shaped room)
+/// and the rugs on its floor.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RoomPlan {
@@ -72,18 +80,64 @@ pub struct RoomPlan {
     pub kind: RoomType,
     /// Counts rooms of the same type from 0, so `bedroom_1` is the second bedroom.
     pub instance: u32,
-    /// Its south-west corner (x, y), m.
+    /// Its main rectangle's south-west corner (x, y), m.
     pub min: [f32; 2],
-    /// Its north-east corner (x, y), m.
+    /// Its main rectangle's north-east corner (x, y), m.
     pub max: [f32; 2],
+    /// Further rectangles of an L-shaped room, each sharing a whole side with the main one
+    /// (no wall between); left out of the file for a rectangular room.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub annexes: Vec<FloorRect>,
+    /// Rugs lying on its floor; left out of the file where there are none.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub rugs: Vec<RugPlan>,
 }
 
 impl RoomPlan {
+    /// A rectangular room with no rugs.
+    pub fn new(kind: RoomType, instance: u32, min: [f32; 2], max: [f32; 2]) -> RoomPlan {
+        RoomPlan {
+            kind,
+            instance,
+            min,
+            max,
+            annexes: Vec::new(),
+            rugs: Vec::new(),
+        }
+    }
+
     /// Its name in the world and in messages: `kitchen_0`, `bedroom_1`.
     pub fn label(&self) -> String {
         format!("{}_{}", self.kind, self.instance)
     }
+
+    /// The rectangles of its floor, the main one first.
+    pub fn rects(&self) -> impl Iterator<Item = FloorRect> + '_ {
+        FloorRect::footprint(self.min, self.max, &self.annexes)
+    }
+
+    /// Whether its floor contains (x, y), edges included.
+    pub fn contains(&self, x: f32, y: f32) -> bool {
+        self.rects().any(|r| r.contains(x, y))
+    }
 }
+
+/// A rug: a thin slab of pile lying on a room's floor, part of the floor object (so that what
+/// stands on it is `onfloor`, and robots' bases drive over it as over the floor).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RugPlan {
+    /// Its south-west corner (x, y), m.
+    pub min: [f32; 2],
+    /// Its north-east corner (x, y), m.
+    pub max: [f32; 2],
+    /// Its colour, sRGB.
+    pub color: [u8; 3],
+}
+
+/// How thick a rug is, m: under the 3 cm that Fetch's base clears and the 3 cm of the flat
+/// things an object still counts `onfloor` on.
+pub const RUG_THICKNESS: f32 = 0.01;
 
 /// A wall piece: an axis-aligned box standing on the floor.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -221,9 +275,7 @@ impl Scene {
 
     /// The room containing (x, y), if any.
     pub fn room_at(&self, x: f32, y: f32) -> Option<usize> {
-        self.rooms
-            .iter()
-            .position(|r| (r.min[0]..=r.max[0]).contains(&x) && (r.min[1]..=r.max[1]).contains(&y))
+        self.rooms.iter().position(|r| r.contains(x, y))
     }
 
     /// Builds the world: floors, walls, every object at its pose with its joints set, then the
@@ -343,31 +395,53 @@ pub(crate) fn add_clutter(
     Ok(world.add(spec)?)
 }
 
-/// Adds a room's floor, a slab whose top is at z = 0, and registers the room with it.
+/// The box between `min` and `max` on the floor, from `z0` to `z1`, as a part of an object
+/// whose origin is at `origin`; `None` if it is empty or not finite.
+fn slab_part(min: [f32; 2], max: [f32; 2], [z0, z1]: [f32; 2], origin: Vector) -> Option<Part> {
+    let (w, d) = (max[0] - min[0], max[1] - min[1]);
+    if !(w.is_finite() && d.is_finite() && w > 0.0 && d > 0.0) {
+        return None;
+    }
+    let half = Vector::new(w / 2.0, d / 2.0, (z1 - z0) / 2.0);
+    let centre = Vector::new(
+        (min[0] + max[0]) / 2.0,
+        (min[1] + max[1]) / 2.0,
+        (z0 + z1) / 2.0,
+    );
+    Some(Part::at(
+        Primitive::Box { half_extents: half },
+        centre - origin,
+    ))
+}
+
+/// Adds a room's floor, a slab whose top is at z = 0 under each of its rectangles, with its rugs
+/// on top (parts of the floor, in pile), and registers the room with it.
 fn add_floor(
     world: &mut World,
     room: &RoomPlan,
     library: &Library,
 ) -> Result<ObjectId, SceneError> {
-    let (w, d) = (room.max[0] - room.min[0], room.max[1] - room.min[1]);
-    if !(w.is_finite() && d.is_finite() && w > 0.0 && d > 0.0) {
-        return Err(SceneError::BadGeometry { what: room.label() });
-    }
-    let slab = Primitive::Box {
-        half_extents: Vector::new(w / 2.0, d / 2.0, FLOOR_THICKNESS / 2.0),
-    };
+    let bad = || SceneError::BadGeometry { what: room.label() };
     let center = Vector::new(
         (room.min[0] + room.max[0]) / 2.0,
         (room.min[1] + room.max[1]) / 2.0,
         -FLOOR_THICKNESS / 2.0,
     );
-    let mut spec = ObjectSpec::new(
-        &format!("floor_{}", room.label()),
-        "floor.n.01",
-        vec![Part::new(slab)],
-    )
-    .at(center)
-    .fixed();
+    let slab = [-FLOOR_THICKNESS, 0.0];
+    let mut parts = room
+        .rects()
+        .map(|r| slab_part(r.min, r.max, slab, center).ok_or_else(bad))
+        .collect::<Result<Vec<_>, _>>()?;
+    for rug in &room.rugs {
+        let part = slab_part(rug.min, rug.max, [0.0, RUG_THICKNESS], center).ok_or_else(bad)?;
+        parts.push(part.with_visual(Visual {
+            color: rug.color,
+            material: Material::Cloth,
+        }));
+    }
+    let mut spec = ObjectSpec::new(&format!("floor_{}", room.label()), "floor.n.01", parts)
+        .at(center)
+        .fixed();
     // Floors get dusty and stained like any surface.
     if let Some(abilities) = library.taxonomy().abilities(&spec.category) {
         spec.abilities = abilities.clone();
@@ -378,6 +452,7 @@ fn add_floor(
         instance: room.instance,
         min: room.min,
         max: room.max,
+        annexes: room.annexes.clone(),
         floor: Some(floor),
     });
     Ok(floor)

@@ -1,10 +1,12 @@
 //! Homes of every plan family, over many seeds: they generate, every room meets its type's
-//! specification, every room is reached from outside by a disc as wide as each robot's base,
-//! windows stand in outside walls, and no furniture stands in front of a doorway.
+//! specification, L-shaped rooms are made and open along their inner side, every rectangle of
+//! every room is reached from outside by a disc as wide as each robot's base, windows stand in
+//! outside walls, no furniture stands in front of a doorway, and rugs lie in their rooms.
 
 use behavior_assets::{Family, Library, Scene, generate_family, room_spec};
 use behavior_core::RoomType;
 use behavior_data::DataDir;
+use behavior_sim::FloorRect;
 use std::collections::{BTreeMap, BTreeSet};
 
 /// Seeds per family.
@@ -47,36 +49,11 @@ fn obstacles(scene: &Scene) -> Vec<Rect> {
 
 /// For each room, whether a disc of `radius` coming from outside the house reaches a place
 /// inside it, on a grid of [`CELL`].
-fn reachable_rooms(scene: &Scene, radius: f32) -> Vec<bool> {
+fn reachable_rooms(scene: &Scene, radius: f32) -> Vec<Vec<bool>> {
     let margin = 1.0;
-    let lo = [
-        scene
-            .rooms
-            .iter()
-            .map(|r| r.min[0])
-            .fold(f32::MAX, f32::min)
-            - margin,
-        scene
-            .rooms
-            .iter()
-            .map(|r| r.min[1])
-            .fold(f32::MAX, f32::min)
-            - margin,
-    ];
-    let hi = [
-        scene
-            .rooms
-            .iter()
-            .map(|r| r.max[0])
-            .fold(f32::MIN, f32::max)
-            + margin,
-        scene
-            .rooms
-            .iter()
-            .map(|r| r.max[1])
-            .fold(f32::MIN, f32::max)
-            + margin,
-    ];
+    let rects: Vec<_> = scene.rooms.iter().flat_map(|r| r.rects()).collect();
+    let lo = [0, 1].map(|k| rects.iter().map(|r| r.min[k]).fold(f32::MAX, f32::min) - margin);
+    let hi = [0, 1].map(|k| rects.iter().map(|r| r.max[k]).fold(f32::MIN, f32::max) + margin);
     let n = [
         ((hi[0] - lo[0]) / CELL).ceil() as usize,
         ((hi[1] - lo[1]) / CELL).ceil() as usize,
@@ -128,20 +105,49 @@ fn reachable_rooms(scene: &Scene, radius: f32) -> Vec<bool> {
             visit(i, j + 1);
         }
     }
-    let mut reached = vec![false; scene.rooms.len()];
+    // For each room, for each of its rectangles.
+    let mut reached: Vec<Vec<bool>> = scene
+        .rooms
+        .iter()
+        .map(|r| vec![false; r.rects().count()])
+        .collect();
     for i in 0..n[0] {
         for j in 0..n[1] {
             if seen[i * n[1] + j] {
                 let [x, y] = centre(i, j);
                 for (k, r) in scene.rooms.iter().enumerate() {
-                    if r.min[0] < x && x < r.max[0] && r.min[1] < y && y < r.max[1] {
-                        reached[k] = true;
+                    for (m, p) in r.rects().enumerate() {
+                        if p.min[0] < x && x < p.max[0] && p.min[1] < y && y < p.max[1] {
+                            reached[k][m] = true;
+                        }
                     }
                 }
             }
         }
     }
     reached
+}
+
+/// The side two rectangles share, as its two ends, if they meet along one.
+fn shared_side(a: &FloorRect, b: &FloorRect) -> Option<([f32; 2], [f32; 2])> {
+    for (across, along) in [(0, 1), (1, 0)] {
+        let at = if (a.max[across] - b.min[across]).abs() < 1e-3 {
+            a.max[across]
+        } else if (a.min[across] - b.max[across]).abs() < 1e-3 {
+            a.min[across]
+        } else {
+            continue;
+        };
+        let (lo, hi) = (
+            a.min[along].max(b.min[along]),
+            a.max[along].min(b.max[along]),
+        );
+        if hi - lo > 1e-3 {
+            let point = |t: f32| if across == 0 { [at, t] } else { [t, at] };
+            return Some((point(lo), point(hi)));
+        }
+    }
+    None
 }
 
 /// The unit vector an object's front faces after its quarter turns.
@@ -175,28 +181,32 @@ fn every_family_makes_homes_whose_rooms_meet_their_specification() {
         for r in &scene.rooms {
             kinds.insert(r.kind);
             let spec = room_spec(r.kind);
+            // The main rectangle's sides, and the whole footprint's area.
             let (w, d) = (r.max[0] - r.min[0], r.max[1] - r.min[1]);
-            let area = w * d;
+            let area: f32 = r.rects().map(|p| p.area()).sum();
             assert!(
                 w.min(d) >= spec.min_side - 1e-3
                     && area >= spec.area[0] - 1e-3
                     && area <= spec.area[1] + 1e-3,
-                "{}: {} is {w:.2} × {d:.2} m ({area:.1} m²), outside {spec:?}",
+                "{}: {} is {w:.2} × {d:.2} m ({area:.1} m² in all), outside {spec:?}",
                 scene.name,
                 r.label()
             );
         }
-        // No two rooms overlap.
-        for (i, a) in scene.rooms.iter().enumerate() {
-            for b in &scene.rooms[i + 1..] {
+        // No two rectangles overlap, within a room or between rooms.
+        let rects: Vec<_> = scene
+            .rooms
+            .iter()
+            .flat_map(|r| r.rects().map(move |p| (r.label(), p)))
+            .collect();
+        for (i, (la, a)) in rects.iter().enumerate() {
+            for (lb, b) in &rects[i + 1..] {
                 let overlap_x = a.max[0].min(b.max[0]) - a.min[0].max(b.min[0]);
                 let overlap_y = a.max[1].min(b.max[1]) - a.min[1].max(b.min[1]);
                 assert!(
                     overlap_x <= 1e-3 || overlap_y <= 1e-3,
-                    "{}: {} and {} overlap",
+                    "{}: {la} and {lb} overlap",
                     scene.name,
-                    a.label(),
-                    b.label()
                 );
             }
         }
@@ -224,13 +234,15 @@ fn every_room_is_reached_from_outside_by_each_robot() {
     for (_, scene) in homes() {
         for (robot, radius) in ROBOTS {
             let reached = reachable_rooms(&scene, radius);
-            for (r, ok) in scene.rooms.iter().zip(reached) {
-                if !ok {
-                    failures.push(format!(
-                        "{}: {robot} cannot reach {}",
-                        scene.name,
-                        r.label()
-                    ));
+            for (r, parts) in scene.rooms.iter().zip(reached) {
+                for (k, ok) in parts.into_iter().enumerate() {
+                    if !ok {
+                        failures.push(format!(
+                            "{}: {robot} cannot reach rectangle {k} of {}",
+                            scene.name,
+                            r.label()
+                        ));
+                    }
                 }
             }
         }
@@ -290,4 +302,95 @@ fn windows_stand_in_outside_walls_and_doorways_are_clear() {
             }
         }
     }
+}
+
+#[test]
+fn some_rooms_are_l_shaped_with_no_wall_inside_them() {
+    let (mut homes_with, mut total) = (0, 0);
+    for (_, scene) in homes() {
+        total += 1;
+        if scene.rooms.iter().any(|r| !r.annexes.is_empty()) {
+            homes_with += 1;
+        }
+        for r in scene.rooms.iter().filter(|r| !r.annexes.is_empty()) {
+            let main = r.rects().next().unwrap();
+            for annex in &r.annexes {
+                let (w, d) = (annex.max[0] - annex.min[0], annex.max[1] - annex.min[1]);
+                assert!(
+                    w.min(d) >= 1.5 - 1e-3,
+                    "{}: an annex of {} is {w:.2} × {d:.2} m",
+                    scene.name,
+                    r.label()
+                );
+                // Joined to the main rectangle along the annex's whole side, with no wall on it.
+                let (a, b) = shared_side(&main, annex).unwrap_or_else(|| {
+                    panic!("{}: an annex of {} is apart from it", scene.name, r.label())
+                });
+                let side = (b[0] - a[0]).abs().max((b[1] - a[1]).abs());
+                assert!(
+                    (side - w).abs() < 1e-3 || (side - d).abs() < 1e-3,
+                    "{}: an annex of {} meets it along {side:.2} m only",
+                    scene.name,
+                    r.label()
+                );
+                for k in 1..10 {
+                    let t = k as f32 / 10.0;
+                    let p = [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
+                    let walled = scene.walls.iter().any(|w| {
+                        w.min[0] <= p[0] && p[0] <= w.max[0] && w.min[1] <= p[1] && p[1] <= w.max[1]
+                    });
+                    assert!(
+                        !walled,
+                        "{}: a wall inside {} at {p:?}",
+                        scene.name,
+                        r.label()
+                    );
+                }
+            }
+        }
+    }
+    eprintln!("{homes_with} of {total} homes have an L-shaped room");
+    assert!(
+        homes_with * 5 >= total,
+        "{homes_with} of {total} homes have an L-shaped room (a fifth at least expected)"
+    );
+}
+
+#[test]
+fn rugs_lie_under_tables_within_their_rooms() {
+    let (mut with_rug, mut total) = (0, 0);
+    for (_, scene) in homes() {
+        total += 1;
+        let mut table_rug = false;
+        for (index, r) in scene.rooms.iter().enumerate() {
+            for rug in &r.rugs {
+                let inside = r.rects().any(|p| {
+                    p.min[0] <= rug.min[0]
+                        && p.min[1] <= rug.min[1]
+                        && rug.max[0] <= p.max[0]
+                        && rug.max[1] <= p.max[1]
+                });
+                assert!(
+                    inside,
+                    "{}: a rug of {} lies outside it",
+                    scene.name,
+                    r.label()
+                );
+                let under_table = scene.objects.iter().any(|o| {
+                    let [x, y, _] = o.position;
+                    o.room == index
+                        && o.synset == "table.n.02"
+                        && (rug.min[0]..=rug.max[0]).contains(&x)
+                        && (rug.min[1]..=rug.max[1]).contains(&y)
+                });
+                table_rug |= under_table;
+            }
+        }
+        with_rug += usize::from(table_rug);
+    }
+    eprintln!("{with_rug} of {total} homes have a rug under a table");
+    assert!(
+        with_rug * 10 >= total * 9,
+        "{with_rug} of {total} homes have a rug under a table (nine in ten expected)"
+    );
 }

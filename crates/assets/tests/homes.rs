@@ -5,6 +5,7 @@ use behavior_assets::{Library, NAMED_HOMES, Scene, generate};
 use behavior_assets::{missing, requirements};
 use behavior_core::RoomType;
 use behavior_data::DataDir;
+use behavior_sim::FloorRect;
 
 #[test]
 fn named_homes_generate_build_and_round_trip_exactly() {
@@ -126,12 +127,9 @@ fn every_official_activity_is_covered_by_at_least_five_named_homes() {
     assert!(short.is_empty(), "{}", short.join("\n"));
 }
 
-/// The stretch of wall rooms `a` and `b` share: whether it is vertical, its coordinate and its
-/// span along it.
-fn shared_edge(
-    a: &behavior_assets::RoomPlan,
-    b: &behavior_assets::RoomPlan,
-) -> Option<(bool, f32, [f32; 2])> {
+/// The stretch of wall rectangles `a` and `b` share: whether it is vertical, its coordinate and
+/// its span along it.
+fn shared_edge(a: &FloorRect, b: &FloorRect) -> Option<(bool, f32, [f32; 2])> {
     for (vertical, across, along) in [(true, 0, 1), (false, 1, 0)] {
         let at = if a.max[across] == b.min[across] {
             a.max[across]
@@ -144,7 +142,8 @@ fn shared_edge(
             a.min[along].max(b.min[along]),
             a.max[along].min(b.max[along]),
         ];
-        if span[1] - span[0] > 1.0 {
+        // As long as the generator opens up between public rooms.
+        if span[1] - span[0] >= 2.0 {
             return Some((vertical, at, span));
         }
     }
@@ -167,11 +166,13 @@ fn a_dining_room_opens_onto_the_living_room_with_a_table_across() {
             .position(|r| r.kind == RoomType::LivingRoom)
             .unwrap();
         let l = &scene.rooms[living];
+        // A rectangle of a dining room sharing a long wall with one of the living room's.
         let beside = scene
             .rooms
             .iter()
             .filter(|d| d.kind == RoomType::DiningRoom)
-            .find_map(|d| Some((d, shared_edge(l, d)?)));
+            .flat_map(|d| d.rects())
+            .find_map(|d| Some((d, l.rects().find_map(|p| shared_edge(&p, &d))?)));
         let Some((d, (vertical, at, span))) = beside else {
             continue;
         };

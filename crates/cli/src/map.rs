@@ -46,7 +46,7 @@ pub fn render_marked(
 /// The scene's bounding rectangle in x, y.
 fn extent(scene: &Scene) -> ([f32; 2], [f32; 2]) {
     let (mut lo, mut hi) = ([f32::MAX; 2], [f32::MIN; 2]);
-    for r in &scene.rooms {
+    for r in scene.rooms.iter().flat_map(|r| r.rects()) {
         for k in 0..2 {
             lo[k] = lo[k].min(r.min[k]);
             hi[k] = hi[k].max(r.max[k]);
@@ -88,7 +88,14 @@ fn draw(scene: &Scene, scale: f32, names: bool) -> RgbImage {
         }
     };
     for r in &scene.rooms {
-        fill(&mut img, r.min, r.max, room_color(r.kind));
+        for rect in r.rects() {
+            fill(&mut img, rect.min, rect.max, room_color(r.kind));
+        }
+        // Rugs in their own colour, paled so that furniture on them still shows.
+        for rug in &r.rugs {
+            let pale = Rgb(rug.color.map(|c| ((u16::from(c) + 2 * 235) / 3) as u8));
+            fill(&mut img, rug.min, rug.max, pale);
+        }
     }
     for w in &scene.walls {
         fill(
@@ -172,9 +179,17 @@ fn openings(scene: &Scene) -> Vec<([f32; 2], [f32; 2])> {
                 && (w.min[1] - 0.01..=w.max[1] + 0.01).contains(&y)
         })
     };
+    // Every rectangle of every room, with its room: an L-shaped room's own rectangles meet
+    // with no wall between, and that is no opening.
+    let rects: Vec<(usize, behavior_sim::FloorRect)> = scene
+        .rooms
+        .iter()
+        .enumerate()
+        .flat_map(|(i, r)| r.rects().map(move |rect| (i, rect)))
+        .collect();
     let mut out = Vec::new();
-    for (i, a) in scene.rooms.iter().enumerate() {
-        for b in &scene.rooms[i + 1..] {
+    for (k, (i, a)) in rects.iter().enumerate() {
+        for (_, b) in rects[k + 1..].iter().filter(|(j, _)| j != i) {
             for (across, along) in [(0, 1), (1, 0)] {
                 let at = if (a.max[across] - b.min[across]).abs() < 1e-3 {
                     a.max[across]

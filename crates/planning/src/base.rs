@@ -122,9 +122,9 @@ impl<'w> BaseSpace<'w> {
 /// sample to go round what blocks the box around start and goal.
 pub fn home_extent(world: &World) -> Option<([f32; 2], [f32; 2])> {
     let rooms = world.rooms();
-    let first = rooms.first()?;
+    let first = rooms.first()?.bounds();
     let (mut min, mut max) = (first.min, first.max);
-    for r in rooms {
+    for r in rooms.iter().map(|r| r.bounds()) {
         min = [min[0].min(r.min[0]), min[1].min(r.min[1])];
         max = [max[0].max(r.max[0]), max[1].max(r.max[1])];
     }

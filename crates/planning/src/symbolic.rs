@@ -476,14 +476,16 @@ fn stand_in_room(
 ) -> Option<BaseConfig> {
     let room = world.rooms().iter().find(|r| r.floor == Some(floor))?;
     (0..FLOOR_STAND_TRIES).find_map(|_| {
-        let x = uniform(rng, room.min[0], room.max[0]);
-        let y = uniform(rng, room.min[1], room.max[1]);
+        // In the box around an L-shaped room; a point in its notch is drawn again.
+        let b = room.bounds();
+        let x = uniform(rng, b.min[0], b.max[0]);
+        let y = uniform(rng, b.min[1], b.max[1]);
         let c = BaseConfig::new(
             x,
             y,
             uniform(rng, -std::f32::consts::PI, std::f32::consts::PI),
         );
-        standing.clear_at(world, &c).then_some(c)
+        (room.contains(x, y) && standing.clear_at(world, &c)).then_some(c)
     })
 }
 

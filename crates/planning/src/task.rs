@@ -528,7 +528,11 @@ impl<'a> Solver<'a> {
             .ok_or("no robot")?
             .base_pose(world)
             .translation;
-        let gap = |r: &&behavior_sim::Room| floor_gap(r.min, r.max, at.x, at.y);
+        let gap = |r: &&behavior_sim::Room| {
+            r.rects()
+                .map(|p| floor_gap(p.min, p.max, at.x, at.y))
+                .fold(f32::MAX, f32::min)
+        };
         let floor = world
             .rooms()
             .iter()
@@ -541,6 +545,15 @@ impl<'a> Solver<'a> {
 
     /// A placement: `x` carried to `y` and put on, in, under or next to it.
     fn place(&mut self, x: ObjectId, p: Predicate, y: ObjectId) -> Result<(), Reason> {
+        // A sliced object relates as its halves do, both of them: each that does not is placed.
+        if let Some(halves) = self.world().object(x).replaced_by {
+            for half in halves {
+                if !self.world().core().relation(p, half, y) {
+                    self.place(half, p, y)?;
+                }
+            }
+            return Ok(());
+        }
         let primitive = match p {
             Predicate::OnTop | Predicate::Touching => Primitive::PlaceOnTop,
             Predicate::Inside => Primitive::PlaceInside,

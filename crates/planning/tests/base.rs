@@ -295,6 +295,7 @@ fn stands_by_the_wall(with_room: bool) -> Vec<BaseConfig> {
             instance: 0,
             min: [0.0, 0.0],
             max: [3.0, 3.0],
+            annexes: Vec::new(),
             floor: None,
         });
     }

@@ -128,7 +128,7 @@ fn stains_need_a_soaked_tool_and_soaking_needs_running_water() {
 
 #[test]
 fn a_closed_fridge_is_opened_before_things_go_in_and_slicing_needs_a_knife() {
-    let mut env = episode("bottling_fruit", 0);
+    let mut env = episode("bottling_fruit", 3);
     let fridge = object(&env, "electric_refrigerator.n.01_1");
     let (strawberry, knife) = (
         object(&env, "strawberry.n.01_1"),

@@ -179,6 +179,8 @@ fn mix(a: [u8; 3], b: [u8; 3], t: f32) -> [u8; 3] {
 pub(crate) enum Finisher {
     /// Floors and walls: every part alike, whatever its own look.
     Whole(Finish),
+    /// A floor: its slabs alike, its rugs (parts of cloth) in pile of their own colour.
+    Floor(Finish),
     /// Anything else: each part by its material, the object's seed for all, and the home's
     /// wood species for furniture.
     ByMaterial {
@@ -196,7 +198,7 @@ impl Finisher {
         match o.category.as_str() {
             "floor.n.01" => {
                 let room = world.rooms().iter().find(|r| r.floor == Some(object));
-                Finisher::Whole(floor(room.map(|r| r.kind), home))
+                Finisher::Floor(floor(room.map(|r| r.kind), home))
             }
             "wall.n.01" => Finisher::Whole(Finish {
                 color: pick(&PAINTS, home, 11),
@@ -216,6 +218,15 @@ impl Finisher {
     pub(crate) fn part(&self, visual: Visual) -> Finish {
         let (seed, species) = match *self {
             Finisher::Whole(finish) => return finish,
+            Finisher::Floor(finish) if visual.material == Material::Cloth => {
+                return Finish {
+                    color: visual.color,
+                    pattern: Pattern::Carpet,
+                    roughness: 0.95,
+                    ..finish
+                };
+            }
+            Finisher::Floor(finish) => return finish,
             Finisher::ByMaterial { seed, species } => (seed, species),
         };
         let (pattern, roughness, metallic) = match visual.material {

@@ -66,8 +66,10 @@ impl Lighting {
         let lamps = world
             .rooms()
             .iter()
+            // A lamp over each rectangle of a room (an L-shaped room's alcove has its own).
+            .flat_map(|r| r.rects())
             .map(|r| {
-                let area = (r.max[0] - r.min[0]) * (r.max[1] - r.min[1]);
+                let area = r.area();
                 let centre = Vector::new(
                     0.5 * (r.min[0] + r.max[0]),
                     0.5 * (r.min[1] + r.max[1]),

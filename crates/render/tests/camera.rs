@@ -523,6 +523,7 @@ fn the_lamp_of_the_cameras_room_shades_the_floor_under_a_board() {
             instance: 0,
             min: [-3.0, -3.0],
             max: [3.0, 3.0],
+            annexes: Vec::new(),
             floor: Some(floor),
         });
         floor
@@ -713,6 +714,7 @@ fn a_tiled_floor_shades_its_grout_by_its_relief() {
         instance: 0,
         min: [-2.0, -2.0],
         max: [2.0, 2.0],
+        annexes: Vec::new(),
         floor: Some(floor),
     });
     // 40 cm above the floor, looking down a little aslant: a pixel is about 3.5 mm there, so the

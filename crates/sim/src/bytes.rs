@@ -26,7 +26,7 @@ pub const WORLD_MAGIC: [u8; 8] = *b"BHVWORLD";
 /// The version of the byte format [`World::to_bytes`] writes and the only one
 /// [`World::from_bytes`] reads. Bump it whenever a saved type changes shape — the sim's own types
 /// or rapier's (a rapier upgrade), whose layout postcard does not describe.
-pub const WORLD_FORMAT_VERSION: u32 = 5;
+pub const WORLD_FORMAT_VERSION: u32 = 6;
 
 /// Magic, version, checksum, payload length.
 const HEADER_LEN: usize = 8 + 4 + 4 + 8;

@@ -109,6 +109,20 @@ impl RelationMemo {
 }
 
 impl Core {
+    /// Whether `a` stands in the binary relation `predicate` to `b` (`ontop`, `inside`,
+    /// `under`, `nextto`, `touching` or `onfloor`); false for any other predicate.
+    pub fn relation(&self, predicate: Predicate, a: ObjectId, b: ObjectId) -> bool {
+        match predicate {
+            Predicate::OnTop => self.ontop(a, b),
+            Predicate::Inside => self.inside(a, b),
+            Predicate::Under => self.under(a, b),
+            Predicate::NextTo => self.nextto(a, b),
+            Predicate::Touching => self.touching(a, b),
+            Predicate::OnFloor => self.onfloor(a, b),
+            _ => false,
+        }
+    }
+
     /// `touching(a, b)` (see the module docs).
     pub fn touching(&self, a: ObjectId, b: ObjectId) -> bool {
         self.relate(Predicate::Touching, a, b)

@@ -85,7 +85,7 @@ pub use placement::{
     PlacementFailure, Relation, SUPPORT_NORMAL_Z, TOUCH_GAP,
 };
 pub use query::{Proximity, QueryFilter, RayHit, Solid};
-pub use room::Room;
+pub use room::{FloorRect, Room};
 pub use states::StateError;
 pub use states::dirt::{
     CLEAN_THRESHOLD, CLEANING_REACH, FLOOR_CLEAN_THRESHOLD, MIN_PARTICLES, PARTICLES_PER_SET,

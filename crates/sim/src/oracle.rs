@@ -3,7 +3,7 @@
 
 use crate::World;
 use crate::object::ObjectId;
-use behavior_core::{Atom, InstanceId, Predicate, PredicateOracle};
+use behavior_core::{Atom, InstanceId, PredicateOracle};
 
 /// A world seen through an activity's bindings: `bindings[i]` is the object of instance `i`.
 /// Floors (`floor.n.01_k`) are bound to room floor objects; an unbound instance satisfies nothing.
@@ -26,15 +26,9 @@ impl PredicateOracle for BoundWorld<'_> {
             return false;
         };
         let b = atom.object.and_then(|o| self.object(o));
-        let (w, c) = (self.world, self.world.core());
         match (atom.predicate, b) {
-            (Predicate::OnTop, Some(b)) => c.ontop(a, b),
-            (Predicate::Inside, Some(b)) => c.inside(a, b),
-            (Predicate::Under, Some(b)) => c.under(a, b),
-            (Predicate::NextTo, Some(b)) => c.nextto(a, b),
-            (Predicate::Touching, Some(b)) => c.touching(a, b),
-            (Predicate::OnFloor, Some(b)) => c.onfloor(a, b),
-            (p, _) if p.arity() == 1 => w.state(a, p),
+            (p, Some(b)) => self.world.core().relation(p, a, b),
+            (p, None) if p.arity() == 1 => self.world.state(a, p),
             _ => false,
         }
     }

@@ -5,7 +5,7 @@ mod common;
 
 use behavior_core::Predicate;
 use behavior_core::rng::seeded;
-use behavior_sim::{Relation, World};
+use behavior_sim::{PLACEMENT_ATTEMPTS, Relation, World};
 use common::*;
 use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::SeedableRng;
@@ -77,11 +77,8 @@ fn an_impossible_placement_is_a_clear_error_and_the_object_stays() {
     let err = world
         .place(table, Relation::Inside, bin, &mut rng)
         .unwrap_err();
-    assert!(
-        err.to_string()
-            .starts_with("could not place table_1 inside bin_1 in 20 attempts"),
-        "{err}"
-    );
+    let expected = format!("could not place table_1 inside bin_1 in {PLACEMENT_ATTEMPTS} attempts");
+    assert!(err.to_string().starts_with(&expected), "{err}");
     assert_eq!(world.pose(table), before);
 }
 

@@ -15,7 +15,7 @@ use rapier3d::math::Vector;
 /// Between pieces of furniture (m).
 const GAP: f32 = 0.05;
 /// The height of a low window's sill (m): what is no taller may stand under it.
-pub(super) const SILL: f32 = 0.9;
+const SILL: f32 = 0.9;
 
 /// A room being furnished: its floor inside the walls and what is taken of it.
 pub(super) struct Furnishing {
@@ -32,17 +32,58 @@ pub(super) struct Furnishing {
     pub(super) sills: Vec<Rect>,
     /// The wall a kitchen's run of counters starts from, once its first piece stands.
     pub(super) run: Option<usize>,
-    /// Whether the piece being placed may stand under a low window: one of [`UNDER_SILLS`]
-    /// no taller than the sill.
-    pub(super) under_sills: bool,
+    /// What the piece being placed may do about low windows' sills.
+    pub(super) sill_rule: SillRule,
     /// The footprints of the tables standing in the room, the last placed last: chairs go round
     /// the last.
     pub(super) tables: Vec<Rect>,
 }
 
+/// What a piece of furniture may do about the floor in front of a low window.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum SillRule {
+    /// Keep clear of it: the piece is taller than the sill.
+    Clear,
+    /// Stand under the window: one of [`UNDER_SILLS`] no taller than the sill.
+    Under,
+    /// Stand under it but for its back, which rises above the sill against its own wall: a
+    /// bed, whose side may lie under a window and whose headboard may not.
+    BackClear,
+}
+
+impl SillRule {
+    /// The rule for a piece of `synset` and `height`.
+    pub(super) fn of(synset: &str, height: f32) -> SillRule {
+        if height > SILL {
+            SillRule::Clear
+        } else if synset == "bed.n.01" {
+            SillRule::BackClear
+        } else if UNDER_SILLS.contains(&synset) {
+            SillRule::Under
+        } else {
+            SillRule::Clear
+        }
+    }
+}
+
+/// How deep a piece's back is that rises above a sill (a bed's headboard), m.
+const BACK: f32 = 0.15;
+
+/// The strip of `rect` along its back, against wall `wall`.
+fn back_of(rect: &Rect, wall: usize) -> Rect {
+    let mut back = *rect;
+    match wall {
+        0 => back.min[1] = rect.max[1] - BACK,
+        1 => back.min[0] = rect.max[0] - BACK,
+        2 => back.max[1] = rect.min[1] + BACK,
+        _ => back.max[0] = rect.min[0] + BACK,
+    }
+    back
+}
+
 /// The pieces whose shape stays within their height and that may so stand under a low window
 /// when no taller than its sill (a sink's tap and a bed's headboard rise above theirs).
-pub(super) const UNDER_SILLS: [&str; 6] = [
+const UNDER_SILLS: [&str; 6] = [
     "countertop.n.01",
     "dishwasher.n.01",
     "cabinet.n.01",
@@ -70,7 +111,7 @@ impl Furnishing {
             placed: Vec::new(),
             sills: Vec::new(),
             run: None,
-            under_sills: false,
+            sill_rule: SillRule::Clear,
             tables: Vec::new(),
         }
     }
@@ -195,13 +236,19 @@ fn along_of(wall: usize, [x, y]: [f32; 2]) -> f32 {
 }
 
 impl Furnishing {
-    /// Whether the piece being placed may take `rect` against a wall: inside the room, clear of
-    /// what is taken (and of low windows' sills unless it may stand under them), and leaving the
-    /// room's paths.
-    fn free_by_a_wall(&self, rect: &Rect) -> bool {
+    /// Whether the piece being placed may take `rect` against wall `wall`: inside the room,
+    /// clear of what is taken (and of low windows' sills as its [`SillRule`] says), and leaving
+    /// the room's paths.
+    fn free_by_a_wall(&self, rect: &Rect, wall: usize) -> bool {
+        let clear_of_sills = |r: &Rect| self.sills.iter().all(|o| !r.overlaps(o, GAP));
+        let sills = match self.sill_rule {
+            SillRule::Clear => clear_of_sills(rect),
+            SillRule::Under => true,
+            SillRule::BackClear => clear_of_sills(&back_of(rect, wall)),
+        };
         rect.within_by(&self.inner, ROUNDING)
             && self.taken.iter().all(|o| !rect.overlaps(o, GAP))
-            && (self.under_sills || self.sills.iter().all(|o| !rect.overlaps(o, GAP)))
+            && sills
             && paths_kept(self, rect)
     }
 
@@ -222,7 +269,7 @@ impl Furnishing {
             let mut t = along_lo + w / 2.0;
             while t + w / 2.0 <= along_hi {
                 let ([x, y], turns, rect) = wall_spot(&r, size, wall, t);
-                if self.free_by_a_wall(&rect) {
+                if self.free_by_a_wall(&rect, wall) {
                     self.take(rect);
                     return Some(([x, y, 0.0], turns));
                 }
@@ -259,7 +306,7 @@ impl Furnishing {
                 continue;
             }
             let ([x, y], turns, rect) = wall_spot_off(&r, size, wall, t, off);
-            if self.free_by_a_wall(&rect) {
+            if self.free_by_a_wall(&rect, wall) {
                 self.take(rect);
                 return Some(([x, y, 0.0], turns));
             }
@@ -275,7 +322,7 @@ impl Furnishing {
             return None;
         }
         let ([x, y], turns, rect) = wall_spot(&r, size, wall, t);
-        self.free_by_a_wall(&rect).then(|| {
+        self.free_by_a_wall(&rect, wall).then(|| {
             self.take(rect);
             ([x, y, 0.0], turns)
         })
@@ -353,9 +400,9 @@ impl Furnishing {
             let wall = wall_of(w.yaw_quarter_turns);
             let t = along_of(wall, [w.position[0], w.position[1]]);
             // A sink stands out from the wall, its tap clear of the casement.
-            self.under_sills = true;
+            let rule = std::mem::replace(&mut self.sill_rule, SillRule::Under);
             let spot = self.near_off(size, wall, t, BEFORE_A_WINDOW);
-            self.under_sills = false;
+            self.sill_rule = rule;
             if let Some(spot) = spot {
                 self.run = Some(wall);
                 return Some(spot);
@@ -386,7 +433,8 @@ pub(super) fn on_countertop(
     })
 }
 
-/// Puts a table near the room's middle, or a chair beside the room's last table.
+/// Puts a table near the room's middle, or a chair beside the room's last table (none where
+/// the room has no table, or no room is left beside it).
 pub(super) fn in_the_middle(
     f: &mut Furnishing,
     size: Vector,
@@ -398,7 +446,8 @@ pub(super) fn in_the_middle(
         candidates.extend(beside_the_last_table(f, size));
     }
     let center = [(r.min[0] + r.max[0]) / 2.0, (r.min[1] + r.max[1]) / 2.0];
-    for ring in 0..12 {
+    let rings = if chair { 0 } else { 12 };
+    for ring in 0..rings {
         let step = 0.25 * ring as f32;
         for (dx, dy) in [
             (0.0, 0.0),
@@ -412,10 +461,13 @@ pub(super) fn in_the_middle(
             candidates.push(([center[0] + dx, center[1] + dy], 0));
         }
     }
+    // A table keeps 30 cm from everything; a chair, whose spot is already that far from its
+    // table, only the gap between pieces (chairs side by side at a table).
+    let margin = if chair { GAP } else { 0.3 };
     for ([x, y], turns) in candidates {
         let rect = footprint(x, y, size.x, size.y, turns);
         if rect.within_by(&r, ROUNDING)
-            && f.taken.iter().all(|o| !rect.overlaps(o, 0.3))
+            && f.taken.iter().all(|o| !rect.overlaps(o, margin))
             && paths_kept(f, &rect)
         {
             f.take(rect);
@@ -425,7 +477,8 @@ pub(super) fn in_the_middle(
     None
 }
 
-/// Spots for a chair on each side of the room's last table, facing it.
+/// Spots for a chair on each side of the room's last table, facing it: two along each side long
+/// enough for two chairs, else one at its middle.
 fn beside_the_last_table(f: &Furnishing, size: Vector) -> Vec<([f32; 2], u8)> {
     let Some(table) = f.tables.last() else {
         return Vec::new();
@@ -434,14 +487,32 @@ fn beside_the_last_table(f: &Furnishing, size: Vector) -> Vec<([f32; 2], u8)> {
         (table.min[0] + table.max[0]) / 2.0,
         (table.min[1] + table.max[1]) / 2.0,
     );
-    // Beyond the 0.3 m kept around every middle piece, so the chair is accepted.
+    // 32 cm out from the table: a chair pulled up to it, with room to sit.
     let off = size.y / 2.0 + 0.32;
-    vec![
-        ([cx, table.min[1] - off], 2),
-        ([cx, table.max[1] + off], 0),
-        ([table.min[0] - off, cy], 1),
-        ([table.max[0] + off, cy], 3),
-    ]
+    let (below, above) = (table.min[1] - off, table.max[1] + off);
+    let (left, right) = (table.min[0] - off, table.max[0] + off);
+    let pair = size.x * 2.0 + 0.1;
+    let (w, d) = (table.max[0] - table.min[0], table.max[1] - table.min[1]);
+    // Along x (below and above the table), then along y (left and right of it).
+    let along_x = |at: f32, turns: u8| -> Vec<([f32; 2], u8)> {
+        if w >= pair {
+            vec![([cx - w / 4.0, at], turns), ([cx + w / 4.0, at], turns)]
+        } else {
+            vec![([cx, at], turns)]
+        }
+    };
+    let along_y = |at: f32, turns: u8| -> Vec<([f32; 2], u8)> {
+        if d >= pair {
+            vec![([at, cy - d / 4.0], turns), ([at, cy + d / 4.0], turns)]
+        } else {
+            vec![([at, cy], turns)]
+        }
+    };
+    let mut spots = along_x(below, 2);
+    spots.extend(along_x(above, 0));
+    spots.extend(along_y(left, 1));
+    spots.extend(along_y(right, 3));
+    spots
 }
 
 /// A table across the opening, its long side crossing it and its centre 0.15 m inside the

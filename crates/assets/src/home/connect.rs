@@ -6,6 +6,7 @@
 
 use super::DOORWAY;
 use super::layout::Layout;
+use super::lshape::Annex;
 use super::plan::{Door, Opening, Plan, Segment, WindowWall};
 use super::program::{Family, chance};
 use crate::scene::RoomPlan;
@@ -107,19 +108,25 @@ pub(super) fn rooms(layout: &Layout) -> Vec<RoomPlan> {
         .map(|(kind, r)| {
             let n = counts.entry(*kind).or_insert(0);
             *n += 1;
-            RoomPlan {
-                kind: *kind,
-                instance: *n - 1,
-                min: r.min,
-                max: r.max,
-            }
+            RoomPlan::new(*kind, *n - 1, r.min, r.max)
         })
         .collect()
 }
 
 /// The plan of a laid-out home: its openings, doors and windows; `None` if some room cannot be
-/// reached from the front door (the caller draws again).
-pub(super) fn connect(family: Family, rooms: Vec<RoomPlan>, rng: &mut ChaCha8Rng) -> Option<Plan> {
+/// reached from the front door (the caller draws again). Each annex opens onto its room along
+/// their whole shared side.
+pub(super) fn connect(
+    family: Family,
+    rooms: Vec<RoomPlan>,
+    annexes: Vec<Annex>,
+    rng: &mut ChaCha8Rng,
+) -> Option<Plan> {
+    let one_room = |s: &Shared| {
+        annexes
+            .iter()
+            .any(|a| s.rooms.contains(&a.part) && s.rooms.contains(&a.main))
+    };
     let mut walls = Vec::new();
     for i in 0..rooms.len() {
         for j in i + 1..rooms.len() {
@@ -134,10 +141,12 @@ pub(super) fn connect(family: Family, rooms: Vec<RoomPlan>, rng: &mut ChaCha8Rng
     let mut openings = Vec::new();
     for s in &walls {
         let [a, b] = s.rooms.map(|r| rooms[r].kind);
-        if open_to_each_other(family, a, b, s.wall) {
+        let inner = one_room(s);
+        if inner || open_to_each_other(family, a, b, s.wall) {
             openings.push(Opening {
                 rooms: s.rooms,
                 gap: s.wall,
+                inner,
             });
         }
     }
@@ -145,7 +154,7 @@ pub(super) fn connect(family: Family, rooms: Vec<RoomPlan>, rng: &mut ChaCha8Rng
     let outside = outside_walls(&rooms);
     let entry = entry(family, &rooms, &outside)?;
     doors.push(outer_door(entry, &rooms, &outside, rng)?);
-    inner_doors(&rooms, &walls, &openings, &mut doors, rng);
+    inner_doors(&rooms, &annexes, &walls, &openings, &mut doors, rng);
     repair(&rooms, &walls, &openings, &mut doors, rng)?;
     // A garage's door, a back door at a hall's end, and half the time one from the kitchen.
     for extra in [RoomType::Garage, RoomType::Kitchen, RoomType::Corridor] {
@@ -156,9 +165,10 @@ pub(super) fn connect(family: Family, rooms: Vec<RoomPlan>, rng: &mut ChaCha8Rng
             doors.extend(outer_door(room, &rooms, &outside, rng));
         }
     }
-    let windows = window_walls(&rooms, &outside, &doors);
+    let windows = window_walls(&rooms, &annexes, &outside, &doors);
     Some(Plan {
         rooms,
+        annexes,
         doors,
         openings,
         windows,
@@ -301,14 +311,19 @@ fn joined(a: usize, b: usize, doors: &[Door], openings: &[Opening]) -> bool {
 /// off that bedroom half the time (an en suite).
 fn inner_doors(
     rooms: &[RoomPlan],
+    annexes: &[Annex],
     walls: &[Shared],
     openings: &[Opening],
     doors: &mut Vec<Door>,
     rng: &mut ChaCha8Rng,
 ) {
     for (room, r) in rooms.iter().enumerate() {
-        if openings.iter().any(|o| o.rooms.contains(&room)) && r.kind != RoomType::Corridor {
+        let open = openings.iter().any(|o| !o.inner && o.rooms.contains(&room));
+        if open && r.kind != RoomType::Corridor {
             continue; // an open public room is reached through its neighbour
+        }
+        if annexes.iter().any(|a| a.part == room) {
+            continue; // an annex is reached through its room
         }
         let mut choices: Vec<(usize, usize, Segment)> = walls
             .iter()
@@ -404,9 +419,21 @@ fn repair(
 
 /// The windows of each room on its outside walls, clear of the outside doors: as many as its
 /// type wants and its walls hold, spread over its longest walls first.
-fn window_walls(rooms: &[RoomPlan], outside: &[Vec<Segment>], doors: &[Door]) -> Vec<WindowWall> {
+fn window_walls(
+    rooms: &[RoomPlan],
+    annexes: &[Annex],
+    outside: &[Vec<Segment>],
+    doors: &[Door],
+) -> Vec<WindowWall> {
     let mut out = Vec::new();
     for (room, r) in rooms.iter().enumerate() {
+        let wanted = windows_wanted(r.kind);
+        // An annex has a window if its room has any: an alcove's.
+        let wanted = if annexes.iter().any(|a| a.part == room) {
+            wanted.min(1)
+        } else {
+            wanted
+        };
         let mut walls: Vec<Segment> = outside[room]
             .iter()
             .flat_map(|w| clear_of_doors(*w, doors))
@@ -414,7 +441,7 @@ fn window_walls(rooms: &[RoomPlan], outside: &[Vec<Segment>], doors: &[Door]) ->
             .collect();
         walls.sort_by(|a, b| b.length().total_cmp(&a.length()));
         let mut counts = vec![0usize; walls.len()];
-        let mut left = windows_wanted(r.kind);
+        let mut left = wanted;
         'spread: while left > 0 {
             let mut placed = false;
             for (k, w) in walls.iter().enumerate() {

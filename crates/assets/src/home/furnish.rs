@@ -4,10 +4,10 @@
 //! opening, placed first so that both rooms furnish around it. An item that does not fit is left
 //! out (coverage reports what a home lacks).
 
-use super::DOOR_CLEARANCE;
 use super::WALL_THICKNESS;
-use super::arrange;
-use super::arrange::{Furnishing, Standing, at_the_opening, in_the_middle, on_countertop};
+use super::arrange::{
+    Furnishing, SillRule, Standing, at_the_opening, in_the_middle, on_countertop,
+};
 use super::footprint::{Rect, footprint};
 use super::plan::{Opening, Plan, Segment};
 use crate::library::{AssetError, Library};
@@ -21,9 +21,12 @@ use std::collections::BTreeMap;
 /// The width along a wide opening of the passage kept free through it (m), as a doorway's.
 const PASSAGE: f32 = 1.2;
 
-/// The passage kept free through a wide opening, as through a doorway: [`PASSAGE`] wide and
-/// [`DOOR_CLEARANCE`] deep on both sides; at the opening's middle, or at one of its ends (`shift`
-/// −1 or 1), 35 cm from it.
+/// How deep on each side of a wide opening its passage reaches (m): no leaf swings there, so
+/// less than a doorway's [`super::DOOR_CLEARANCE`]; the paths kept through the room do the rest.
+const PASSAGE_DEPTH: f32 = 0.7;
+
+/// The passage kept free through a wide opening: [`PASSAGE`] wide and [`PASSAGE_DEPTH`] deep on
+/// both sides; at the opening's middle, or at one of its ends (`shift` −1 or 1), 35 cm from it.
 fn passage(open: &Opening, shift: f32) -> Rect {
     let gap = open.gap;
     let room = (gap.length() - PASSAGE) / 2.0 - 0.35;
@@ -32,7 +35,7 @@ fn passage(open: &Opening, shift: f32) -> Rect {
         span: [mid - PASSAGE / 2.0, mid + PASSAGE / 2.0],
         ..gap
     }
-    .band(DOOR_CLEARANCE, 0.0)
+    .band(PASSAGE_DEPTH, 0.0)
 }
 
 /// How a piece of furniture is placed in its room (see `arrange.rs`).
@@ -127,6 +130,49 @@ fn furniture(kind: RoomType) -> &'static [(&'static str, Place)] {
         _ => &[], // halls stay clear
     }
 }
+
+/// What stands in the annex of an L-shaped room of each type (an alcove): one piece against
+/// its wall.
+fn annex_furniture(kind: RoomType) -> &'static [(&'static str, Place)] {
+    match kind {
+        RoomType::LivingRoom | RoomType::HomeOffice | RoomType::StorageRoom => {
+            &[("shelf.n.01", Wall)]
+        }
+        RoomType::Corridor | RoomType::Garage => &[],
+        _ => &[("cabinet.n.01", Wall)],
+    }
+}
+
+/// The least length and width of a dining room's table (m): it seats four and holds their
+/// plates, cups and bowls.
+const DINING_TABLE: [f32; 2] = [1.5, 0.9];
+
+/// The width of a single bed (m), the narrowest the catalogue makes.
+const SINGLE_BED: f32 = 1.0;
+
+/// The size a piece drawn at `drawn` is placed at first in a room of `kind`, and the smaller one
+/// tried where that fits nowhere: a dining table at least [`DINING_TABLE`] (else as drawn), a
+/// double bed (else a single one).
+fn sizes(synset: &str, kind: RoomType, drawn: Vector) -> (Vector, Option<Vector>) {
+    match synset {
+        "table.n.02" if kind == RoomType::DiningRoom => {
+            let dining = Vector::new(
+                drawn.x.max(DINING_TABLE[0]),
+                drawn.y.max(DINING_TABLE[1]),
+                drawn.z,
+            );
+            (dining, (dining != drawn).then_some(drawn))
+        }
+        "bed.n.01" if drawn.x > SINGLE_BED => {
+            (drawn, Some(Vector::new(SINGLE_BED, drawn.y, drawn.z)))
+        }
+        _ => (drawn, None),
+    }
+}
+
+/// How far from the open side between an L-shaped room's rectangles furniture keeps (m): none
+/// stands along a side that has no wall.
+const OPEN_SIDE: f32 = 0.45;
 
 /// The state shared while a home is furnished: the plan, the library and the home's generator
 /// (every draw in a fixed order, so a seed gives one home), and the objects placed so far with
@@ -265,22 +311,30 @@ impl Furnisher<'_, '_> {
             if open.rooms.contains(&index) {
                 f.taken.push(passage);
                 f.ways.push(passage);
+                if open.inner {
+                    f.taken.push(open.gap.band(OPEN_SIDE, 0.0));
+                }
             }
         }
         self.doors(index)?;
         self.windows(&mut f)?;
-        self.furniture(&mut f, room.kind, tables_to_skip)
+        let list = if plan.annexes.iter().any(|a| a.part == index) {
+            annex_furniture(room.kind)
+        } else {
+            furniture(room.kind)
+        };
+        self.furniture(&mut f, list, tables_to_skip)
     }
 
-    /// The furniture of a room of type `kind`, less the tables already standing in it (the
+    /// The furniture of a room from its list, less the tables already standing in it (the
     /// first tables placed in the middle).
     fn furniture(
         &mut self,
         f: &mut Furnishing,
-        kind: RoomType,
+        list: &[(&str, Place)],
         mut tables_to_skip: usize,
     ) -> Result<(), AssetError> {
-        for &(synset, place) in furniture(kind) {
+        for &(synset, place) in list {
             if synset == "table.n.02" && place == Middle && tables_to_skip > 0 {
                 tables_to_skip -= 1;
                 continue;
@@ -289,8 +343,14 @@ impl Furnisher<'_, '_> {
             if place == Nightstand {
                 size = Vector::new(size.x.min(0.55), size.y.min(0.45), size.z.min(0.72));
             }
-            f.under_sills = arrange::UNDER_SILLS.contains(&synset) && size.z <= arrange::SILL;
-            let placed = self.place(f, place, size);
+            let (first, fallback) = sizes(synset, self.plan.rooms[f.index].kind, size);
+            size = first;
+            f.sill_rule = SillRule::of(synset, size.z);
+            let mut placed = self.place(f, place, size);
+            if let Some(smaller) = fallback.filter(|_| placed.is_none()) {
+                size = smaller;
+                placed = self.place(f, place, size);
+            }
             if let Some((position, turns)) = placed {
                 if synset == "table.n.02" {
                     let [x, y, _] = position;

@@ -6,8 +6,8 @@
 //! the widths their drawn areas ask for, stretched or shrunk together within their ranges to fill
 //! it. So every room meets its type's specification by construction, and a draw with no common
 //! depth or length is drawn again. Every cut falls on a 10 cm grid, so rooms that share a wall
-//! share its coordinate exactly. Rooms are rectangles: L-shaped rooms would need the world's
-//! rooms to be more than one rectangle.
+//! share its coordinate exactly. Rooms are laid out as rectangles; `lshape.rs` may then
+//! bend a pair of them.
 
 use super::footprint::Rect;
 use super::program::{Family, Want, Zone, chance, room_spec, zone};

@@ -1,8 +1,10 @@
-//! The floor plan every home is laid out from, whatever its family: rectangular rooms, the doors
+//! The floor plan every home is laid out from, whatever its family: rectangular rooms (an
+//! L-shaped room's annex among them, see `lshape.rs`), the doors
 //! and wide openings between them (and to the outside), and the stretches of outside wall that
 //! hold windows. Walls and furnishing read only this, so a new family is a new way of filling it.
 
 use super::footprint::Rect;
+use super::lshape::Annex;
 use super::{DOOR_CLEARANCE, DOORWAY, WALL_THICKNESS};
 use crate::scene::RoomPlan;
 
@@ -110,11 +112,13 @@ impl Door {
     }
 }
 
-/// A wide opening with no wall between two rooms (an open plan's living and dining rooms).
+/// A wide opening with no wall between two rooms (an open plan's living and dining rooms), or
+/// between an L-shaped room's main rectangle and its annex (`inner`: one room, no wall at all).
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Opening {
     pub(super) rooms: [usize; 2],
     pub(super) gap: Segment,
+    pub(super) inner: bool,
 }
 
 /// A stretch of outside wall of a room holding `count` windows, evenly spaced along it.
@@ -147,8 +151,11 @@ impl WindowWall {
 
 /// A home's plan: everything walls and furnishing are laid out from.
 pub(super) struct Plan {
-    /// The rooms, each an axis-aligned rectangle; halls are rooms of type corridor.
+    /// The rooms, each an axis-aligned rectangle; halls are rooms of type corridor; the annexes
+    /// of L-shaped rooms last.
     pub(super) rooms: Vec<RoomPlan>,
+    /// Which of `rooms` are annexes, and of which room.
+    pub(super) annexes: Vec<Annex>,
     /// Every doorway, inner and outer, in the order their doors are drawn.
     pub(super) doors: Vec<Door>,
     /// Wide openings between rooms.

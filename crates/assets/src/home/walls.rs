@@ -7,6 +7,7 @@ use super::plan::Plan;
 use super::{DOORWAY, WALL_THICKNESS};
 use crate::library::AssetError;
 use crate::scene::{ObjectPlan, WALL_HEIGHT, WallPlan};
+use behavior_core::RoomType;
 use std::collections::BTreeMap;
 
 /// A wall line: vertical (along y) or not, and its coordinate in millimetres (so that edges of
@@ -148,6 +149,11 @@ impl Furnisher<'_, '_> {
         for wall in self.plan.windows.iter().filter(|w| w.room == f.index) {
             for k in 0..wall.count {
                 let (size, variant) = self.library.sample("window.n.01", self.rng)?;
+                // Floor-length windows (variant 1, casements sweeping the floor) open living
+                // and dining rooms onto the garden; other rooms have sills, with the bed or the
+                // counters under them.
+                let garden = matches!(room.kind, RoomType::LivingRoom | RoomType::DiningRoom);
+                let variant = if garden { variant } else { 0 };
                 let ([x, y], turns, normal) = wall.place(k, room);
                 let sweep = if variant == 1 { size.x } else { 0.0 };
                 let across = u8::from(wall.wall.vertical);

@@ -40,6 +40,7 @@ pub fn floor(world: &mut World) -> ObjectId {
             instance: 0,
             min,
             max,
+            annexes: Vec::new(),
             floor: Some(floor),
         });
     }

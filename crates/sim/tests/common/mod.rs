@@ -48,6 +48,7 @@ pub fn two_room_floor(world: &mut World) -> (ObjectId, ObjectId) {
         instance: 0,
         min: [-5.0, -5.0],
         max: [0.0, 5.0],
+        annexes: Vec::new(),
         floor: Some(kitchen),
     });
     world.add_room(Room {
@@ -55,6 +56,7 @@ pub fn two_room_floor(world: &mut World) -> (ObjectId, ObjectId) {
         instance: 0,
         min: [0.0, -5.0],
         max: [5.0, 5.0],
+        annexes: Vec::new(),
         floor: Some(living),
     });
     (kitchen, living)

@@ -34,6 +34,7 @@
 
 use crate::library::{AssetError, Library};
 use behavior_core::RoomType;
+use behavior_core::{FLOOR_SYNSET, WALL_SYNSET};
 use behavior_sim::{
     FloorRect, Material, ObjectId, ObjectSpec, Part, Primitive, Room, Visual, World, WorldError,
 };
@@ -439,7 +440,7 @@ fn add_floor(
             material: Material::Cloth,
         }));
     }
-    let mut spec = ObjectSpec::new(&format!("floor_{}", room.label()), "floor.n.01", parts)
+    let mut spec = ObjectSpec::new(&format!("floor_{}", room.label()), FLOOR_SYNSET, parts)
         .at(center)
         .fixed();
     // Floors get dusty and stained like any surface.
@@ -469,7 +470,7 @@ fn add_wall(world: &mut World, i: usize, wall: &WallPlan) -> Result<(), SceneErr
     }
     let spec = ObjectSpec::new(
         &format!("wall_{i}"),
-        "wall.n.01",
+        WALL_SYNSET,
         vec![Part::new(Primitive::Box { half_extents: half })],
     )
     .at(lo + half)

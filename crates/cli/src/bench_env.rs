@@ -10,6 +10,7 @@ use crate::prelude::Prelude;
 use crate::sample::first_covering;
 use crate::scene::with_clutter;
 use anyhow::{Context, Result};
+use behavior_core::WALL_SYNSET;
 use behavior_env::{Agent, CameraConfig, Env, EnvConfig, Instances};
 use behavior_render::ImageProfile;
 use indicatif::ProgressBar;
@@ -171,7 +172,7 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         }
         let objects = sampler.world().map_or(0, |w| {
             w.objects()
-                .filter(|(_, o)| o.category != "wall.n.01")
+                .filter(|(_, o)| o.category != WALL_SYNSET)
                 .count()
         });
         drop(sampler);

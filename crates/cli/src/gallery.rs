@@ -8,6 +8,7 @@ use crate::map::text;
 use crate::prelude::Prelude;
 use anyhow::{Context, Result, bail};
 use behavior_assets::{Archetype, CATALOG};
+use behavior_core::FLOOR_SYNSET;
 use behavior_env::categories;
 use behavior_render::{
     Camera, CategoryTable, ImageProfile, Modality, Pixels, Renderer, Scene, View,
@@ -77,7 +78,7 @@ impl Subject {
 fn floor(half: f32) -> ObjectSpec {
     ObjectSpec::new(
         "floor",
-        "floor.n.01",
+        FLOOR_SYNSET,
         vec![Part::new(Primitive::Box {
             half_extents: Vector::new(half, half, 0.05),
         })],

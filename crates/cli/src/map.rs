@@ -3,6 +3,7 @@
 //! for each thing of its clutter; and a sheet of several homes' maps side by side.
 
 use behavior_assets::Scene;
+use behavior_core::{DOOR_SYNSET, WINDOW_SYNSET};
 use font8x8::legacy::BASIC_LEGACY;
 use image::{Rgb, RgbImage};
 
@@ -114,13 +115,13 @@ fn draw(scene: &Scene, scale: f32, names: bool) -> RgbImage {
         let min = [o.position[0] - w / 2.0, o.position[1] - d / 2.0];
         let max = [o.position[0] + w / 2.0, o.position[1] + d / 2.0];
         let color = match o.synset.as_str() {
-            "door.n.01" => Rgb([141, 90, 50]),
-            "window.n.01" => Rgb([66, 165, 245]),
+            DOOR_SYNSET => Rgb([141, 90, 50]),
+            WINDOW_SYNSET => Rgb([66, 165, 245]),
             _ => Rgb([90, 90, 90]),
         };
         outline(&mut img, px(min[0], max[1]), px(max[0], min[1]), color);
         let (cx, cy) = px(o.position[0], o.position[1]);
-        if names && !matches!(o.synset.as_str(), "door.n.01" | "window.n.01") {
+        if names && !matches!(o.synset.as_str(), DOOR_SYNSET | WINDOW_SYNSET) {
             text(&mut img, &o.name, cx, cy, 1, Rgb([30, 30, 30]));
         }
     }

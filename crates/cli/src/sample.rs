@@ -6,6 +6,7 @@ use anyhow::{Context, Result, bail};
 use behavior_assets::covering;
 use behavior_assets::{Library, Scene};
 use behavior_bddl::{Activity, Taxonomy};
+use behavior_core::WALL_SYNSET;
 use behavior_sampling::{Fact, InitCheck, Instance, LiteralKind, instantiate};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
@@ -90,7 +91,7 @@ impl ObjectCount {
         ObjectCount {
             total: world
                 .objects()
-                .filter(|(_, o)| o.category != "wall.n.01")
+                .filter(|(_, o)| o.category != WALL_SYNSET)
                 .count(),
             clutter: instance.scene.clutter.len(),
             created: instance.created.len(),

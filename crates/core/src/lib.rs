@@ -38,3 +38,9 @@ pub use room::{RoomType, UnknownRoomType};
 pub const AGENT_SYNSET: &str = "agent.n.01";
 /// The synset of room floors: bound to a room's floor rather than created as an object.
 pub const FLOOR_SYNSET: &str = "floor.n.01";
+/// The synset of a home's wall pieces: fixed scenery that no activity names.
+pub const WALL_SYNSET: &str = "wall.n.01";
+/// The synset of a home's doors (doorway leaves, which activities open, close and lock).
+pub const DOOR_SYNSET: &str = "door.n.01";
+/// The synset of a home's windows.
+pub const WINDOW_SYNSET: &str = "window.n.01";

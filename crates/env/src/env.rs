@@ -1,13 +1,14 @@
 //! The environment: Gymnasium's `reset` and `step`, in Rust.
 
 use crate::config::{EnvConfig, Instances, Reward};
-use crate::episode::{AGENT_SYNSET, CheckpointError, Episode, Start, embody};
+use crate::episode::{CheckpointError, Episode, Start, embody};
 use crate::metrics::{EpisodeMetrics, Series, Tracker};
 use crate::observation::{Obs, Sensor, SensorInput, task_obs};
 use crate::score::{Score, Scorer};
 use crate::sensors::{CameraSensor, LidarSensor, categories};
 use crate::timing::{StepTimings, Timed};
 use behavior_assets::Library;
+use behavior_core::{AGENT_SYNSET, FLOOR_SYNSET};
 use behavior_render::RenderError;
 use behavior_robots::{ActionError, Robot, RobotError};
 use behavior_sampling::{LoadError, SampleError, SavedInstance, instantiate};
@@ -160,7 +161,7 @@ impl Env {
             .enumerate()
             .filter(|(_, i)| {
                 let synset = &activity.categories[i.category.0 as usize].name;
-                synset != AGENT_SYNSET && synset != "floor.n.01"
+                synset != AGENT_SYNSET && synset != FLOOR_SYNSET
             })
             .map(|(k, _)| k)
             .collect();

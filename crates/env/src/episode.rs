@@ -4,7 +4,7 @@
 use crate::metrics::Tracker;
 use crate::score::Score;
 use behavior_bddl::Activity;
-use behavior_core::FLOOR_SYNSET;
+use behavior_core::{AGENT_SYNSET, FLOOR_SYNSET};
 use behavior_robots::{Robot, RobotError, RobotKind};
 use behavior_sampling::SavedInstance;
 use behavior_sim::{ObjectId, QueryFilter, World};
@@ -12,9 +12,6 @@ use rapier3d::glamx::EulerRot;
 use rapier3d::math::Vector;
 use std::f32::consts::{FRAC_PI_2, PI};
 use std::sync::Arc;
-
-/// The synset of the activity's stand-in for the agent, which the robot replaces.
-pub(crate) const AGENT_SYNSET: &str = "agent.n.01";
 
 /// Everything that changes during an episode.
 #[derive(Clone)]
@@ -139,7 +136,7 @@ fn hits_fixed(world: &World, robot: &Robot) -> bool {
 fn first_floor_centre(world: &World) -> Vector {
     world
         .objects()
-        .find(|(_, o)| o.category == "floor.n.01")
+        .find(|(_, o)| o.category == FLOOR_SYNSET)
         .map_or(Vector::ZERO, |(id, _)| {
             let aabb = world.aabb(id);
             Vector::new(aabb.center().x, aabb.center().y, aabb.maxs.z)

@@ -8,6 +8,7 @@
 
 use crate::observation::{Reading, Sensor, SensorInput};
 use behavior_bddl::Taxonomy;
+use behavior_core::{AGENT_SYNSET, DOOR_SYNSET, FLOOR_SYNSET, WALL_SYNSET, WINDOW_SYNSET};
 use behavior_render::{
     Camera, CategoryTable, ImageProfile, Lidar, Modality, Pattern, Pixels, RenderError, Renderer,
     Scene, View,
@@ -18,12 +19,12 @@ use rapier3d::math::Pose;
 
 /// Categories of the homes' structure, beside the taxonomy's.
 const STRUCTURE: [&str; 6] = [
-    "wall.n.01",
-    "floor.n.01",
+    WALL_SYNSET,
+    FLOOR_SYNSET,
     "ceiling.n.01",
-    "door.n.01",
-    "window.n.01",
-    "agent.n.01",
+    DOOR_SYNSET,
+    WINDOW_SYNSET,
+    AGENT_SYNSET,
 ];
 
 /// The semantic segmentation's category table for a taxonomy: the same for every activity and

@@ -14,8 +14,8 @@ use crate::navigate::Standing;
 use crate::primitive::{Call, Failure};
 use crate::rrt::{PlanParams, Space, plan, steps_along};
 use crate::symbolic::{call_seed, limited_links, open_all_the_way, stand_for};
-use behavior_core::Predicate;
 use behavior_core::rng::{SimRng, seeded};
+use behavior_core::{DOOR_SYNSET, Predicate};
 use behavior_env::Env;
 use behavior_robots::{ACTION_SCALE, FetchAction, MAX_ANGULAR_SPEED, MAX_LINEAR_SPEED, Robot};
 use behavior_sim::{BodyRef, ObjectId, STEP_SECONDS, World};
@@ -99,9 +99,6 @@ pub fn drive_to(
 /// The edit that opens the home's doors before a drive (`open_doors`), for replays to do
 /// again.
 pub const DOORS_OPENED: &str = "open_doors";
-
-/// The synset of the home's room doors.
-const DOOR_SYNSET: &str = "door.n.01";
 
 /// Opens every closed door of the home that the activity does not name all the way, between
 /// two steps, recorded as the edit [`DOORS_OPENED`]. The original's motion-primitive example

@@ -12,6 +12,7 @@
 //! Nothing here changes the world: physics, states and every other modality are untouched.
 
 use behavior_core::RoomType;
+use behavior_core::{FLOOR_SYNSET, WALL_SYNSET};
 use behavior_sim::{BodyKind, Material, ObjectId, Visual, World};
 
 /// A procedural pattern; the numbers are `realistic.wgsl`'s.
@@ -196,11 +197,11 @@ impl Finisher {
     pub(crate) fn of(world: &World, object: ObjectId, home: u64, seed: u32) -> Finisher {
         let o = world.object(object);
         match o.category.as_str() {
-            "floor.n.01" => {
+            FLOOR_SYNSET => {
                 let room = world.rooms().iter().find(|r| r.floor == Some(object));
                 Finisher::Floor(floor(room.map(|r| r.kind), home))
             }
-            "wall.n.01" => Finisher::Whole(Finish {
+            WALL_SYNSET => Finisher::Whole(Finish {
                 color: pick(&PAINTS, home, 11),
                 pattern: Pattern::Plaster,
                 roughness: 0.85,

@@ -28,6 +28,7 @@ use crate::lighting::{Lamp, ShadowMatrices};
 use crate::mesh::{Drawn, MeshKey, MeshStore, hash_words};
 use crate::pipeline::uniform_layout;
 use crate::sunlight::{Slab, sun_casters};
+use behavior_core::WALL_SYNSET;
 use behavior_sim::{BodyKind, Material, ModelLibrary, ObjectId, Primitive, VisualShape, World};
 use rapier3d::glamx::{Mat4, Vec3A, Vec4};
 use rapier3d::math::Vector;
@@ -604,7 +605,7 @@ fn casters(
                 reach: drawn.reach,
             };
             if still && part.link.is_none() {
-                if object.category == "wall.n.01" {
+                if object.category == WALL_SYNSET {
                     walls.push(fixed.len());
                 }
                 fixed.push(caster);

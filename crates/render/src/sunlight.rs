@@ -8,6 +8,7 @@
 //! shadow casters only, and the sky map (ambient occlusion) and the lamps' maps keep the walls
 //! whole and no roof.
 
+use behavior_core::{WALL_SYNSET, WINDOW_SYNSET};
 use behavior_sim::{Primitive, VisualShape, World};
 use rapier3d::math::{Pose, Vector};
 
@@ -33,7 +34,7 @@ pub(crate) fn sun_casters(world: &World) -> Option<SunCasters> {
     }
     let windows: Vec<(Vector, Vector)> = world
         .objects()
-        .filter(|(_, o)| o.is_present() && o.category == "window.n.01")
+        .filter(|(_, o)| o.is_present() && o.category == WINDOW_SYNSET)
         .map(|(id, _)| {
             let b = world.aabb(id);
             (b.mins, b.maxs)
@@ -69,7 +70,7 @@ pub(crate) struct SunCasters {
 fn wall_parts(world: &World) -> Vec<Slab> {
     let mut walls = Vec::new();
     for (id, object) in world.objects() {
-        if !object.is_present() || object.category != "wall.n.01" {
+        if !object.is_present() || object.category != WALL_SYNSET {
             continue;
         }
         for part in world.core().visual_parts(id) {

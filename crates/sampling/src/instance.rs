@@ -7,6 +7,7 @@ use crate::verify::{InitCheck, check_init};
 use behavior_assets::{Library, Scene};
 use behavior_bddl::Predicate;
 use behavior_bddl::activity::Activity;
+use behavior_core::WALL_SYNSET;
 use behavior_sim::{BoundWorld, ObjectId, ObjectState, ParticleRecord, StateError, World};
 use rapier3d::math::{Pose, Rotation, Vector};
 use serde::{Deserialize, Serialize};
@@ -142,7 +143,7 @@ impl Instance {
         let w = &self.world;
         let objects = w
             .objects()
-            .filter(|(_, o)| o.category != "wall.n.01")
+            .filter(|(_, o)| o.category != WALL_SYNSET)
             .map(|(id, o)| {
                 let pose = w.pose(id);
                 SavedObject {

@@ -13,6 +13,7 @@ use super::plan::{Opening, Plan, Segment};
 use crate::library::{AssetError, Library};
 use crate::scene::ObjectPlan;
 use behavior_core::RoomType;
+use behavior_core::WINDOW_SYNSET;
 use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::Rng;
 use rapier3d::math::Vector;
@@ -393,7 +394,7 @@ impl Furnisher<'_, '_> {
                 let windows: Vec<ObjectPlan> = self
                     .objects
                     .iter()
-                    .filter(|o| o.room == room && o.synset == "window.n.01")
+                    .filter(|o| o.room == room && o.synset == WINDOW_SYNSET)
                     .cloned()
                     .collect();
                 f.under_a_window(size, &windows)

@@ -8,6 +8,7 @@ use super::{DOORWAY, WALL_THICKNESS};
 use crate::library::AssetError;
 use crate::scene::{ObjectPlan, WALL_HEIGHT, WallPlan};
 use behavior_core::RoomType;
+use behavior_core::{DOOR_SYNSET, WINDOW_SYNSET};
 use std::collections::BTreeMap;
 
 /// A wall line: vertical (along y) or not, and its coordinate in millimetres (so that edges of
@@ -122,13 +123,13 @@ impl Furnisher<'_, '_> {
     /// its −y side, and its leaf swings to the front).
     pub(super) fn doors(&mut self, room: usize) -> Result<(), AssetError> {
         for door in self.plan.doors.iter().filter(|d| d.room == room) {
-            let name = self.name("door.n.01");
-            let (mut size, variant) = self.library.sample("door.n.01", self.rng)?;
+            let name = self.name(DOOR_SYNSET);
+            let (mut size, variant) = self.library.sample(DOOR_SYNSET, self.rng)?;
             size.x = size.x.min(DOORWAY - 0.05);
             let ([x, y], turns) = door.leaf(&self.plan.rooms[room]);
             self.objects.push(ObjectPlan {
                 name,
-                synset: "door.n.01".into(),
+                synset: DOOR_SYNSET.into(),
                 room,
                 position: [x, y, 0.0],
                 yaw_quarter_turns: turns,
@@ -148,7 +149,7 @@ impl Furnisher<'_, '_> {
         let room = &self.plan.rooms[f.index];
         for wall in self.plan.windows.iter().filter(|w| w.room == f.index) {
             for k in 0..wall.count {
-                let (size, variant) = self.library.sample("window.n.01", self.rng)?;
+                let (size, variant) = self.library.sample(WINDOW_SYNSET, self.rng)?;
                 // Floor-length windows (variant 1, casements sweeping the floor) open living
                 // and dining rooms onto the garden; other rooms have sills, with the bed or the
                 // counters under them.
@@ -170,10 +171,10 @@ impl Furnisher<'_, '_> {
                 } else {
                     f.taken.push(before);
                 }
-                let name = self.name("window.n.01");
+                let name = self.name(WINDOW_SYNSET);
                 self.objects.push(ObjectPlan {
                     name,
-                    synset: "window.n.01".into(),
+                    synset: WINDOW_SYNSET.into(),
                     room: f.index,
                     position: [x, y, 0.0],
                     yaw_quarter_turns: turns,

@@ -16,6 +16,7 @@
 //! 200 objects then cost hundreds of pair tests, not 40,000.
 
 use behavior_core::Predicate;
+use behavior_core::{FLOOR_SYNSET, WALL_SYNSET};
 use behavior_sim::{ObjectId, World};
 
 /// Plan-view margin within which two objects may relate, m.
@@ -86,13 +87,13 @@ impl Logical {
 
 fn is_structure(world: &World, id: ObjectId) -> bool {
     let category = &world.object(id).category;
-    category == "wall.n.01" || category == "floor.n.01"
+    category == WALL_SYNSET || category == FLOOR_SYNSET
 }
 
 fn floors(world: &World) -> Vec<ObjectId> {
     world
         .objects()
-        .filter(|(_, o)| o.category == "floor.n.01")
+        .filter(|(_, o)| o.category == FLOOR_SYNSET)
         .map(|(id, _)| id)
         .collect()
 }

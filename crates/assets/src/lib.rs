@@ -20,8 +20,27 @@
 //!
 //! This crate builds [`behavior_sim::ObjectSpec`]s; it knows nothing of BDDL text or of how the
 //! world simulates them.
-
-#![warn(missing_docs)]
+//!
+//! A home from a seed, built into a world, then made lived-in:
+//!
+//! ```
+//! use behavior_assets::{Library, Scene, clutter, generate};
+//! use behavior_data::DataDir;
+//!
+//! # fn main() -> Result<(), Box<dyn std::error::Error>> {
+//! let data = DataDir::locate(None, |message| eprintln!("{message}"))?;
+//! let taxonomy = behavior_bddl::load::read_taxonomy(&data.taxonomy_path())?;
+//! let library = Library::new(&taxonomy);
+//! let home = generate("my_home", 7, &library)?; // rooms, walls, doors and furniture
+//! assert!(home.rooms.len() >= 3);
+//! let again = Scene::from_json(&home.to_json())?; // a home is a file
+//! assert_eq!(again, home);
+//! let lived_in = clutter(&home, &library, 7)?; // books on shelves, dishes in cabinets
+//! let built = lived_in.build(&library)?; // the world, everything asleep
+//! assert_eq!(built.objects.len(), lived_in.objects.len());
+//! # Ok(())
+//! # }
+//! ```
 
 mod archetype;
 mod catalog;

@@ -30,8 +30,6 @@
 //! assert_eq!(optimizer.volume(), Some(2));
 //! ```
 
-#![warn(missing_docs)]
-
 pub mod activity;
 pub mod ast;
 mod bottom_up;

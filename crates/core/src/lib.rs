@@ -21,8 +21,6 @@
 //! assert!(!oracle.holds(Atom::binary(Predicate::OnTop, InstanceId(0), InstanceId(1))));
 //! ```
 
-#![warn(missing_docs)]
-
 mod ability;
 mod oracle;
 mod predicate;

@@ -4,8 +4,18 @@
 //! a cache (`$XDG_CACHE_HOME/behavior/`, default `~/.cache/behavior/`) with pip; it hands out
 //! paths, and reading them is the business of the crates that understand them (`behavior-bddl`,
 //! `behavior-robots`).
-
-#![warn(missing_docs)]
+//!
+//! ```
+//! use behavior_data::DataDir;
+//!
+//! # fn main() -> Result<(), Box<dyn std::error::Error>> {
+//! // The cache, or an explicit folder or `BEHAVIOR_DATA_DIR`; fetched from PyPI if absent.
+//! let data = DataDir::locate(None, |message| eprintln!("{message}"))?;
+//! assert!(data.taxonomy_path().is_file());
+//! assert!(data.problem_path("bottling_fruit")?.is_file());
+//! # Ok(())
+//! # }
+//! ```
 
 mod fetch;
 mod official;

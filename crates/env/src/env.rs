@@ -367,7 +367,7 @@ impl Env {
         let (world, robot) = (&episode.world, &episode.robot);
         let mut obs = Obs::default();
         if self.config.observations.proprioception {
-            robot.proprioception(world, &mut obs.proprioception);
+            robot.proprioception_into(world, &mut obs.proprioception);
         }
         if self.config.observations.task_obs {
             let objects: Vec<ObjectId> = self

@@ -38,8 +38,6 @@
 //! normalization), `record/` (MCAP recordings and replay), `timing.rs`, `agent.rs` (idle and
 //! random agents).
 
-#![warn(missing_docs)]
-
 mod agent;
 mod config;
 mod env;

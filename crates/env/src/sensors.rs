@@ -13,7 +13,7 @@ use behavior_render::{
     Camera, CategoryTable, ImageProfile, Lidar, Modality, Pattern, Pixels, RenderError, Renderer,
     Scene, View,
 };
-use behavior_robots::RobotKind;
+use behavior_robots::Scan;
 use behavior_sim::QueryFilter;
 use rapier3d::math::Pose;
 
@@ -228,19 +228,24 @@ pub struct LidarSensor;
 
 impl LidarSensor {
     fn lidar(input: &SensorInput) -> Lidar {
-        let robot = input.robot;
-        match robot.kind() {
-            RobotKind::Fetch => Lidar::fetch_base(robot.base_pose(input.world)),
-            RobotKind::Behavior => Lidar {
-                pose: robot.camera_pose(input.world),
-                pattern: Pattern::MultiBeam {
-                    rows: 16,
-                    columns: 360,
-                    vertical_fov: 30f32.to_radians(),
-                },
-                min_range: 0.05,
-                max_range: 25.0,
+        let mount = input.robot.lidar(input.world);
+        let pattern = match mount.scan {
+            Scan::Fan { beams, fov } => Pattern::Planar { beams, fov },
+            Scan::AllRound {
+                rows,
+                columns,
+                vertical_fov,
+            } => Pattern::MultiBeam {
+                rows,
+                columns,
+                vertical_fov,
             },
+        };
+        Lidar {
+            pose: mount.pose,
+            pattern,
+            min_range: mount.min_range,
+            max_range: mount.max_range,
         }
     }
 }

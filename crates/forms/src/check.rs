@@ -15,17 +15,38 @@ pub enum Defect {
     /// A triangle refers to a vertex that does not exist, or the lists differ in length.
     Malformed,
     /// A triangle of (almost) no area, m².
-    Degenerate { triangle: usize, area: f32 },
+    Degenerate {
+        /// Its index.
+        triangle: usize,
+        /// Its area, m².
+        area: f32,
+    },
     /// An edge not matched by exactly one edge running the other way: a hole, a flap, or two
     /// neighbours wound in opposite senses.
-    Open { from: Vector, to: Vector },
+    Open {
+        /// The edge's first vertex.
+        from: Vector,
+        /// Its second.
+        to: Vector,
+    },
     /// A closed piece whose triangles face inward (negative volume, m³).
-    Inward { volume: f32 },
+    Inward {
+        /// The piece's signed volume, m³.
+        volume: f32,
+    },
     /// A vertex normal that points away from the face of a triangle it belongs to (more than a
     /// little past square to it).
-    NormalAgainstFace { triangle: usize },
+    NormalAgainstFace {
+        /// The triangle's index.
+        triangle: usize,
+    },
     /// A vertex outside the box, by this much, m.
-    OutsideBox { position: Vector, by: f32 },
+    OutsideBox {
+        /// The vertex.
+        position: Vector,
+        /// How far outside, m.
+        by: f32,
+    },
 }
 
 impl fmt::Display for Defect {

@@ -13,12 +13,16 @@ use std::f32::consts::{FRAC_PI_2, PI};
 /// Where the base stands: position on the floor, m, and heading, rad.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct BaseConfig {
+    /// Position along the world's x, m.
     pub x: f32,
+    /// Position along the world's y, m.
     pub y: f32,
+    /// Heading about z from +x, rad.
     pub yaw: f32,
 }
 
 impl BaseConfig {
+    /// A configuration from its three numbers.
     pub fn new(x: f32, y: f32, yaw: f32) -> BaseConfig {
         BaseConfig { x, y, yaw }
     }
@@ -40,6 +44,7 @@ impl BaseConfig {
 /// origin): the BehaviorRobot's body capsule 0.7 m up, say, and the hands where they are.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Footprint {
+    /// Each shape with its pose in the base's frame.
     pub shapes: Vec<(Primitive, Pose)>,
 }
 

@@ -13,11 +13,26 @@ pub enum PlanError {
     GoalInCollision,
     /// The search ran out of iterations and restarts.
     #[error("no collision-free path within {restarts} restarts of {iterations} iterations")]
-    NoPath { restarts: u32, iterations: u32 },
+    NoPath {
+        /// Runs after the first.
+        restarts: u32,
+        /// Iterations of each run.
+        iterations: u32,
+    },
     /// The lattice search (the base's fallback) found no way at its resolution.
     #[error("no collision-free path on a {cell} m lattice ({expansions} nodes expanded)")]
-    NoLatticePath { cell: f32, expansions: usize },
+    NoLatticePath {
+        /// The lattice's cell, m.
+        cell: f32,
+        /// Nodes expanded before it gave up.
+        expansions: usize,
+    },
     /// A configuration or parameter was not a finite number.
     #[error("{what} is not finite: {value}")]
-    NotFinite { what: &'static str, value: f32 },
+    NotFinite {
+        /// What it was.
+        what: &'static str,
+        /// Its value.
+        value: f32,
+    },
 }

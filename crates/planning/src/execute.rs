@@ -10,15 +10,12 @@ use behavior_env::{Env, EnvError, Info, Step};
 use behavior_robots::{ActionSpace, RobotKind};
 use serde::{Deserialize, Serialize};
 
-/// How far across the floor from the base an object's box may be for a physical primitive
-/// to be tried on it, m: what a BehaviorRobot's hand (1.2 m from a shoulder 1 m above the
-/// floor) and Fetch's arm reach of a table's far side.
+/// How far across the floor from the base an object's box may be for the task planner to
+/// try a physical primitive on it before it stands again, m: what a BehaviorRobot's hand (1.2 m
+/// from a shoulder 1 m above the floor) and Fetch's arm reach of a table's far side. Where the
+/// base stands for an object is planned with each robot's own
+/// [`behavior_robots::EmbodimentSpec::arm_reach`].
 pub const ARM_REACH: f32 = 1.0;
-/// How far across the floor from Fetch's base the box of an object it stands to take may be, m:
-/// within it the arm reaches both over a counter and down to the floor (the end-effector
-/// controller's workspace, which the physical primitives no longer go through, ends 0.75 m in
-/// front of the base).
-pub const FETCH_ARM_REACH: f32 = 0.7;
 
 /// How primitives act: setting outcomes, or moving the robot through its controllers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -50,12 +47,13 @@ impl Mode {
     }
 
     /// The action space an environment's robot of `kind` is driven through for primitives of
-    /// this mode: Fetch's [`ActionSpace::Joints`] when physical, so that its arm's plans are
-    /// executed as planned; the robot's full space otherwise.
+    /// this mode: its [`behavior_robots::EmbodimentSpec::primitive_space`] when physical (Fetch's
+    /// [`ActionSpace::Joints`], so that its arm's plans are executed as planned); its full space
+    /// otherwise.
     pub fn action_space(self, kind: RobotKind) -> ActionSpace {
-        match (self, kind) {
-            (Mode::Physical, RobotKind::Fetch) => ActionSpace::Joints,
-            _ => ActionSpace::Full,
+        match self {
+            Mode::Physical => kind.spec().primitive_space,
+            Mode::Symbolic => ActionSpace::Full,
         }
     }
 
@@ -152,14 +150,14 @@ pub fn run(
             Mode::Physical,
             Primitive::Open | Primitive::Close | Primitive::ToggleOn | Primitive::ToggleOff,
         ) => env.edit(|edit| symbolic::apply(edit, &call))?,
-        (Mode::Physical, Primitive::Grasp) if drives_fetch(env) => {
+        (Mode::Physical, Primitive::Grasp) if arm_in_joints(env) => {
             fetch_manipulate::grasp(env, &call, again(&mut watcher))?.map(|_| ())
         }
         (Mode::Physical, Primitive::Grasp) => {
             manipulate::grasp(env, &call, again(&mut watcher))?.map(|_| ())
         }
         (Mode::Physical, p) => match p.relation() {
-            Some(r) if drives_fetch(env) => {
+            Some(r) if arm_in_joints(env) => {
                 fetch_manipulate::place(env, &call, r, again(&mut watcher))?.map(|_| ())
             }
             Some(r) => manipulate::place(env, &call, r, again(&mut watcher))?.map(|_| ()),
@@ -228,9 +226,12 @@ fn ended(env: &mut Env) -> Result<Step, EnvError> {
     })
 }
 
-/// Whether the episode's robot is a Fetch.
-fn drives_fetch(env: &Env) -> bool {
-    matches!(env.robot(), Some(behavior_robots::Robot::Fetch(..)))
+/// Whether the episode's robot moves its arm joint by joint for primitives (Fetch), so that the
+/// arm's planner in joint space (`fetch_manipulate.rs`) takes its hands, not the hands' planner
+/// in pose space (`manipulate.rs`).
+fn arm_in_joints(env: &Env) -> bool {
+    env.robot()
+        .is_some_and(|r| r.spec().primitive_space == ActionSpace::Joints)
 }
 
 /// The call as a recording says it.

@@ -44,7 +44,8 @@ use crate::symbolic::check;
 use behavior_core::rng::{SimRng, seeded, uniform};
 use behavior_env::Env;
 use behavior_robots::{
-    ActionSpace, FETCH_JOINT_ACTION_DIM, Fetch, FetchCommand, FetchJoint, FetchJointAction, Robot,
+    ActionSpace, Embodiment, FETCH_JOINT_ACTION_DIM, Fetch, FetchCommand, FetchJoint,
+    FetchJointAction, Robot,
 };
 use behavior_sim::{BodyRef, ObjectId, Relation, World};
 use rapier3d::math::{Pose, Rotation, Vector};
@@ -83,8 +84,11 @@ const LEAVE: f32 = 0.1;
 /// (the descent, the lift, the way back).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct ArmPath {
+    /// The configurations planned, from where it started to the goal.
     pub planned: Vec<ArmConfig>,
+    /// The configurations it passed on the way, a step each.
     pub executed: Vec<ArmConfig>,
+    /// Those of the rest of the primitive: the descent, the lift, the way back.
     pub after: Vec<ArmConfig>,
 }
 

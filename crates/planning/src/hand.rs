@@ -16,12 +16,14 @@ use std::f32::consts::PI;
 /// then yaw about z, fixed axes: the action's convention).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HandConfig {
+    /// The palm's position in the world, m.
     pub position: Vector,
     /// Roll, pitch and yaw.
     pub angles: [f32; 3],
 }
 
 impl HandConfig {
+    /// The configuration of a palm pose.
     pub fn of(pose: &Pose) -> HandConfig {
         let (yaw, pitch, roll) = pose.rotation.to_euler(EulerRot::ZYX);
         HandConfig {
@@ -30,6 +32,7 @@ impl HandConfig {
         }
     }
 
+    /// The palm pose it stands for.
     pub fn pose(&self) -> Pose {
         let [roll, pitch, yaw] = self.angles;
         Pose::from_parts(

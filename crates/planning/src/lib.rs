@@ -26,6 +26,21 @@
 //!
 //! It builds on the episode (`behavior-env`), the robots and the world; it knows nothing of
 //! Python, the command line or rendering.
+//!
+//! ```
+//! use behavior_env::{Env, EnvConfig};
+//! use behavior_planning::{Limits, Mode, RunError, Solver};
+//!
+//! /// Solves an episode of `config` (an activity, its homes, a robot: see [`EnvConfig::new`])
+//! /// with symbolic primitives; whether the goal was reached, and by how many primitives.
+//! fn solve(config: EnvConfig, seed: u64) -> Result<(bool, usize), RunError> {
+//!     let mut env = Env::new(config);
+//!     env.reset(seed)?;
+//!     let limits = Limits::default();
+//!     let solution = Solver::new(&mut env, Mode::Symbolic, limits, None, &mut |_| {}).solve()?;
+//!     Ok((solution.success, solution.primitives.len()))
+//! }
+//! ```
 
 mod action_space;
 mod arm;
@@ -47,9 +62,7 @@ pub use action_space::{PrimitiveSet, PrimitiveSpace};
 pub use arm::{ARM_RESOLUTION, ArmBody, ArmConfig, ArmSpace};
 pub use base::{BaseConfig, BaseSpace, Footprint, home_extent};
 pub use error::PlanError;
-pub use execute::{
-    ARM_REACH, FETCH_ARM_REACH, Mode, Outcome, RecordedCall, RunError, Watcher, replay_edit, run,
-};
+pub use execute::{ARM_REACH, Mode, Outcome, RecordedCall, RunError, Watcher, replay_edit, run};
 pub use fetch_manipulate::{ArmPath, FETCH_APPROACH, FETCH_DESCENT};
 pub use fetch_manipulate::{grasp as fetch_grasp, place as fetch_place, reaches as fetch_reaches};
 pub use hand::{HAND_MARGIN, HAND_RESOLUTION, HAND_WEIGHTS, HandBody, HandConfig, HandSpace};
@@ -59,9 +72,7 @@ pub use manipulate::{
     GRASP_HEADINGS, GRASP_INSET, GRASP_JITTER, HAND_RESET, HandPath, PLACE_HEIGHT, PLACE_TRIES,
     RELEASE_STEPS, RISE, SETTLE_STEPS, approach_plan, grasp, hand_body, hand_reaches, place,
 };
-pub use navigate::{
-    CARRY_MARGIN, FETCH_CARRY_MARGIN, STAND_CLEARANCE, STAND_DISTANCES, STAND_HEADINGS, Standing,
-};
+pub use navigate::{STAND_CLEARANCE, STAND_DISTANCES, STAND_HEADINGS, Standing};
 pub use physical::{
     BasePath, DOORS_OPENED, PHYSICAL_BUDGET, POSITION_TOLERANCE, STAND_PLANS, STEPS_PER_WAYPOINT,
     YAW_TOLERANCE, base_config, drive_to,

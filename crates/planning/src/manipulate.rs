@@ -125,8 +125,11 @@ const ARRIVAL_STEPS: u32 = 30;
 /// in contact and on the way back (the descent, the lift, the return).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct HandPath {
+    /// The configurations planned.
     pub planned: Vec<HandConfig>,
+    /// The palm's poses as they were executed, a step each.
     pub executed: Vec<Pose>,
+    /// The palm's poses after: in contact and on the way back.
     pub after: Vec<Pose>,
 }
 
@@ -802,15 +805,9 @@ pub(crate) fn placement_goals(
     rng: &mut SimRng,
 ) -> Result<Vec<Pose>, Failure> {
     let held = robot.held(call.hand).ok_or(Failure::HandEmpty)?;
-    let holder = match robot {
-        Robot::Behavior(robot, _) => {
-            let side = Side::BOTH
-                .get(call.hand)
-                .ok_or(Failure::NoHand(call.hand))?;
-            robot.parts().hand(*side)
-        }
-        Robot::Fetch(fetch, _) => fetch.parts().gripper(),
-    };
+    let holder = robot
+        .hand_object(call.hand)
+        .ok_or(Failure::NoHand(call.hand))?;
     let grip = world.pose(holder).inverse() * world.pose(held);
     let mut let_go = world.clone();
     robot.clone().release_now(&mut let_go, call.hand);

@@ -4,7 +4,7 @@
 use crate::base::{BaseConfig, Footprint, KEEL, stands_inside};
 use behavior_core::FLOOR_SYNSET;
 use behavior_core::rng::{SimRng, uniform};
-use behavior_robots::{Robot, Side};
+use behavior_robots::Robot;
 use behavior_sim::{BodyRef, ObjectId, Primitive, QueryFilter, Solid, World};
 use rapier3d::math::{Pose, Vector};
 use std::f32::consts::PI;
@@ -15,24 +15,15 @@ pub const STAND_DISTANCES: [f32; 6] = [0.6, 0.8, 1.0, 1.2, 1.8, 2.4];
 pub const STAND_HEADINGS: usize = 20;
 /// How clear of everything the robot must stand, m.
 pub const STAND_CLEARANCE: f32 = 0.01;
-/// How much larger what the BehaviorRobot carries is planned than it is, m: held in a hand
-/// servoed toward its target, it trails and swings as the base drives (a tile caught a wall on
-/// a path planned past it with no room, and its grasp broke).
-pub const CARRY_MARGIN: f32 = 0.03;
-/// How much larger what Fetch carries is planned than it is, m: its arm is moved joint by
-/// joint exactly and holds still while the base drives, so what it holds lags only by the
-/// grasp's give. With [`CARRY_MARGIN`], the base and a sheet of plywood carried upright
-/// beside it, about 0.65 m wide, found no way through a doorway 0.75 m wide on the 0.1 m
-/// lattice (whose nodes need about a cell of play to fall where it passes); 1 cm less on each
-/// side, it found one.
-pub const FETCH_CARRY_MARGIN: f32 = 0.01;
 
 /// The robot as it stands now: its base's configuration on the floor, and the shapes of its
 /// parts (base, hands or arm) and of what it holds, in the base's floor frame, which move with
 /// it. (The original's check ignores held objects; a carton carried into a wall breaks the
 /// grasp, so ours keeps them clear too.)
 pub struct Standing {
+    /// Where the base stands.
     pub config: BaseConfig,
+    /// What moves with it.
     pub footprint: Footprint,
     /// The eye in the base's floor frame.
     pub eye: Pose,
@@ -41,6 +32,7 @@ pub struct Standing {
 }
 
 impl Standing {
+    /// The robot as it stands in the world now.
     pub fn of(world: &World, robot: &Robot) -> Standing {
         let base = robot.base_pose(world);
         let forward = base.rotation * Vector::X;
@@ -52,26 +44,19 @@ impl Standing {
         let floor = config.pose().inverse();
         let held = (0..robot.hands()).filter_map(|h| robot.held(h));
         let mut shapes = shapes_in(world, robot.objects(), floor);
-        // What the hands carry sways and trails as the base drives: it is kept clear by a margin.
+        // What the hands carry sways and trails as the base drives: it is kept clear by a margin
+        // (the robot's `carry_sway`).
         let carried = shapes_in(world, held, floor);
-        let margin = match robot {
-            Robot::Behavior(..) => CARRY_MARGIN,
-            Robot::Fetch(..) => FETCH_CARRY_MARGIN,
-        };
+        let margin = robot.spec().carry_sway;
         shapes.extend(
             carried
                 .into_iter()
                 .map(|(shape, pose)| (inflated(&shape, margin), pose)),
         );
-        // A BehaviorRobot's body is stopped where a palm's target with straight fingers would
-        // enter something fixed: that shape goes with the base too.
-        if let Robot::Behavior(r, _) = robot {
-            let (sweep, offset) = behavior_robots::sweep_shape();
-            for side in Side::BOTH {
-                let target = r.body_pose(world) * r.hand_target(side);
-                shapes.push((sweep.clone(), floor * target * offset));
-            }
-        }
+        // What stops the base beyond its own shapes (a BehaviorRobot's palms' sweeps) goes with
+        // it too.
+        let sweeps = robot.base_sweep(world).into_iter();
+        shapes.extend(sweeps.map(|(shape, pose)| (shape, floor * pose)));
         let mut ignored = robot.objects();
         ignored.extend((0..robot.hands()).filter_map(|h| robot.held(h)));
         // The base stands on the floors (Fetch's wheels touch them): they are no obstacle.

@@ -8,7 +8,8 @@
 use crate::base::{BaseConfig, BaseSpace, home_extent};
 use crate::error::PlanError;
 use crate::execute::Watcher;
-use crate::execute::{ARM_REACH, FETCH_ARM_REACH, Mode, RecordedCall, RunError};
+use crate::execute::{RecordedCall, RunError};
+use crate::hand::wrap;
 use crate::lattice::{LATTICE_EXPANSIONS, lattice_plan};
 use crate::navigate::Standing;
 use crate::primitive::{Call, Failure};
@@ -17,9 +18,9 @@ use crate::symbolic::{call_seed, limited_links, open_all_the_way, stand_for};
 use behavior_core::rng::{SimRng, seeded};
 use behavior_core::{DOOR_SYNSET, Predicate};
 use behavior_env::Env;
-use behavior_robots::{ACTION_SCALE, FetchAction, MAX_ANGULAR_SPEED, MAX_LINEAR_SPEED, Robot};
-use behavior_sim::{BodyRef, ObjectId, STEP_SECONDS, World};
-use std::f32::consts::{FRAC_PI_2, PI};
+use behavior_robots::{BaseDrive, BaseMove, Robot};
+use behavior_sim::{BodyRef, ObjectId, World};
+use std::f32::consts::PI;
 
 /// Steps the robot has to reach each configuration of the densified path before the
 /// execution is given up as blocked.
@@ -236,9 +237,10 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
         (Some(w), Some(r)) => (w, r),
         _ => return Err(Failure::Unavailable("no episode")),
     };
-    if robot.space() != Mode::Physical.action_space(robot.kind()) {
+    if robot.space() != robot.spec().primitive_space {
         return Err(Failure::Unavailable(
-            "physical primitives drive the BehaviorRobot's full action space and Fetch's `joints`",
+            "physical primitives drive a robot through its primitive space \
+             (the BehaviorRobot's full action space, Fetch's `joints`)",
         ));
     }
     let seed = call_seed(env.start().map_or(0, |s| s.seed), env.steps(), call);
@@ -254,10 +256,7 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
     // Hinged and sliding parts — room doors, a cabinet's door left open — are pushed aside on
     // the way: the body is kinematic, a leaf yields on its hinge.
     standing.filter.exclude_bodies.extend(hinged_parts(world));
-    let reach = match robot {
-        Robot::Fetch(..) => FETCH_ARM_REACH,
-        Robot::Behavior(..) => ARM_REACH,
-    };
+    let reach = robot.spec().arm_reach;
     let start = standing.config;
     // The robot stands first where its arm (Fetch) or a hand (the BehaviorRobot) reaches the
     // object from.
@@ -353,13 +352,13 @@ const ESCAPE_DIRECTIONS: usize = 16;
 /// The nearest free configuration within [`ESCAPE_DISTANCE`] of `start`, heading kept, straight
 /// back tried first at each distance: where a robot that overlaps a fixed thing (its body
 /// carried into a carcass by a door it opened) gets out without turning (the robot's own
-/// motion allows leaving an overlap, never entering one). A BehaviorRobot moves any way,
-/// Fetch back or forward only.
+/// motion allows leaving an overlap, never entering one). A holonomic base moves any way, a
+/// differential one back or forward only.
 fn escape(space: &BaseSpace<'_>, robot: &Robot, start: &BaseConfig) -> Option<BaseConfig> {
     let steps = (ESCAPE_DISTANCE / ESCAPE_STEP).round() as usize;
-    let directions: Vec<usize> = match robot {
-        Robot::Behavior(..) => (0..ESCAPE_DIRECTIONS).collect(),
-        Robot::Fetch(..) => vec![0, ESCAPE_DIRECTIONS / 2],
+    let directions: Vec<usize> = match robot.spec().drive {
+        BaseDrive::Holonomic => (0..ESCAPE_DIRECTIONS).collect(),
+        BaseDrive::Differential => vec![0, ESCAPE_DIRECTIONS / 2],
     };
     (1..=steps).find_map(|k| {
         let d = ESCAPE_STEP * k as f32;
@@ -417,47 +416,13 @@ fn drive_toward(env: &Env, target: &BaseConfig) -> Option<Vec<f32>> {
     if dx.hypot(dy) <= POSITION_TOLERANCE && dyaw.abs() <= YAW_TOLERANCE {
         return None;
     }
-    let mut action = vec![0.0; robot.action_dim()];
     let (c, s) = (now.yaw.cos(), now.yaw.sin());
     // The offset in the base's own frame: forward and to the left.
-    let (forward, left) = (c * dx + s * dy, -s * dx + c * dy);
-    match robot {
-        Robot::Behavior(..) => {
-            action[0] = (forward / ACTION_SCALE).clamp(-1.0, 1.0);
-            action[1] = (left / ACTION_SCALE).clamp(-1.0, 1.0);
-            action[5] = (dyaw / ACTION_SCALE).clamp(-1.0, 1.0);
-        }
-        Robot::Fetch(..) => {
-            // A unicycle: turn toward the point first, drive when facing it, then turn to the
-            // target's heading.
-            let distance = forward.hypot(left);
-            // A point behind is backed onto (a robot backing out of what it overlaps).
-            let turn = if distance > POSITION_TOLERANCE {
-                let toward = wrap(left.atan2(forward));
-                if toward.abs() > FRAC_PI_2 {
-                    wrap(toward + PI)
-                } else {
-                    toward
-                }
-            } else {
-                dyaw
-            };
-            let drive = if distance > POSITION_TOLERANCE && turn.abs() < 0.05 {
-                forward
-            } else {
-                0.0
-            };
-            action[FetchAction::LINEAR] =
-                (drive / (MAX_LINEAR_SPEED * STEP_SECONDS)).clamp(-1.0, 1.0);
-            action[FetchAction::ANGULAR] =
-                (turn / (MAX_ANGULAR_SPEED * STEP_SECONDS)).clamp(-1.0, 1.0);
-        }
-    }
-    Some(action)
-}
-
-/// An angle in (−π, π].
-fn wrap(a: f32) -> f32 {
-    let w = (a + PI).rem_euclid(2.0 * PI) - PI;
-    if w <= -PI { w + 2.0 * PI } else { w }
+    let step = BaseMove {
+        forward: c * dx + s * dy,
+        left: -s * dx + c * dy,
+        turn: dyaw,
+        within: POSITION_TOLERANCE,
+    };
+    robot.base_action(step)
 }

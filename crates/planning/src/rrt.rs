@@ -10,6 +10,7 @@ use serde::{Deserialize, Serialize};
 /// them, and which configurations are free. Implemented by the base (x, y, yaw) and by arms and
 /// hands.
 pub trait Space {
+    /// A point of the space.
     type Config: Clone + PartialEq + std::fmt::Debug;
 
     /// The cost of moving from `a` to `b` (nearest neighbours are found by it).

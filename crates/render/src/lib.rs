@@ -37,6 +37,32 @@
 //!
 //! It knows nothing of activities, episodes or robots (a model piece is a name with meshes): an
 //! environment places the cameras (an eye, a head camera) and says what to highlight.
+//!
+//! A lidar needs no graphics adapter:
+//!
+//! ```
+//! use behavior_render::{Lidar, Pattern};
+//! use behavior_sim::{ObjectSpec, Part, Primitive, QueryFilter, World};
+//! use rapier3d::math::{Pose, Vector};
+//!
+//! # fn main() -> Result<(), Box<dyn std::error::Error>> {
+//! let mut world = World::default();
+//! let slab = Part::new(Primitive::Box {
+//!     half_extents: Vector::new(0.1, 2.0, 1.0),
+//! });
+//! let wall = ObjectSpec::new("wall_1", "wall.n.01", vec![slab]);
+//! world.add(wall.at(Vector::new(2.0, 0.0, 0.0)).fixed())?;
+//! let lidar = Lidar {
+//!     pose: Pose::IDENTITY,
+//!     pattern: Pattern::Planar { beams: 3, fov: 0.5 },
+//!     min_range: 0.05,
+//!     max_range: 10.0,
+//! };
+//! let scan = lidar.scan(&world, &QueryFilter::default())?;
+//! assert!((scan.ranges[1] - 1.9).abs() < 1e-3); // straight ahead: the wall's near face
+//! # Ok(())
+//! # }
+//! ```
 
 mod appearance;
 mod camera;

@@ -1,9 +1,8 @@
 //! Lidar: beams cast through the world's batched ray queries ([`behavior_sim::Core::cast_rays`]),
 //! as points and as a range image.
 //!
-//! Fetch's base laser (Fetch's URDF): a SICK TIM571 mounted at (0.235, 0, 0.2878) on the
-//! base, 220°, 0.05–25 m; iGibson casts 220 rays over the 220°. [`Lidar::fetch_base`] is that.
-//! A 3-D scan is rows of such fans at elevations spread over a vertical field of view.
+//! A planar scan is one fan of beams (Fetch's base laser: 220 beams over 220°, its robot says
+//! where); a 3-D scan is rows of such fans at elevations spread over a vertical field of view.
 
 use crate::error::RenderError;
 use behavior_sim::{QueryFilter, World};
@@ -59,19 +58,6 @@ pub struct Scan {
 }
 
 impl Lidar {
-    /// Fetch's base laser at a base pose: 220 beams over 220°, 0.05–25 m.
-    pub fn fetch_base(base: Pose) -> Lidar {
-        Lidar {
-            pose: base * Pose::from_translation(Vector::new(0.235, 0.0, 0.2878)),
-            pattern: Pattern::Planar {
-                beams: 220,
-                fov: 220f32.to_radians(),
-            },
-            min_range: 0.05,
-            max_range: 25.0,
-        }
-    }
-
     /// Its beams' directions in its own frame, row-major.
     pub fn directions(&self) -> (usize, usize, Vec<Vector>) {
         match self.pattern {

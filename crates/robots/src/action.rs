@@ -185,7 +185,8 @@ pub enum ActionSpace {
     /// Fetch only: its whole action with the arm driven joint by joint instead of through
     /// inverse kinematics (iGibson 2.1+'s `JointController` on the arm), 13 values
     /// (`fetch_action.rs`). A motion planned in the arm's joint space is executed exactly as
-    /// planned. The BehaviorRobot's hands have no joints: [`crate::Robot::add`] refuses it.
+    /// planned. The BehaviorRobot's hands have no joints: it is not among its
+    /// [`crate::EmbodimentSpec::spaces`], and [`crate::Robot::add`] refuses it.
     Joints,
 }
 
@@ -211,11 +212,6 @@ impl ActionSpace {
         }
     }
 
-    /// Whether a robot of `kind` can be driven through it.
-    pub fn fits(self, kind: crate::RobotKind) -> bool {
-        self != ActionSpace::Joints || kind == crate::RobotKind::Fetch
-    }
-
     /// The space with that [`ActionSpace::name`].
     pub fn from_name(name: &str) -> Option<ActionSpace> {
         ActionSpace::ALL.into_iter().find(|s| s.name() == name)
@@ -235,7 +231,7 @@ impl ActionSpace {
 
     /// The full action a vector of this space stands for; the same checks as [`Action::new`].
     pub fn action(self, values: &[f32]) -> Result<Action, ActionError> {
-        if !self.fits(crate::RobotKind::Behavior) {
+        if !crate::BehaviorRobot::SPEC.drives(self) {
             return Err(ActionError::Unsupported {
                 robot: crate::RobotKind::Behavior.name(),
                 space: self.name(),
@@ -259,6 +255,25 @@ impl ActionSpace {
             },
             other => other,
         })
+    }
+
+    /// Whether a BehaviorRobot's body moves by this space's actions.
+    pub(crate) fn moves_body(self) -> bool {
+        let body = Action::BODY.start;
+        self.mapping().iter().any(|(_, to)| to.contains(&body))
+    }
+
+    /// The vector of this space that stands for `full` (its entries outside the space dropped);
+    /// `None` for a space a BehaviorRobot is not driven through.
+    pub(crate) fn reduce(self, full: &[f32; ACTION_DIM]) -> Option<Vec<f32>> {
+        if !crate::BehaviorRobot::SPEC.drives(self) {
+            return None;
+        }
+        let mut values = vec![0.0; self.dim()];
+        for (from, to) in self.mapping() {
+            values[from.clone()].copy_from_slice(&full[to.clone()]);
+        }
+        Some(values)
     }
 
     /// (range in this space, range in the full action) pairs.

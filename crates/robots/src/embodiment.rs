@@ -1,57 +1,111 @@
-//! Any robot, for code that does not care which: an environment, metrics, recordings.
+//! What every robot is: the [`Embodiment`] trait and the plain facts of [`EmbodimentSpec`].
 //!
-//! [`Robot`] is an enum over the embodiments (not a trait object) so that it can be cloned with
-//! the world for snapshots and replay, and matched where the embodiments differ. Its methods are
-//! what an episode needs of a body: actions as plain numbers, proprioception as plain numbers,
-//! where the body and hands are, what the hands hold, and the robot-relative predicates.
+//! An environment, its metrics, sensors and recordings, and the planners reach a robot only
+//! through this interface, so that a new robot is one new implementation, not a new branch in
+//! every caller. Hands are numbered (0 left, 1 right for two; 0 for one), actions and
+//! proprioception are plain numbers whose layout each robot documents, and the moves outside
+//! physics that symbolic primitives make (teleport, grasp now, release now) are part of it.
 
 use crate::action::{ActionError, ActionSpace};
-use crate::body::BODY_HEIGHT;
-use crate::fetch::Fetch;
-use crate::fetch_proprioception::FetchProprioception;
-use crate::hand::Side;
-use crate::proprioception::Proprioception;
-use crate::robot::{BehaviorRobot, RobotError};
-use behavior_sim::{ObjectId, StepHooks, World};
-use rapier3d::math::{Pose, Rotation, Vector};
+use crate::magic::MagicError;
+use crate::relative;
+use crate::robot::RobotKind;
+use behavior_sim::{ObjectId, Primitive, StepHooks, World};
+use rapier3d::math::Pose;
 
-/// Which embodiment.
-#[derive(
-    serde::Serialize,
-    serde::Deserialize,
-    Clone,
-    Copy,
-    Debug,
-    Default,
-    PartialEq,
-    Eq,
-    Hash,
-    PartialOrd,
-    Ord,
-)]
-pub enum RobotKind {
-    /// The bimanual humanoid of the VR demonstrations ([`BehaviorRobot`]).
-    #[default]
-    Behavior,
-    /// The Fetch mobile manipulator ([`Fetch`]).
-    Fetch,
+/// How a robot's base moves on the floor.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BaseDrive {
+    /// Any way at once: forward, sideways and turning (the BehaviorRobot's floating body).
+    Holonomic,
+    /// Forward or back along its heading, and turning on the spot (Fetch's two wheels).
+    Differential,
 }
 
-impl RobotKind {
-    /// Every embodiment.
-    pub const ALL: [RobotKind; 2] = [RobotKind::Behavior, RobotKind::Fetch];
+/// A move of the base asked of [`Embodiment::base_action`], in the base's own frame at the
+/// step's start: forward (+x), to the left (+y), m, and turning left, rad.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct BaseMove {
+    /// Forward, m.
+    pub forward: f32,
+    /// To the left, m.
+    pub left: f32,
+    /// Turning left (counter-clockwise seen from above), rad.
+    pub turn: f32,
+    /// How near the point counts as there, m: a base that cannot move sideways turns to
+    /// `turn` only within it.
+    pub within: f32,
+}
 
-    /// Its name on the command line and in files: `behavior` or `fetch`.
-    pub fn name(self) -> &'static str {
-        match self {
-            RobotKind::Behavior => "behavior",
-            RobotKind::Fetch => "fetch",
-        }
+/// How a lidar sweeps its beams.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Scan {
+    /// One horizontal fan of `beams` over `fov` rad, centred ahead.
+    Fan {
+        /// Beams in the fan.
+        beams: u32,
+        /// Its opening, rad.
+        fov: f32,
+    },
+    /// `rows` fans of `columns` beams all round, at elevations spread over `vertical_fov` rad
+    /// centred on the horizon.
+    AllRound {
+        /// Fans, top first.
+        rows: u32,
+        /// Beams per fan, starting straight ahead and turning left.
+        columns: u32,
+        /// The spread of the fans' elevations, rad.
+        vertical_fov: f32,
+    },
+}
+
+/// A lidar on a robot: where it is now, how it scans, and its range, m.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LidarMount {
+    /// Its pose in the world: beams go out along its +x, fans about its z.
+    pub pose: Pose,
+    /// How it scans.
+    pub scan: Scan,
+    /// Returns nearer than this are dropped, m.
+    pub min_range: f32,
+    /// Returns farther than this are dropped, m.
+    pub max_range: f32,
+}
+
+/// The plain facts about a kind of robot that callers plan with, before and after it exists.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EmbodimentSpec {
+    /// Which kind.
+    pub kind: RobotKind,
+    /// The names the episode's metrics give its hands or grippers, in hand order.
+    pub hand_names: &'static [&'static str],
+    /// How high above the floor its own origin is when it stands: what
+    /// [`crate::Robot::standing_pose`] adds to a floor point, m.
+    pub origin_height: f32,
+    /// How its base moves.
+    pub drive: BaseDrive,
+    /// The action spaces it can be driven through.
+    pub spaces: &'static [ActionSpace],
+    /// The space physical primitives drive it through: the one that moves each part exactly as
+    /// a plan says (a hand's pose, an arm's joints).
+    pub primitive_space: ActionSpace,
+    /// How far across the floor from the base an object's box may be for its hands to be tried
+    /// on it, m.
+    pub arm_reach: f32,
+    /// How far what a hand carries may trail where the hand is told to be while the base
+    /// drives, m: the margin base plans keep round it.
+    pub carry_sway: f32,
+}
+
+impl EmbodimentSpec {
+    /// How many hands (or grippers) it has.
+    pub fn hands(&self) -> usize {
+        self.hand_names.len()
     }
 
-    /// The kind with that [`RobotKind::name`].
-    pub fn from_name(name: &str) -> Option<RobotKind> {
-        RobotKind::ALL.into_iter().find(|k| k.name() == name)
+    /// Whether it can be driven through `space`.
+    pub fn drives(&self, space: ActionSpace) -> bool {
+        self.spaces.contains(&space)
     }
 }
 
@@ -59,7 +113,7 @@ impl RobotKind {
 /// or body and gripper).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TrackedPart {
-    /// `body`, `left_hand`, `right_hand` or `gripper`.
+    /// `body`, then a hand's name ([`EmbodimentSpec::hand_names`]).
     pub name: &'static str,
     /// The world object it is.
     pub object: ObjectId,
@@ -67,245 +121,131 @@ pub struct TrackedPart {
     pub holding: bool,
 }
 
-/// A robot of any kind, with the action space it is driven through.
-#[derive(serde::Serialize, serde::Deserialize, Clone, Debug)]
-pub enum Robot {
-    /// A [`BehaviorRobot`] and the space its actions come in.
-    Behavior(BehaviorRobot, ActionSpace),
-    /// A [`Fetch`] and the space its actions come in.
-    Fetch(Fetch, ActionSpace),
-}
+/// A robot, whichever: what an episode, its sensors and metrics, a recording and a planner need
+/// of a body. It acts inside the world's step ([`StepHooks`]): an action set with
+/// [`Embodiment::set_action`] acts for the next step, after which it holds still.
+///
+/// Hands are numbered from 0 ([`EmbodimentSpec::hand_names`] names them); a number beyond them
+/// is no hand: it holds nothing and a move with it is [`MagicError::NoHand`].
+pub trait Embodiment: StepHooks {
+    /// Its facts.
+    fn spec(&self) -> &'static EmbodimentSpec;
 
-impl Robot {
-    /// Adds a robot of `kind` driven through `space` (the original's reduced spaces; each kind
-    /// has its own reading of them: [`ActionSpace::dim`] for a BehaviorRobot,
-    /// [`ActionSpace::fetch_dim`] for Fetch).
-    ///
-    /// `pose` is the robot's own origin, which differs by kind:
-    /// - [`RobotKind::Behavior`]: the body capsule's centre, [`BODY_HEIGHT`] above the floor;
-    /// - [`RobotKind::Fetch`]: the base's origin on the floor's top (only its yaw counts).
-    ///
-    /// [`Robot::standing_pose`] gives it for a point on the floor, so that callers need not know.
-    pub fn add(
-        kind: RobotKind,
-        space: ActionSpace,
+    /// How many numbers an action of `space` has (0 for a space it cannot be driven through).
+    fn action_dim(&self, space: ActionSpace) -> usize;
+
+    /// Checks `values` as an action of `space` and sets it for the next step. A bad one is an
+    /// error and changes nothing.
+    fn set_action(&mut self, space: ActionSpace, values: &[f32]) -> Result<(), ActionError>;
+
+    /// The action of `space` that moves the base by `step` within one step as nearly as it can
+    /// (clipped to what one step allows), everything else held still; `None` for a space
+    /// without the base.
+    fn base_action(&self, space: ActionSpace, step: BaseMove) -> Option<Vec<f32>>;
+
+    /// How many numbers [`Embodiment::proprioception_into`] gives.
+    fn proprioception_dim(&self) -> usize;
+
+    /// Appends its proprioception to `out` ([`Embodiment::proprioception_dim`] numbers).
+    fn proprioception_into(&self, world: &World, out: &mut Vec<f32>);
+
+    /// The base's pose in the world (its own origin: see [`EmbodimentSpec::origin_height`]).
+    fn base_pose(&self, world: &World) -> Pose;
+
+    /// The base's object.
+    fn base(&self) -> ObjectId;
+
+    /// The world objects it is made of, base first.
+    fn objects(&self) -> Vec<ObjectId>;
+
+    /// The object of hand `hand`: the palm or the gripper whose pose is the hand's.
+    fn hand_object(&self, hand: usize) -> Option<ObjectId>;
+
+    /// The object hand `hand` holds.
+    fn held(&self, hand: usize) -> Option<ObjectId>;
+
+    /// The on-board camera's pose in the world. It looks along its +x, with +z up.
+    fn camera_pose(&self, world: &World) -> Pose;
+
+    /// Its lidar now.
+    fn lidar(&self, world: &World) -> LidarMount;
+
+    /// Shapes beyond its objects that move with the base and that a base plan must keep clear
+    /// of fixed things, with their poses in the world: what stops the base where its objects
+    /// alone would not.
+    fn base_sweep(&self, _world: &World) -> Vec<(Primitive, Pose)> {
+        Vec::new()
+    }
+
+    /// Puts the base at `pose` (as [`Embodiment::base_pose`] gives it) at once, the hands or
+    /// arms with it and what they hold with them; nothing else moves, and nothing is checked
+    /// for collisions (a caller checks where it sends the robot).
+    fn teleport(&mut self, world: &mut World, pose: Pose) -> Result<(), MagicError>;
+
+    /// Puts `object` in hand `hand` and holds it there with the assisted grasp's attachment,
+    /// closing the hand.
+    fn grasp_now(
+        &mut self,
         world: &mut World,
-        pose: Pose,
-    ) -> Result<Robot, RobotError> {
-        if !space.fits(kind) {
-            return Err(RobotError::Space(ActionError::Unsupported {
-                robot: kind.name(),
-                space: space.name(),
-            }));
-        }
-        match kind {
-            RobotKind::Behavior => Ok(Robot::Behavior(BehaviorRobot::add(world, pose)?, space)),
-            RobotKind::Fetch => Ok(Robot::Fetch(Fetch::add(world, pose)?, space)),
-        }
-    }
+        hand: usize,
+        object: ObjectId,
+    ) -> Result<(), MagicError>;
 
-    /// The pose to pass to [`Robot::add`] for a robot of `kind` standing on the floor at
-    /// `floor_point` (on the floor's top surface), facing `yaw` (rad, about z from +x).
-    pub fn standing_pose(kind: RobotKind, floor_point: Vector, yaw: f32) -> Pose {
-        let lift = match kind {
-            RobotKind::Behavior => BODY_HEIGHT,
-            RobotKind::Fetch => 0.0,
+    /// Holds `object` in hand `hand` where it is, if the hand touches it: the original's
+    /// forced assisted grasp after a physical grasp closed the hand (it asks for contact, not
+    /// for the assisted grasp's rays).
+    fn grasp_touching(
+        &mut self,
+        world: &mut World,
+        hand: usize,
+        object: ObjectId,
+    ) -> Result<(), MagicError>;
+
+    /// Puts hand `hand` at its target at once, with what it holds, for a hand pinned behind
+    /// furniture; nothing to do for one that cannot be left behind.
+    fn reset_hand(&mut self, world: &mut World, hand: usize) -> Result<(), MagicError>;
+
+    /// Lets go of what hand `hand` holds at once and opens it; the object it held, if any.
+    /// The object stays where it is, its contacts with the hand back once they are apart.
+    fn release_now(&mut self, world: &mut World, hand: usize) -> Option<ObjectId>;
+
+    /// The base, then each hand, as the original's metrics follow them.
+    fn tracked_parts(&self) -> Vec<TrackedPart> {
+        let body = TrackedPart {
+            name: "body",
+            object: self.base(),
+            holding: false,
         };
-        Pose::from_parts(
-            floor_point + Vector::new(0.0, 0.0, lift),
-            Rotation::from_rotation_z(yaw),
-        )
-    }
-
-    /// Which embodiment it is.
-    pub fn kind(&self) -> RobotKind {
-        match self {
-            Robot::Behavior(..) => RobotKind::Behavior,
-            Robot::Fetch(..) => RobotKind::Fetch,
-        }
-    }
-
-    /// The action space it is driven through.
-    pub fn space(&self) -> ActionSpace {
-        match self {
-            Robot::Behavior(_, space) | Robot::Fetch(_, space) => *space,
-        }
-    }
-
-    /// How many numbers an action has.
-    pub fn action_dim(&self) -> usize {
-        match self {
-            Robot::Behavior(_, space) => space.dim(),
-            Robot::Fetch(_, space) => space.fetch_dim(),
-        }
-    }
-
-    /// Checks `values` as an action and sets it for the next step. A bad one is an error and
-    /// changes nothing.
-    pub fn set_action(&mut self, values: &[f32]) -> Result<(), ActionError> {
-        match self {
-            Robot::Behavior(robot, space) => {
-                robot.set_action(space.action(values)?);
-                Ok(())
-            }
-            Robot::Fetch(robot, space) => {
-                robot.set_action(space.fetch_action(values)?);
-                Ok(())
-            }
-        }
-    }
-
-    /// How many numbers [`Robot::proprioception`] gives.
-    pub fn proprioception_dim(&self) -> usize {
-        match self {
-            Robot::Behavior(..) => Proprioception::DIM,
-            Robot::Fetch(..) => FetchProprioception::DIM,
-        }
-    }
-
-    /// Appends the robot's proprioception to `out` ([`Robot::proprioception_dim`] numbers).
-    pub fn proprioception(&self, world: &World, out: &mut Vec<f32>) {
-        match self {
-            Robot::Behavior(robot, _) => out.extend(robot.proprioception(world).to_array()),
-            Robot::Fetch(robot, _) => out.extend(robot.proprioception(world).to_array()),
-        }
-    }
-
-    /// The base's pose (a BehaviorRobot's body centre, Fetch's base origin on the floor).
-    pub fn base_pose(&self, world: &World) -> Pose {
-        match self {
-            Robot::Behavior(robot, _) => robot.body_pose(world),
-            Robot::Fetch(robot, _) => robot.base_pose(world),
-        }
-    }
-
-    /// The base's object (a BehaviorRobot's body, Fetch's base link).
-    pub fn base(&self) -> ObjectId {
-        match self {
-            Robot::Behavior(robot, _) => robot.parts().body,
-            Robot::Fetch(robot, _) => robot.parts().base(),
-        }
-    }
-
-    /// The world objects the robot is made of.
-    pub fn objects(&self) -> Vec<ObjectId> {
-        match self {
-            Robot::Behavior(robot, _) => robot.parts().all().to_vec(),
-            Robot::Fetch(robot, _) => robot.parts().all().to_vec(),
-        }
-    }
-
-    /// The base, then each hand or gripper, as the original's metrics follow them.
-    pub fn tracked_parts(&self) -> Vec<TrackedPart> {
-        match self {
-            Robot::Behavior(robot, _) => {
-                let parts = robot.parts();
-                let hand = |name, side: Side| TrackedPart {
-                    name,
-                    object: parts.hand(side),
-                    holding: robot.holding(side).is_some(),
-                };
-                vec![
-                    TrackedPart {
-                        name: "body",
-                        object: parts.body,
-                        holding: false,
-                    },
-                    hand("left_hand", Side::Left),
-                    hand("right_hand", Side::Right),
-                ]
-            }
-            Robot::Fetch(robot, _) => {
-                let parts = robot.parts();
-                vec![
-                    TrackedPart {
-                        name: "body",
-                        object: parts.base(),
-                        holding: false,
-                    },
-                    TrackedPart {
-                        name: "gripper",
-                        object: parts.gripper(),
-                        holding: robot.holding().is_some(),
-                    },
-                ]
-            }
-        }
-    }
-
-    /// How many hands (or grippers) it has.
-    pub fn hands(&self) -> usize {
-        match self {
-            Robot::Behavior(..) => 2,
-            Robot::Fetch(..) => 1,
-        }
-    }
-
-    /// The object hand `k` holds (0 left, 1 right for a BehaviorRobot; 0 the gripper for Fetch).
-    pub fn held(&self, hand: usize) -> Option<ObjectId> {
-        match self {
-            Robot::Behavior(robot, _) => {
-                let side = *Side::BOTH.get(hand)?;
-                robot.holding(side).map(|b| b.object)
-            }
-            Robot::Fetch(robot, _) => robot.holding().filter(|_| hand == 0).map(|b| b.object),
-        }
+        let names = self.spec().hand_names.iter().enumerate();
+        let hands = names.filter_map(|(hand, &name)| {
+            Some(TrackedPart {
+                name,
+                object: self.hand_object(hand)?,
+                holding: self.held(hand).is_some(),
+            })
+        });
+        std::iter::once(body).chain(hands).collect()
     }
 
     /// `in hand`: whether a hand holds the object.
-    pub fn is_holding(&self, object: ObjectId) -> bool {
-        match self {
-            Robot::Behavior(robot, _) => robot.is_holding(object),
-            Robot::Fetch(robot, _) => robot.is_holding(object),
-        }
+    fn is_holding(&self, object: ObjectId) -> bool {
+        (0..self.spec().hands()).any(|hand| self.held(hand) == Some(object))
     }
 
-    /// `in reach` (see `relative.rs`).
-    pub fn in_reach(&self, world: &World, object: ObjectId) -> bool {
-        match self {
-            Robot::Behavior(robot, _) => robot.in_reach(world, object),
-            Robot::Fetch(robot, _) => robot.in_reach(world, object),
-        }
+    /// `in reach`: the object's centre is within 2 m of the base's origin (see `relative.rs`).
+    fn in_reach(&self, world: &World, object: ObjectId) -> bool {
+        relative::in_reach(world, self.base_pose(world).translation, object)
     }
 
-    /// `in the same room` (see `relative.rs`).
-    pub fn in_same_room(&self, world: &World, object: ObjectId) -> bool {
-        match self {
-            Robot::Behavior(robot, _) => robot.in_same_room(world, object),
-            Robot::Fetch(robot, _) => robot.in_same_room(world, object),
-        }
+    /// `in the same room`: the object is in the room the base is in.
+    fn in_same_room(&self, world: &World, object: ObjectId) -> bool {
+        relative::in_same_room(world, self.base_pose(world).translation, object)
     }
 
-    /// The on-board camera's pose in the world: the BehaviorRobot's eye, Fetch's head camera.
-    /// It looks along its +x, with +z up.
-    pub fn camera_pose(&self, world: &World) -> Pose {
-        match self {
-            Robot::Behavior(robot, _) => robot.eye_pose(world),
-            Robot::Fetch(robot, _) => robot.camera_pose(world),
-        }
-    }
-
-    /// `in the field of view` (see `relative.rs`).
-    pub fn in_field_of_view(&self, world: &World, object: ObjectId) -> bool {
-        match self {
-            Robot::Behavior(robot, _) => robot.in_field_of_view(world, object),
-            Robot::Fetch(robot, _) => robot.in_field_of_view(world, object),
-        }
-    }
-}
-
-impl StepHooks for Robot {
-    fn before_substep(&mut self, world: &mut World, substep: u32) {
-        match self {
-            Robot::Behavior(robot, _) => robot.before_substep(world, substep),
-            Robot::Fetch(robot, _) => robot.before_substep(world, substep),
-        }
-    }
-
-    fn after_step(&mut self, world: &mut World) {
-        match self {
-            Robot::Behavior(robot, _) => robot.after_step(world),
-            Robot::Fetch(robot, _) => robot.after_step(world),
-        }
+    /// `in the field of view` of the camera, approximated geometrically: the object's centre is
+    /// in its 120° view and nothing hides it (see `relative.rs`).
+    fn in_field_of_view(&self, world: &World, object: ObjectId) -> bool {
+        let camera = self.camera_pose(world);
+        relative::in_view(world, camera, object, &self.objects())
     }
 }

@@ -1,10 +1,12 @@
 //! Fetch: adding it to a world, stepping it, and reading it.
 
-use crate::action::ActionError;
-use crate::fetch_action::{FetchAction, FetchCommand};
+use crate::action::{ActionError, ActionSpace};
+use crate::embodiment::{BaseDrive, BaseMove, Embodiment, EmbodimentSpec, LidarMount, Scan};
+use crate::fetch_action::{FetchAction, FetchCommand, MAX_ANGULAR_SPEED, MAX_LINEAR_SPEED};
 use crate::fetch_body::{
     FETCH_LINKS, FINGER_LINKS, FINGER_OPEN, FetchJoint, FetchJoints, FetchLink, GRIPPER_CENTRE,
-    WHEEL_RADIUS, WHEEL_SEPARATION, blocking_parts, link_centre, link_mass, link_spec, pad_face,
+    LASER_OFFSET, WHEEL_RADIUS, WHEEL_SEPARATION, blocking_parts, link_centre, link_mass,
+    link_spec, pad_face,
 };
 use crate::fetch_proprioception::FetchProprioception;
 use crate::grasp::{
@@ -14,14 +16,14 @@ use crate::ik::{IkError, IkSolver, rotation_error};
 use crate::magic::MagicError;
 use crate::motion::Blocker;
 use crate::proprioception::LocalPose;
-use crate::relative;
-use crate::robot::{RobotError, pose_ok};
+use crate::robot::{RobotError, RobotKind, pose_ok};
 use behavior_sim::{
     AttachmentId, AttachmentKind, AttachmentSpec, BodyRef, Drive, JointState, ObjectId, Primitive,
     QueryFilter, STEP_SECONDS, StepHooks, Velocity, World, WorldError, groups,
 };
 use rapier3d::glamx::EulerRot;
 use rapier3d::math::{Pose, Rotation, Vector};
+use std::f32::consts::{FRAC_PI_2, PI};
 
 /// How fast the torso and arm joints close on the IK solution, 1/s (iGibson's `kv`): each
 /// moves at `ARM_GAIN · (q_ik − q)`, within its maximum velocity. A full Δ of 5 cm per step so
@@ -266,29 +268,6 @@ impl Fetch {
         self.grasp.map(|g| g.body)
     }
 
-    /// `in hand`: whether the gripper holds the object (by its body or one of its links).
-    pub fn is_holding(&self, object: ObjectId) -> bool {
-        self.grasp.is_some_and(|g| g.body.object == object)
-    }
-
-    /// `in reach`: the object's centre is within 2 m of the base's origin (iGibson measures
-    /// from the robot's base position).
-    pub fn in_reach(&self, world: &World, object: ObjectId) -> bool {
-        relative::in_reach(world, self.base_pose(world).translation, object)
-    }
-
-    /// `in the same room`: the object is in the room the base stands in.
-    pub fn in_same_room(&self, world: &World, object: ObjectId) -> bool {
-        relative::in_same_room(world, self.base_pose(world).translation, object)
-    }
-
-    /// `in the field of view` of the head camera (120° × 120°, iGibson's), approximated
-    /// geometrically as the BehaviorRobot's (see `relative.rs`).
-    pub fn in_field_of_view(&self, world: &World, object: ObjectId) -> bool {
-        let camera = self.camera_pose(world);
-        relative::in_view(world, camera, object, &self.parts.all())
-    }
-
     /// The robot's proprioception now.
     pub fn proprioception(&self, world: &World) -> FetchProprioception {
         let eef = self.now.joints.eef();
@@ -461,6 +440,166 @@ fn velocity_to(now: Pose, target: Pose, link: FetchLink, dt: f32) -> Velocity {
 fn approach(q: f32, goal: f32, max_velocity: f32) -> f32 {
     let rate = (ARM_GAIN * (goal - q)).clamp(-max_velocity, max_velocity);
     q + rate * STEP_SECONDS
+}
+
+impl Fetch {
+    /// What Fetch is, for planners and episodes.
+    pub const SPEC: EmbodimentSpec = EmbodimentSpec {
+        kind: RobotKind::Fetch,
+        hand_names: &["gripper"],
+        origin_height: 0.0,
+        drive: BaseDrive::Differential,
+        spaces: &ActionSpace::ALL,
+        primitive_space: ActionSpace::Joints,
+        // Within it the arm reaches both over a counter and down to the floor (the end-effector
+        // controller's workspace, which physical primitives do not go through, ends 0.75 m in
+        // front of the base).
+        arm_reach: 0.7,
+        // Its arm is moved joint by joint exactly and holds still while the base drives, so what
+        // it holds lags only by the grasp's give. With 3 cm, the base and a sheet of plywood
+        // carried upright beside it, about 0.65 m wide, found no way through a doorway 0.75 m
+        // wide on the 0.1 m lattice; 1 cm less on each side, it found one.
+        carry_sway: 0.01,
+    };
+
+    /// Turning within which a differential base drives while it turns, rad: farther off its
+    /// heading it only turns toward the point first.
+    const DRIVE_ALIGNED: f32 = 0.05;
+}
+
+/// An angle in (−π, π].
+fn wrap(a: f32) -> f32 {
+    let w = (a + PI).rem_euclid(2.0 * PI) - PI;
+    if w <= -PI { w + 2.0 * PI } else { w }
+}
+
+impl Embodiment for Fetch {
+    fn spec(&self) -> &'static EmbodimentSpec {
+        &Fetch::SPEC
+    }
+
+    fn action_dim(&self, space: ActionSpace) -> usize {
+        space.fetch_dim()
+    }
+
+    fn set_action(&mut self, space: ActionSpace, values: &[f32]) -> Result<(), ActionError> {
+        self.pending = space.fetch_action(values)?;
+        Ok(())
+    }
+
+    /// A unicycle: it turns toward the point first, drives when facing it (a point behind is
+    /// backed onto), and turns to the final heading once there (within `step.within`).
+    fn base_action(&self, space: ActionSpace, step: BaseMove) -> Option<Vec<f32>> {
+        if space == ActionSpace::TabletopManipulation {
+            return None;
+        }
+        let distance = step.forward.hypot(step.left);
+        let turn = if distance > step.within {
+            let toward = wrap(step.left.atan2(step.forward));
+            if toward.abs() > FRAC_PI_2 {
+                wrap(toward + PI)
+            } else {
+                toward
+            }
+        } else {
+            step.turn
+        };
+        let drive = if distance > step.within && turn.abs() < Fetch::DRIVE_ALIGNED {
+            step.forward
+        } else {
+            0.0
+        };
+        // The base's two values lead every space that has them.
+        let mut action = vec![0.0; space.fetch_dim()];
+        action[FetchAction::LINEAR] = (drive / (MAX_LINEAR_SPEED * STEP_SECONDS)).clamp(-1.0, 1.0);
+        action[FetchAction::ANGULAR] = (turn / (MAX_ANGULAR_SPEED * STEP_SECONDS)).clamp(-1.0, 1.0);
+        Some(action)
+    }
+
+    fn proprioception_dim(&self) -> usize {
+        FetchProprioception::DIM
+    }
+
+    fn proprioception_into(&self, world: &World, out: &mut Vec<f32>) {
+        out.extend(self.proprioception(world).to_array());
+    }
+
+    fn base_pose(&self, world: &World) -> Pose {
+        Fetch::base_pose(self, world)
+    }
+
+    fn base(&self) -> ObjectId {
+        self.parts.base()
+    }
+
+    fn objects(&self) -> Vec<ObjectId> {
+        self.parts.all().to_vec()
+    }
+
+    fn hand_object(&self, hand: usize) -> Option<ObjectId> {
+        (hand == 0).then(|| self.parts.gripper())
+    }
+
+    fn held(&self, hand: usize) -> Option<ObjectId> {
+        self.holding().filter(|_| hand == 0).map(|b| b.object)
+    }
+
+    fn camera_pose(&self, world: &World) -> Pose {
+        Fetch::camera_pose(self, world)
+    }
+
+    /// The base laser (SICK TIM571 on the real robot): 220 beams over 220°, 0.05–25 m, iGibson's.
+    fn lidar(&self, world: &World) -> LidarMount {
+        LidarMount {
+            pose: self.base_pose(world) * Pose::from_translation(LASER_OFFSET),
+            scan: Scan::Fan {
+                beams: 220,
+                fov: 220f32.to_radians(),
+            },
+            min_range: 0.05,
+            max_range: 25.0,
+        }
+    }
+
+    fn teleport(&mut self, world: &mut World, pose: Pose) -> Result<(), MagicError> {
+        self.place_at(world, pose)
+    }
+
+    fn grasp_now(
+        &mut self,
+        world: &mut World,
+        hand: usize,
+        object: ObjectId,
+    ) -> Result<(), MagicError> {
+        if hand != 0 {
+            return Err(MagicError::NoHand(hand));
+        }
+        self.grasp_now_in(world, object)
+    }
+
+    fn grasp_touching(
+        &mut self,
+        world: &mut World,
+        hand: usize,
+        object: ObjectId,
+    ) -> Result<(), MagicError> {
+        if hand != 0 {
+            return Err(MagicError::NoHand(hand));
+        }
+        self.grasp_touching_in(world, object)
+    }
+
+    /// Its arm is kinematic and never left behind: nothing to do.
+    fn reset_hand(&mut self, _world: &mut World, hand: usize) -> Result<(), MagicError> {
+        if hand != 0 {
+            return Err(MagicError::NoHand(hand));
+        }
+        Ok(())
+    }
+
+    fn release_now(&mut self, world: &mut World, hand: usize) -> Option<ObjectId> {
+        (hand == 0).then(|| self.release_from(world)).flatten()
+    }
 }
 
 impl StepHooks for Fetch {
@@ -794,7 +933,7 @@ fn blocked(blocker: &Blocker, from: &Config, to: &Config) -> bool {
 impl Fetch {
     /// Puts the base at `pose` (only its yaw counts), every link where the joints put it and
     /// what the gripper holds with it, all at rest.
-    pub(crate) fn teleport(&mut self, world: &mut World, pose: Pose) -> Result<(), MagicError> {
+    fn place_at(&mut self, world: &mut World, pose: Pose) -> Result<(), MagicError> {
         if !pose_ok(&pose) {
             return Err(MagicError::BadPose);
         }
@@ -822,11 +961,7 @@ impl Fetch {
     }
 
     /// Puts `object` between the fingers, attaches it as the assisted grasp does and closes.
-    pub(crate) fn grasp_now(
-        &mut self,
-        world: &mut World,
-        object: ObjectId,
-    ) -> Result<(), MagicError> {
+    fn grasp_now_in(&mut self, world: &mut World, object: ObjectId) -> Result<(), MagicError> {
         self.empty_hand()?;
         let body = BodyRef::from(object);
         let kind = self.holdable(world, body)?;
@@ -855,11 +990,7 @@ impl Fetch {
     /// Holds `object` where it is, if the palm or a finger touches it: the forced assisted
     /// grasp after a physical GRASP closed the gripper (the BehaviorRobot's, which asks for
     /// contact too), attached at the middle of those contacts.
-    pub(crate) fn grasp_touching(
-        &mut self,
-        world: &mut World,
-        object: ObjectId,
-    ) -> Result<(), MagicError> {
+    fn grasp_touching_in(&mut self, world: &mut World, object: ObjectId) -> Result<(), MagicError> {
         self.empty_hand()?;
         let mut points = Vec::new();
         let mut body = None;
@@ -896,7 +1027,7 @@ impl Fetch {
     }
 
     /// Detaches what the gripper holds and opens it.
-    pub(crate) fn release_now(&mut self, world: &mut World) -> Option<ObjectId> {
+    fn release_from(&mut self, world: &mut World) -> Option<ObjectId> {
         self.gripper = 1.0;
         let grasp = self.grasp.take()?;
         world.core_mut().detach(grasp.attachment);

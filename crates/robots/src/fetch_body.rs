@@ -283,6 +283,8 @@ pub const GRIPPER_OFFSET: Vector = Vector::new(0.16645, 0.0, 0.0);
 pub const GRIPPER_CENTRE: Vector = Vector::new(0.1, 0.0, 0.0);
 /// The head camera in the head-tilt frame; it looks along its +x.
 pub const CAMERA_OFFSET: Vector = Vector::new(0.055, 0.0, 0.0225);
+/// The base laser's place in the base frame, m (Fetch's URDF: `laser_link`).
+pub(crate) const LASER_OFFSET: Vector = Vector::new(0.235, 0.0, 0.2878);
 /// The wheels' radius and the distance between them, m (Fetch's URDF).
 pub const WHEEL_RADIUS: f32 = 0.0603;
 /// The distance between the wheels, m.

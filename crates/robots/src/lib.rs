@@ -11,8 +11,12 @@
 //!   through inverse kinematics, [`IkSolver`], or 13-d [`FetchJointAction`] driving the arm
 //!   joint by joint; 49-d [`FetchProprioception`]).
 //!
-//! [`Robot`] is either, for code that does not care which; [`ActionSpace`] names the original's
-//! reduced action spaces, which each kind reads its own way (see `fetch_action.rs` for Fetch's).
+//! Each implements [`Embodiment`], the one interface an environment, its sensors and metrics,
+//! recordings and planners use (action space, the step, grasping, proprioception, camera and
+//! lidar, the moves outside physics), with its facts in an [`EmbodimentSpec`]. [`Robot`] holds
+//! one of them, chosen by [`RobotKind`], and derefs to its [`Embodiment`]: only `robot.rs` names
+//! every kind. [`ActionSpace`] names the original's reduced action spaces, which each kind reads
+//! its own way (see `fetch_action.rs` for Fetch's).
 //!
 //! **Body models, chosen for cost.** Both robots move their bodies kinematically (exactly where
 //! they are told, refusing moves into fixed bodies) and keep dynamic bodies only where contact
@@ -73,18 +77,17 @@
 //! assert!(fetch.step(&mut world, &[0.0; 26]).is_err());
 //! ```
 //!
-//! Inside: `action.rs` (the action and the reduced spaces), `body.rs` and `hand.rs` (the parts
-//! and their constants), `motion.rs` (from an action to the step's targets), `follow.rs` (how a
-//! palm follows its target), `grasp.rs` (assisted grasping), `proprioception.rs`, `relative.rs`
-//! (robot-relative predicates) and `robot.rs` (the robot as a step hook); for Fetch,
-//! `fetch_body.rs` (joints, links, forward kinematics), `fetch_model.rs` (its real meshes),
-//! `ik.rs`, `fetch_action.rs`,
-//! `fetch_proprioception.rs` and `fetch.rs` (the robot as a step hook); `embodiment.rs` (either
-//! robot).
-
-#![warn(missing_docs)]
+//! Inside: `embodiment.rs` (the interface), `robot.rs` (any robot by kind), `magic.rs` (why a
+//! move outside physics is refused), `relative.rs` (robot-relative predicates), `grasp.rs`
+//! (assisted grasping, shared); for the BehaviorRobot `action.rs` (the action and the reduced
+//! spaces), `body.rs` and `hand.rs` (the parts and their constants), `motion.rs` (from an action
+//! to the step's targets), `follow.rs` (how a palm follows its target), `proprioception.rs` and
+//! `behavior_robot.rs` (the robot as a step hook); for Fetch, `fetch_body.rs` (joints, links,
+//! forward kinematics), `fetch_model.rs` (its real meshes), `ik.rs`, `fetch_action.rs`,
+//! `fetch_proprioception.rs` and `fetch.rs` (the robot as a step hook).
 
 mod action;
+mod behavior_robot;
 mod body;
 mod embodiment;
 mod fetch;
@@ -109,8 +112,11 @@ mod robot;
 struct GuideChapter;
 
 pub use action::{ACTION_DIM, ACTION_SCALE, Action, ActionError, ActionSpace};
+pub use behavior_robot::{BehaviorRobot, RobotParts};
 pub use body::{BODY_HEIGHT, BODY_LENGTH, BODY_MASS, BODY_RADIUS, EYE_REACH, HAND_REACH};
-pub use embodiment::{Robot, RobotKind, TrackedPart};
+pub use embodiment::{
+    BaseDrive, BaseMove, Embodiment, EmbodimentSpec, LidarMount, Scan, TrackedPart,
+};
 pub use fetch::{
     ARM_GAIN, Fetch, FetchParts, WORKSPACE_CENTRE, WORKSPACE_HEIGHT, WORKSPACE_RADIUS,
 };
@@ -133,4 +139,4 @@ pub use ik::{IK_JOINTS, IkError, IkSolver};
 pub use magic::MagicError;
 pub use proprioception::{LocalPose, Proprioception};
 pub use relative::{EYE_FOV, REACH_DISTANCE};
-pub use robot::{BehaviorRobot, RobotError, RobotParts};
+pub use robot::{Robot, RobotError, RobotKind};

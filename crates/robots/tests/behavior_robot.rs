@@ -4,8 +4,8 @@
 mod common;
 
 use behavior_robots::{
-    Action, ActionError, BehaviorRobot, FINGER_CLOSED, HAND_REACH, Proprioception, RobotError,
-    Side, THUMB_CLOSED,
+    Action, ActionError, BehaviorRobot, Embodiment, FINGER_CLOSED, HAND_REACH, Proprioception,
+    RobotError, Side, THUMB_CLOSED,
 };
 use behavior_sim::{ObjectId, Substeps, World};
 use common::*;

@@ -4,9 +4,9 @@
 mod common;
 
 use behavior_robots::{
-    ActionSpace, EEF_STEP, FETCH_ACTION_DIM, FETCH_JOINT_ACTION_DIM, Fetch, FetchAction,
-    FetchJoint, FetchJointAction, FetchJoints, FetchProprioception, IkError, IkSolver, Robot,
-    RobotKind, WHEEL_RADIUS,
+    ActionSpace, EEF_STEP, Embodiment, FETCH_ACTION_DIM, FETCH_JOINT_ACTION_DIM, Fetch,
+    FetchAction, FetchJoint, FetchJointAction, FetchJoints, FetchProprioception, IkError, IkSolver,
+    Robot, RobotKind, WHEEL_RADIUS,
 };
 use behavior_sim::World;
 use common::*;
@@ -332,7 +332,7 @@ fn fetch_through_the_robot_enum() {
     assert_eq!(names, ["body", "gripper"]);
     assert_eq!(robot.objects().len(), 11);
     let mut out = Vec::new();
-    robot.proprioception(&world, &mut out);
+    robot.proprioception_into(&world, &mut out);
     assert_eq!(out.len(), 49);
     assert!(robot.in_reach(&world, fruit) && !robot.in_reach(&world, far));
     assert!(robot.in_same_room(&world, fruit) && !robot.in_same_room(&world, far));

@@ -4,7 +4,7 @@
 mod common;
 
 use behavior_core::{Ability, Predicate};
-use behavior_robots::{Action, Side};
+use behavior_robots::{Action, Embodiment, Side};
 use behavior_sim::{
     AttachmentKind, BodyRef, JointKind, JointSpec, LinkSpec, ObjectId, ObjectSpec, Part, PointKind,
     World,

@@ -2,7 +2,7 @@
 
 mod common;
 
-use behavior_robots::{Action, REACH_DISTANCE};
+use behavior_robots::{Action, Embodiment, REACH_DISTANCE};
 use behavior_sim::World;
 use common::*;
 

@@ -17,12 +17,32 @@
 //!
 //! This crate joins BDDL, the world and the assets; it knows nothing of robots or rendering.
 //!
+//! An instance of an official activity in the first named home that fits it:
+//!
+//! ```
+//! use behavior_assets::{Library, first_covering};
+//! use behavior_bddl::Knowledge;
+//! use behavior_bddl::load::read_source;
+//! use behavior_data::DataDir;
+//! use behavior_sampling::{check_init, instantiate};
+//!
+//! # fn main() -> Result<(), Box<dyn std::error::Error>> {
+//! let data = DataDir::locate(None, |message| eprintln!("{message}"))?;
+//! let knowledge = Knowledge::read(&data.taxonomy_path(), &data.domain_path())?;
+//! let source = read_source(&data.problem_path("bottling_fruit")?)?;
+//! let (activity, _warnings) = knowledge.load(&source)?;
+//! let library = Library::new(&knowledge.taxonomy);
+//! let home = first_covering(&activity, &library, &knowledge.taxonomy)?.expect("a home fits");
+//! let instance = instantiate(&activity, &home, 0, &library, &knowledge.taxonomy)?;
+//! assert!(check_init(&activity, &instance.world, &instance.bindings).all_hold());
+//! # Ok(())
+//! # }
+//! ```
+//!
 //! Inside, each stage of an attempt has its own module, all working on one shared context (the
 //! attempt's activity, home, library, random numbers, world and bindings): `bind` (furniture and
 //! floors), `tidy` (clutter around them put away), `create` (the other objects), `order` (the one dependency order, for the initial
 //! state and goal options alike), `place`, `states`, `verify` (the init check), `goal`.
-
-#![warn(missing_docs)]
 
 mod bind;
 mod create;

@@ -45,8 +45,6 @@
 //! (a third of it the narrow phase's contacts; gzip takes it to 0.34 MB) in about 2 ms and
 //! loads in about 4.5 ms.
 
-#![warn(missing_docs)]
-
 mod attachments;
 mod bytes;
 mod construct;

@@ -24,8 +24,32 @@
 //! One client drives at a time (the first to connect without `?watch`); others watch. When the
 //! driver's tab closes, the episode ends, its recording is closed, and the next episode waits
 //! for the next driver.
-
-#![warn(missing_docs)]
+//!
+//! Serving an environment on loopback, and what a page may say:
+//!
+//! ```no_run
+//! use behavior_env::{Env, EnvConfig};
+//! use behavior_web::{ClientMessage, ServeOptions, Session, serve};
+//!
+//! /// Serves episodes of `config` (its robot the BehaviorRobot) until Ctrl-C; the recordings.
+//! fn teleoperate(config: EnvConfig, definition: String) -> Result<usize, behavior_web::WebError> {
+//!     let session = Session {
+//!         env: Env::new(config),
+//!         definition,
+//!         seed: 0,
+//!         record_dir: "recordings".into(),
+//!         checkpoint_every: 300,
+//!     };
+//!     let options = ServeOptions {
+//!         addr: "127.0.0.1:8000".parse().expect("an address"),
+//!     };
+//!     let recordings = serve(session, &options, |addr| println!("open http://{addr}"))?;
+//!     Ok(recordings.len())
+//! }
+//!
+//! // Every message a page sends is checked before it reaches the episode.
+//! assert!(ClientMessage::parse("{\"not\": \"a message\"}").is_err());
+//! ```
 
 mod assets;
 mod checklist;

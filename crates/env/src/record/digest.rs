@@ -36,7 +36,7 @@ pub fn state_digest(world: &World, robot: &Robot, steps: u32) -> String {
         hash.update(state.as_bytes());
     }
     let mut proprioception = Vec::new();
-    robot.proprioception(world, &mut proprioception);
+    robot.proprioception_into(world, &mut proprioception);
     put(&mut hash, &proprioception);
     hash.update(steps.to_le_bytes());
     hash.finalize().iter().map(|b| format!("{b:02x}")).collect()

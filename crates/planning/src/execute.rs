@@ -4,7 +4,7 @@
 //! them is written as they run.
 
 use crate::primitive::{Call, Failure, Primitive, WAIT_STEPS};
-use crate::{fetch_manipulate, manipulate, physical, symbolic};
+use crate::{manipulation, physical, posed_hands, symbolic};
 use behavior_env::record::Recorder;
 use behavior_env::{Env, EnvError, Info, Step};
 use behavior_robots::{ActionSpace, RobotKind};
@@ -150,17 +150,9 @@ pub fn run(
             Mode::Physical,
             Primitive::Open | Primitive::Close | Primitive::ToggleOn | Primitive::ToggleOff,
         ) => env.edit(|edit| symbolic::apply(edit, &call))?,
-        (Mode::Physical, Primitive::Grasp) if arm_in_joints(env) => {
-            fetch_manipulate::grasp(env, &call, again(&mut watcher))?.map(|_| ())
-        }
-        (Mode::Physical, Primitive::Grasp) => {
-            manipulate::grasp(env, &call, again(&mut watcher))?.map(|_| ())
-        }
+        (Mode::Physical, Primitive::Grasp) => manipulation::grasp(env, &call, again(&mut watcher))?,
         (Mode::Physical, p) => match p.relation() {
-            Some(r) if arm_in_joints(env) => {
-                fetch_manipulate::place(env, &call, r, again(&mut watcher))?.map(|_| ())
-            }
-            Some(r) => manipulate::place(env, &call, r, again(&mut watcher))?.map(|_| ()),
+            Some(r) => manipulation::place(env, &call, r, again(&mut watcher))?,
             None => Err(Failure::Unavailable(
                 "physical slice, wipe and soak are not built yet",
             )),
@@ -226,14 +218,6 @@ fn ended(env: &mut Env) -> Result<Step, EnvError> {
     })
 }
 
-/// Whether the episode's robot moves its arm joint by joint for primitives (Fetch), so that the
-/// arm's planner in joint space (`fetch_manipulate.rs`) takes its hands, not the hands' planner
-/// in pose space (`manipulate.rs`).
-fn arm_in_joints(env: &Env) -> bool {
-    env.robot()
-        .is_some_and(|r| r.spec().primitive_space == ActionSpace::Joints)
-}
-
 /// The call as a recording says it.
 fn describe(env: &Env, call: &Call) -> RecordedCall {
     let object = env
@@ -252,7 +236,7 @@ fn describe(env: &Env, call: &Call) -> RecordedCall {
 pub fn replay_edit(env: &mut Env, edit: &serde_json::Value) -> Result<(), String> {
     let recorded: RecordedCall =
         serde_json::from_value(edit.clone()).map_err(|e| format!("not a primitive: {e}"))?;
-    if recorded.primitive == manipulate::HAND_RESET {
+    if recorded.primitive == posed_hands::HAND_RESET {
         return env
             .edit(|edit| edit.robot.reset_hand(edit.world, recorded.hand))
             .map_err(|e| e.to_string())?
@@ -269,7 +253,7 @@ pub fn replay_edit(env: &mut Env, edit: &serde_json::Value) -> Result<(), String
         .world()
         .and_then(|w| w.object_named(&recorded.object))
         .ok_or_else(|| format!("no object `{}` in the world", recorded.object))?;
-    if recorded.primitive == manipulate::FORCED_GRASP {
+    if recorded.primitive == manipulation::FORCED_GRASP {
         return env
             .edit(|edit| edit.robot.grasp_touching(edit.world, recorded.hand, object))
             .map_err(|e| e.to_string())?

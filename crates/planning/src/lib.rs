@@ -6,8 +6,11 @@
 //!   the outcome set at once; a refusal is a [`Failure`] that says why and changes nothing.
 //!   [`run`] does one in an episode between two steps ([`behavior_env::Env::edit`]), followed by
 //!   one still step, recording it for [`replay_edit`] to do again. In physical mode
-//!   navigation ([`drive_to`]) and the BehaviorRobot's grasp and placements ([`grasp`],
-//!   [`place`]) are planned and executed by the robot's own actions with physics.
+//!   navigation ([`drive_to`]) and grasps and placements ([`grasp`], [`place`]) are planned
+//!   and executed by the robot's own actions with physics; grasps and placements, and whether
+//!   a hand [`reaches`], through the robot's manipulator (`manipulation.rs`): hands posed
+//!   directly (`posed_hands.rs`, the BehaviorRobot's) or on a jointed arm (`jointed_arm.rs`,
+//!   Fetch's).
 //! - **The action space** ([`PrimitiveSpace`]): the original's `Discrete(n × K)` with a mask.
 //! - **The task planner** ([`Solver`]): goal options, the next literal, the primitives that make
 //!   it true, re-planning from the facts after each.
@@ -47,12 +50,13 @@ mod arm;
 mod base;
 mod error;
 mod execute;
-mod fetch_manipulate;
 mod hand;
+mod jointed_arm;
 mod lattice;
-mod manipulate;
+mod manipulation;
 mod navigate;
 mod physical;
+mod posed_hands;
 mod primitive;
 mod rrt;
 mod symbolic;
@@ -63,19 +67,22 @@ pub use arm::{ARM_RESOLUTION, ArmBody, ArmConfig, ArmSpace};
 pub use base::{BaseConfig, BaseSpace, Footprint, home_extent};
 pub use error::PlanError;
 pub use execute::{ARM_REACH, Mode, Outcome, RecordedCall, RunError, Watcher, replay_edit, run};
-pub use fetch_manipulate::{ArmPath, FETCH_APPROACH, FETCH_DESCENT};
-pub use fetch_manipulate::{grasp as fetch_grasp, place as fetch_place, reaches as fetch_reaches};
 pub use hand::{HAND_MARGIN, HAND_RESOLUTION, HAND_WEIGHTS, HandBody, HandConfig, HandSpace};
+pub use jointed_arm::{ArmPath, FETCH_APPROACH, FETCH_DESCENT};
+pub use jointed_arm::{grasp as arm_grasp, place as arm_place};
 pub use lattice::{LATTICE_CELL, LATTICE_EXPANSIONS, LATTICE_HEADINGS, lattice_plan};
-pub use manipulate::{
-    APPROACH_HEIGHT, CLOSE_STEPS, CROUCH, DESCENT_STEP, DESCENT_STEPS, FORCED_GRASP,
-    GRASP_HEADINGS, GRASP_INSET, GRASP_JITTER, HAND_RESET, HandPath, PLACE_HEIGHT, PLACE_TRIES,
-    RELEASE_STEPS, RISE, SETTLE_STEPS, approach_plan, grasp, hand_body, hand_reaches, place,
+pub use manipulation::{
+    CLOSE_STEPS, FORCED_GRASP, GRASP_INSET, GRASP_JITTER, PLACE_HEIGHT, PLACE_TRIES, RELEASE_STEPS,
+    SETTLE_STEPS, grasp, place, reaches,
 };
 pub use navigate::{STAND_CLEARANCE, STAND_DISTANCES, STAND_HEADINGS, Standing};
 pub use physical::{
     BasePath, DOORS_OPENED, PHYSICAL_BUDGET, POSITION_TOLERANCE, STAND_PLANS, STEPS_PER_WAYPOINT,
     YAW_TOLERANCE, base_config, drive_to,
+};
+pub use posed_hands::{
+    APPROACH_HEIGHT, CROUCH, DESCENT_STEP, DESCENT_STEPS, GRASP_HEADINGS, HAND_RESET, HandPath,
+    RISE, approach_plan, grasp as hand_grasp, hand_body, place as hand_place,
 };
 pub use primitive::{Call, Failure, Primitive, WAIT_STEPS};
 pub use rrt::{Path, PlanParams, Planned, Space, plan};

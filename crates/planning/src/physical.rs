@@ -1,8 +1,8 @@
 //! Physical primitives (the paper's fully simulated ones): a plan made with the motion
 //! planner, then executed as the robot's own actions, one step of physics each, so that what
 //! the robot meets on its way stops it. Here: NAVIGATE_TO for both robots, and the [`Stepper`]
-//! that every physical primitive takes its steps through; GRASP and PLACE_* are in
-//! `manipulate.rs`. OPEN, CLOSE and the toggles are kinematic in the original's motion-planning
+//! that every physical primitive takes its steps through; GRASP and PLACE_* are the robot's
+//! manipulator's (`manipulation.rs`). OPEN, CLOSE and the toggles are kinematic in the original's motion-planning
 //! mode too, and are done as in symbolic mode.
 
 use crate::base::{BaseConfig, BaseSpace, home_extent};
@@ -11,6 +11,7 @@ use crate::execute::Watcher;
 use crate::execute::{RecordedCall, RunError};
 use crate::hand::wrap;
 use crate::lattice::{LATTICE_EXPANSIONS, lattice_plan};
+use crate::manipulation::manipulator;
 use crate::navigate::Standing;
 use crate::primitive::{Call, Failure};
 use crate::rrt::{PlanParams, Space, plan, steps_along};
@@ -65,8 +66,9 @@ pub fn drive_to(
     let mut steps = Stepper { env, watcher };
     open_doors(&mut steps)?;
     // Best effort: a hand that cannot get there is planned around where it is.
-    let _ = crate::manipulate::tuck(&mut steps)?;
-    let _ = crate::fetch_manipulate::tuck(&mut steps)?;
+    if let Some(hands) = steps.env.robot().map(manipulator) {
+        let _ = hands.tuck(&mut steps)?;
+    }
     let planned = match plan_base(steps.env, call) {
         Ok(path) => path,
         Err(failure) => return Ok(Err(failure)),
@@ -258,15 +260,9 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
     standing.filter.exclude_bodies.extend(hinged_parts(world));
     let reach = robot.spec().arm_reach;
     let start = standing.config;
-    // The robot stands first where its arm (Fetch) or a hand (the BehaviorRobot) reaches the
-    // object from.
-    let fetch_arm = crate::fetch_manipulate::reach_test(env, call.object);
-    let hands = crate::manipulate::reach_test(env, call.object);
-    let arm = match (&fetch_arm, &hands) {
-        (Some(test), _) => Some(test as &dyn Fn(&BaseConfig) -> bool),
-        (_, Some(test)) => Some(test as &dyn Fn(&BaseConfig) -> bool),
-        _ => None,
-    };
+    // The robot stands first where a hand reaches the object from.
+    let test = manipulator(robot).reach_test(env, call.object);
+    let arm = test.as_deref();
     // A robot put or pushed into something fixed first backs out of it, by the shortest free
     // move nearby, then plans from there.
     let mut dense = Vec::new();

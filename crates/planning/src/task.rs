@@ -14,15 +14,13 @@
 
 use crate::execute::Watcher;
 use crate::execute::{Mode, RunError, run};
-use crate::fetch_manipulate::reaches as arm_reaches;
-use crate::manipulate::{hand_reaches, placement_in_reach};
+use crate::manipulation::reaches;
 use crate::navigate::floor_gap;
 use crate::primitive::{Call, Failure, Primitive};
 use crate::symbolic::{container_where, wide_open, within};
 use behavior_bddl::{GroundGoal, Literal, Predicate, PredicateOracle};
 use behavior_core::{Ability, FLOOR_SYNSET};
 use behavior_env::Env;
-use behavior_robots::Robot;
 use behavior_sim::{BoundWorld, ObjectId, World};
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -444,12 +442,7 @@ impl<'a> Solver<'a> {
             let robot = self.env.robot().ok_or("no robot")?;
             let near = !std::mem::take(&mut self.stand_again)
                 && within(self.world(), robot, x, self.mode.reach())
-                && (self.mode == Mode::Symbolic
-                    || match (robot, &placement) {
-                        (Robot::Fetch(..), _) => arm_reaches(self.env, x, placement.as_ref()),
-                        (_, Some(call)) => placement_in_reach(self.env, call),
-                        (_, None) => hand_reaches(self.world(), robot, x),
-                    });
+                && (self.mode == Mode::Symbolic || reaches(self.env, x, placement.as_ref()));
             if near {
                 return Ok(());
             }

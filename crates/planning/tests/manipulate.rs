@@ -9,8 +9,8 @@ mod common;
 use behavior_env::Env;
 use behavior_env::record::{Recorder, read, replay_with};
 use behavior_planning::{
-    Call, Failure, HandConfig, HandSpace, Mode, Primitive, Space, fetch_grasp, grasp, hand_body,
-    place, replay_edit, run,
+    Call, Failure, HandConfig, HandSpace, Mode, Primitive, Space, arm_grasp, grasp, hand_body,
+    hand_grasp, hand_place, replay_edit, run,
 };
 use behavior_robots::{Robot, RobotKind, Side};
 use behavior_sim::{ObjectId, Relation};
@@ -74,7 +74,7 @@ fn the_hand_takes_a_book_and_puts_it_back_without_touching_anything_on_the_way()
         panic!("a BehaviorRobot")
     };
     let body = hand_body(&before, robot, Side::Right);
-    let path = grasp(&mut env, &call(Primitive::Grasp, book), None)
+    let path = hand_grasp(&mut env, &call(Primitive::Grasp, book), None)
         .unwrap()
         .unwrap();
     assert!(holds(&env, book), "the right hand holds the book");
@@ -92,7 +92,7 @@ fn the_hand_takes_a_book_and_puts_it_back_without_touching_anything_on_the_way()
         previous = c;
     }
 
-    let put = place(
+    let put = hand_place(
         &mut env,
         &call(Primitive::PlaceOnTop, under),
         Relation::OnTop,
@@ -115,17 +115,17 @@ fn refused_physical_primitives_say_why_and_move_nothing() {
     let book = object(&env, "book.n.02_1");
     let shelf = object(&env, "shelf.n.01_1");
     let steps = env.steps();
-    let empty = place(
+    let empty = hand_place(
         &mut env,
         &call(Primitive::PlaceOnTop, shelf),
         Relation::OnTop,
         None,
     );
     assert!(matches!(empty.unwrap(), Err(Failure::HandEmpty)));
-    let fixed = grasp(&mut env, &call(Primitive::Grasp, shelf), None).unwrap();
+    let fixed = hand_grasp(&mut env, &call(Primitive::Grasp, shelf), None).unwrap();
     assert!(matches!(fixed, Err(Failure::NotGraspable(_))), "{fixed:?}");
     // From where the episode starts the book is out of the primitives' reach.
-    let far = grasp(&mut env, &call(Primitive::Grasp, book), None).unwrap();
+    let far = hand_grasp(&mut env, &call(Primitive::Grasp, book), None).unwrap();
     assert!(
         matches!(far, Err(Failure::Unreachable | Failure::NoHandPose)),
         "{far:?}"
@@ -138,41 +138,42 @@ fn refused_physical_primitives_say_why_and_move_nothing() {
     let mut reduced = Env::new(config);
     reduced.reset(0).unwrap();
     let book = object(&reduced, "book.n.02_1");
-    let refused = grasp(&mut reduced, &call(Primitive::Grasp, book), None).unwrap();
+    let refused = hand_grasp(&mut reduced, &call(Primitive::Grasp, book), None).unwrap();
     assert!(
         matches!(refused, Err(Failure::Unavailable(_))),
         "{refused:?}"
     );
     assert_eq!(reduced.steps(), 0);
 
-    // The BehaviorRobot's hand primitives refuse Fetch, which has its own arm's.
+    // The hands' primitives posed directly refuse Fetch, whose hand is at the end of an arm.
     let mut fetch = episode(RobotKind::Fetch);
     let book = object(&fetch, "book.n.02_1");
     let gripper = Call {
         hand: 0,
         ..call(Primitive::Grasp, book)
     };
-    let refused = grasp(&mut fetch, &gripper, None).unwrap();
+    let refused = hand_grasp(&mut fetch, &gripper, None).unwrap();
     assert!(
         matches!(refused, Err(Failure::Unavailable(_))),
         "{refused:?}"
     );
-    // Fetch's own: from where the episode starts the book is out of reach; no step taken.
+    // The generic GRASP takes Fetch's arm: from where the episode starts the book is out of
+    // reach; no step taken.
     let before = fetch.world().unwrap().pose(book);
     let steps = fetch.steps();
-    let far = fetch_grasp(&mut fetch, &gripper, None).unwrap();
+    let far = grasp(&mut fetch, &gripper, None).unwrap();
     assert!(matches!(far, Err(Failure::Unreachable)), "{far:?}");
     assert_eq!(fetch.steps(), steps);
     assert_eq!(fetch.world().unwrap().pose(book), before);
     let second = Call { hand: 1, ..gripper };
-    let one_hand = fetch_grasp(&mut fetch, &second, None).unwrap();
+    let one_hand = arm_grasp(&mut fetch, &second, None).unwrap();
     assert!(matches!(one_hand, Err(Failure::NoHand(1))), "{one_hand:?}");
     // Fetch's arm is driven joint by joint: through the end-effector controller it is refused.
     let mut config = common::config(ACTIVITY);
     config.robot = RobotKind::Fetch;
     let mut through_ik = Env::new(config);
     through_ik.reset(0).unwrap();
-    let refused = fetch_grasp(&mut through_ik, &gripper, None).unwrap();
+    let refused = arm_grasp(&mut through_ik, &gripper, None).unwrap();
     assert!(
         matches!(refused, Err(Failure::Unavailable(_))),
         "{refused:?}"

@@ -9,8 +9,8 @@ use behavior_core::Predicate;
 use behavior_env::Env;
 use behavior_env::record::{Recorder, read, replay_with};
 use behavior_planning::{
-    BaseConfig, BaseSpace, Call, Mode, Primitive, Space, Standing, base_config, drive_to,
-    fetch_reaches, hand_reaches, replay_edit, within_reach,
+    BaseConfig, BaseSpace, Call, Mode, Primitive, Space, Standing, base_config, drive_to, reaches,
+    replay_edit, within_reach,
 };
 use behavior_robots::RobotKind;
 
@@ -45,10 +45,7 @@ fn both_robots_drive_to_an_object_without_touching_anything() {
         assert!(within_reach(world, bot, plank), "{robot:?} ends in reach");
         // Each robot stands where what it acts with reaches the plank: Fetch's arm has a free
         // configuration over it, a BehaviorRobot's hand comes to it open from above or across.
-        match robot {
-            RobotKind::Fetch => assert!(fetch_reaches(&env, plank, None), "Fetch's arm reaches it"),
-            RobotKind::Behavior => assert!(hand_reaches(world, bot, plank), "a hand reaches it"),
-        }
+        assert!(reaches(&env, plank, None), "{robot:?}'s hand reaches it");
         let after = base_config(&env);
         assert!(
             (after.x - before.x).hypot(after.y - before.y) > 0.1,

@@ -2,7 +2,9 @@
 
 use crate::action::{ACTION_DIM, ACTION_SCALE, Action, ActionError, ActionSpace};
 use crate::body::{BODY_HEIGHT, body_spec, eye_rest, hand_rest, head_round};
-use crate::embodiment::{BaseDrive, BaseMove, Embodiment, EmbodimentSpec, LidarMount, Scan};
+use crate::embodiment::{
+    BaseDrive, BaseMove, Embodiment, EmbodimentSpec, HandMotion, LidarMount, Scan,
+};
 use crate::follow::{Follower, HAND_LIMITS, rotation_error, servo, settled};
 use crate::grasp::{
     Grasp, GraspRules, Grasper, Release, centre_on, ignore_between, must_release, overlooked,
@@ -251,6 +253,7 @@ impl BehaviorRobot {
         hand_names: &["left_hand", "right_hand"],
         origin_height: BODY_HEIGHT,
         drive: BaseDrive::Holonomic,
+        hand_motion: HandMotion::Posed,
         spaces: &[
             ActionSpace::Full,
             ActionSpace::Navigation,

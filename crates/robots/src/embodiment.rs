@@ -22,6 +22,17 @@ pub enum BaseDrive {
     Differential,
 }
 
+/// How a robot's hands are moved: what a planner of its hands' motion works in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum HandMotion {
+    /// Each hand a free body whose pose the actions set directly, within reach of a shoulder
+    /// (the BehaviorRobot's palms): planned as a pose.
+    Posed,
+    /// Each hand at the end of a jointed arm whose joints the actions move (Fetch's arm):
+    /// planned in the arm's joint space.
+    Jointed,
+}
+
 /// A move of the base asked of [`Embodiment::base_action`], in the base's own frame at the
 /// step's start: forward (+x), to the left (+y), m, and turning left, rad.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -84,6 +95,8 @@ pub struct EmbodimentSpec {
     pub origin_height: f32,
     /// How its base moves.
     pub drive: BaseDrive,
+    /// How its hands move.
+    pub hand_motion: HandMotion,
     /// The action spaces it can be driven through.
     pub spaces: &'static [ActionSpace],
     /// The space physical primitives drive it through: the one that moves each part exactly as

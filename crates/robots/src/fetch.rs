@@ -1,7 +1,9 @@
 //! Fetch: adding it to a world, stepping it, and reading it.
 
 use crate::action::{ActionError, ActionSpace};
-use crate::embodiment::{BaseDrive, BaseMove, Embodiment, EmbodimentSpec, LidarMount, Scan};
+use crate::embodiment::{
+    BaseDrive, BaseMove, Embodiment, EmbodimentSpec, HandMotion, LidarMount, Scan,
+};
 use crate::fetch_action::{FetchAction, FetchCommand, MAX_ANGULAR_SPEED, MAX_LINEAR_SPEED};
 use crate::fetch_body::{
     FETCH_LINKS, FINGER_LINKS, FINGER_OPEN, FetchJoint, FetchJoints, FetchLink, GRIPPER_CENTRE,
@@ -449,6 +451,7 @@ impl Fetch {
         hand_names: &["gripper"],
         origin_height: 0.0,
         drive: BaseDrive::Differential,
+        hand_motion: HandMotion::Jointed,
         spaces: &ActionSpace::ALL,
         primitive_space: ActionSpace::Joints,
         // Within it the arm reaches both over a counter and down to the floor (the end-effector

@@ -115,7 +115,7 @@ pub use action::{ACTION_DIM, ACTION_SCALE, Action, ActionError, ActionSpace};
 pub use behavior_robot::{BehaviorRobot, RobotParts};
 pub use body::{BODY_HEIGHT, BODY_LENGTH, BODY_MASS, BODY_RADIUS, EYE_REACH, HAND_REACH};
 pub use embodiment::{
-    BaseDrive, BaseMove, Embodiment, EmbodimentSpec, LidarMount, Scan, TrackedPart,
+    BaseDrive, BaseMove, Embodiment, EmbodimentSpec, HandMotion, LidarMount, Scan, TrackedPart,
 };
 pub use fetch::{
     ARM_GAIN, Fetch, FetchParts, WORKSPACE_CENTRE, WORKSPACE_HEIGHT, WORKSPACE_RADIUS,

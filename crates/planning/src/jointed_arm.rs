@@ -1,4 +1,5 @@
-//! Physical GRASP and PLACE_* for Fetch: goals for the end effector turned into joint
+//! Physical GRASP and PLACE_* for hands at the end of jointed arms
+//! ([`behavior_robots::HandMotion::Jointed`]: Fetch's): goals for the end effector turned into joint
 //! positions by Fetch's own inverse kinematics ([`behavior_robots::IkSolver`]), the arm planned
 //! to them in its joint space ([`ArmSpace`]) and executed joint by joint through Fetch's
 //! [`ActionSpace::Joints`] (iGibson 2.1+'s joint controller), one step of physics each; the
@@ -34,8 +35,9 @@ use crate::arm::{ArmBody, ArmConfig, ArmSpace};
 use crate::base::BaseConfig;
 use crate::execute::RunError;
 use crate::execute::Watcher;
-use crate::manipulate::{
-    CLOSE_STEPS, GRASP_JITTER, RELEASE_STEPS, SETTLE_STEPS, grasp_point, placement_goals, rng_seed,
+use crate::manipulation::{
+    CLOSE_STEPS, GRASP_JITTER, Manipulator, RELEASE_STEPS, SETTLE_STEPS, StandTest, grasp_point,
+    on_or_in_goals, placement_goals, rng_seed, vertical_axis,
 };
 use crate::physical::{Attempt, PHYSICAL_BUDGET, Stepper, attempt, call_rng, force_grasp};
 use crate::primitive::{Call, Failure};
@@ -172,7 +174,7 @@ pub(crate) fn reach_test<'e>(
     let (world, fetch) = fetch(env)?;
     let goals = match fetch.holding() {
         Some(_) => {
-            let goals = crate::manipulate::on_or_in_goals(env, object, 0);
+            let goals = on_or_in_goals(env, object, 0);
             (!goals.is_empty()).then_some(goals)?
         }
         None => reach_goals(env, object, None)?,
@@ -249,6 +251,56 @@ fn fetch(env: &Env) -> Option<(&World, &Fetch)> {
     }
 }
 
+/// The manipulator of hands at the end of jointed arms: Fetch's. (Its arm is read through
+/// Fetch's own kinematics for now: the arm's interface in `behavior-robots` that every jointed
+/// robot will implement comes with the third robot.)
+pub(crate) struct JointedArm;
+
+impl Manipulator for JointedArm {
+    fn grasp(&self, env: &mut Env, call: &Call, watcher: Option<&mut dyn Watcher>) -> Attempt<()> {
+        Ok(grasp(env, call, watcher)?.map(|_| ()))
+    }
+
+    fn place(
+        &self,
+        env: &mut Env,
+        call: &Call,
+        relation: Relation,
+        watcher: Option<&mut dyn Watcher>,
+    ) -> Attempt<()> {
+        Ok(place(env, call, relation, watcher)?.map(|_| ()))
+    }
+
+    fn reaches(&self, env: &Env, object: ObjectId, placement: Option<&Call>) -> bool {
+        reaches(env, object, placement)
+    }
+
+    fn reach_test<'e>(&self, env: &'e Env, object: ObjectId) -> Option<StandTest<'e>> {
+        reach_test(env, object).map(|test| Box::new(test) as StandTest<'e>)
+    }
+
+    fn tuck(&self, steps: &mut Stepper<'_, '_>) -> Attempt<()> {
+        tuck(steps)
+    }
+
+    /// The gripper sets what it holds down pointing down: see [`held_below`].
+    fn set_down_turns(
+        &self,
+        world: &World,
+        robot: &Robot,
+        held: ObjectId,
+        grip: &Pose,
+    ) -> Vec<Option<Pose>> {
+        let Robot::Fetch(fetch, _) = robot else {
+            return Vec::new();
+        };
+        held_below(world, fetch, held, grip)
+            .into_iter()
+            .map(Some)
+            .collect()
+    }
+}
+
 /// End-effector poses in the world over the object, best first, the gripper pointing at the
 /// top of its box (near its end nearest the base, for a long one), jittered, the fingertips
 /// [`FETCH_APPROACH`] short of it: straight down, the fingers closing across the box's narrower
@@ -292,7 +344,7 @@ fn across_heading(world: &World, object: ObjectId) -> f32 {
         let local = world.core().local_aabb(object);
         local.maxs - local.mins
     };
-    let vertical = crate::manipulate::vertical_axis(pose.rotation);
+    let vertical = vertical_axis(pose.rotation);
     let long = (0..3)
         .filter(|&a| a != vertical)
         .max_by(|&a, &b| size[a].total_cmp(&size[b]))

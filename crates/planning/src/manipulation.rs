@@ -1,0 +1,412 @@
+//! The manipulation interface: how physical primitives move a robot's hands, whichever the
+//! robot. A manipulator plans a hand's motion in the space the robot's hands move in
+//! ([`HandMotion`]: a free pose, `posed_hands.rs`; an arm's joints, `jointed_arm.rs`) and
+//! executes it through the robot's own actions, one step of physics each; [`grasp`], [`place`]
+//! and [`reaches`] take the episode's robot's. What every manipulator shares lives here: where
+//! on an object a hand goes, and the poses above the places the world's sampler finds for what
+//! a hand holds.
+
+use crate::base::BaseConfig;
+use crate::execute::Watcher;
+use crate::physical::{Attempt, Stepper, call_rng};
+use crate::primitive::{Call, Failure, Primitive};
+use crate::symbolic::put;
+use crate::{jointed_arm, posed_hands};
+use behavior_core::rng::{SimRng, uniform};
+use behavior_env::Env;
+use behavior_robots::{HandMotion, Robot};
+use behavior_sim::{ObjectId, Relation, World};
+use rapier3d::math::{Pose, Rotation, Vector};
+use std::f32::consts::PI;
+
+/// A test of a place to stand: whether a hand reaches what it must from a base there.
+pub(crate) type StandTest<'e> = Box<dyn Fn(&BaseConfig) -> bool + 'e>;
+
+/// How physical primitives move a robot's hands: one implementation per [`HandMotion`], for
+/// every robot whose hands move that way.
+pub(crate) trait Manipulator: Sync {
+    /// GRASP with physics: hand `call.hand` brought over `call.object`, closed until it holds,
+    /// and brought back with it.
+    fn grasp(&self, env: &mut Env, call: &Call, watcher: Option<&mut dyn Watcher>) -> Attempt<()>;
+
+    /// PLACE_* with physics: what hand `call.hand` holds brought above a place the world's
+    /// sampler finds for it by `relation` to `call.object`, let go, and the hand brought back.
+    fn place(
+        &self,
+        env: &mut Env,
+        call: &Call,
+        relation: Relation,
+        watcher: Option<&mut dyn Watcher>,
+    ) -> Attempt<()>;
+
+    /// Whether, from where the base stands, a hand reaches `object` for a grasp — or, holding
+    /// something and given a `placement` (a PLACE_* call), a place for it; true where there is
+    /// nothing to test (the primitive then says why it cannot).
+    fn reaches(&self, env: &Env, object: ObjectId, placement: Option<&Call>) -> bool;
+
+    /// A test of places to stand for NAVIGATE_TO `object`: whether, the base standing there, a
+    /// hand reaches it as the manipulator's `reaches` asks, or, holding something, a place for it
+    /// on or in the object. `None` where there is nothing to test.
+    fn reach_test<'e>(&self, env: &'e Env, object: ObjectId) -> Option<StandTest<'e>>;
+
+    /// Draws the hands (and what they hold) in before the base drives.
+    fn tuck(&self, steps: &mut Stepper<'_, '_>) -> Attempt<()>;
+
+    /// The ways what a hand holds (`held`, held at `grip` in the hand's frame) is turned before
+    /// places are sampled for it: `None` as it is held, or its pose in the world.
+    fn set_down_turns(
+        &self,
+        world: &World,
+        robot: &Robot,
+        held: ObjectId,
+        grip: &Pose,
+    ) -> Vec<Option<Pose>>;
+}
+
+/// The manipulator for a robot's hands.
+pub(crate) fn manipulator(robot: &Robot) -> &'static dyn Manipulator {
+    match robot.spec().hand_motion {
+        HandMotion::Posed => &posed_hands::PosedHands,
+        HandMotion::Jointed => &jointed_arm::JointedArm,
+    }
+}
+
+/// GRASP with physics by the episode's robot's manipulator (see `posed_hands.rs` and
+/// `jointed_arm.rs` for how each moves).
+pub fn grasp(env: &mut Env, call: &Call, watcher: Option<&mut dyn Watcher>) -> Attempt<()> {
+    match env.robot().map(manipulator) {
+        Some(hands) => hands.grasp(env, call, watcher),
+        None => Ok(Err(Failure::Unavailable("no episode"))),
+    }
+}
+
+/// PLACE_* with physics by the episode's robot's manipulator.
+pub fn place(
+    env: &mut Env,
+    call: &Call,
+    relation: Relation,
+    watcher: Option<&mut dyn Watcher>,
+) -> Attempt<()> {
+    match env.robot().map(manipulator) {
+        Some(hands) => hands.place(env, call, relation, watcher),
+        None => Ok(Err(Failure::Unavailable("no episode"))),
+    }
+}
+
+/// Whether, from where the episode's robot stands, a hand reaches `object` for a grasp, or,
+/// holding something and given a `placement` (a PLACE_* call), a place for it (see
+/// the manipulator's `reaches`); true with no episode.
+pub fn reaches(env: &Env, object: ObjectId, placement: Option<&Call>) -> bool {
+    env.robot()
+        .is_none_or(|robot| manipulator(robot).reaches(env, object, placement))
+}
+
+/// How a recording names the forced grasp of a physical GRASP (see `physical.rs`'s
+/// `force_grasp`).
+pub const FORCED_GRASP: &str = "grasp_touching";
+
+/// The random offset of the approach across the top, m (the original's ±0.025).
+pub const GRASP_JITTER: f32 = 0.025;
+/// How far in from the sides of an object's box its grasp point lies, at most, m.
+pub const GRASP_INSET: f32 = 0.05;
+
+/// The most steps the trigger is pressed for (the original closes for 50).
+pub const CLOSE_STEPS: u32 = 50;
+/// How far above the sampled pose the held object is let go, m (the original's).
+pub const PLACE_HEIGHT: f32 = 0.1;
+/// Heights tried above a sampled pose when [`PLACE_HEIGHT`] collides (a shelf above), m.
+const PLACE_HEIGHTS: [f32; 3] = [PLACE_HEIGHT, 0.05, 0.02];
+/// Poses sampled for a placement until the hand can get there.
+pub const PLACE_TRIES: usize = 20;
+/// The most steps the trigger is let go for (the original's 100).
+pub const RELEASE_STEPS: u32 = 100;
+/// Steps for a placed object to fall and settle (the original's 100).
+pub const SETTLE_STEPS: u32 = 100;
+
+/// Where on the top of the object's box the hand goes: the point nearest the shoulder, at
+/// least [`GRASP_INSET`] in from the box's sides (its centre, for a small object), so that a
+/// board is taken by its near end. The box is the object's own, turned as it lies (a plank
+/// turned about the vertical fills only part of its axis-aligned box: a corner of that box
+/// may be floor).
+pub(crate) fn grasp_point(world: &World, object: ObjectId, shoulder: Vector) -> Vector {
+    on_top(world, object, shoulder, GRASP_INSET)
+}
+
+/// Which of an object's own axes (0 x, 1 y, 2 z), turned by `rotation`, lies nearest the
+/// vertical: the axis of its height as it lies now.
+pub(crate) fn vertical_axis(rotation: Rotation) -> usize {
+    let up = rotation.inverse() * Vector::Z;
+    (0..3)
+        .max_by(|&a, &b| up[a].abs().total_cmp(&up[b].abs()))
+        .unwrap_or(2)
+}
+
+/// The point of the object's own box nearest `toward` across the floor, at least `inset` in
+/// from its sides, at the height of the top of the object.
+pub(crate) fn on_top(world: &World, object: ObjectId, toward: Vector, inset: f32) -> Vector {
+    let pose = world.pose(object);
+    let local = world.core().local_aabb(object);
+    let mut at = pose.inverse_transform_point(toward);
+    // The object's axis nearest the vertical is its height: the point sits at its middle.
+    let vertical = vertical_axis(pose.rotation);
+    for axis in 0..3 {
+        let middle = 0.5 * (local.mins[axis] + local.maxs[axis]);
+        // How far from the middle the point may lie (never negative: a clamp whose bounds
+        // cross by a rounding error panics).
+        let room = (0.5 * (local.maxs[axis] - local.mins[axis]) - inset).max(0.0);
+        at[axis] = if axis == vertical {
+            middle
+        } else {
+            at[axis].clamp(middle - room, middle + room)
+        };
+    }
+    pose.transform_point(at).with_z(world.aabb(object).maxs.z)
+}
+
+/// The poses above places on or in `object` for what `hand` holds, as PLACE_ONTOP and
+/// PLACE_INSIDE would sample them (drawing the numbers those placements will): what a place
+/// to stand is tested against when the robot carries something there. Empty where the hand
+/// holds nothing or neither finds a place.
+pub(crate) fn on_or_in_goals(env: &Env, object: ObjectId, hand: usize) -> Vec<Pose> {
+    let (Some(world), Some(robot)) = (env.world(), env.robot()) else {
+        return Vec::new();
+    };
+    [Primitive::PlaceOnTop, Primitive::PlaceInside]
+        .into_iter()
+        .filter_map(|primitive| {
+            let call = Call {
+                primitive,
+                object,
+                hand,
+            };
+            let relation = primitive.relation()?;
+            placement_goals(world, robot, &call, relation, &mut call_rng(env, &call)).ok()
+        })
+        .flatten()
+        .collect()
+}
+
+/// Poses of the part that holds in hand `call.hand` (a palm, Fetch's gripper) that hold what
+/// it holds, as it holds it now, above the places the world's sampler finds for it by `call`
+/// (sampled in a copy of the world where the hand has let go: see [`poses_above_places`]).
+pub(crate) fn placement_goals(
+    world: &World,
+    robot: &Robot,
+    call: &Call,
+    relation: Relation,
+    rng: &mut SimRng,
+) -> Result<Vec<Pose>, Failure> {
+    let held = robot.held(call.hand).ok_or(Failure::HandEmpty)?;
+    let holder = robot
+        .hand_object(call.hand)
+        .ok_or(Failure::NoHand(call.hand))?;
+    let grip = world.pose(holder).inverse() * world.pose(held);
+    let mut let_go = world.clone();
+    robot.clone().release_now(&mut let_go, call.hand);
+    // As the hand holds it (a palm), or turned as the hand can set it down (a gripper pointing
+    // down).
+    let turns = manipulator(robot).set_down_turns(world, robot, call.object, &grip);
+    let mut poses = Vec::new();
+    let mut last = Failure::NoHandPose;
+    for turned in turns {
+        if let Some(turned) = turned {
+            // A finite pose turned by a finite rotation: the teleport cannot fail.
+            let _ = let_go.set_pose(held, turned);
+        }
+        match poses_above_places(&let_go, held, call.object, relation, rng) {
+            Ok(found) => poses.extend(found.into_iter().map(|p| p * grip.inverse())),
+            Err(failure) => last = failure,
+        }
+    }
+    if poses.is_empty() {
+        return Err(last);
+    }
+    Ok(poses)
+}
+
+/// Poses of `held` above the places the world's sampler finds for it (in `let_go`, a copy of
+/// the world where the hand has let go of it; [`PLACE_TRIES`] samples): each sample as found
+/// and turned half round about its centre (a hand then comes from the other side), at the
+/// heights of [`PLACE_HEIGHTS`]. Where the sampler finds no place for it tilted as it is held,
+/// it is levelled (see [`levelled`]) and sampled again, as a person sets a thing
+/// down upright. Traced: a sock (one compound shape) held 12° off level found no place on a
+/// table in 400 samples: the sampler sets an object down by its box, which for a turned
+/// compound is its box as built, turned (parry's), deeper than the sock itself; the sock was
+/// set short of touching the table and `ontop` did not hold.
+fn poses_above_places(
+    let_go: &World,
+    held: ObjectId,
+    target: ObjectId,
+    relation: Relation,
+    rng: &mut SimRng,
+) -> Result<Vec<Pose>, Failure> {
+    let mut poses = Vec::new();
+    let mut last = Failure::NoHandPose;
+    for level in [false, true] {
+        let upright;
+        let world = if level {
+            upright = levelled(let_go, held);
+            &upright
+        } else {
+            let_go
+        };
+        for _ in 0..PLACE_TRIES {
+            let mut scratch = world.clone();
+            match put(&mut scratch, held, target, relation, rng) {
+                Ok(()) => poses.extend(above_place(&scratch, held)),
+                Err(failure) => last = failure,
+            }
+        }
+        if !poses.is_empty() {
+            return Ok(poses);
+        }
+    }
+    Err(last)
+}
+
+/// A copy of `world` where `object` is levelled: turned the least that brings its axis
+/// nearest the vertical to the vertical (a plate held tipped lies flat again; a can lying on
+/// its side stays on its side).
+fn levelled(world: &World, object: ObjectId) -> World {
+    let mut level = world.clone();
+    let pose = level.pose(object);
+    let up = pose.rotation.inverse() * Vector::Z;
+    let axis = vertical_axis(pose.rotation);
+    let mut local = Vector::ZERO;
+    local[axis] = up[axis].signum();
+    let correction = Rotation::from_rotation_arc(pose.rotation * local, Vector::Z);
+    let upright = Pose::from_parts(pose.translation, correction * pose.rotation);
+    // A finite pose turned by a finite rotation: the teleport cannot fail.
+    let _ = level.set_pose(object, upright);
+    level
+}
+
+/// `object`'s poses above where it lies in `world`: as it lies and turned half round about its
+/// centre, at each of [`PLACE_HEIGHTS`].
+fn above_place(world: &World, object: ObjectId) -> impl Iterator<Item = Pose> {
+    let placed = world.pose(object);
+    let centre = world.aabb(object).center();
+    [0.0, PI].into_iter().flat_map(move |turn| {
+        let about = Rotation::from_rotation_z(turn);
+        let turned = Pose::from_parts(
+            centre + about * (placed.translation - centre),
+            about * placed.rotation,
+        );
+        PLACE_HEIGHTS
+            .into_iter()
+            .map(move |h| Pose::from_parts(turned.translation + Vector::Z * h, turned.rotation))
+    })
+}
+
+/// A seed for the planner drawn from the call's random numbers.
+pub(crate) fn rng_seed(rng: &mut SimRng) -> u64 {
+    (uniform(rng, 0.0, 1.0) * u32::MAX as f32) as u64
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use behavior_sim::{ObjectSpec, Part, Primitive};
+    use rapier3d::glamx::EulerRot;
+
+    /// A board 1 × 0.8 m lying flat, turned `yaw` about the vertical.
+    fn board(yaw: f32) -> (World, ObjectId) {
+        let mut world = World::default();
+        let slab = Part::new(Primitive::Box {
+            half_extents: Vector::new(0.5, 0.4, 0.01),
+        });
+        let mut spec = ObjectSpec::new("plywood_1", "plywood.n.01", vec![slab]);
+        spec.pose = Pose::from_parts(Vector::new(2.0, 0.0, 0.01), Rotation::from_rotation_z(yaw));
+        let id = world.add(spec).unwrap();
+        (world, id)
+    }
+
+    #[test]
+    fn a_turned_board_is_taken_on_the_board_by_its_near_end() {
+        for yaw in [0.0, 0.37, 1.2, -2.5] {
+            let (world, id) = board(yaw);
+            // From the corner of the box around the board, where a turned board leaves floor.
+            let b = world.aabb(id);
+            let shoulder = Vector::new(b.mins.x - 0.3, b.mins.y - 0.3, 1.0);
+            let at = grasp_point(&world, id, shoulder);
+            let local = world.pose(id).inverse_transform_point(at);
+            let inside = |x: f32, half: f32| x.abs() <= half - GRASP_INSET + 1e-4;
+            assert!(
+                inside(local.x, 0.5) && inside(local.y, 0.4),
+                "yaw {yaw}: {local:?} off the board"
+            );
+            assert!((at.z - b.maxs.z).abs() < 1e-5, "on top: {at:?}");
+            // The near end: no point of the board (inset) lies nearer the shoulder.
+            let corners = [(-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0)].map(|(sx, sy)| {
+                let c = Vector::new(sx * (0.5 - GRASP_INSET), sy * (0.4 - GRASP_INSET), 0.0);
+                world.pose(id).transform_point(c)
+            });
+            let d = |p: Vector| (p - shoulder).truncate().length();
+            let nearest = corners.iter().map(|&c| d(c)).fold(f32::MAX, f32::min);
+            assert!(d(at) <= nearest + 1e-4, "yaw {yaw}: {} > {nearest}", d(at));
+        }
+    }
+
+    #[test]
+    fn an_object_smaller_than_twice_the_inset_is_taken_at_its_middle() {
+        let mut world = World::default();
+        // Half as wide as the inset one way, a rounding error short of it the other.
+        let eraser = Part::new(Primitive::Box {
+            half_extents: Vector::new(GRASP_INSET * (1.0 - 1e-7), 0.5 * GRASP_INSET, 0.01),
+        });
+        let mut spec = ObjectSpec::new("eraser_1", "eraser.n.01", vec![eraser]);
+        spec.pose = Pose::from_parts(Vector::new(1.0, 1.0, 0.5), Rotation::from_rotation_z(0.3));
+        let id = world.add(spec).unwrap();
+        let at = grasp_point(&world, id, Vector::new(0.0, 3.0, 1.0));
+        let local = world.pose(id).inverse_transform_point(at);
+        assert!(local.x.abs() < 1e-4 && local.y.abs() < 1e-4, "{local:?}");
+    }
+
+    /// A table 1.4 × 0.7 m, its top at 0.77 m, and a cylinder 20 cm long, 7 cm across, held
+    /// over the floor tilted `tilt` (rad) off level.
+    fn table_and_sock(tilt: f32) -> (World, ObjectId, ObjectId) {
+        let mut world = World::default();
+        let top = Part::new(Primitive::Box {
+            half_extents: Vector::new(0.7, 0.35, 0.02),
+        });
+        let mut spec = ObjectSpec::new("table_1", "table.n.02", vec![top]).fixed();
+        spec.pose = Pose::from_parts(Vector::new(0.0, 0.0, 0.75), Rotation::IDENTITY);
+        let table = world.add(spec).unwrap();
+        let sock = Part::new(Primitive::Cylinder {
+            radius: 0.035,
+            half_height: 0.1,
+        });
+        let mut spec = ObjectSpec::new("sock_1", "sock.n.01", vec![sock]);
+        let lying = Rotation::from_rotation_x(std::f32::consts::FRAC_PI_2);
+        let held = Rotation::from_euler(EulerRot::ZYX, 0.3, tilt, 0.5 * tilt) * lying;
+        spec.pose = Pose::from_parts(Vector::new(0.0, 1.5, 1.2), held);
+        let sock = world.add(spec).unwrap();
+        (world, table, sock)
+    }
+
+    #[test]
+    fn what_is_held_tilted_is_set_down_level_where_it_finds_no_place_as_it_is() {
+        let mut rng = behavior_core::rng::seeded(7);
+        // Level, the sock is placed as it is held: every place keeps its turn (or its half
+        // turn) about the vertical.
+        let (world, table, sock) = table_and_sock(0.0);
+        let poses = poses_above_places(&world, sock, table, Relation::OnTop, &mut rng).unwrap();
+        let up = |p: &Pose| (p.rotation * Vector::Y).z.abs();
+        assert!(poses.iter().all(|p| up(p) > 0.999), "kept as held");
+        // 12° off level, the sampler finds no place for it as it is...
+        let (world, table, sock) = table_and_sock(0.21);
+        let mut tilted = world.clone();
+        let placed = (0..PLACE_TRIES)
+            .filter(|_| put(&mut tilted, sock, table, Relation::OnTop, &mut rng).is_ok())
+            .count();
+        assert_eq!(placed, 0, "as held, the sock was placed {placed} times");
+        // ...so it is set down levelled: lying along the table, touching it.
+        let poses = poses_above_places(&world, sock, table, Relation::OnTop, &mut rng).unwrap();
+        assert_eq!(poses.len(), PLACE_TRIES * 2 * PLACE_HEIGHTS.len());
+        assert!(
+            poses.iter().all(|p| up(p) > 0.999),
+            "levelled: {:?}",
+            poses[0]
+        );
+    }
+}

@@ -102,13 +102,45 @@ fn solving_before_a_reset_is_an_error() {
     );
 }
 
-/// Solves `activity` (seed `seed`) with `robot` and physical primitives in the episode
-/// `behavior solve` makes — the first covering home with its clutter, every navigation driven, every grasp and
-/// placement planned and executed with physics — checks that `placement` was done
-/// physically, and replays the recording bit for bit.
-fn solved_physically(activity: &str, seed: u64, placement: &str, robot: RobotKind) {
+/// Solves `activity` with `robot` and physical primitives on at least `k` of `seeds`, in the
+/// episode `behavior solve` makes — the first covering home with its clutter, every navigation
+/// driven, every grasp and placement planned and executed with physics — and checks of each
+/// seed solved that `placement` was done physically and that its recording replays bit for bit.
+/// Physics makes runs chaotic (which seeds are solved changes with any change to the planner or
+/// the homes: README, "Physical mode"), so a test states on how many of several seeds its
+/// activity is solved, not that one lucky seed is. The seeds are tried in the order given (those
+/// solved at the last measurement first, so that a passing test takes no longer than it must)
+/// until `k` are solved or too few are left; the message lists every seed's outcome.
+fn solves_at_least(k: usize, seeds: [u64; 6], activity: &str, placement: &str, robot: RobotKind) {
+    let mut outcomes = Vec::new();
+    let mut solved = 0;
+    for (tried, seed) in seeds.into_iter().enumerate() {
+        if solved + (seeds.len() - tried) < k {
+            break;
+        }
+        let outcome = solve_physically(activity, seed, placement, robot);
+        solved += usize::from(outcome.is_ok());
+        outcomes.push((seed, outcome));
+        if solved == k {
+            return;
+        }
+    }
+    panic!(
+        "{activity} ({}) solved on fewer than {k} of seeds {seeds:?}: {outcomes:#?}",
+        robot.name()
+    );
+}
+
+/// One physical solve of [`solves_at_least`]: `Err` says why it is not solved (a solution that
+/// is solved but does not replay, or whose placement was not physical, fails the test).
+fn solve_physically(
+    activity: &str,
+    seed: u64,
+    placement: &str,
+    robot: RobotKind,
+) -> Result<(), String> {
     let dir = std::env::temp_dir().join(format!(
-        "behavior-{activity}-{}-{}",
+        "behavior-{activity}-{}-{seed}-{}",
         robot.name(),
         std::process::id()
     ));
@@ -128,11 +160,13 @@ fn solved_physically(activity: &str, seed: u64, placement: &str, robot: RobotKin
     let mut recorder = Recorder::create(&path, &env, "", 50).unwrap();
     let solution = solve_in(&mut env, Mode::Physical, Some(&mut recorder)).unwrap();
     recorder.finish().unwrap();
-    assert!(
-        solution.success,
-        "{activity}: Q = {}, given up: {:?}",
-        solution.q_final, solution.given_up
-    );
+    if !solution.success {
+        std::fs::remove_dir_all(&dir).unwrap();
+        return Err(format!(
+            "Q = {}, given up: {:?}",
+            solution.q_final, solution.given_up
+        ));
+    }
     let physical = |name: &str| solution.primitives.iter().any(|p| p.ok && p.name == name);
     assert!(physical("grasp") && physical(placement) && physical("navigate_to"));
     let recording = read(&path).unwrap();
@@ -160,88 +194,81 @@ fn solved_physically(activity: &str, seed: u64, placement: &str, robot: RobotKin
     );
     assert_eq!(report.q_final, 1.0);
     std::fs::remove_dir_all(&dir).unwrap();
+    Ok(())
 }
 
-// Physics makes runs chaotic: which seeds are solved changes with any change to the planner or
-// the homes (README, "Physical mode"). These seven are solved at this commit (the seeds chosen
-// again when issue 40 made the named homes anew).
+// Each physical test tries Table 1's seeds 0–5 (`bench/table1`), those solved at the last
+// measurement (2026-11-28, issue 41's runs) first.
 
 #[test]
-fn laying_tile_floors_is_solved_with_physical_primitives_and_replays_bit_for_bit() {
-    // Tiles carried to the bathroom floor.
-    solved_physically(
-        "laying_tile_floors",
+fn laying_tile_floors_is_solved_physically_on_one_of_six_seeds_and_replays_bit_for_bit() {
+    // Tiles carried to the bathroom floor (seeds 1, 2 and 4 solved).
+    let seeds = [1, 2, 4, 0, 3, 5];
+    solves_at_least(
         1,
+        seeds,
+        "laying_tile_floors",
         "place_onfloor",
         RobotKind::Behavior,
     );
 }
 
 #[test]
-fn re_shelving_library_books_is_solved_with_physical_primitives_and_replays_bit_for_bit() {
-    // Books carried from the tables onto a shelf.
-    solved_physically(
-        "re-shelving_library_books",
-        0,
-        "place_ontop",
-        RobotKind::Behavior,
-    );
+fn re_shelving_library_books_is_solved_physically_on_one_of_six_seeds_and_replays_bit_for_bit() {
+    // Books carried from the tables onto a shelf (seeds 0, 1, 3 and 5 solved).
+    let seeds = [0, 1, 3, 5, 2, 4];
+    let activity = "re-shelving_library_books";
+    solves_at_least(1, seeds, activity, "place_ontop", RobotKind::Behavior);
 }
 
 #[test]
-fn throwing_away_leftovers_is_solved_with_physical_primitives_and_replays_bit_for_bit() {
-    // Hamburgers taken off plates and put into an ashcan.
-    solved_physically(
-        "throwing_away_leftovers",
-        0,
-        "place_inside",
-        RobotKind::Behavior,
-    );
+fn throwing_away_leftovers_is_solved_physically_on_two_of_six_seeds_and_replays_bit_for_bit() {
+    // Hamburgers taken off plates and put into an ashcan (every seed of 0–5 solved).
+    let seeds = [0, 1, 2, 3, 4, 5];
+    let activity = "throwing_away_leftovers";
+    solves_at_least(2, seeds, activity, "place_inside", RobotKind::Behavior);
 }
 
 #[test]
-fn organizing_file_cabinet_is_solved_with_physical_primitives_and_replays_bit_for_bit() {
+fn organizing_file_cabinet_is_solved_physically_on_one_of_six_seeds_and_replays_bit_for_bit() {
     // Documents and folders put into a file cabinet's drawer: a folder held by its cover keeps
-    // its other half off the palm, and where one place in the drawer has no way in, the next.
-    solved_physically(
-        "organizing_file_cabinet",
-        3,
-        "place_inside",
-        RobotKind::Behavior,
-    );
+    // its other half off the palm, and where one place in the drawer has no way in, the next
+    // (seeds 0, 3, 4 and 5 solved).
+    let seeds = [3, 0, 4, 5, 1, 2];
+    let activity = "organizing_file_cabinet";
+    solves_at_least(1, seeds, activity, "place_inside", RobotKind::Behavior);
 }
 
 #[test]
-fn collect_misplaced_items_is_solved_with_physical_primitives_and_replays_bit_for_bit() {
+fn collect_misplaced_items_is_solved_physically_on_one_of_six_seeds_and_replays_bit_for_bit() {
     // A necklace taken from the cabinet drawer it lies in, pulled out with the drawer by OPEN,
     // a shoe and a notebook from under tables, socks from a sofa and the floor, all put on a
-    // table.
-    solved_physically(
-        "collect_misplaced_items",
-        4,
-        "place_ontop",
-        RobotKind::Behavior,
-    );
+    // table (seeds 3 and 4 solved).
+    let seeds = [4, 3, 0, 1, 2, 5];
+    let activity = "collect_misplaced_items";
+    solves_at_least(1, seeds, activity, "place_ontop", RobotKind::Behavior);
 }
 
 #[test]
-fn fetch_solves_throwing_away_leftovers_with_physical_primitives_and_replays_bit_for_bit() {
+fn fetch_throws_away_leftovers_physically_on_one_of_six_seeds_and_replays_bit_for_bit() {
     // Fetch's arm driven joint by joint: hamburgers taken off plates with the gripper pointing
-    // down, carried over the base, and let go above the ashcan. Seed 3: since issue 40's rugs
-    // and L-shaped rooms, seeds 0–2 leave a hamburger Fetch does not get (as in Table 1's runs).
-    solved_physically(
-        "throwing_away_leftovers",
-        3,
-        "place_inside",
-        RobotKind::Fetch,
-    );
+    // down, carried over the base, and let go above the ashcan (seeds 0, 1, 3, 4 and 5 solved).
+    let seeds = [3, 0, 1, 4, 5, 2];
+    let activity = "throwing_away_leftovers";
+    solves_at_least(1, seeds, activity, "place_inside", RobotKind::Fetch);
 }
 
 #[test]
-fn fetch_carries_plywood_upright_through_doors_and_replays_bit_for_bit() {
+fn fetch_carries_plywood_upright_through_doors_on_one_of_six_seeds_and_replays_bit_for_bit() {
     // Sheets of plywood 0.9 m across taken by their edge off the floor (the base standing clear
     // of the sheet, not over it), carried upright beside the base through doorways 0.75 m wide,
-    // and laid on the kitchen floor. Seed 1: since issue 40's furnished homes, seed 3 leaves a
-    // sheet behind (seeds 1 and 5 of 0–5 are solved).
-    solved_physically("bringing_in_wood", 1, "place_onfloor", RobotKind::Fetch);
+    // and laid on the kitchen floor (seeds 1 and 5 solved).
+    let seeds = [1, 5, 0, 2, 3, 4];
+    solves_at_least(
+        1,
+        seeds,
+        "bringing_in_wood",
+        "place_onfloor",
+        RobotKind::Fetch,
+    );
 }

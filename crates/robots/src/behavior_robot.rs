@@ -6,10 +6,7 @@ use crate::embodiment::{
     BaseDrive, BaseMove, Embodiment, EmbodimentSpec, HandMotion, LidarMount, Scan,
 };
 use crate::follow::{Follower, HAND_LIMITS, rotation_error, servo, settled};
-use crate::grasp::{
-    Grasp, GraspRules, Grasper, Release, centre_on, ignore_between, must_release, overlooked,
-    restore_overlooked,
-};
+use crate::grasp::{Grasp, GraspRules, Grasper, Hold, Release, centre_on, must_release};
 use crate::hand::{FINGERS, Fingers, HandPoints, Side, hand_spec, sweep_shape};
 use crate::magic::MagicError;
 use crate::motion::{Blocker, Targets};
@@ -682,12 +679,10 @@ impl BehaviorRobot {
         if let Some(grasp) = self.grasps[side.index()] {
             return Err(MagicError::HandFull(grasp.body.object));
         }
-        let own = self.parts.all();
         let other = self.holding(side.other()).map(|b| b.object);
+        let own = self.parts.all();
         self.rules
-            .holdable(world, BodyRef::from(object))
-            .filter(|_| !own.contains(&object) && other != Some(object))
-            .ok_or(MagicError::NotHoldable(object))
+            .kind_for(world, BodyRef::from(object), &own, other)
     }
 
     /// Attaches `object` to the hand at `at` as the assisted grasp does, and closes it.
@@ -702,20 +697,7 @@ impl BehaviorRobot {
         let i = side.index();
         let body = BodyRef::from(object);
         let hand = self.parts.hand(side);
-        let spec = AttachmentSpec {
-            holder: BodyRef::from(hand),
-            held: body,
-            at,
-            kind,
-            max_force: self.rules.max_force(kind),
-        };
-        let attachment = world.core_mut().attach(spec)?;
-        for part in self.parts.all() {
-            ignore_between(world, part, body, true);
-        }
-        let own = self.parts.all();
-        self.releases
-            .extend(overlooked(world, body, &own, world.steps()));
+        let attachment = self.at_once().attach(world, hand, body, at, kind)?;
         self.targets.triggers[i] = 1.0;
         self.grasps[i] = Some(Grasp {
             body,
@@ -725,18 +707,21 @@ impl BehaviorRobot {
         Ok(())
     }
 
+    /// Takes and lets go of things at once, as the assisted grasp does.
+    fn at_once(&mut self) -> Hold<'_> {
+        Hold {
+            rules: &self.rules,
+            own: self.parts.all().to_vec(),
+            releases: &mut self.releases,
+        }
+    }
+
     /// Detaches what a hand holds and opens it.
     fn release_from(&mut self, world: &mut World, side: Side) -> Option<ObjectId> {
         let i = side.index();
         self.targets.triggers[i] = 0.0;
         let grasp = self.grasps[i].take()?;
-        world.core_mut().detach(grasp.attachment);
-        restore_overlooked(world, &mut self.releases, grasp.body, &self.parts.all());
-        self.releases.push(Release {
-            body: grasp.body,
-            parts: self.parts.all().to_vec(),
-            since: world.steps(),
-        });
+        self.at_once().let_go(world, grasp.body, grasp.attachment);
         Some(grasp.body.object)
     }
 }

@@ -11,9 +11,7 @@ use crate::fetch_body::{
     link_spec, pad_face,
 };
 use crate::fetch_proprioception::FetchProprioception;
-use crate::grasp::{
-    GraspRules, Release, centre_on, ignore_between, overlooked, restore_overlooked,
-};
+use crate::grasp::{GraspRules, Hold, Release, centre_on};
 use crate::ik::{IkError, IkSolver, rotation_error};
 use crate::magic::MagicError;
 use crate::motion::Blocker;
@@ -124,9 +122,9 @@ struct Config {
 /// BehaviorRobot that has turned away from the origin idles at ≈ 390 µs per step instead of
 /// 0.3). Ours are stopped at exactly zero and sleep.
 ///
-/// Measured (`tests/timing.rs`, dev profile, a table with 20 objects, 10 × 1/300 s): 0.2 µs per
-/// step standing still, ≈ 0.25 ms driving, ≈ 0.45 ms moving the arm — a simulated 9-link arm
-/// costs 0.65–3 ms driving (`docs/design.md` §4).
+/// Measured (`benches/step.rs`, release, a table with 20 objects, 10 × 1/300 s): 1.7 µs per
+/// step standing still, ≈ 0.12 ms driving, ≈ 0.2 ms under random actions — a simulated 9-link
+/// arm costs 0.65–3 ms driving (`docs/design.md` §4).
 ///
 /// **State.** As the BehaviorRobot's: what it was told lives here, the rest in the world;
 /// clone it with [`World::snapshot`] and the pair continues bit-identically. Step the world with
@@ -971,20 +969,7 @@ impl Fetch {
         let gripper = self.parts.gripper();
         let centre = world.pose(gripper).transform_point(GRIPPER_CENTRE);
         centre_on(world, object, centre)?;
-        let spec = AttachmentSpec {
-            holder: BodyRef::from(gripper),
-            held: body,
-            at: centre,
-            kind,
-            max_force: self.rules.max_force(kind),
-        };
-        let attachment = world.core_mut().attach(spec)?;
-        for part in self.parts.all() {
-            ignore_between(world, part, body, true);
-        }
-        let own = self.parts.all();
-        self.releases
-            .extend(overlooked(world, body, &own, world.steps()));
+        let attachment = self.at_once().attach(world, gripper, body, centre, kind)?;
         self.gripper = -1.0;
         self.grasp = Some(FetchGrasp { body, attachment });
         Ok(())
@@ -1023,23 +1008,23 @@ impl Fetch {
 
     /// How the grasp rules would hold `body`, if at all (never one of Fetch's own parts).
     fn holdable(&self, world: &World, body: BodyRef) -> Result<AttachmentKind, MagicError> {
-        self.rules
-            .holdable(world, body)
-            .filter(|_| !self.parts.all().contains(&body.object))
-            .ok_or(MagicError::NotHoldable(body.object))
+        self.rules.kind_for(world, body, &self.parts.all(), None)
+    }
+
+    /// Takes and lets go of things at once, as the assisted grasp does.
+    fn at_once(&mut self) -> Hold<'_> {
+        Hold {
+            rules: &self.rules,
+            own: self.parts.all().to_vec(),
+            releases: &mut self.releases,
+        }
     }
 
     /// Detaches what the gripper holds and opens it.
     fn release_from(&mut self, world: &mut World) -> Option<ObjectId> {
         self.gripper = 1.0;
         let grasp = self.grasp.take()?;
-        world.core_mut().detach(grasp.attachment);
-        restore_overlooked(world, &mut self.releases, grasp.body, &self.parts.all());
-        self.releases.push(Release {
-            body: grasp.body,
-            parts: self.parts.all().to_vec(),
-            since: world.steps(),
-        });
+        self.at_once().let_go(world, grasp.body, grasp.attachment);
         self.drive_fingers(world, FINGER_OPEN);
         Some(grasp.body.object)
     }

@@ -33,6 +33,7 @@
 //! hand hard enough to break its 500 N grasp.
 
 use crate::hand::{FINGERS, HandPoints};
+use crate::magic::MagicError;
 use behavior_sim::{
     AttachmentId, AttachmentKind, AttachmentSpec, BodyKind, BodyRef, JointKind, ObjectId,
     QueryFilter, World,
@@ -93,6 +94,20 @@ impl GraspRules {
         let movable = object.body_kind == BodyKind::Dynamic;
         (movable && (light || self.allowed.contains(&object.category)))
             .then_some(AttachmentKind::Fixed)
+    }
+
+    /// How a hand of a robot made of `own` may take `body` at once: as the rules hold it, never
+    /// one of the robot's own objects nor what its other hand holds (`besides`).
+    pub(crate) fn kind_for(
+        &self,
+        world: &World,
+        body: BodyRef,
+        own: &[ObjectId],
+        besides: Option<ObjectId>,
+    ) -> Result<AttachmentKind, MagicError> {
+        self.holdable(world, body)
+            .filter(|_| !own.contains(&body.object) && besides != Some(body.object))
+            .ok_or(MagicError::NotHoldable(body.object))
     }
 
     pub(crate) fn max_force(&self, kind: AttachmentKind) -> f32 {
@@ -267,6 +282,56 @@ pub(crate) fn overlooked(
         ignore_between(world, part, body, true);
     }
     (!parts.is_empty()).then_some(Release { body, parts, since })
+}
+
+/// A robot taking and letting go of things at once, as the assisted grasp does (the symbolic
+/// moves of `magic.rs`), whichever hand: its rules, its own objects and the releases it watches.
+pub(crate) struct Hold<'r> {
+    pub(crate) rules: &'r GraspRules,
+    /// Every object of the robot.
+    pub(crate) own: Vec<ObjectId>,
+    pub(crate) releases: &'r mut Vec<Release>,
+}
+
+impl Hold<'_> {
+    /// Attaches `body` to `hand` at `at` as the assisted grasp does: its contacts with every
+    /// part of the robot off while held, and with what it was put beside until clear of it.
+    pub(crate) fn attach(
+        &mut self,
+        world: &mut World,
+        hand: ObjectId,
+        body: BodyRef,
+        at: Vector,
+        kind: AttachmentKind,
+    ) -> Result<AttachmentId, MagicError> {
+        let spec = AttachmentSpec {
+            holder: BodyRef::from(hand),
+            held: body,
+            at,
+            kind,
+            max_force: self.rules.max_force(kind),
+        };
+        let attachment = world.core_mut().attach(spec)?;
+        for &part in &self.own {
+            ignore_between(world, part, body, true);
+        }
+        let since = world.steps();
+        self.releases
+            .extend(overlooked(world, body, &self.own, since));
+        Ok(attachment)
+    }
+
+    /// Lets go of `body`, held by `attachment`, at once: its contacts with what it was put
+    /// beside back now, with the robot's parts once it is clear of each.
+    pub(crate) fn let_go(self, world: &mut World, body: BodyRef, attachment: AttachmentId) {
+        world.core_mut().detach(attachment);
+        restore_overlooked(world, self.releases, body, &self.own);
+        self.releases.push(Release {
+            body,
+            parts: self.own,
+            since: world.steps(),
+        });
+    }
 }
 
 /// When a body held by a grasp made at once is let go at once: its contacts with what it was

@@ -23,10 +23,10 @@
 //! forces matter: the BehaviorRobot's hands (each one body, its fingers shapes turned with the
 //! trigger rather than jointed links: see `hand.rs`), Fetch's fingers. Fetch's torso, head
 //! and arm are kinematic links placed by forward kinematics each substep, not a simulated
-//! chain: measured in `tests/timing.rs` (dev profile, one core, a table with 20 objects, 10 ×
-//! 1/300 s), an action step costs 0.2 µs standing still, ≈ 0.25 ms driving and ≈ 0.45 ms
-//! moving the arm (IK, the fixed-body checks and the awake fingers) — where `docs/design.md` §4
-//! measured 0.65–3 ms for a simulated 9-link arm while driving.
+//! chain: measured in `benches/step.rs` (release, a table with 20 objects, 10 × 1/300 s), a
+//! Fetch step costs 1.7 µs standing still, ≈ 0.12 ms driving and ≈ 0.2 ms under random actions
+//! (IK, the fixed-body checks and the awake fingers) — where `docs/design.md` §4 measured
+//! 0.65–3 ms for a simulated 9-link arm while driving.
 //!
 //! **Looks.** Fetch's links name model pieces whose real meshes ([`shared_models`]) come from
 //! gymnasium-robotics' MuJoCo model, fetched from PyPI at first use (`fetch_model.rs`); the

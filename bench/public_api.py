@@ -10,7 +10,8 @@ their enum and not counted.
 
     python3 bench/public_api.py [--target-dir DIR] [CRATE ...]
 
-prints a table, one row per crate (all library crates by default). Run it at two commits to
+prints a table, one row per crate (all library crates by default; a dash for one the commit
+does not have). Run it at two commits to
 compare: each `cargo rustdoc` is a check build, so give it a target dir of its own (the default,
 /tmp/public-api-target) to leave the main build's artefacts alone.
 """
@@ -26,7 +27,7 @@ import sys
 CRATES = [
     "behavior-core", "behavior-data", "behavior-bddl", "behavior-sim", "behavior-forms",
     "behavior-assets", "behavior-sampling", "behavior-robots", "behavior-render",
-    "behavior-env", "behavior-planning", "behavior-web",
+    "behavior-env", "behavior-motion", "behavior-planning", "behavior-web",
 ]
 KINDS = {
     "struct": "types", "enum": "types", "union": "types", "trait": "types",
@@ -56,6 +57,10 @@ def main() -> int:
     args = parser.parse_args()
     rows = []
     for crate in args.crates:
+        known = subprocess.run(["cargo", "pkgid", "-q", crate], capture_output=True)
+        if known.returncode != 0:
+            rows.append((crate, None))  # not in this commit's workspace
+            continue
         command = [
             "cargo", "+nightly", "rustdoc", "-q", "-p", crate, "--lib", "--",
             "-Z", "unstable-options", "--output-format", "json",
@@ -71,6 +76,9 @@ def main() -> int:
     print("|---" * (len(COLUMNS) + 2) + "|")
     totals = collections.Counter()
     for crate, counts in rows:
+        if counts is None:
+            print(f"| {crate} |" + " — |" * (len(COLUMNS) + 1))
+            continue
         totals.update(counts)
         cells = [str(counts[c]) for c in COLUMNS]
         print(f"| {crate} | " + " | ".join(cells) + f" | {sum(counts.values())} |")

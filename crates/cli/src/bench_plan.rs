@@ -10,10 +10,8 @@ use anyhow::Result;
 use behavior_core::FLOOR_SYNSET;
 use behavior_core::rng::seeded;
 use behavior_env::{Env, EnvConfig};
-use behavior_planning::{
-    BaseSpace, Call, Mode, PlanError, PlanParams, Primitive, Standing, approach_plan, check,
-    drive_to, home_extent, plan,
-};
+use behavior_motion::{BaseSpace, PlanError, PlanParams, Standing, home_extent, plan};
+use behavior_planning::{Call, Mode, Primitive, approach_plan, check, drive_to};
 use behavior_sim::ObjectId;
 use serde::Serialize;
 use std::path::Path;

@@ -31,8 +31,6 @@
 //! arm and a grasp pose, and its workspace floor (0.2 m above the base) kept things on the
 //! floor out of reach. Fetch solved none of Table 1's activities that way.
 
-use crate::arm::{ArmBody, ArmConfig, ArmSpace};
-use crate::base::BaseConfig;
 use crate::execute::RunError;
 use crate::execute::Watcher;
 use crate::manipulation::{
@@ -41,10 +39,12 @@ use crate::manipulation::{
 };
 use crate::physical::{Attempt, PHYSICAL_BUDGET, Stepper, attempt, call_rng, force_grasp};
 use crate::primitive::{Call, Failure};
-use crate::rrt::{PlanParams, plan, steps_along};
 use crate::symbolic::check;
 use behavior_core::rng::{SimRng, seeded, uniform};
 use behavior_env::Env;
+use behavior_motion::BaseConfig;
+use behavior_motion::{ArmBody, ArmConfig, ArmSpace};
+use behavior_motion::{PlanParams, plan, steps_along};
 use behavior_robots::{
     ActionSpace, Embodiment, FETCH_JOINT_ACTION_DIM, Fetch, FetchCommand, FetchJoint,
     FetchJointAction, Robot,
@@ -420,7 +420,7 @@ fn free_ik(
     let now = fetch.joints();
     let here = ArmConfig::of(&now);
     let starts = std::iter::once(now).chain((0..IK_RESTARTS).map(|_| {
-        let c = crate::arm::any_config(&here, rng);
+        let c = behavior_motion::any_config(&here, rng);
         c.joints(now.head)
     }));
     starts

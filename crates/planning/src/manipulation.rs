@@ -6,7 +6,6 @@
 //! on an object a hand goes, and the poses above the places the world's sampler finds for what
 //! a hand holds.
 
-use crate::base::BaseConfig;
 use crate::execute::Watcher;
 use crate::physical::{Attempt, Stepper, call_rng};
 use crate::primitive::{Call, Failure, Primitive};
@@ -14,6 +13,7 @@ use crate::symbolic::put;
 use crate::{jointed_arm, posed_hands};
 use behavior_core::rng::{SimRng, uniform};
 use behavior_env::Env;
+use behavior_motion::BaseConfig;
 use behavior_robots::{HandMotion, Robot};
 use behavior_sim::{ObjectId, Relation, World};
 use rapier3d::math::{Pose, Rotation, Vector};

@@ -5,20 +5,20 @@
 //! manipulator's (`manipulation.rs`). OPEN, CLOSE and the toggles are kinematic in the original's motion-planning
 //! mode too, and are done as in symbolic mode.
 
-use crate::base::{BaseConfig, BaseSpace, home_extent};
-use crate::error::PlanError;
 use crate::execute::Watcher;
 use crate::execute::{RecordedCall, RunError};
-use crate::hand::wrap;
-use crate::lattice::{LATTICE_EXPANSIONS, lattice_plan};
 use crate::manipulation::manipulator;
-use crate::navigate::Standing;
 use crate::primitive::{Call, Failure};
-use crate::rrt::{PlanParams, Space, plan, steps_along};
 use crate::symbolic::{call_seed, limited_links, open_all_the_way, stand_for};
 use behavior_core::rng::{SimRng, seeded};
 use behavior_core::{DOOR_SYNSET, Predicate};
 use behavior_env::Env;
+use behavior_motion::PlanError;
+use behavior_motion::Standing;
+use behavior_motion::wrap;
+use behavior_motion::{BaseConfig, BaseSpace, home_extent};
+use behavior_motion::{LATTICE_EXPANSIONS, lattice_plan};
+use behavior_motion::{PlanParams, Space, plan, steps_along};
 use behavior_robots::{BaseDrive, BaseMove, Robot};
 use behavior_sim::{BodyRef, ObjectId, World};
 use std::f32::consts::PI;

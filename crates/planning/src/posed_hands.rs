@@ -27,24 +27,24 @@
 //! the hand where it let go, ours comes back, so that the next NAVIGATE_TO finds the robot as
 //! compact as it started.
 
-use crate::base::BaseConfig;
 use crate::execute::Watcher;
 use crate::execute::{RecordedCall, RunError};
-use crate::hand::{HandBody, HandConfig, HandSpace};
 use crate::manipulation::{
     CLOSE_STEPS, GRASP_JITTER, Manipulator, RELEASE_STEPS, SETTLE_STEPS, StandTest, grasp_point,
     on_or_in_goals, on_top, placement_goals, rng_seed,
 };
-use crate::navigate::shapes_in;
 use crate::physical::{
     Attempt, PHYSICAL_BUDGET, STEPS_PER_WAYPOINT, Stepper, attempt, base_config, call_rng,
     force_grasp,
 };
 use crate::primitive::{Call, Failure};
-use crate::rrt::{PlanParams, plan, steps_along};
 use crate::symbolic::check;
 use behavior_core::rng::{SimRng, uniform};
 use behavior_env::Env;
+use behavior_motion::BaseConfig;
+use behavior_motion::shapes_in;
+use behavior_motion::{HandBody, HandConfig, HandSpace};
+use behavior_motion::{PlanParams, plan, steps_along};
 use behavior_robots::{ACTION_SCALE, Action, ActionSpace, BehaviorRobot, HAND_REACH, Robot, Side};
 use behavior_sim::{BodyRef, ObjectId, QueryFilter, Relation, World};
 use rapier3d::glamx::EulerRot;
@@ -644,7 +644,7 @@ fn plan_with_approach(
 /// The hand's configurations from `from` straight to `to`, at the hand planner's resolution,
 /// without `from`.
 fn straight(from: &HandConfig, to: &HandConfig) -> Vec<HandConfig> {
-    let n = ((from.position - to.position).length() / crate::hand::HAND_RESOLUTION)
+    let n = ((from.position - to.position).length() / behavior_motion::HAND_RESOLUTION)
         .ceil()
         .max(1.0) as usize;
     (1..=n)

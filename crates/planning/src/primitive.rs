@@ -147,9 +147,9 @@ pub enum Failure {
     #[error("blocked at {at:?} on the way to {toward:?}")]
     Blocked {
         /// Where the base stopped.
-        at: crate::BaseConfig,
+        at: behavior_motion::BaseConfig,
         /// Where it was going.
-        toward: crate::BaseConfig,
+        toward: behavior_motion::BaseConfig,
     },
     /// Executing a hand or arm plan, it did not reach a configuration of it (a fixed body
     /// stopped it, or the reach did).
@@ -163,7 +163,7 @@ pub enum Failure {
     Missed,
     /// The motion planner found no collision-free path.
     #[error("no collision-free path: {0}")]
-    NoPath(#[from] crate::PlanError),
+    NoPath(#[from] behavior_motion::PlanError),
     /// The robot has no such hand.
     #[error("the robot has no hand {0}")]
     NoHand(usize),

@@ -2,12 +2,12 @@
 //! `envs/behavior_mp_env.py`, then the outcome set at once — the robot teleported, the object put
 //! in the hand, placed by the world's sampler, joints opened, states set.
 
-use crate::base::BaseConfig;
-use crate::navigate::{Standing, floor_gap};
 use crate::primitive::{Call, Failure, Primitive};
 use behavior_core::rng::{SimRng, seeded, uniform};
 use behavior_core::{Ability, FLOOR_SYNSET, Predicate};
 use behavior_env::Edit;
+use behavior_motion::BaseConfig;
+use behavior_motion::{Standing, floor_gap};
 use behavior_robots::{MagicError, REACH_DISTANCE, Robot};
 use behavior_sim::{BodyRef, JointKind, ObjectId, PointKind, Relation, SUPPORT_COS, World};
 use rapier3d::math::{Pose, Rotation, Vector};

@@ -15,12 +15,12 @@
 use crate::execute::Watcher;
 use crate::execute::{Mode, RunError, run};
 use crate::manipulation::reaches;
-use crate::navigate::floor_gap;
 use crate::primitive::{Call, Failure, Primitive};
 use crate::symbolic::{container_where, wide_open, within};
 use behavior_bddl::{GroundGoal, Literal, Predicate, PredicateOracle};
 use behavior_core::{Ability, FLOOR_SYNSET};
 use behavior_env::Env;
+use behavior_motion::floor_gap;
 use behavior_sim::{BoundWorld, ObjectId, World};
 use serde::Serialize;
 use std::collections::BTreeMap;

@@ -8,9 +8,10 @@ mod common;
 
 use behavior_env::Env;
 use behavior_env::record::{Recorder, read, replay_with};
+use behavior_motion::{HandConfig, HandSpace, Space};
 use behavior_planning::{
-    Call, Failure, HandConfig, HandSpace, Mode, Primitive, Space, arm_grasp, grasp, hand_body,
-    hand_grasp, hand_place, replay_edit, run,
+    Call, Failure, Mode, Primitive, arm_grasp, grasp, hand_body, hand_grasp, hand_place,
+    replay_edit, run,
 };
 use behavior_robots::{Robot, RobotKind, Side};
 use behavior_sim::{ObjectId, Relation};

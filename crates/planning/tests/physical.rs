@@ -8,9 +8,9 @@ mod common;
 use behavior_core::Predicate;
 use behavior_env::Env;
 use behavior_env::record::{Recorder, read, replay_with};
+use behavior_motion::{BaseConfig, BaseSpace, Space, Standing};
 use behavior_planning::{
-    BaseConfig, BaseSpace, Call, Mode, Primitive, Space, Standing, base_config, drive_to, reaches,
-    replay_edit, within_reach,
+    Call, Mode, Primitive, base_config, drive_to, reaches, replay_edit, within_reach,
 };
 use behavior_robots::RobotKind;
 

@@ -193,7 +193,7 @@ fn connect<S: Space>(
 
 /// Shortcuts: a random pair of configurations on the path joined directly where that motion is
 /// free (pybullet-planning's `smooth_path`).
-pub(crate) fn smooth<S: Space>(
+pub fn smooth<S: Space>(
     space: &S,
     mut path: Path<S::Config>,
     attempts: u32,
@@ -222,14 +222,14 @@ pub(crate) fn smooth<S: Space>(
 
 /// Every configuration passed along `path` at the space's resolution, after its first: what a
 /// robot is driven through, one configuration at a time.
-pub(crate) fn steps_along<S: Space>(space: &S, path: &[S::Config]) -> Vec<S::Config> {
+pub fn steps_along<S: Space>(space: &S, path: &[S::Config]) -> Vec<S::Config> {
     path.windows(2)
         .flat_map(|w| space.steps(&w[0], &w[1], space.resolution()))
         .collect()
 }
 
 /// Every motion between consecutive configurations free at half the resolution.
-pub(crate) fn valid<S: Space>(space: &S, path: &[S::Config]) -> bool {
+pub fn valid<S: Space>(space: &S, path: &[S::Config]) -> bool {
     let fine = 0.5 * space.resolution();
     path.windows(2).all(|w| {
         space

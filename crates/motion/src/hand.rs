@@ -197,7 +197,7 @@ impl Space for HandSpace<'_> {
 }
 
 /// An angle in (−π, π].
-pub(crate) fn wrap(a: f32) -> f32 {
+pub fn wrap(a: f32) -> f32 {
     let w = (a + PI).rem_euclid(2.0 * PI) - PI;
     if w <= -PI { w + 2.0 * PI } else { w }
 }

@@ -2,7 +2,7 @@
 
 use behavior_core::RoomType;
 use behavior_core::rng::seeded;
-use behavior_planning::{
+use behavior_motion::{
     BaseConfig, BaseSpace, Footprint, PlanError, PlanParams, Space, Standing, lattice_plan, plan,
 };
 use behavior_sim::{Material, ObjectSpec, Part, Primitive, QueryFilter, Room, World};

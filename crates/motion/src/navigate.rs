@@ -215,7 +215,7 @@ fn box_within(world: &World, object: ObjectId, reach: f32) -> impl Fn(&BaseConfi
 }
 
 /// How far (x, y) is from the rectangle `min`–`max` across the floor: 0 inside it.
-pub(crate) fn floor_gap(min: [f32; 2], max: [f32; 2], x: f32, y: f32) -> f32 {
+pub fn floor_gap(min: [f32; 2], max: [f32; 2], x: f32, y: f32) -> f32 {
     let dx = (min[0] - x).max(x - max[0]).max(0.0);
     let dy = (min[1] - y).max(y - max[1]).max(0.0);
     dx.hypot(dy)
@@ -223,7 +223,7 @@ pub(crate) fn floor_gap(min: [f32; 2], max: [f32; 2], x: f32, y: f32) -> f32 {
 
 /// `shape` grown by `margin` on every side (a convex hull, each point pushed out from its
 /// centre).
-pub(crate) fn inflated(shape: &Primitive, margin: f32) -> Primitive {
+pub fn inflated(shape: &Primitive, margin: f32) -> Primitive {
     match shape {
         Primitive::Box { half_extents } => Primitive::Box {
             half_extents: *half_extents + Vector::splat(margin),
@@ -259,7 +259,7 @@ pub(crate) fn inflated(shape: &Primitive, margin: f32) -> Primitive {
 
 /// The collision shapes of `objects` as they are now, each placed in the frame that `to_frame`
 /// maps the world into: what moves with a base or a hand, for checks at other poses.
-pub(crate) fn shapes_in(
+pub fn shapes_in(
     world: &World,
     objects: impl IntoIterator<Item = ObjectId>,
     to_frame: Pose,

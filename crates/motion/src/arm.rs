@@ -262,8 +262,8 @@ fn bounds(start: &ArmConfig, k: usize) -> [f32; 2] {
     }
 }
 
-/// A configuration drawn uniformly within the joints' ranges (see [`bounds`]): where an IK
-/// search may start over.
+/// A configuration drawn uniformly within the joints' ranges (their limits, or for a continuous
+/// joint a turn either way from where it is at `start`): where an IK search may start over.
 pub fn any_config(start: &ArmConfig, rng: &mut SimRng) -> ArmConfig {
     ArmConfig(std::array::from_fn(|k| {
         let [lo, hi] = bounds(start, k);

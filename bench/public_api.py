@@ -3,9 +3,9 @@
 
 Reads rustdoc's JSON output (a nightly toolchain: `rustup toolchain install nightly`), which
 holds exactly the items reachable from outside the crate, re-exports resolved. Counted: types
-(structs, enums, unions, traits, type aliases), functions (free functions and the public
-methods of inherent impls; trait impls' methods are the trait's, not new API), constants
-(consts, statics, associated consts), public struct fields, macros. Enum variants are part of
+(structs, enums, unions, traits, type aliases), functions (free functions, the public methods of
+inherent impls and the methods a public trait declares; trait impls' methods are the trait's,
+not new API), constants (consts, statics, associated consts), public struct fields, macros. Enum variants are part of
 their enum and not counted.
 
     python3 bench/public_api.py [--target-dir DIR] [CRATE ...]
@@ -38,15 +38,28 @@ KINDS = {
 COLUMNS = ["types", "functions", "constants", "fields", "macros"]
 
 
+def kind_of(item: dict) -> str:
+    """An item's kind: the one key of its `inner`."""
+    return next(iter(item["inner"])) if isinstance(item["inner"], dict) else item["inner"]
+
+
 def count(doc: dict) -> collections.Counter:
-    """Public items of the documented crate (crate id 0), by column."""
+    """Public items of the documented crate (crate id 0), by column; a public trait's methods,
+    constants and types count as the trait's items."""
     counts = collections.Counter()
-    for item in doc["index"].values():
+    index = doc["index"]
+    for item in index.values():
         if item["crate_id"] != 0 or item["visibility"] != "public":
             continue
-        kind = next(iter(item["inner"])) if isinstance(item["inner"], dict) else item["inner"]
+        kind = kind_of(item)
         if kind in KINDS:
             counts[KINDS[kind]] += 1
+        if kind == "trait":
+            for member in item["inner"]["trait"]["items"]:
+                member_kind = kind_of(index[str(member)])
+                column = {"assoc_type": "types"}.get(member_kind, KINDS.get(member_kind))
+                if column:
+                    counts[column] += 1
     return counts
 
 

@@ -42,3 +42,11 @@ pub const WALL_SYNSET: &str = "wall.n.01";
 pub const DOOR_SYNSET: &str = "door.n.01";
 /// The synset of a home's windows.
 pub const WINDOW_SYNSET: &str = "window.n.01";
+
+/// An angle, rad, brought into (−π, π]: the robots' controllers and the planners compare
+/// headings with it.
+pub fn wrap_angle(a: f32) -> f32 {
+    use std::f32::consts::PI;
+    let w = (a + PI).rem_euclid(2.0 * PI) - PI;
+    if w <= -PI { w + 2.0 * PI } else { w }
+}

@@ -7,10 +7,10 @@
 
 use crate::rrt::Space;
 use behavior_core::rng::{SimRng, uniform};
+use behavior_core::wrap_angle;
 use behavior_sim::{Primitive, QueryFilter, World};
 use rapier3d::glamx::EulerRot;
 use rapier3d::math::{Pose, Rotation, Vector};
-use std::f32::consts::PI;
 
 /// A hand's pose: position, m, and roll, pitch, yaw, rad (pitch about y after roll about x,
 /// then yaw about z, fixed axes: the action's convention).
@@ -53,7 +53,7 @@ impl HandConfig {
         let (a, b) = (self.coordinates(), to.coordinates());
         std::array::from_fn(|k| {
             let d = b[k] - a[k];
-            if k < 3 { d } else { wrap(d) }
+            if k < 3 { d } else { wrap_angle(d) }
         })
     }
 }
@@ -194,12 +194,6 @@ impl Space for HandSpace<'_> {
     fn resolution(&self) -> f32 {
         HAND_RESOLUTION
     }
-}
-
-/// An angle in (−π, π].
-pub fn wrap(a: f32) -> f32 {
-    let w = (a + PI).rem_euclid(2.0 * PI) - PI;
-    if w <= -PI { w + 2.0 * PI } else { w }
 }
 
 #[cfg(test)]

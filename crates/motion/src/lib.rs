@@ -74,7 +74,7 @@ pub use arm::{
 pub use base::{BaseConfig, BaseSpace, Footprint, KEEL, home_extent, stands_inside};
 pub use error::PlanError;
 pub use hand::{
-    ANGLE_MARGIN, HAND_MARGIN, HAND_RESOLUTION, HAND_WEIGHTS, HandBody, HandConfig, HandSpace, wrap,
+    ANGLE_MARGIN, HAND_MARGIN, HAND_RESOLUTION, HAND_WEIGHTS, HandBody, HandConfig, HandSpace,
 };
 pub use lattice::{LATTICE_CELL, LATTICE_EXPANSIONS, LATTICE_HEADINGS, lattice_plan};
 pub use navigate::{

@@ -11,11 +11,11 @@ use crate::manipulation::manipulator;
 use crate::primitive::{Call, Failure};
 use crate::symbolic::{call_seed, limited_links, open_all_the_way, stand_for};
 use behavior_core::rng::{SimRng, seeded};
+use behavior_core::wrap_angle;
 use behavior_core::{DOOR_SYNSET, Predicate};
 use behavior_env::Env;
 use behavior_motion::PlanError;
 use behavior_motion::Standing;
-use behavior_motion::wrap;
 use behavior_motion::{BaseConfig, BaseSpace, home_extent};
 use behavior_motion::{LATTICE_EXPANSIONS, lattice_plan};
 use behavior_motion::{PlanParams, Space, plan, steps_along};
@@ -408,7 +408,7 @@ fn drive_toward(env: &Env, target: &BaseConfig) -> Option<Vec<f32>> {
     let robot = env.robot()?;
     let now = base_config(env);
     let (dx, dy) = (target.x - now.x, target.y - now.y);
-    let dyaw = wrap(target.yaw - now.yaw);
+    let dyaw = wrap_angle(target.yaw - now.yaw);
     if dx.hypot(dy) <= POSITION_TOLERANCE && dyaw.abs() <= YAW_TOLERANCE {
         return None;
     }

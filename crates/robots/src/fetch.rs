@@ -17,6 +17,7 @@ use crate::magic::MagicError;
 use crate::motion::Blocker;
 use crate::proprioception::LocalPose;
 use crate::robot::{RobotError, RobotKind, pose_ok};
+use behavior_core::wrap_angle;
 use behavior_sim::{
     AttachmentId, AttachmentKind, AttachmentSpec, BodyRef, Drive, JointState, ObjectId, Primitive,
     QueryFilter, STEP_SECONDS, StepHooks, Velocity, World, WorldError, groups,
@@ -468,10 +469,13 @@ impl Fetch {
     const DRIVE_ALIGNED: f32 = 0.05;
 }
 
-/// An angle in (−π, π].
-fn wrap(a: f32) -> f32 {
-    let w = (a + PI).rem_euclid(2.0 * PI) - PI;
-    if w <= -PI { w + 2.0 * PI } else { w }
+/// Fetch's one hand, its gripper, is hand 0: any other number is no hand.
+fn gripper(hand: usize) -> Result<(), MagicError> {
+    if hand == 0 {
+        Ok(())
+    } else {
+        Err(MagicError::NoHand(hand))
+    }
 }
 
 impl Embodiment for Fetch {
@@ -496,9 +500,9 @@ impl Embodiment for Fetch {
         }
         let distance = step.forward.hypot(step.left);
         let turn = if distance > step.within {
-            let toward = wrap(step.left.atan2(step.forward));
+            let toward = wrap_angle(step.left.atan2(step.forward));
             if toward.abs() > FRAC_PI_2 {
-                wrap(toward + PI)
+                wrap_angle(toward + PI)
             } else {
                 toward
             }
@@ -572,9 +576,7 @@ impl Embodiment for Fetch {
         hand: usize,
         object: ObjectId,
     ) -> Result<(), MagicError> {
-        if hand != 0 {
-            return Err(MagicError::NoHand(hand));
-        }
+        gripper(hand)?;
         self.grasp_now_in(world, object)
     }
 
@@ -584,22 +586,17 @@ impl Embodiment for Fetch {
         hand: usize,
         object: ObjectId,
     ) -> Result<(), MagicError> {
-        if hand != 0 {
-            return Err(MagicError::NoHand(hand));
-        }
+        gripper(hand)?;
         self.grasp_touching_in(world, object)
     }
 
     /// Its arm is kinematic and never left behind: nothing to do.
     fn reset_hand(&mut self, _world: &mut World, hand: usize) -> Result<(), MagicError> {
-        if hand != 0 {
-            return Err(MagicError::NoHand(hand));
-        }
-        Ok(())
+        gripper(hand)
     }
 
     fn release_now(&mut self, world: &mut World, hand: usize) -> Option<ObjectId> {
-        (hand == 0).then(|| self.release_from(world)).flatten()
+        gripper(hand).ok().and_then(|()| self.release_from(world))
     }
 }
 

@@ -3,8 +3,9 @@
 //! - **Configuration spaces** ([`Space`]): the base in (x, y, yaw) on the floor ([`BaseSpace`],
 //!   swept by the original's base motion: turn, drive straight, turn), a hand as a free 6-D
 //!   body within its reach of the shoulder ([`HandSpace`]), an arm in its joints ([`ArmSpace`],
-//!   Fetch's torso and seven arm joints); each checks a configuration with the world's overlap
-//!   queries, without stepping, what the robot holds included.
+//!   read through the robot's [`behavior_robots::Arm`]: Fetch's torso and seven arm joints);
+//!   each checks a configuration with the world's overlap queries, without stepping, what the
+//!   robot holds included.
 //! - **Search**: [`plan`] finds a collision-free path between two configurations of any space
 //!   the way the original does (iGibson 2.0.3's `envs/behavior_mp_env.py`, pybullet-planning's
 //!   `birrt`): the direct path if free, else RRT-Connect with restarts, then shortcut
@@ -69,7 +70,8 @@ mod navigate;
 mod rrt;
 
 pub use arm::{
-    ARM_RESOLUTION, ArmBody, ArmConfig, ArmSpace, HELD_MARGIN, HELD_REACH, REACH_WEIGHT, any_config,
+    ARM_RESOLUTION, ArmBody, ArmSpace, HELD_MARGIN, HELD_REACH, REACH_WEIGHT, any_config,
+    closest_turn,
 };
 pub use base::{BaseConfig, BaseSpace, Footprint, KEEL, home_extent, stands_inside};
 pub use error::PlanError;

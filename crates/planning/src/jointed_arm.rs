@@ -1,15 +1,17 @@
 //! Physical GRASP and PLACE_* for hands at the end of jointed arms
-//! ([`behavior_robots::HandMotion::Jointed`]: Fetch's): goals for the end effector turned into joint
-//! positions by Fetch's own inverse kinematics ([`behavior_robots::IkSolver`]), the arm planned
-//! to them in its joint space ([`ArmSpace`]) and executed joint by joint through Fetch's
-//! [`ActionSpace::Joints`] (iGibson 2.1+'s joint controller), one step of physics each; the
+//! ([`behavior_robots::HandMotion::Jointed`]: Fetch's), read only through the robot's [`Arm`]:
+//! goals for the end effector turned into joint positions by the arm's own inverse kinematics
+//! ([`Arm::ik`]; Fetch's [`behavior_robots::IkSolver`]), the arm planned to them in its joint
+//! space ([`ArmSpace`]) and executed joint by joint through the robot's primitive action space
+//! (Fetch's [`behavior_robots::ActionSpace::Joints`], iGibson 2.1+'s joint controller), one step
+//! of physics each; the
 //! grasp made by the assisted grasp as the gripper closes, the placement by opening it above a
 //! pose the world's sampler found, then settling.
 //!
 //! - GRASP: the gripper pointing down at the top of the object's box, its fingers across the
 //!   narrower side of its own box (other headings after; then tilted toward it from the base's
-//!   side), the fingertips [`FETCH_APPROACH`] short of it; on in a straight line until the palm
-//!   or a finger touches the object (at most [`FETCH_DESCENT`]), closed until it holds (at most
+//!   side), the fingertips [`ARM_APPROACH`] short of it; on in a straight line until the palm
+//!   or a finger touches the object (at most [`ARM_DESCENT`]), closed until it holds (at most
 //!   [`CLOSE_STEPS`]; touching and not held, the grasp is forced as the BehaviorRobot's is),
 //!   straight back up, then the arm planned back to where it was, with what it holds (where
 //!   that is not free — a tile does not fit the folded arm — it stays, and the next drive's
@@ -20,7 +22,7 @@
 //!   [`SETTLE_STEPS`] steps to settle, straight up and back.
 //!
 //! Executing joint by joint, each step's configuration is what the robot's own joint update
-//! ([`Fetch::joints_after`]) makes of the action, so every configuration the arm will pass is
+//! ([`Arm::after`]) makes of the action, so every configuration the arm will pass is
 //! known before it moves: each is checked free (the plan re-validated a step, at most 0.04 rad
 //! a joint, apart), and after each step the arm is compared with it — one that is not there
 //! was stopped by something fixed. Straight lines of the end effector (the descent, the lift,
@@ -32,10 +34,9 @@
 //! floor out of reach. Fetch solved none of Table 1's activities that way.
 
 use crate::execute::RunError;
-use crate::execute::Watcher;
 use crate::manipulation::{
-    CLOSE_STEPS, GRASP_JITTER, Manipulator, RELEASE_STEPS, SETTLE_STEPS, StandTest, grasp_point,
-    on_or_in_goals, placement_goals, rng_seed, vertical_axis,
+    CLOSE_STEPS, GRASP_JITTER, Grip, Hands, Manipulator, RELEASE_STEPS, SETTLE_STEPS, StandTest,
+    grasp_point, on_or_in_goals, placement_goals, rng_seed, vertical_axis,
 };
 use crate::physical::{Attempt, PHYSICAL_BUDGET, Stepper, attempt, call_rng, force_grasp};
 use crate::primitive::{Call, Failure};
@@ -43,23 +44,21 @@ use crate::symbolic::check;
 use behavior_core::rng::{SimRng, seeded, uniform};
 use behavior_env::Env;
 use behavior_motion::BaseConfig;
-use behavior_motion::{ArmBody, ArmConfig, ArmSpace};
+use behavior_motion::{ArmBody, ArmSpace, any_config, closest_turn};
 use behavior_motion::{PlanParams, plan, steps_along};
-use behavior_robots::{
-    ActionSpace, Embodiment, FETCH_JOINT_ACTION_DIM, Fetch, FetchCommand, FetchJoint,
-    FetchJointAction, Robot,
-};
-use behavior_sim::{BodyRef, ObjectId, Relation, World};
+use behavior_robots::{Arm, ArmConfig, Embodiment, Robot};
+use behavior_sim::{BodyRef, ObjectId, World};
 use rapier3d::math::{Pose, Rotation, Vector};
 use std::f32::consts::{FRAC_PI_2, PI};
+use std::sync::Arc;
 
 /// How far above the top of the object's box the fingertips stop before the descent, m.
-pub const FETCH_APPROACH: f32 = 0.05;
+pub const ARM_APPROACH: f32 = 0.05;
 /// How far the fingertips reach beyond the end effector's frame along its x, m (the pads'
-/// ends).
+/// ends: Fetch's).
 const TIP: f32 = 0.031;
 /// The longest descent onto the object, m, `DESCENT_STEP` a step.
-pub const FETCH_DESCENT: f32 = 0.12;
+pub const ARM_DESCENT: f32 = 0.12;
 /// How far the gripper moves a step in its descent, m.
 const DESCENT_STEP: f32 = 0.004;
 /// How far apart the IK solutions of an end effector's straight line are, m.
@@ -85,7 +84,7 @@ const LEAVE: f32 = 0.1;
 /// configurations it passed on the way, step by step, and those of the rest of the primitive
 /// (the descent, the lift, the way back).
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct ArmPath {
+pub(crate) struct ArmPath {
     /// The configurations planned, from where it started to the goal.
     pub planned: Vec<ArmConfig>,
     /// The configurations it passed on the way, a step each.
@@ -94,113 +93,66 @@ pub struct ArmPath {
     pub after: Vec<ArmConfig>,
 }
 
-/// GRASP with Fetch's arm and physics (see the module docs).
-pub fn grasp(env: &mut Env, call: &Call, watcher: Option<&mut dyn Watcher>) -> Attempt<ArmPath> {
-    if let Err(failure) = precondition(env, call) {
-        return Ok(Err(failure));
-    }
-    let mut rng = call_rng(env, call);
-    let goals = fetch(env).map_or(Vec::new(), |(world, fetch)| {
-        grasp_goals(world, fetch, call.object, &mut rng)
-    });
-    let mut steps = Stepper { env, watcher };
-    let start = arm_now(steps.env);
-    let mut path = attempt!(reach(&mut steps, &goals, OPEN, &mut rng));
-    attempt!(descend(&mut steps, call.object, &mut path.after));
-    close(&mut steps, call)?;
-    let held = fetch(steps.env).is_some_and(|(_, f)| f.is_holding(call.object));
-    let hold = if held { CLOSED } else { OPEN };
-    attempt!(straight_up(&mut steps, LIFT_OFF, hold, &mut path.after));
-    let back = come_back(&mut steps, start, hold, &mut path.after)?;
-    let holds = fetch(steps.env).is_some_and(|(_, f)| f.is_holding(call.object));
-    match back {
-        // Held, an arm that finds no way back carries it where it is.
-        Err(failure) if !holds => Ok(Err(failure)),
-        _ if !holds => Ok(Err(Failure::Missed)),
-        _ => Ok(Ok(path)),
-    }
-}
-
-/// PLACE_* with Fetch's arm and physics (see the module docs).
-pub fn place(
-    env: &mut Env,
-    call: &Call,
-    relation: Relation,
-    watcher: Option<&mut dyn Watcher>,
-) -> Attempt<ArmPath> {
-    if let Err(failure) = precondition(env, call) {
-        return Ok(Err(failure));
-    }
-    let mut rng = call_rng(env, call);
-    let goals = match (env.world(), env.robot()) {
-        (Some(world), Some(robot)) => placement_goals(world, robot, call, relation, &mut rng),
-        _ => Err(Failure::Unavailable("no episode")),
-    };
-    let goals = match goals {
-        Ok(goals) => goals,
-        Err(failure) => return Ok(Err(failure)),
-    };
-    let mut steps = Stepper { env, watcher };
-    let start = arm_now(steps.env);
-    let mut path = attempt!(reach(&mut steps, &goals, CLOSED, &mut rng));
-    attempt!(open(&mut steps));
-    attempt!(wait(&mut steps, SETTLE_STEPS));
-    attempt!(straight_up(&mut steps, LEAVE, OPEN, &mut path.after));
-    attempt!(come_back(&mut steps, start, OPEN, &mut path.after));
-    Ok(Ok(path))
-}
-
-/// Whether Fetch's arm, from where the base stands, has a free configuration over the object
-/// for a grasp — or, holding something and given a placement, above a place for it; true for
-/// what cannot be held (a cabinet to open) and for a robot that is no Fetch.
+/// Whether the arm of hand 0 (of `placement`'s hand, given one), from where the base stands,
+/// has a free configuration over the object for a grasp — or, holding something and given a
+/// placement, above a place for it; true for what cannot be held (a cabinet to open) and for a
+/// hand at the end of no arm.
 pub fn reaches(env: &Env, object: ObjectId, placement: Option<&Call>) -> bool {
-    let (Some((world, fetch)), Some(goals)) = (fetch(env), reach_goals(env, object, placement))
+    let hand = placement.map_or(0, |call| call.hand);
+    let (Some((world, robot, arm)), Some(goals)) =
+        (arm_of(env, hand), reach_goals(env, hand, object, placement))
     else {
         return true;
     };
-    any_solved(world, fetch, &ArmBody::of(world, fetch), &goals)
+    any_solved(world, &ArmBody::of(world, robot, arm), &goals)
 }
 
-/// A test of places to stand for NAVIGATE_TO `object`: whether Fetch's arm, its base standing
+/// A test of places to stand for NAVIGATE_TO `object`: whether the arm of hand 0, its base standing
 /// there, reaches over the object for a grasp or, holding something, above a place for it on
 /// or in the object, as OmniGibson's base-pose sampler checks IK reach for each candidate.
 /// The goals are the world poses [`reaches`] tries from where the base stands now (straight
 /// down they are the same from anywhere). `None` for what there is no arm to test for: no
-/// Fetch, or nothing to take or to put there.
+/// arm, or nothing to take or to put there.
 pub(crate) fn reach_test<'e>(
     env: &'e Env,
     object: ObjectId,
 ) -> Option<impl Fn(&BaseConfig) -> bool + 'e> {
-    let (world, fetch) = fetch(env)?;
-    let goals = match fetch.holding() {
+    let hand = 0;
+    let (world, robot, arm) = arm_of(env, hand)?;
+    let goals = match robot.held(hand) {
         Some(_) => {
-            let goals = on_or_in_goals(env, object, 0);
+            let goals = on_or_in_goals(env, object, hand);
             (!goals.is_empty()).then_some(goals)?
         }
-        None => reach_goals(env, object, None)?,
+        None => reach_goals(env, hand, object, None)?,
     };
-    let body = ArmBody::of(world, fetch);
+    let body = ArmBody::of(world, robot, arm);
     // The base's frame over the floor's at its configuration: kept as the base moves.
     let lift = crate::physical::base_config(env).pose().inverse() * body.base;
     Some(move |stand: &BaseConfig| {
         let mut moved = body.clone();
         moved.base = stand.pose() * lift;
-        any_solved(world, fetch, &moved, &goals)
+        any_solved(world, &moved, &goals)
     })
 }
 
 /// The end-effector goals of [`reaches`]; `None` for what cannot be held and is given no
 /// placement (a cabinet to open: within reach of its box is enough).
-fn reach_goals(env: &Env, object: ObjectId, placement: Option<&Call>) -> Option<Vec<Pose>> {
-    let (world, fetch) = fetch(env)?;
-    let robot = env.robot()?;
+fn reach_goals(
+    env: &Env,
+    hand: usize,
+    object: ObjectId,
+    placement: Option<&Call>,
+) -> Option<Vec<Pose>> {
+    let (world, robot, _) = arm_of(env, hand)?;
     match placement.and_then(|c| Some((c, c.primitive.relation()?))) {
-        Some((call, relation)) if fetch.holding().is_some() => {
+        Some((call, relation)) if robot.held(hand).is_some() => {
             let mut rng = call_rng(env, call);
-            Some(placement_goals(world, robot, call, relation, &mut rng).unwrap_or_default())
+            let goals = placement_goals(world, env.robot()?, call, relation, &mut rng);
+            Some(goals.unwrap_or_default())
         }
-        _ if fetch
-            .rules()
+        _ if robot
+            .grasp_rules()
             .holdable(world, BodyRef::from(object))
             .is_none() =>
         {
@@ -210,67 +162,169 @@ fn reach_goals(env: &Env, object: ObjectId, placement: Option<&Call>) -> Option<
             let call = Call {
                 primitive: crate::Primitive::Grasp,
                 object,
-                hand: 0,
+                hand,
             };
-            Some(grasp_goals(world, fetch, object, &mut call_rng(env, &call)))
+            Some(grasp_goals(world, robot, object, &mut call_rng(env, &call)))
         }
     }
 }
 
 /// Whether one of `goals` has a free IK solution for the arm `body`.
-fn any_solved(world: &World, fetch: &Fetch, body: &ArmBody, goals: &[Pose]) -> bool {
-    goals.iter().any(|g| solve(world, fetch, body, g).is_some())
+fn any_solved(world: &World, body: &ArmBody, goals: &[Pose]) -> bool {
+    goals.iter().any(|g| solve(world, body, g).is_some())
 }
 
 /// The gripper's commands: open, or closed on what it holds.
 const OPEN: f32 = 1.0;
 const CLOSED: f32 = -1.0;
 
-/// The primitive's preconditions, and that the robot is a Fetch driven joint by joint with its
-/// one hand.
+/// The primitive's preconditions, and that the robot is driven through its primitive action
+/// space (joint by joint) with an arm at the hand called.
 fn precondition(env: &Env, call: &Call) -> Result<(), Failure> {
     let (Some(world), Some(robot)) = (env.world(), env.robot()) else {
         return Err(Failure::Unavailable("no episode"));
     };
-    if robot.space() != ActionSpace::Joints {
+    if robot.space() != robot.spec().primitive_space {
         return Err(Failure::Unavailable(
-            "Fetch's physical primitives drive its arm joint by joint: the `joints` action space",
+            "physical primitives drive an arm joint by joint: the robot's primitive action \
+             space (Fetch's `joints`)",
         ));
     }
-    if call.hand != 0 {
+    if robot.arm(call.hand).is_none() {
         return Err(Failure::NoHand(call.hand));
     }
     check(world, robot, call)
 }
 
-/// The episode's world and Fetch, if it drives one joint by joint.
-fn fetch(env: &Env) -> Option<(&World, &Fetch)> {
-    match (env.world(), env.robot()) {
-        (Some(world), Some(Robot::Fetch(fetch, ActionSpace::Joints))) => Some((world, fetch)),
-        _ => None,
+/// The episode's world, its robot and the arm of `hand` as it stands, if the robot is driven
+/// through its primitive action space and that hand is at the end of an arm.
+fn arm_of(env: &Env, hand: usize) -> Option<(&World, &dyn Embodiment, Arc<dyn Arm>)> {
+    let (world, robot) = (env.world()?, env.robot()?);
+    if robot.space() != robot.spec().primitive_space {
+        return None;
+    }
+    Some((world, robot.embodiment(), robot.arm(hand)?))
+}
+
+/// Whether hand `hand` holds `object`.
+fn holding(env: &Env, hand: usize, object: ObjectId) -> bool {
+    env.robot().is_some_and(|r| r.held(hand) == Some(object))
+}
+
+/// The manipulator of hands at the end of jointed arms, read through each robot's [`Arm`].
+pub(crate) struct JointedArm;
+
+/// Where an arm started a primitive, and its path so far.
+pub(crate) struct ArmReached {
+    start: ArmConfig,
+    path: ArmPath,
+}
+
+/// The gripper's command for a grip.
+fn command(grip: Grip) -> f32 {
+    match grip {
+        Grip::Open => OPEN,
+        Grip::Closed => CLOSED,
     }
 }
 
-/// The manipulator of hands at the end of jointed arms: Fetch's. (Its arm is read through
-/// Fetch's own kinematics for now: the arm's interface in `behavior-robots` that every jointed
-/// robot will implement comes with the third robot.)
-pub(crate) struct JointedArm;
-
 impl Manipulator for JointedArm {
-    fn grasp(&self, env: &mut Env, call: &Call, watcher: Option<&mut dyn Watcher>) -> Attempt<()> {
-        Ok(grasp(env, call, watcher)?.map(|_| ()))
+    type Hand = usize;
+    type Reached = ArmReached;
+    type Path = ArmPath;
+
+    fn hand(&self, env: &Env, call: &Call) -> Result<usize, Failure> {
+        precondition(env, call).map(|()| call.hand)
     }
 
-    fn place(
+    fn grasp_goals(&self, env: &Env, hand: usize, call: &Call, rng: &mut SimRng) -> Vec<Pose> {
+        arm_of(env, hand).map_or(Vec::new(), |(world, robot, _)| {
+            grasp_goals(world, robot, call.object, rng)
+        })
+    }
+
+    fn reach(
         &self,
-        env: &mut Env,
-        call: &Call,
-        relation: Relation,
-        watcher: Option<&mut dyn Watcher>,
-    ) -> Attempt<()> {
-        Ok(place(env, call, relation, watcher)?.map(|_| ()))
+        steps: &mut Stepper<'_, '_>,
+        hand: usize,
+        goals: &[Pose],
+        grip: Grip,
+        rng: &mut SimRng,
+    ) -> Attempt<ArmReached> {
+        let start = arm_now(steps.env, hand);
+        let path = attempt!(reach(steps, hand, goals, command(grip), rng));
+        Ok(Ok(ArmReached { start, path }))
     }
 
+    fn descend(
+        &self,
+        steps: &mut Stepper<'_, '_>,
+        hand: usize,
+        object: ObjectId,
+        reached: &mut ArmReached,
+    ) -> Attempt<()> {
+        descend(steps, hand, object, &mut reached.path.after)
+    }
+
+    fn close(&self, steps: &mut Stepper<'_, '_>, call: &Call) -> Result<(), RunError> {
+        close(steps, call)
+    }
+
+    /// Straight up by [`LIFT_OFF`], the gripper closed if it holds what it took.
+    fn lift_off(
+        &self,
+        steps: &mut Stepper<'_, '_>,
+        hand: usize,
+        held: bool,
+        reached: &mut ArmReached,
+    ) -> Attempt<()> {
+        let grip = command(Grip::holding(held));
+        straight_up(steps, hand, LIFT_OFF, grip, &mut reached.path.after)
+    }
+
+    fn open(&self, steps: &mut Stepper<'_, '_>, hand: usize) -> Attempt<()> {
+        open(steps, hand)
+    }
+
+    fn settle(&self, steps: &mut Stepper<'_, '_>, hand: usize) -> Attempt<()> {
+        wait(steps, hand, SETTLE_STEPS)
+    }
+
+    /// Straight up by [`LEAVE`], open.
+    fn leave(
+        &self,
+        steps: &mut Stepper<'_, '_>,
+        hand: usize,
+        reached: &mut ArmReached,
+    ) -> Attempt<()> {
+        straight_up(steps, hand, LEAVE, OPEN, &mut reached.path.after)
+    }
+
+    fn come_back(
+        &self,
+        steps: &mut Stepper<'_, '_>,
+        hand: usize,
+        grip: Grip,
+        reached: &mut ArmReached,
+    ) -> Attempt<()> {
+        come_back(
+            steps,
+            hand,
+            reached.start,
+            command(grip),
+            &mut reached.path.after,
+        )
+    }
+
+    /// Held, an arm that finds no way back carries it where it is.
+    const CARRIES_WHEN_STUCK: bool = true;
+
+    fn path(&self, reached: ArmReached) -> ArmPath {
+        reached.path
+    }
+}
+
+impl Hands for JointedArm {
     fn reaches(&self, env: &Env, object: ObjectId, placement: Option<&Call>) -> bool {
         reaches(env, object, placement)
     }
@@ -280,7 +334,11 @@ impl Manipulator for JointedArm {
     }
 
     fn tuck(&self, steps: &mut Stepper<'_, '_>) -> Attempt<()> {
-        tuck(steps)
+        let hands = steps.env.robot().map_or(0, |r| r.hands());
+        for hand in 0..hands {
+            attempt!(tuck(steps, hand));
+        }
+        Ok(Ok(()))
     }
 
     /// The gripper sets what it holds down pointing down: see [`held_below`].
@@ -288,13 +346,10 @@ impl Manipulator for JointedArm {
         &self,
         world: &World,
         robot: &Robot,
-        held: ObjectId,
+        call: &Call,
         grip: &Pose,
     ) -> Vec<Option<Pose>> {
-        let Robot::Fetch(fetch, _) = robot else {
-            return Vec::new();
-        };
-        held_below(world, fetch, held, grip)
+        held_below(world, robot.embodiment(), call.hand, call.object, grip)
             .into_iter()
             .map(Some)
             .collect()
@@ -303,11 +358,16 @@ impl Manipulator for JointedArm {
 
 /// End-effector poses in the world over the object, best first, the gripper pointing at the
 /// top of its box (near its end nearest the base, for a long one), jittered, the fingertips
-/// [`FETCH_APPROACH`] short of it: straight down, the fingers closing across the box's narrower
+/// [`ARM_APPROACH`] short of it: straight down, the fingers closing across the box's narrower
 /// side, then the other, then at random headings; then tilted by each of [`PITCHES`] from the
 /// base's side (straight down, a hamburger 0.98 m ahead had no IK solution within 0.27 m).
-fn grasp_goals(world: &World, fetch: &Fetch, object: ObjectId, rng: &mut SimRng) -> Vec<Pose> {
-    let base = fetch.base_pose(world).translation;
+fn grasp_goals(
+    world: &World,
+    robot: &dyn Embodiment,
+    object: ObjectId,
+    rng: &mut SimRng,
+) -> Vec<Pose> {
+    let base = robot.base_pose(world).translation;
     let at = grasp_point(world, object, base);
     let across = across_heading(world, object);
     let facing = (at.y - base.y).atan2(at.x - base.x);
@@ -326,7 +386,7 @@ fn grasp_goals(world: &World, fetch: &Fetch, object: ObjectId, rng: &mut SimRng)
                 at.y + uniform(rng, -GRASP_JITTER, GRASP_JITTER),
                 at.z,
             );
-            let back = rotation * Vector::X * (FETCH_APPROACH + TIP);
+            let back = rotation * Vector::X * (ARM_APPROACH + TIP);
             Pose::from_parts(target - back, rotation)
         })
         .collect()
@@ -371,11 +431,20 @@ fn across_heading(world: &World, object: ObjectId) -> f32 {
 /// for a pad over an ash can was 0.7–1 m out of reach of Fetch's IK). A candle taken lying
 /// from a carton, set down as it was held, rolled off the table; held level, the gripper
 /// sets it down standing.
-pub(crate) fn held_below(world: &World, fetch: &Fetch, target: ObjectId, grip: &Pose) -> Vec<Pose> {
-    let base = fetch.base_pose(world).translation;
+pub(crate) fn held_below(
+    world: &World,
+    robot: &dyn Embodiment,
+    hand: usize,
+    target: ObjectId,
+    grip: &Pose,
+) -> Vec<Pose> {
+    let base = robot.base_pose(world).translation;
     let at = world.aabb(target).center();
     let facing = (at.y - base.y).atan2(at.x - base.x);
-    let eef = fetch.eef_pose(world).translation;
+    let Some(gripper) = robot.hand_object(hand) else {
+        return Vec::new();
+    };
+    let eef = world.pose(gripper).translation;
     let mut held: Vec<Pose> = std::iter::once(FRAC_PI_2)
         .chain(PITCHES)
         .chain([0.0])
@@ -401,10 +470,12 @@ fn pointing(heading: f32, pitch: f32) -> Rotation {
 
 /// The arm's free configuration that puts the end effector at `goal` (in the world), by IK
 /// from where the arm is.
-fn solve(world: &World, fetch: &Fetch, body: &ArmBody, goal: &Pose) -> Option<ArmConfig> {
+fn solve(world: &World, body: &ArmBody, goal: &Pose) -> Option<ArmConfig> {
     let local = body.base.inverse() * *goal;
     let mut rng = seeded(goal_seed(&local));
-    free_ik(fetch, &local, &mut rng, |c| body.clear(world, c))
+    free_ik(body.arm.as_ref(), &local, &mut rng, |c| {
+        body.clear(world, c)
+    })
 }
 
 /// The first IK solution for `goal` (base frame) that `fits`: from where the arm is, then from
@@ -412,20 +483,16 @@ fn solve(world: &World, fetch: &Fetch, body: &ArmBody, goal: &Pose) -> Option<Ar
 /// several ways, and the one nearest where it is may pass through the table (or, carrying a
 /// sheet of plywood upright, through the torso) where another does not.
 fn free_ik(
-    fetch: &Fetch,
+    arm: &dyn Arm,
     goal: &Pose,
     rng: &mut SimRng,
     fits: impl Fn(&ArmConfig) -> bool,
 ) -> Option<ArmConfig> {
-    let now = fetch.joints();
-    let here = ArmConfig::of(&now);
-    let starts = std::iter::once(now).chain((0..IK_RESTARTS).map(|_| {
-        let c = behavior_motion::any_config(&here, rng);
-        c.joints(now.head)
-    }));
+    let here = arm.now();
+    let starts = std::iter::once(here).chain((0..IK_RESTARTS).map(|_| any_config(arm, &here, rng)));
     starts
-        .filter_map(|start| fetch.ik().solve(&start, goal).ok())
-        .map(|joints| ArmConfig::of(&joints).near(&here))
+        .filter_map(|start| arm.ik(&start, goal))
+        .map(|c| closest_turn(arm, &c, &here))
         .find(|c| fits(c))
 }
 
@@ -441,7 +508,7 @@ fn goal_seed(goal: &Pose) -> u64 {
         .fold(0u64, |h, v| h.rotate_left(9) ^ u64::from(v.to_bits()))
 }
 
-/// Fetch's arm folded over its base before it drives, as the real robot's `tuck_arm` folds
+/// An arm folded over its base before the robot drives (Fetch's, as the real robot's `tuck_arm` folds
 /// it (reference: robots §1.6, iGibson's tucked joints), the torso where it is or higher:
 /// unfolded, the BEHAVIOR start pose holds the gripper 0.55 m ahead at a counter's height, and
 /// every stand found with it left a hamburger on a counter 0.9 m from the base. Holding
@@ -449,42 +516,44 @@ fn goal_seed(goal: &Pose) -> u64 {
 /// the base ([`CARRY`]) the way that keeps the footprint smallest: left where it took the
 /// thing, low and ahead, the arm made the base's footprint too big for most ways through the
 /// home. Planned with what the gripper holds; where no plan gets to any of these, the arm
-/// stays.
-pub(crate) fn tuck(steps: &mut Stepper<'_, '_>) -> Attempt<()> {
-    let Some((_, arm)) = fetch(steps.env) else {
+/// stays. Nothing to do for a hand at the end of no arm.
+pub(crate) fn tuck(steps: &mut Stepper<'_, '_>, hand: usize) -> Attempt<()> {
+    let Some((_, robot, arm)) = arm_of(steps.env, hand) else {
         return Ok(Ok(()));
     };
-    let now = ArmConfig::of(&arm.joints());
-    let mut tucked = now;
-    tucked.0[1..].copy_from_slice(&TUCKED);
-    if now
-        .0
-        .iter()
-        .zip(tucked.0)
-        .all(|(a, b)| (a - b).abs() <= ON_PATH)
-    {
+    let now = arm.now();
+    let tucked = arm.tucked(&now);
+    if close_to(&now, &tucked) {
         return Ok(Ok(()));
     }
-    let gripper = if arm.holding().is_some() {
+    let gripper = if robot.held(hand).is_some() {
         CLOSED
     } else {
         OPEN
     };
-    attempt!(unstick(steps, gripper));
-    let Some((world, fetch)) = fetch(steps.env) else {
+    attempt!(unstick(steps, hand, gripper));
+    let Some((world, robot, arm)) = arm_of(steps.env, hand) else {
         return Ok(Ok(()));
     };
-    let body = ArmBody::of(world, fetch);
+    let body = ArmBody::of(world, robot, arm);
     let mut rng = seeded(u64::from(steps.env.steps()));
-    let goals = carry_goals(world, fetch, &body, tucked, &mut rng);
+    let goals = carry_goals(world, &body, tucked, &mut rng);
     let planned = goals
         .into_iter()
         .take(CARRY_TRIES)
-        .find_map(|goal| plan_arm_to(world, fetch, body.clone(), goal, &mut rng).ok());
+        .find_map(|goal| plan_arm_to(world, body.clone(), goal, &mut rng).ok());
     let Some(planned) = planned else {
         return Ok(Ok(()));
     };
-    follow(steps, &planned, gripper, Check::Free, &mut Vec::new())
+    follow(steps, hand, &planned, gripper, Check::Free, &mut Vec::new())
+}
+
+/// Whether every joint of `a` is within [`ON_PATH`] of `b`'s.
+fn close_to(a: &ArmConfig, b: &ArmConfig) -> bool {
+    a.values()
+        .iter()
+        .zip(b.values())
+        .all(|(a, b)| (a - b).abs() <= ON_PATH)
 }
 
 /// Where [`tuck`] may take the arm, each free, the smallest footprint first
@@ -494,20 +563,12 @@ pub(crate) fn tuck(steps: &mut Stepper<'_, '_>) -> Attempt<()> {
 /// ([`free_ik`]).
 fn carry_goals(
     world: &World,
-    fetch: &Fetch,
     body: &ArmBody,
     tucked: ArmConfig,
     rng: &mut SimRng,
 ) -> Vec<ArmConfig> {
-    let top = FetchJoint::TorsoLift
-        .info()
-        .limits
-        .map_or(tucked.0[0], |l| l[1]);
-    let folded = (0..LIFTS).map(|k| {
-        let mut c = tucked;
-        c.0[0] = (c.0[0] + LIFT * k as f32).min(top);
-        c
-    });
+    let arm = body.arm.as_ref();
+    let folded = (0..LIFTS).map(|k| lifted(arm, &tucked, LIFT * k as f32, true));
     let rolled = |heading: f32, pitch: f32, rolls: &[f32]| -> Vec<Rotation> {
         rolls
             .iter()
@@ -539,7 +600,7 @@ fn carry_goals(
     let fits = |c: &ArmConfig| body.clear(world, c);
     let carried: Vec<ArmConfig> = ahead
         .chain(beside)
-        .filter_map(|goal| free_ik(fetch, &goal, rng, fits))
+        .filter_map(|goal| free_ik(arm, &goal, rng, fits))
         .collect();
     let mut goals: Vec<(f32, ArmConfig)> = Vec::new();
     for c in folded.filter(|c| fits(c)).chain(carried) {
@@ -604,35 +665,48 @@ fn beside_base(body: &ArmBody, [x, z]: [f32; 2], way: Rotation, side: f32) -> Op
 /// Carrying goals planned to before the arm stays as it is.
 const CARRY_TRIES: usize = 3;
 
-/// iGibson's tucked arm joints (iGibson 2.0.3's `robots/fetch_gripper_robot.py`).
-const TUCKED: [f32; 7] = [1.1708, 1.4708, -0.4, 1.6708, 0.0, FRAC_PI_2, 0.0];
+/// `c` with the torso lifted by `by`, m ([`Arm::lift_joint`]), within its upper limit if
+/// `within`; `c` for an arm without a lift.
+fn lifted(arm: &dyn Arm, c: &ArmConfig, by: f32, within: bool) -> ArmConfig {
+    let mut out = *c;
+    if let Some(j) = arm.lift_joint() {
+        let top = arm.limits()[j].map_or(c[j], |l| l[1]);
+        out[j] = if within {
+            (c[j] + by).min(top)
+        } else {
+            c[j] + by
+        };
+    }
+    out
+}
 
 /// The arm taken to the first of `goals` (in the world) with a free IK solution that a plan in
 /// its joint space gets to, the gripper held at `gripper`, every step of the way checked free
 /// ([`follow`]). Stopped on the way, the arm is brought back.
 fn reach(
     steps: &mut Stepper<'_, '_>,
+    hand: usize,
     goals: &[Pose],
     gripper: f32,
     rng: &mut SimRng,
 ) -> Attempt<ArmPath> {
-    attempt!(unstick(steps, gripper));
-    let start = arm_now(steps.env);
+    attempt!(unstick(steps, hand, gripper));
+    let start = arm_now(steps.env, hand);
     let mut last = Failure::NoHandPose;
     let mut tried = 0;
     for goal in goals {
-        let Some((world, fetch)) = fetch(steps.env) else {
+        let Some((world, robot, arm)) = arm_of(steps.env, hand) else {
             return Ok(Err(Failure::Unavailable("no episode")));
         };
-        let body = ArmBody::of(world, fetch);
-        let Some(config) = solve(world, fetch, &body, goal) else {
+        let body = ArmBody::of(world, robot, arm);
+        let Some(config) = solve(world, &body, goal) else {
             continue;
         };
         if tried == GOAL_TRIES {
             break;
         }
         tried += 1;
-        let planned = match plan_arm_to(world, fetch, body, config, rng) {
+        let planned = match plan_arm_to(world, body, config, rng) {
             Ok(planned) => planned,
             Err(failure) => {
                 last = failure;
@@ -643,7 +717,14 @@ fn reach(
             planned: vec![start, config],
             ..ArmPath::default()
         };
-        match follow(steps, &planned, gripper, Check::Free, &mut path.executed)? {
+        match follow(
+            steps,
+            hand,
+            &planned,
+            gripper,
+            Check::Free,
+            &mut path.executed,
+        )? {
             Ok(()) => return Ok(Ok(path)),
             // Refused before a step: another goal.
             Err(Failure::HandBlocked) if path.executed.is_empty() => {
@@ -651,7 +732,7 @@ fn reach(
             }
             Err(failure) => {
                 // Best effort: an arm left out would be in the base's way.
-                let _ = come_back(steps, start, gripper, &mut path.after)?;
+                let _ = come_back(steps, hand, start, gripper, &mut path.after)?;
                 return Ok(Err(failure));
             }
         }
@@ -673,22 +754,29 @@ const UNSTICK: [[f32; 3]; 4] = [
 /// [`UNSTICK`] that ends clear: the planner starts only from a free configuration, and every
 /// later grasp of a can by a window failed there. Where none ends clear, the arm stays and
 /// the planner says why.
-fn unstick(steps: &mut Stepper<'_, '_>, gripper: f32) -> Attempt<()> {
-    let Some((world, fetch)) = fetch(steps.env) else {
+fn unstick(steps: &mut Stepper<'_, '_>, hand: usize, gripper: f32) -> Attempt<()> {
+    let Some((world, robot, arm)) = arm_of(steps.env, hand) else {
         return Ok(Ok(()));
     };
-    let body = ArmBody::of(world, fetch);
-    if body.clear(world, &arm_now(steps.env)) {
+    let body = ArmBody::of(world, robot, arm);
+    if body.clear(world, &body.arm.now()) {
         return Ok(Ok(()));
     }
     let out = UNSTICK.into_iter().find_map(|offset| {
-        let path = line(fetch, Vector::from_array(offset), LINE_STEP)?;
+        let path = line(body.arm.as_ref(), Vector::from_array(offset), LINE_STEP)?;
         path.last()
             .is_some_and(|c| body.clear(world, c))
             .then_some(path)
     });
     match out {
-        Some(path) => follow(steps, &path, gripper, Check::Touching, &mut Vec::new()),
+        Some(path) => follow(
+            steps,
+            hand,
+            &path,
+            gripper,
+            Check::Touching,
+            &mut Vec::new(),
+        ),
         None => Ok(Ok(())),
     }
 }
@@ -699,13 +787,12 @@ const GOAL_TRIES: usize = 4;
 /// A planned arm path, densified, from where the arm is to `goal`.
 fn plan_arm_to(
     world: &World,
-    fetch: &Fetch,
     body: ArmBody,
     goal: ArmConfig,
     rng: &mut SimRng,
 ) -> Result<Vec<ArmConfig>, Failure> {
-    let start = ArmConfig::of(&fetch.joints());
-    let goal = goal.near(&start);
+    let start = body.arm.now();
+    let goal = closest_turn(body.arm.as_ref(), &goal, &start);
     let space = ArmSpace::new(world, body, &start);
     let params = PlanParams {
         seed: rng_seed(rng),
@@ -717,24 +804,24 @@ fn plan_arm_to(
     Ok(dense)
 }
 
-/// The arm's configuration now.
-fn arm_now(env: &Env) -> ArmConfig {
-    fetch(env).map_or(ArmConfig([0.0; 8]), |(_, f)| ArmConfig::of(&f.joints()))
+/// The configuration of hand `hand`'s arm now (none without one).
+fn arm_now(env: &Env, hand: usize) -> ArmConfig {
+    arm_of(env, hand).map_or(ArmConfig::default(), |(_, _, a)| a.now())
 }
 
 /// The joint action that moves the arm from `now` toward `target` as far as one step allows,
 /// the gripper at `gripper`; `None` once within [`ON_PATH`] of it.
-fn joint_action(now: &ArmConfig, target: &ArmConfig, gripper: f32) -> Option<FetchJointAction> {
-    let delta: [f32; 8] = std::array::from_fn(|k| target.0[k] - now.0[k]);
-    if delta.iter().all(|d| d.abs() <= ON_PATH) {
+fn joint_action(
+    arm: &dyn Arm,
+    now: &ArmConfig,
+    target: &ArmConfig,
+    gripper: f32,
+) -> Option<Vec<f32>> {
+    if close_to(target, now) {
         return None;
     }
-    let mut values = [0.0; FETCH_JOINT_ACTION_DIM];
-    for (k, d) in delta.into_iter().enumerate() {
-        values[FetchJointAction::JOINTS.start + k] = FetchJointAction::value_for(k, d);
-    }
-    values[FetchJointAction::GRIPPER] = gripper;
-    FetchJointAction::new(&values).ok()
+    let delta = ArmConfig::from_fn(now.len(), |k| target[k] - now[k]);
+    arm.joint_action(&delta, gripper)
 }
 
 /// The most steps taken toward one configuration of a path: a gap within a joint's range of a
@@ -742,26 +829,22 @@ fn joint_action(now: &ArmConfig, target: &ArmConfig, gripper: f32) -> Option<Fet
 const STEPS_PER_CONFIG: usize = 64;
 
 /// The actions that take the arm through `path` from where it is, and the joints after each, as
-/// Fetch's joint update ([`Fetch::joints_after`]) will move them; `None` where it does not get
+/// the robot's joint update ([`Arm::after`]) will move them; `None` where it does not get
 /// there (a target beyond a joint's limit).
-fn predict(
-    fetch: &Fetch,
-    path: &[ArmConfig],
-    gripper: f32,
-) -> Option<Vec<(FetchJointAction, ArmConfig)>> {
-    let mut joints = fetch.joints();
+fn predict(arm: &dyn Arm, path: &[ArmConfig], gripper: f32) -> Option<Vec<(Vec<f32>, ArmConfig)>> {
+    let mut joints = arm.now();
     let mut out = Vec::new();
     for target in path {
         let mut there = false;
         for _ in 0..STEPS_PER_CONFIG {
-            let Some(action) = joint_action(&ArmConfig::of(&joints), target, gripper) else {
+            let Some(action) = joint_action(arm, &joints, target, gripper) else {
                 there = true;
                 break;
             };
-            joints = fetch.joints_after(&joints, &FetchCommand::Joints(action));
-            out.push((action, ArmConfig::of(&joints)));
+            joints = arm.after(&joints, &action);
+            out.push((action, joints));
         }
-        if !there && joint_action(&ArmConfig::of(&joints), target, gripper).is_some() {
+        if !there && joint_action(arm, &joints, target, gripper).is_some() {
             return None;
         }
     }
@@ -783,41 +866,55 @@ enum Check {
 /// prediction was stopped by something fixed: [`Failure::HandBlocked`].
 fn follow(
     steps: &mut Stepper<'_, '_>,
+    hand: usize,
     path: &[ArmConfig],
     gripper: f32,
     check: Check,
     executed: &mut Vec<ArmConfig>,
 ) -> Attempt<()> {
-    follow_until(steps, path, gripper, check, executed, |_| false)
+    let motion = Motion {
+        hand,
+        gripper,
+        check,
+    };
+    follow_until(steps, motion, path, executed, |_| false)
+}
+
+/// How [`follow_until`] moves an arm: which hand's, the gripper held at what, each step
+/// checked how.
+#[derive(Clone, Copy)]
+struct Motion {
+    hand: usize,
+    gripper: f32,
+    check: Check,
 }
 
 /// [`follow`], stopping before a step once `done` holds.
 fn follow_until(
     steps: &mut Stepper<'_, '_>,
+    motion: Motion,
     path: &[ArmConfig],
-    gripper: f32,
-    check: Check,
     executed: &mut Vec<ArmConfig>,
     done: impl Fn(&Env) -> bool,
 ) -> Attempt<()> {
-    let Some((world, fetch)) = fetch(steps.env) else {
+    let Some((world, robot, arm)) = arm_of(steps.env, motion.hand) else {
         return Ok(Err(Failure::Unavailable("no episode")));
     };
-    let Some(predicted) = predict(fetch, path, gripper) else {
+    let Some(predicted) = predict(arm.as_ref(), path, motion.gripper) else {
         return Ok(Err(Failure::NoHandPose));
     };
-    let body = ArmBody::of(world, fetch);
-    if check == Check::Free && !predicted.iter().all(|(_, c)| body.clear(world, c)) {
+    let body = ArmBody::of(world, robot, arm.clone());
+    if motion.check == Check::Free && !predicted.iter().all(|(_, c)| body.clear(world, c)) {
         return Ok(Err(Failure::HandBlocked));
     }
     for (action, expected) in &predicted {
         if done(steps.env) {
             break;
         }
-        attempt!(steps.act(action.values()));
-        let now = arm_now(steps.env);
+        attempt!(steps.act(action));
+        let now = arm_now(steps.env, motion.hand);
         executed.push(now);
-        if joint_action(&now, expected, gripper).is_some() {
+        if joint_action(arm.as_ref(), &now, expected, motion.gripper).is_some() {
             return Ok(Err(Failure::HandBlocked));
         }
     }
@@ -828,24 +925,24 @@ fn follow_until(
 /// frame, m) in a straight line, `step` apart, each an IK solution from the last, as far as
 /// the arm gets (a torso at the bottom of its travel stops a descent to the floor); `None`
 /// where not one step is reached.
-fn line(fetch: &Fetch, offset: Vector, step: f32) -> Option<Vec<ArmConfig>> {
-    let mut joints = fetch.joints();
-    let from = joints.eef();
+fn line(arm: &dyn Arm, offset: Vector, step: f32) -> Option<Vec<ArmConfig>> {
+    let mut a = arm.now();
+    let from = arm.eef(&a);
     let n = (offset.length() / step).ceil().max(1.0) as usize;
     let mut out = Vec::with_capacity(n);
     for i in 1..=n {
         let mut target = from;
         target.translation += offset * (i as f32 / n as f32);
-        let Ok(next) = fetch.ik().solve_near(&joints, &target) else {
+        let Some(next) = arm.ik_near(&a, &target) else {
             break;
         };
-        let a = ArmConfig::of(&joints);
-        let b = ArmConfig::of(&next).near(&a);
-        if a.0.iter().zip(b.0).any(|(x, y)| (x - y).abs() > LINE_JUMP) {
+        let b = closest_turn(arm, &next, &a);
+        let jumps = a.values().iter().zip(b.values());
+        if jumps.into_iter().any(|(x, y)| (x - y).abs() > LINE_JUMP) {
             break;
         }
         out.push(b);
-        joints = b.joints(joints.head);
+        a = b;
     }
     (!out.is_empty()).then_some(out)
 }
@@ -853,26 +950,34 @@ fn line(fetch: &Fetch, offset: Vector, step: f32) -> Option<Vec<ArmConfig>> {
 /// The gripper straight up by `height`, m, not checked: what it takes still touches the table.
 fn straight_up(
     steps: &mut Stepper<'_, '_>,
+    hand: usize,
     height: f32,
     gripper: f32,
     executed: &mut Vec<ArmConfig>,
 ) -> Attempt<()> {
-    let path = fetch(steps.env).and_then(|(_, f)| line(f, Vector::Z * height, LINE_STEP));
+    let path = arm_of(steps.env, hand)
+        .and_then(|(_, _, a)| line(a.as_ref(), Vector::Z * height, LINE_STEP));
     let Some(path) = path else {
         return Ok(Err(Failure::NoHandPose));
     };
-    follow(steps, &path, gripper, Check::Touching, executed)
+    follow(steps, hand, &path, gripper, Check::Touching, executed)
 }
 
 /// Still steps with the gripper at `gripper` (a still Fetch action closes it).
 fn hold(
     steps: &mut Stepper<'_, '_>,
+    hand: usize,
     n: u32,
     gripper: f32,
     mut done: impl FnMut(&Env) -> bool,
 ) -> Attempt<()> {
-    let mut action = [0.0; FETCH_JOINT_ACTION_DIM];
-    action[FetchJointAction::GRIPPER] = gripper;
+    let still = arm_of(steps.env, hand).and_then(|(_, _, a)| {
+        let none = ArmConfig::from_fn(a.now().len(), |_| 0.0);
+        a.joint_action(&none, gripper)
+    });
+    let Some(action) = still else {
+        return Ok(Err(Failure::Unavailable("no episode")));
+    };
     for _ in 0..n {
         if done(steps.env) {
             break;
@@ -882,26 +987,32 @@ fn hold(
     Ok(Ok(()))
 }
 
-fn wait(steps: &mut Stepper<'_, '_>, n: u32) -> Attempt<()> {
-    hold(steps, n, OPEN, |_| false)
+fn wait(steps: &mut Stepper<'_, '_>, hand: usize, n: u32) -> Attempt<()> {
+    hold(steps, hand, n, OPEN, |_| false)
 }
 
 /// On toward the object, the way the gripper points, until the palm or a finger touches it.
 fn descend(
     steps: &mut Stepper<'_, '_>,
+    hand: usize,
     object: ObjectId,
     executed: &mut Vec<ArmConfig>,
 ) -> Attempt<()> {
-    let path = fetch(steps.env).and_then(|(_, f)| {
-        let ahead = f.joints().eef().rotation * Vector::X;
-        line(f, ahead * FETCH_DESCENT, DESCENT_STEP)
+    let path = arm_of(steps.env, hand).and_then(|(_, _, a)| {
+        let ahead = a.eef(&a.now()).rotation * Vector::X;
+        line(a.as_ref(), ahead * ARM_DESCENT, DESCENT_STEP)
     });
     // Not a step further: the gripper closes where it is.
     let Some(path) = path else {
         return Ok(Ok(()));
     };
-    let touching = |env: &Env| touches(env, object);
-    match follow_until(steps, &path, OPEN, Check::Touching, executed, touching)? {
+    let touching = |env: &Env| touches(env, hand, object);
+    let motion = Motion {
+        hand,
+        gripper: OPEN,
+        check: Check::Touching,
+    };
+    match follow_until(steps, motion, &path, executed, touching)? {
         // Stopped by what it is to take, or by what that lies on: the gripper closes there.
         Err(Failure::HandBlocked) => Ok(Ok(())),
         other => Ok(other),
@@ -911,20 +1022,18 @@ fn descend(
 /// Closes the gripper until it holds the object; touching it and not holding it once closed,
 /// forces the grasp ([`force_grasp`]).
 fn close(steps: &mut Stepper<'_, '_>, call: &Call) -> Result<(), RunError> {
-    let holds = |env: &Env| fetch(env).is_some_and(|(_, f)| f.is_holding(call.object));
-    if hold(steps, CLOSE_STEPS, CLOSED, holds)?.is_err() || holds(steps.env) {
+    let holds = |env: &Env| holding(env, call.hand, call.object);
+    if hold(steps, call.hand, CLOSE_STEPS, CLOSED, holds)?.is_err() || holds(steps.env) {
         return Ok(());
     }
     force_grasp(steps, call)
 }
 
 /// Opens the gripper until it holds nothing and the fingers are apart.
-fn open(steps: &mut Stepper<'_, '_>) -> Attempt<()> {
-    hold(steps, RELEASE_STEPS, OPEN, |env| {
-        fetch(env).is_none_or(|(world, f)| {
-            let [a, b] = f.fingers(world);
-            f.holding().is_none() && a.min(b) >= 0.9 * behavior_robots::FINGER_OPEN
-        })
+fn open(steps: &mut Stepper<'_, '_>, hand: usize) -> Attempt<()> {
+    hold(steps, hand, RELEASE_STEPS, OPEN, |env| {
+        arm_of(env, hand)
+            .is_none_or(|(world, robot, a)| robot.held(hand).is_none() && a.fingers_open(world))
     })
 }
 
@@ -932,39 +1041,36 @@ fn open(steps: &mut Stepper<'_, '_>) -> Attempt<()> {
 /// torso higher.
 fn come_back(
     steps: &mut Stepper<'_, '_>,
+    hand: usize,
     start: ArmConfig,
     gripper: f32,
     executed: &mut Vec<ArmConfig>,
 ) -> Attempt<()> {
-    attempt!(unstick(steps, gripper));
-    let planned = match fetch(steps.env) {
-        Some((world, fetch)) => {
-            let body = ArmBody::of(world, fetch);
+    attempt!(unstick(steps, hand, gripper));
+    let planned = match arm_of(steps.env, hand) {
+        Some((world, robot, arm)) => {
+            let body = ArmBody::of(world, robot, arm);
             let mut rng = seeded(u64::from(steps.env.steps()));
             let goal = (0..LIFTS)
-                .map(|k| {
-                    let mut c = start;
-                    c.0[0] += LIFT * k as f32;
-                    c
-                })
+                .map(|k| lifted(body.arm.as_ref(), &start, LIFT * k as f32, false))
                 .find(|c| body.clear(world, c));
             match goal {
-                Some(goal) => plan_arm_to(world, fetch, body, goal, &mut rng),
+                Some(goal) => plan_arm_to(world, body, goal, &mut rng),
                 None => Err(Failure::NoHandPose),
             }
         }
         None => Err(Failure::Unavailable("no episode")),
     };
     match planned {
-        Ok(planned) => follow(steps, &planned, gripper, Check::Free, executed),
+        Ok(planned) => follow(steps, hand, &planned, gripper, Check::Free, executed),
         Err(failure) => Ok(Err(failure)),
     }
 }
 
 /// Whether the gripper's palm or a finger touches the object.
-fn touches(env: &Env, object: ObjectId) -> bool {
-    fetch(env).is_some_and(|(world, fetch)| {
-        fetch.parts().gripper_bodies().into_iter().any(|part| {
+fn touches(env: &Env, hand: usize, object: ObjectId) -> bool {
+    arm_of(env, hand).is_some_and(|(world, _, arm)| {
+        arm.gripper_bodies().into_iter().any(|part| {
             world
                 .core()
                 .contacts(part)
@@ -978,6 +1084,7 @@ fn touches(env: &Env, object: ObjectId) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use behavior_robots::Fetch;
     use behavior_sim::{ObjectSpec, Part, Primitive};
 
     /// A candle 13.6 cm long and 4 cm across lying on its side, its axis turned `yaw` about
@@ -1023,7 +1130,7 @@ mod tests {
         // gripper's z, the gripper pointing down.
         let down = Pose::from_rotation(pointing(0.4, FRAC_PI_2));
         let grip = down.inverse() * world.pose(candle);
-        let poses = held_below(&world, &fetch, candle, &grip);
+        let poses = held_below(&world, &fetch, 0, candle, &grip);
         let upright = |pose: &Pose| (pose.rotation * Vector::Z).z.abs() >= UPRIGHT.cos();
         // Straight down, three tilts and level: only level stands it up, and it comes first.
         assert_eq!(poses.len(), 5);
@@ -1031,7 +1138,7 @@ mod tests {
         assert!(poses[1..].iter().all(|p| !upright(p)));
         // Held upright (a can taken from above), straight down stays first.
         let standing = down.inverse() * Pose::from_translation(Vector::new(1.0, 1.0, 0.1));
-        let poses = held_below(&world, &fetch, candle, &standing);
+        let poses = held_below(&world, &fetch, 0, candle, &standing);
         // The candle's box centre lies at (1, 1) from the base: the gripper faces π/4.
         let facing = std::f32::consts::FRAC_PI_4;
         let eef = fetch.eef_pose(&world).translation;

@@ -9,8 +9,10 @@
 //!   navigation ([`drive_to`]) and grasps and placements ([`grasp`], [`place`]) are planned
 //!   and executed by the robot's own actions with physics; grasps and placements, and whether
 //!   a hand [`reaches`], through the robot's manipulator (`manipulation.rs`): hands posed
-//!   directly (`posed_hands.rs`, the BehaviorRobot's) or on a jointed arm (`jointed_arm.rs`,
-//!   Fetch's).
+//!   directly (`posed_hands.rs`, read through the robot's [`behavior_robots::PosedHand`]: the
+//!   BehaviorRobot's) or on a jointed arm (`jointed_arm.rs`, read through its
+//!   [`behavior_robots::Arm`]: Fetch's). Neither names a robot: a new robot implements one of
+//!   the two interfaces.
 //! - **The action space** ([`PrimitiveSpace`]): the original's `Discrete(n × K)` with a mask.
 //! - **The task planner** ([`Solver`]): goal options, the next literal, the primitives that make
 //!   it true, re-planning from the facts after each.
@@ -47,8 +49,7 @@ mod task;
 
 pub use action_space::{PrimitiveSet, PrimitiveSpace};
 pub use execute::{ARM_REACH, Mode, Outcome, RecordedCall, RunError, Watcher, replay_edit, run};
-pub use jointed_arm::{ArmPath, FETCH_APPROACH, FETCH_DESCENT};
-pub use jointed_arm::{grasp as arm_grasp, place as arm_place};
+pub use jointed_arm::{ARM_APPROACH, ARM_DESCENT};
 pub use manipulation::{
     CLOSE_STEPS, FORCED_GRASP, GRASP_INSET, GRASP_JITTER, PLACE_HEIGHT, PLACE_TRIES, RELEASE_STEPS,
     SETTLE_STEPS, grasp, place, reaches,

@@ -6,8 +6,8 @@
 //! on an object a hand goes, and the poses above the places the world's sampler finds for what
 //! a hand holds.
 
-use crate::execute::Watcher;
-use crate::physical::{Attempt, Stepper, call_rng};
+use crate::execute::{RunError, Watcher};
+use crate::physical::{Attempt, Stepper, attempt, call_rng};
 use crate::primitive::{Call, Failure, Primitive};
 use crate::symbolic::put;
 use crate::{jointed_arm, posed_hands};
@@ -22,23 +22,25 @@ use std::f32::consts::PI;
 /// A test of a place to stand: whether a hand reaches what it must from a base there.
 pub(crate) type StandTest<'e> = Box<dyn Fn(&BaseConfig) -> bool + 'e>;
 
-/// How physical primitives move a robot's hands: one implementation per [`HandMotion`], for
-/// every robot whose hands move that way.
-pub(crate) trait Manipulator: Sync {
-    /// GRASP with physics: hand `call.hand` brought over `call.object`, closed until it holds,
-    /// and brought back with it.
-    fn grasp(&self, env: &mut Env, call: &Call, watcher: Option<&mut dyn Watcher>) -> Attempt<()>;
+/// What a gripper is told as it moves: open, or closed on what it holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Grip {
+    /// Open (a gripper) or let go (a trigger).
+    Open,
+    /// Closed on what it holds.
+    Closed,
+}
 
-    /// PLACE_* with physics: what hand `call.hand` holds brought above a place the world's
-    /// sampler finds for it by `relation` to `call.object`, let go, and the hand brought back.
-    fn place(
-        &self,
-        env: &mut Env,
-        call: &Call,
-        relation: Relation,
-        watcher: Option<&mut dyn Watcher>,
-    ) -> Attempt<()>;
+impl Grip {
+    /// Closed if the hand holds something, else open.
+    pub(crate) fn holding(held: bool) -> Grip {
+        if held { Grip::Closed } else { Grip::Open }
+    }
+}
 
+/// What a planner asks of a robot's hands besides grasping and placing: whether they reach,
+/// where to stand for them, drawing them in, how what they hold is set down.
+pub(crate) trait Hands: Sync {
     /// Whether, from where the base stands, a hand reaches `object` for a grasp — or, holding
     /// something and given a `placement` (a PLACE_* call), a place for it; true where there is
     /// nothing to test (the primitive then says why it cannot).
@@ -52,19 +54,202 @@ pub(crate) trait Manipulator: Sync {
     /// Draws the hands (and what they hold) in before the base drives.
     fn tuck(&self, steps: &mut Stepper<'_, '_>) -> Attempt<()>;
 
-    /// The ways what a hand holds (`held`, held at `grip` in the hand's frame) is turned before
-    /// places are sampled for it: `None` as it is held, or its pose in the world.
+    /// The ways what hand `call.hand` holds (held at `grip` in the hand's frame) is turned
+    /// before places by `call.object` are sampled for it: `None` as it is held, or its pose in
+    /// the world.
     fn set_down_turns(
         &self,
         world: &World,
         robot: &Robot,
-        held: ObjectId,
+        call: &Call,
         grip: &Pose,
     ) -> Vec<Option<Pose>>;
 }
 
+/// How physical primitives move a robot's hands: one implementation per [`HandMotion`], for
+/// every robot whose hands move that way. Each supplies the steps of a grasp and of a placement
+/// (reach, descend, close, lift off, open, settle, leave, come back);
+/// [`grasp_with`] and [`place_with`] put the steps together, the same for every manipulator.
+pub(crate) trait Manipulator: Hands {
+    /// Which of the robot's hands a call moves, as the manipulator names it.
+    type Hand: Copy;
+    /// What [`Manipulator::reach`] leaves for the steps after it: where the hand started and
+    /// the path so far.
+    type Reached;
+    /// The paths a grasp or placement planned and executed, for measuring.
+    type Path;
+
+    /// The primitive's preconditions, and the hand `call` moves.
+    fn hand(&self, env: &Env, call: &Call) -> Result<Self::Hand, Failure>;
+
+    /// Poses of the hand (in the world) over `call.object` for a grasp, best first.
+    fn grasp_goals(&self, env: &Env, hand: Self::Hand, call: &Call, rng: &mut SimRng) -> Vec<Pose>;
+
+    /// The hand brought to the first of `goals` it can reach, its grip held as `grip`; on
+    /// failure, brought back.
+    fn reach(
+        &self,
+        steps: &mut Stepper<'_, '_>,
+        hand: Self::Hand,
+        goals: &[Pose],
+        grip: Grip,
+        rng: &mut SimRng,
+    ) -> Attempt<Self::Reached>;
+
+    /// On from the reached pose toward `object` until the hand touches it.
+    fn descend(
+        &self,
+        steps: &mut Stepper<'_, '_>,
+        hand: Self::Hand,
+        object: ObjectId,
+        reached: &mut Self::Reached,
+    ) -> Attempt<()>;
+
+    /// Closes the hand until it holds `call.object`, forcing the grasp where it touches it.
+    fn close(&self, steps: &mut Stepper<'_, '_>, call: &Call) -> Result<(), RunError>;
+
+    /// The hand, holding what it took (`held`) or not, drawn up off where it closed.
+    fn lift_off(
+        &self,
+        steps: &mut Stepper<'_, '_>,
+        hand: Self::Hand,
+        held: bool,
+        reached: &mut Self::Reached,
+    ) -> Attempt<()>;
+
+    /// Opens the hand until it holds nothing.
+    fn open(&self, steps: &mut Stepper<'_, '_>, hand: Self::Hand) -> Attempt<()>;
+
+    /// Still steps for what was let go to fall and settle ([`SETTLE_STEPS`]).
+    fn settle(&self, steps: &mut Stepper<'_, '_>, hand: Self::Hand) -> Attempt<()>;
+
+    /// The open hand drawn away from what it let go.
+    fn leave(
+        &self,
+        steps: &mut Stepper<'_, '_>,
+        hand: Self::Hand,
+        reached: &mut Self::Reached,
+    ) -> Attempt<()>;
+
+    /// The hand brought back where it started, with what it now carries, its grip `grip`.
+    fn come_back(
+        &self,
+        steps: &mut Stepper<'_, '_>,
+        hand: Self::Hand,
+        grip: Grip,
+        reached: &mut Self::Reached,
+    ) -> Attempt<()>;
+
+    /// Whether a grasp whose hand holds the object counts though the hand found no way back
+    /// (an arm carries it where it is, and the next drive's tuck finds a way).
+    const CARRIES_WHEN_STUCK: bool;
+
+    /// The paths of a grasp or placement once done.
+    fn path(&self, reached: Self::Reached) -> Self::Path;
+}
+
+/// GRASP with physics, the same for every manipulator: the hand brought over `call.object`,
+/// on until it touches it, closed until it holds, lifted off and brought back with it. The
+/// paths it planned and executed come back.
+pub(crate) fn grasp_with<M: Manipulator>(
+    hands: &M,
+    env: &mut Env,
+    call: &Call,
+    watcher: Option<&mut dyn Watcher>,
+) -> Attempt<M::Path> {
+    let hand = match hands.hand(env, call) {
+        Ok(hand) => hand,
+        Err(failure) => return Ok(Err(failure)),
+    };
+    let mut rng = call_rng(env, call);
+    let goals = hands.grasp_goals(env, hand, call, &mut rng);
+    let mut steps = Stepper { env, watcher };
+    let mut reached = attempt!(hands.reach(&mut steps, hand, &goals, Grip::Open, &mut rng));
+    attempt!(hands.descend(&mut steps, hand, call.object, &mut reached));
+    hands.close(&mut steps, call)?;
+    let held = holds(steps.env, call);
+    attempt!(hands.lift_off(&mut steps, hand, held, &mut reached));
+    let back = hands.come_back(&mut steps, hand, Grip::holding(held), &mut reached)?;
+    let holds = holds(steps.env, call);
+    match back {
+        Err(failure) if !holds || !M::CARRIES_WHEN_STUCK => Ok(Err(failure)),
+        _ if !holds => Ok(Err(Failure::Missed)),
+        _ => Ok(Ok(hands.path(reached))),
+    }
+}
+
+/// PLACE_* with physics, the same for every manipulator: what hand `call.hand` holds brought
+/// above a place the world's sampler finds for it by `relation` to `call.object`, let go,
+/// left to settle, and the hand drawn away and brought back.
+pub(crate) fn place_with<M: Manipulator>(
+    hands: &M,
+    env: &mut Env,
+    call: &Call,
+    relation: Relation,
+    watcher: Option<&mut dyn Watcher>,
+) -> Attempt<M::Path> {
+    let hand = match hands.hand(env, call) {
+        Ok(hand) => hand,
+        Err(failure) => return Ok(Err(failure)),
+    };
+    let mut rng = call_rng(env, call);
+    let goals = match (env.world(), env.robot()) {
+        (Some(world), Some(robot)) => placement_goals(world, robot, call, relation, &mut rng),
+        _ => Err(Failure::Unavailable("no episode")),
+    };
+    let goals = match goals {
+        Ok(goals) => goals,
+        Err(failure) => return Ok(Err(failure)),
+    };
+    let mut steps = Stepper { env, watcher };
+    let mut reached = attempt!(hands.reach(&mut steps, hand, &goals, Grip::Closed, &mut rng));
+    attempt!(hands.open(&mut steps, hand));
+    attempt!(hands.settle(&mut steps, hand));
+    attempt!(hands.leave(&mut steps, hand, &mut reached));
+    attempt!(hands.come_back(&mut steps, hand, Grip::Open, &mut reached));
+    Ok(Ok(hands.path(reached)))
+}
+
+/// Whether hand `call.hand` holds `call.object`.
+fn holds(env: &Env, call: &Call) -> bool {
+    env.robot()
+        .is_some_and(|r| r.held(call.hand) == Some(call.object))
+}
+
+/// A [`Manipulator`] as the episode's robot's, whichever it is: grasp and place put together
+/// by [`grasp_with`] and [`place_with`].
+pub(crate) trait AnyManipulator: Hands {
+    /// GRASP with physics.
+    fn grasp(&self, env: &mut Env, call: &Call, watcher: Option<&mut dyn Watcher>) -> Attempt<()>;
+
+    /// PLACE_* with physics.
+    fn place(
+        &self,
+        env: &mut Env,
+        call: &Call,
+        relation: Relation,
+        watcher: Option<&mut dyn Watcher>,
+    ) -> Attempt<()>;
+}
+
+impl<M: Manipulator> AnyManipulator for M {
+    fn grasp(&self, env: &mut Env, call: &Call, watcher: Option<&mut dyn Watcher>) -> Attempt<()> {
+        Ok(grasp_with(self, env, call, watcher)?.map(|_| ()))
+    }
+
+    fn place(
+        &self,
+        env: &mut Env,
+        call: &Call,
+        relation: Relation,
+        watcher: Option<&mut dyn Watcher>,
+    ) -> Attempt<()> {
+        Ok(place_with(self, env, call, relation, watcher)?.map(|_| ()))
+    }
+}
+
 /// The manipulator for a robot's hands.
-pub(crate) fn manipulator(robot: &Robot) -> &'static dyn Manipulator {
+pub(crate) fn manipulator(robot: &Robot) -> &'static dyn AnyManipulator {
     match robot.spec().hand_motion {
         HandMotion::Posed => &posed_hands::PosedHands,
         HandMotion::Jointed => &jointed_arm::JointedArm,
@@ -205,7 +390,7 @@ pub(crate) fn placement_goals(
     robot.clone().release_now(&mut let_go, call.hand);
     // As the hand holds it (a palm), or turned as the hand can set it down (a gripper pointing
     // down).
-    let turns = manipulator(robot).set_down_turns(world, robot, call.object, &grip);
+    let turns = manipulator(robot).set_down_turns(world, robot, call, &grip);
     let mut poses = Vec::new();
     let mut last = Failure::NoHandPose;
     for turned in turns {

@@ -30,8 +30,8 @@
 use crate::execute::Watcher;
 use crate::execute::{RecordedCall, RunError};
 use crate::manipulation::{
-    CLOSE_STEPS, GRASP_JITTER, Manipulator, RELEASE_STEPS, SETTLE_STEPS, StandTest, grasp_point,
-    on_or_in_goals, on_top, placement_goals, rng_seed,
+    CLOSE_STEPS, GRASP_JITTER, Grip, Hands, Manipulator, RELEASE_STEPS, SETTLE_STEPS, StandTest,
+    grasp_point, grasp_with, on_or_in_goals, on_top, place_with, placement_goals, rng_seed,
 };
 use crate::physical::{
     Attempt, PHYSICAL_BUDGET, STEPS_PER_WAYPOINT, Stepper, attempt, base_config, call_rng,
@@ -45,11 +45,12 @@ use behavior_motion::BaseConfig;
 use behavior_motion::shapes_in;
 use behavior_motion::{HandBody, HandConfig, HandSpace};
 use behavior_motion::{PlanParams, plan, steps_along};
-use behavior_robots::{ACTION_SCALE, Action, ActionSpace, BehaviorRobot, HAND_REACH, Robot, Side};
+use behavior_robots::{Embodiment, PosedHand, Robot, Side};
 use behavior_sim::{BodyRef, ObjectId, QueryFilter, Relation, World};
 use rapier3d::glamx::EulerRot;
 use rapier3d::math::{Pose, Rotation, Vector};
 use std::f32::consts::PI;
+use std::sync::Arc;
 
 /// How a recording names a hand put back at its target (see `free_stranded`).
 pub const HAND_RESET: &str = "reset_hand";
@@ -122,40 +123,7 @@ pub struct HandPath {
 
 /// GRASP with physics (see the module docs). The paths it planned and executed come back.
 pub fn grasp(env: &mut Env, call: &Call, watcher: Option<&mut dyn Watcher>) -> Attempt<HandPath> {
-    let side = match hand_side(env, call) {
-        Ok(side) => side,
-        Err(failure) => return Ok(Err(failure)),
-    };
-    let mut rng = call_rng(env, call);
-    let goals = match behavior_robot(env) {
-        Some((world, robot)) => approach_goals(world, robot, call, side, &mut rng),
-        None => Vec::new(),
-    };
-    let mut steps = Stepper { env, watcher };
-    let mut reached = attempt!(reach(&mut steps, side, &goals, &mut rng));
-    attempt!(descend(
-        &mut steps,
-        side,
-        call.object,
-        &mut reached.path.after
-    ));
-    close(&mut steps, call)?;
-    let held = holds(steps.env, side, call.object);
-    if !held {
-        attempt!(open(&mut steps, side));
-    }
-    // Straight back up as high as the approach ended, turned as the palm now is (what it
-    // holds keeps its pose), lifting it off its support.
-    let mut up = palm(steps.env, side);
-    let top = reached.path.planned.last().map(|c| c.position.z);
-    up.translation.z = top.unwrap_or(up.translation.z);
-    let up = HandConfig::of(&up);
-    attempt!(follow(&mut steps, side, &[up, up], &mut reached.path.after));
-    attempt!(retreat(&mut steps, side, &mut reached));
-    if !held {
-        return Ok(Err(Failure::Missed));
-    }
-    Ok(Ok(reached.path))
+    grasp_with(&PosedHands, env, call, watcher)
 }
 
 /// PLACE_* with physics (see the module docs).
@@ -165,25 +133,7 @@ pub fn place(
     relation: Relation,
     watcher: Option<&mut dyn Watcher>,
 ) -> Attempt<HandPath> {
-    let side = match hand_side(env, call) {
-        Ok(side) => side,
-        Err(failure) => return Ok(Err(failure)),
-    };
-    let mut rng = call_rng(env, call);
-    let goals = match (env.world(), env.robot()) {
-        (Some(world), Some(robot)) => placement_goals(world, robot, call, relation, &mut rng),
-        _ => Err(Failure::Unavailable("no episode")),
-    };
-    let goals = match goals {
-        Ok(goals) => goals,
-        Err(failure) => return Ok(Err(failure)),
-    };
-    let mut steps = Stepper { env, watcher };
-    let mut reached = attempt!(reach(&mut steps, side, &goals, &mut rng));
-    attempt!(open(&mut steps, side));
-    attempt!(steps.wait_until(SETTLE_STEPS, |_| false));
-    attempt!(retreat(&mut steps, side, &mut reached));
-    Ok(Ok(reached.path))
+    place_with(&PosedHands, env, call, relation, watcher)
 }
 
 /// The hand's plan to over `call.object` for a GRASP from where the robot stands, as the
@@ -191,10 +141,10 @@ pub fn place(
 /// height counts as none). For measuring the planner (`behavior bench plan --hands`).
 pub fn approach_plan(env: &Env, call: &Call) -> Result<Vec<HandConfig>, Failure> {
     let side = hand_side(env, call)?;
-    let (world, robot) = behavior_robot(env).ok_or(Failure::Unavailable("no episode"))?;
+    let (world, robot) = posed(env).ok_or(Failure::Unavailable("no episode"))?;
     let mut rng = call_rng(env, call);
-    let goals = approach_goals(world, robot, call, side, &mut rng);
-    plan_hand(world, robot, side, goals, rng_seed(&mut rng))
+    let goals = approach_goals(world, &robot, call, side, &mut rng);
+    plan_hand(world, &robot, side, goals, rng_seed(&mut rng))
 }
 
 /// Whether a hand holding something reaches, its body down or up if need be, above one of the
@@ -203,9 +153,9 @@ pub fn approach_plan(env: &Env, call: &Call) -> Result<Vec<HandConfig>, Failure>
 /// hand is empty (the primitive then says why it cannot).
 pub(crate) fn placement_in_reach(env: &Env, call: &Call) -> bool {
     let (Some((world, robot)), Some(relation), Some(&side)) = (
-        behavior_robot(env),
+        posed(env),
         call.primitive.relation(),
-        Side::BOTH.get(call.hand),
+        sides(env).get(call.hand),
     ) else {
         return true;
     };
@@ -217,43 +167,32 @@ pub(crate) fn placement_in_reach(env: &Env, call: &Call) -> bool {
         return true;
     };
     placement_goals(world, embodied, call, relation, &mut rng)
-        .is_ok_and(|goals| places_from(world, robot, &goals, shoulder))
+        .is_ok_and(|goals| places_from(world, &robot, side, &goals, shoulder))
 }
 
-/// Where a BehaviorRobot's hands go before it drives, in the body frame: drawn in so that
-/// palm and fingers lie within the body's capsule (at rest the fingertips stick out 2 cm, and a
-/// door leaf the body pushes open caught them and left both palms behind at a doorway).
-fn tucked(side: Side) -> Pose {
-    let y = match side {
-        Side::Left => 0.1,
-        Side::Right => -0.1,
-    };
-    Pose::from_translation(Vector::new(-0.02, y, 0.05))
-}
-
-/// Draws a BehaviorRobot's hands in to [`tucked`] poses, with what they hold (nothing for Fetch,
-/// or for hands already there), each along a straight line. Tucking only empty hands did worse:
+/// Draws the hands in to where they are tucked ([`PosedHand::tucked`]), with what they hold
+/// (nothing for hands already there), each along a straight line. Tucking only empty hands did worse:
 /// summed Q over the 12 Table 1 activities and seeds 0–2, 6.7 against 8.9.
 pub(crate) fn tuck(steps: &mut Stepper<'_, '_>) -> Attempt<()> {
-    for side in Side::BOTH {
-        let Some((world, robot)) = behavior_robot(steps.env) else {
+    for &side in sides(steps.env) {
+        let Some((world, robot)) = posed(steps.env) else {
             return Ok(Ok(()));
         };
-        let tuck = robot.body_pose(world) * tucked(side);
+        let tuck = robot.body_pose(world) * robot.hand(side).tucked();
         let (goal, here) = (HandConfig::of(&tuck), target_in_world(steps.env, side));
         if HandConfig::of(&here) == goal {
             continue;
         }
         // Straight in where that is free, else planned (a hand left over a high shelf board
         // would be carried into it).
-        let body = planning_body(world, robot, side);
+        let body = planning_body(world, &robot, side);
         let line = straight(&HandConfig::of(&here), &goal);
         let direct = vec![HandConfig::of(&here), goal];
         let path = if line.iter().all(|c| body.clear(world, c)) {
             direct
         } else {
             let seed = u64::from(steps.env.steps());
-            plan_hand(world, robot, side, [tuck], seed).unwrap_or(direct)
+            plan_hand(world, &robot, side, [tuck], seed).unwrap_or(direct)
         };
         let mut poses = Vec::new();
         attempt!(follow(steps, side, &path, &mut poses));
@@ -266,8 +205,8 @@ pub(crate) fn tuck(steps: &mut Stepper<'_, '_>) -> Attempt<()> {
 /// (pinned behind furniture the body moved past: 300 N cannot pull it through), as the
 /// original robot's reset entry does; recorded as an edit, [`HAND_RESET`], for replays.
 fn free_stranded(steps: &mut Stepper<'_, '_>) -> Result<(), RunError> {
-    for side in Side::BOTH {
-        let behind = behavior_robot(steps.env).map_or(0.0, |(world, robot)| {
+    for &side in sides(steps.env) {
+        let behind = posed(steps.env).map_or(0.0, |(world, robot)| {
             let target = robot.body_pose(world) * robot.hand_target(side);
             (robot.hand_pose(world, side).translation - target.translation).length()
         });
@@ -291,7 +230,7 @@ fn free_stranded(steps: &mut Stepper<'_, '_>) -> Result<(), RunError> {
 
 /// Where a physical primitive's hand got to: how far the body went down for it (up, if
 /// negative), where the hand was told to be before, and the path.
-struct Reached {
+pub(crate) struct Reached {
     depth: f32,
     start: Pose,
     path: HandPath,
@@ -309,18 +248,18 @@ fn reach(
     rng: &mut SimRng,
 ) -> Attempt<Reached> {
     free_stranded(steps)?;
-    let Some((world, robot)) = behavior_robot(steps.env) else {
+    let Some((world, robot)) = posed(steps.env) else {
         return Ok(Err(Failure::Unavailable("no episode")));
     };
-    let Some((chosen, depth)) = choose_goals(world, robot, side, goals) else {
+    let Some((chosen, depth)) = choose_goals(world, &robot, side, goals) else {
         return Ok(Err(Failure::NoHandPose));
     };
     attempt!(crouch(steps, depth));
     let start = target_in_world(steps.env, side);
     let mut planned = Err(Failure::NoHandPose);
     for goal in chosen {
-        planned = match behavior_robot(steps.env) {
-            Some((world, robot)) => plan_with_approach(world, robot, side, goal, rng_seed(rng)),
+        planned = match posed(steps.env) {
+            Some((world, robot)) => plan_with_approach(world, &robot, side, goal, rng_seed(rng)),
             None => Err(Failure::Unavailable("no episode")),
         };
         if planned.is_ok() {
@@ -367,59 +306,144 @@ fn hand_side(env: &Env, call: &Call) -> Result<Side, Failure> {
     let (Some(world), Some(robot)) = (env.world(), env.robot()) else {
         return Err(Failure::Unavailable("no episode"));
     };
-    if robot.space() != ActionSpace::Full {
+    if robot.space() != robot.spec().primitive_space {
         return Err(Failure::Unavailable(
-            "physical primitives drive the full action space",
+            "physical primitives drive the robot's primitive action space (the BehaviorRobot's \
+             `full`)",
+        ));
+    }
+    if PosedRobot::of(robot.embodiment()).is_none() {
+        return Err(Failure::Unavailable(
+            "these physical primitives move hands the robot's actions pose (the \
+             BehaviorRobot's palms)",
         ));
     }
     check(world, robot, call)?;
-    Side::BOTH
+    sides(env)
         .get(call.hand)
         .copied()
         .ok_or(Failure::NoHand(call.hand))
 }
 
-/// The episode's world and BehaviorRobot, if it drives one through the full action space (the
-/// hand actions here are that space's).
-fn behavior_robot(env: &Env) -> Option<(&World, &BehaviorRobot)> {
-    match (env.world(), env.robot()) {
-        (Some(world), Some(Robot::Behavior(robot, ActionSpace::Full))) => Some((world, robot)),
-        _ => None,
+/// The episode's world and the robot's posed hands, if it is driven through its primitive
+/// action space (the hand actions here are that space's) and every hand is posed.
+fn posed(env: &Env) -> Option<(&World, PosedRobot<'_>)> {
+    let (world, robot) = (env.world()?, env.robot()?);
+    if robot.space() != robot.spec().primitive_space {
+        return None;
+    }
+    Some((world, PosedRobot::of(robot.embodiment())?))
+}
+
+/// The hands of the episode's robot by side, as far as it has posed hands.
+fn sides(env: &Env) -> &'static [Side] {
+    let n = posed(env).map_or(0, |(_, hands)| hands.posed.len());
+    &Side::BOTH[..n.min(Side::BOTH.len())]
+}
+
+/// A robot whose hands its actions pose, as the primitives read it: the robot, and each hand
+/// as it stands ([`PosedHand`]), by side (0 left, 1 right).
+struct PosedRobot<'e> {
+    robot: &'e dyn Embodiment,
+    posed: Vec<Arc<dyn PosedHand>>,
+}
+
+impl<'e> PosedRobot<'e> {
+    /// `robot`'s hands, if every one is posed.
+    fn of(robot: &'e dyn Embodiment) -> Option<PosedRobot<'e>> {
+        let hands = robot.spec().hands().min(Side::BOTH.len());
+        let posed = (0..hands)
+            .map(|h| robot.posed_hand(h))
+            .collect::<Option<Vec<_>>>()?;
+        (!posed.is_empty()).then_some(PosedRobot { robot, posed })
+    }
+
+    /// The hand on `side` (the caller asks only for the sides [`sides`] gives).
+    fn hand(&self, side: Side) -> &dyn PosedHand {
+        self.posed[side.index()].as_ref()
+    }
+
+    /// The body's pose in the world: the base's.
+    fn body_pose(&self, world: &World) -> Pose {
+        self.robot.base_pose(world)
+    }
+
+    /// The palm's pose in the world.
+    fn hand_pose(&self, world: &World, side: Side) -> Pose {
+        self.robot
+            .hand_object(side.index())
+            .map_or(Pose::IDENTITY, |palm| world.pose(palm))
+    }
+
+    /// Where the hand is told to be, in the body's frame.
+    fn hand_target(&self, side: Side) -> Pose {
+        self.hand(side).target()
+    }
+
+    /// The centre of the hand's reach, in the world.
+    fn shoulder(&self, world: &World, side: Side) -> Vector {
+        self.hand(side).shoulder(world)
+    }
+
+    /// How far the hand's trigger is pressed.
+    fn trigger(&self, side: Side) -> f32 {
+        self.hand(side).trigger()
+    }
+
+    /// What the hand holds.
+    fn holding(&self, side: Side) -> Option<ObjectId> {
+        self.robot.held(side.index())
+    }
+
+    /// The robot's objects.
+    fn objects(&self) -> Vec<ObjectId> {
+        self.robot.objects()
+    }
+
+    /// The palm's object.
+    fn hand_object(&self, side: Side) -> ObjectId {
+        self.robot
+            .hand_object(side.index())
+            .unwrap_or_else(|| self.robot.base())
     }
 }
 
 /// Where the hand is told to be, in the world.
 fn target_in_world(env: &Env, side: Side) -> Pose {
-    behavior_robot(env).map_or(Pose::IDENTITY, |(world, robot)| {
+    posed(env).map_or(Pose::IDENTITY, |(world, robot)| {
         robot.body_pose(world) * robot.hand_target(side)
     })
 }
 
 /// The hand and what it holds as the planner moves them, ignoring the robot and what it holds.
-pub fn hand_body(world: &World, robot: &BehaviorRobot, side: Side) -> HandBody {
-    let hand = robot.parts().hand(side);
-    let held = robot.holding(side).map(|b| b.object);
+fn body_of(world: &World, robot: &PosedRobot<'_>, side: Side) -> HandBody {
+    let hand = robot.hand_object(side);
+    let held = robot.holding(side);
     let frame = world.pose(hand).inverse();
-    let mut ignored = robot.parts().all().to_vec();
-    ignored.extend(
-        Side::BOTH
-            .iter()
-            .filter_map(|&s| robot.holding(s).map(|b| b.object)),
-    );
+    let mut ignored = robot.objects();
+    ignored.extend((0..robot.posed.len()).filter_map(|h| robot.robot.held(h)));
     HandBody {
         shapes: shapes_in(world, std::iter::once(hand).chain(held), frame),
         filter: QueryFilter::excluding(&ignored),
         shoulder: robot.shoulder(world, side),
-        reach: HAND_REACH,
+        reach: robot.hand(side).reach(),
     }
+}
+
+/// The hand `hand` of `robot` and what it holds as the planner moves them, ignoring the robot
+/// and what it holds; `None` unless the robot's hands are posed.
+pub fn hand_body(world: &World, robot: &dyn Embodiment, hand: usize) -> Option<HandBody> {
+    let hands = PosedRobot::of(robot)?;
+    let side = *Side::BOTH.get(hand).filter(|_| hand < hands.posed.len())?;
+    Some(body_of(world, &hands, side))
 }
 
 /// The hand as planned: [`hand_body`] with the palm's straight-fingered box, which the robot
 /// keeps out of fixed bodies by refusing the hand's target there (a plan clear of it only
 /// would stop the hand on its way, at a countertop's edge).
-fn planning_body(world: &World, robot: &BehaviorRobot, side: Side) -> HandBody {
-    let mut body = hand_body(world, robot, side);
-    body.shapes.push(behavior_robots::sweep_shape());
+fn planning_body(world: &World, robot: &PosedRobot<'_>, side: Side) -> HandBody {
+    let mut body = body_of(world, robot, side);
+    body.shapes.push(robot.hand(side).sweep());
     body
 }
 
@@ -428,28 +452,44 @@ fn planning_body(world: &World, robot: &BehaviorRobot, side: Side) -> HandBody {
 /// shelf, its near side), and the top of the box there lies `open_to` the shoulder (a
 /// necklace in a cabinet is not in reach from beside the cabinet).
 pub fn hand_reaches(world: &World, robot: &Robot, object: ObjectId) -> bool {
-    let Robot::Behavior(robot, _) = robot else {
+    let Some(hands) = PosedRobot::of(robot.embodiment()) else {
         return true;
     };
-    Side::BOTH
-        .iter()
-        .any(|&side| reaches_from(world, robot, object, robot.shoulder(world, side)))
+    let sides = &Side::BOTH[..hands.posed.len()];
+    sides.iter().any(|&side| {
+        let shoulder = hands.shoulder(world, side);
+        reaches_from(world, &hands, side, object, shoulder)
+    })
 }
 
 /// [`hand_reaches`] for one shoulder, wherever it is.
-fn reaches_from(world: &World, robot: &BehaviorRobot, object: ObjectId, shoulder: Vector) -> bool {
+fn reaches_from(
+    world: &World,
+    robot: &PosedRobot<'_>,
+    side: Side,
+    object: ObjectId,
+    shoulder: Vector,
+) -> bool {
     let b = world.aabb(object);
     let top = on_top(world, object, shoulder, 0.0);
     let nearest = top.with_z(shoulder.z.clamp(b.mins.z, b.maxs.z));
-    shift_for(shoulder, nearest, HAND_REACH - REACH_MARGIN).is_some()
+    let reach = robot.hand(side).reach();
+    shift_for(shoulder, nearest, reach - REACH_MARGIN).is_some()
         && open_to(world, robot, top, shoulder, &[object])
 }
 
 /// Whether a shoulder at `shoulder` reaches above one of the placement `goals` as
 /// [`placement_in_reach`] asks.
-fn places_from(world: &World, robot: &BehaviorRobot, goals: &[Pose], shoulder: Vector) -> bool {
+fn places_from(
+    world: &World,
+    robot: &PosedRobot<'_>,
+    side: Side,
+    goals: &[Pose],
+    shoulder: Vector,
+) -> bool {
+    let reach = robot.hand(side).reach();
     goals.iter().any(|g| {
-        shift_for(shoulder, g.translation, HAND_REACH - REACH_SLACK).is_some()
+        shift_for(shoulder, g.translation, reach - REACH_SLACK).is_some()
             && open_to(world, robot, g.translation, shoulder, &[])
     })
 }
@@ -466,26 +506,25 @@ pub(crate) fn reach_test<'e>(
     env: &'e Env,
     object: ObjectId,
 ) -> Option<impl Fn(&BaseConfig) -> bool + 'e> {
-    let (world, robot) = behavior_robot(env)?;
+    let (world, robot) = posed(env)?;
     let to_base = base_config(env).pose().inverse();
-    let shoulder_of = |side: Side| to_base.transform_point(robot.shoulder(world, side));
-    let holding = Side::BOTH
-        .iter()
-        .rposition(|&side| robot.holding(side).is_some());
+    let shoulder_of = |side: Side| (side, to_base.transform_point(robot.shoulder(world, side)));
+    let all = sides(env);
+    let holding = all.iter().rposition(|&side| robot.holding(side).is_some());
     let goals = holding.map_or_else(Vec::new, |hand| on_or_in_goals(env, object, hand));
     // Holding something with no place for it there, the object's box in reach is what counts.
-    let shoulders: Vec<Vector> = match holding {
-        Some(hand) if !goals.is_empty() => vec![shoulder_of(Side::BOTH[hand])],
-        _ => Side::BOTH.into_iter().map(shoulder_of).collect(),
+    let shoulders: Vec<(Side, Vector)> = match holding {
+        Some(hand) if !goals.is_empty() => vec![shoulder_of(all[hand])],
+        _ => all.iter().map(|&side| shoulder_of(side)).collect(),
     };
     Some(move |stand: &BaseConfig| {
         let pose = stand.pose();
-        shoulders.iter().any(|&s| {
+        shoulders.iter().any(|&(side, s)| {
             let shoulder = pose.transform_point(s);
             if goals.is_empty() {
-                reaches_from(world, robot, object, shoulder)
+                reaches_from(world, &robot, side, object, shoulder)
             } else {
-                places_from(world, robot, &goals, shoulder)
+                places_from(world, &robot, side, &goals, shoulder)
             }
         })
     })
@@ -500,12 +539,12 @@ const OPEN_ABOVE: f32 = 0.3;
 /// no arm: what matters is whether the point is walled in on the robot's side.)
 fn open_to(
     world: &World,
-    robot: &BehaviorRobot,
+    robot: &PosedRobot<'_>,
     point: Vector,
     shoulder: Vector,
     besides: &[ObjectId],
 ) -> bool {
-    let mut ignored = robot.parts().all().to_vec();
+    let mut ignored = robot.objects();
     ignored.extend_from_slice(besides);
     let filter = QueryFilter {
         fixed_only: true,
@@ -542,12 +581,12 @@ fn shift_for(shoulder: Vector, point: Vector, reach: f32) -> Option<f32> {
 /// [`shift_for`]); with that shift.
 fn choose_goals(
     world: &World,
-    robot: &BehaviorRobot,
+    robot: &PosedRobot<'_>,
     side: Side,
     goals: &[Pose],
 ) -> Option<(Vec<Pose>, f32)> {
     let body = planning_body(world, robot, side);
-    let reach = HAND_REACH - REACH_SLACK;
+    let reach = robot.hand(side).reach() - REACH_SLACK;
     let mut free = goals.iter().filter_map(|g| {
         let shift = shift_for(body.shoulder, g.translation, reach)?;
         body.clear(world, &HandConfig::of(g)).then_some((*g, shift))
@@ -560,21 +599,22 @@ fn choose_goals(
 
 /// Lowers (or raises, for a negative `depth`) the body by `depth`, m, with body actions.
 fn crouch(steps: &mut Stepper<'_, '_>, depth: f32) -> Attempt<()> {
-    let Some((world, robot)) = behavior_robot(steps.env) else {
+    let Some((world, robot)) = posed(steps.env) else {
         return Ok(Err(Failure::Unavailable("no episode")));
     };
     let goal = robot.body_pose(world).translation.z - depth;
     for _ in 0..STEPS_PER_WAYPOINT {
-        let Some((world, robot)) = behavior_robot(steps.env) else {
+        let Some((world, robot)) = posed(steps.env) else {
             break;
         };
         let dz = goal - robot.body_pose(world).translation.z;
         if dz.abs() <= TARGET_TOLERANCE {
             break;
         }
-        let mut action = vec![0.0; robot_dim(steps.env)];
-        action[Action::BODY.start + 2] = (dz / ACTION_SCALE).clamp(-1.0, 1.0);
-        attempt!(steps.act(&action));
+        let Some(hand) = robot.posed.first() else {
+            break;
+        };
+        attempt!(steps.act(&hand.lift_action(dz)));
     }
     Ok(Ok(()))
 }
@@ -582,7 +622,7 @@ fn crouch(steps: &mut Stepper<'_, '_>, depth: f32) -> Attempt<()> {
 /// A planned hand path from where the hand is told to be to `goals`' first free one.
 fn plan_hand(
     world: &World,
-    robot: &BehaviorRobot,
+    robot: &PosedRobot<'_>,
     side: Side,
     goals: impl IntoIterator<Item = Pose>,
     seed: u64,
@@ -613,7 +653,7 @@ fn plan_hand(
 /// lid; planned into a cabinet's compartment, none through the narrow opening.
 fn plan_with_approach(
     world: &World,
-    robot: &BehaviorRobot,
+    robot: &PosedRobot<'_>,
     side: Side,
     goal: Pose,
     seed: u64,
@@ -663,7 +703,7 @@ fn straight(from: &HandConfig, to: &HandConfig) -> Vec<HandConfig> {
 /// object.
 fn approach_goals(
     world: &World,
-    robot: &BehaviorRobot,
+    robot: &PosedRobot<'_>,
     call: &Call,
     side: Side,
     rng: &mut SimRng,
@@ -716,7 +756,7 @@ fn clear_column(world: &World, body: &HandBody, from: &Pose, to: &Pose) -> bool 
 /// How far the hand's target is from `goal` (in the world), as the hand's action counts it:
 /// position and roll, pitch, yaw in the body frame; `None` when it is there.
 fn hand_offset(env: &Env, side: Side, goal: &Pose) -> Option<[f32; 6]> {
-    let (world, robot) = behavior_robot(env)?;
+    let (world, robot) = posed(env)?;
     let local = robot.body_pose(world).inverse() * *goal;
     let target = robot.hand_target(side);
     let d = local.translation - target.translation;
@@ -728,9 +768,12 @@ fn hand_offset(env: &Env, side: Side, goal: &Pose) -> Option<[f32; 6]> {
 
 /// The steps a hand's target needs to get to `goal` at full speed.
 fn steps_to(env: &Env, side: Side, goal: &Pose) -> u32 {
+    let Some((_, robot)) = posed(env) else {
+        return 0;
+    };
     hand_offset(env, side, goal).map_or(0, |values| {
         let longest = values.iter().fold(0.0f32, |m, v| m.max(v.abs()));
-        (longest / ACTION_SCALE).ceil() as u32
+        (longest / robot.hand(side).step()).ceil() as u32
     })
 }
 
@@ -738,15 +781,15 @@ fn steps_to(env: &Env, side: Side, goal: &Pose) -> u32 {
 /// when it is there.
 fn hand_action(env: &Env, side: Side, goal: &Pose) -> Option<Vec<f32>> {
     let values = hand_offset(env, side, goal)?;
-    let mut action = vec![0.0; robot_dim(env)];
-    for (k, v) in values.iter().enumerate() {
-        action[Action::hand_range(side).start + k] = (v / ACTION_SCALE).clamp(-1.0, 1.0);
-    }
-    Some(action)
+    let (_, robot) = posed(env)?;
+    Some(robot.hand(side).move_action(values))
 }
 
-fn robot_dim(env: &Env) -> usize {
-    env.robot().map_or(0, |r| r.action_dim())
+/// The action that presses (1) or lets go (−1) the trigger of the hand on `side`.
+fn trigger_action(env: &Env, side: Side, press: f32) -> Vec<f32> {
+    posed(env).map_or(Vec::new(), |(_, robot)| {
+        robot.hand(side).trigger_action(press)
+    })
 }
 
 /// Executes a hand path, one step per configuration (more where a turn needs them), then lets
@@ -784,7 +827,7 @@ fn descend(
     object: ObjectId,
     executed: &mut Vec<Pose>,
 ) -> Attempt<()> {
-    let above = behavior_robot(steps.env).map_or(0.0, |(world, _)| {
+    let above = posed(steps.env).map_or(0.0, |(world, _)| {
         let fingers = palm(steps.env, side).transform_point(GRASP_POINT).z;
         fingers - world.aabb(object).maxs.z - APPROACH_HEIGHT
     });
@@ -810,15 +853,14 @@ fn descend(
 /// edit, [`FORCED_GRASP`], for replays to do again).
 fn close(steps: &mut Stepper<'_, '_>, call: &Call) -> Result<(), RunError> {
     let side = Side::BOTH[call.hand];
-    let mut action = vec![0.0; robot_dim(steps.env)];
-    action[Action::trigger_index(side)] = 1.0;
+    let action = trigger_action(steps.env, side, 1.0);
     for _ in 0..CLOSE_STEPS {
         if steps.act(&action)?.is_err() || holds(steps.env, side, call.object) {
             return Ok(());
         }
         // Past the grasp's threshold, touching and still not holding: force it.
-        let closed =
-            behavior_robot(steps.env).is_some_and(|(_, r)| r.trigger(side) > r.rules().threshold);
+        let closed = posed(steps.env)
+            .is_some_and(|(_, r)| r.trigger(side) > r.robot.grasp_rules().threshold);
         if closed && touches(steps.env, side, call.object) {
             break;
         }
@@ -828,10 +870,9 @@ fn close(steps: &mut Stepper<'_, '_>, call: &Call) -> Result<(), RunError> {
 
 /// Lets the trigger go until the hand is open and holds nothing.
 fn open(steps: &mut Stepper<'_, '_>, side: Side) -> Attempt<()> {
-    let mut action = vec![0.0; robot_dim(steps.env)];
-    action[Action::trigger_index(side)] = -1.0;
+    let action = trigger_action(steps.env, side, -1.0);
     for _ in 0..RELEASE_STEPS {
-        let done = behavior_robot(steps.env)
+        let done = posed(steps.env)
             .is_none_or(|(_, r)| r.trigger(side) == 0.0 && r.holding(side).is_none());
         if done {
             break;
@@ -850,10 +891,10 @@ fn back_out(
     exit: Vector,
     executed: &mut Vec<Pose>,
 ) -> Result<(), RunError> {
-    let Some((world, robot)) = behavior_robot(steps.env) else {
+    let Some((world, robot)) = posed(steps.env) else {
         return Ok(());
     };
-    let body = planning_body(world, robot, side);
+    let body = planning_body(world, &robot, side);
     let here = HandConfig::of(&target_in_world(steps.env, side));
     let mut out = here;
     out.position += exit;
@@ -881,7 +922,7 @@ fn come_back(
     start: Pose,
     executed: &mut Vec<Pose>,
 ) -> Attempt<()> {
-    let Some((world, robot)) = behavior_robot(steps.env) else {
+    let Some((world, robot)) = posed(steps.env) else {
         return Ok(Err(Failure::Unavailable("no episode")));
     };
     // Holding something, the hand keeps the turn it has (so does what it holds); empty, it
@@ -894,7 +935,7 @@ fn come_back(
     let goals = (0..RAISES)
         .map(|k| Pose::from_parts(start.translation + Vector::Z * (RAISE * k as f32), turn));
     let seed = u64::from(steps.env.steps());
-    let path = match plan_hand(world, robot, side, goals, seed) {
+    let path = match plan_hand(world, &robot, side, goals, seed) {
         Ok(path) => path,
         Err(failure) => return Ok(Err(failure)),
     };
@@ -903,7 +944,7 @@ fn come_back(
 
 /// The palm's pose now.
 fn palm(env: &Env, side: Side) -> Pose {
-    behavior_robot(env).map_or(Pose::IDENTITY, |(world, robot)| {
+    posed(env).map_or(Pose::IDENTITY, |(world, robot)| {
         robot.hand_pose(world, side)
     })
 }
@@ -916,8 +957,8 @@ fn arrived(env: &Env, side: Side) -> bool {
 
 /// Whether the hand (palm or finger) touches the object (its body or a link).
 fn touches(env: &Env, side: Side, object: ObjectId) -> bool {
-    behavior_robot(env).is_some_and(|(world, robot)| {
-        let hand = BodyRef::from(robot.parts().hand(side));
+    posed(env).is_some_and(|(world, robot)| {
+        let hand = BodyRef::from(robot.hand_object(side));
         world
             .core()
             .contacts(hand)
@@ -929,28 +970,107 @@ fn touches(env: &Env, side: Side, object: ObjectId) -> bool {
 
 /// Whether the hand holds the object.
 fn holds(env: &Env, side: Side, object: ObjectId) -> bool {
-    behavior_robot(env)
-        .is_some_and(|(_, robot)| robot.holding(side).is_some_and(|b| b.object == object))
+    posed(env).is_some_and(|(_, robot)| robot.holding(side) == Some(object))
 }
 
 /// The manipulator of hands posed directly by the actions: the BehaviorRobot's.
 pub(crate) struct PosedHands;
 
 impl Manipulator for PosedHands {
-    fn grasp(&self, env: &mut Env, call: &Call, watcher: Option<&mut dyn Watcher>) -> Attempt<()> {
-        Ok(grasp(env, call, watcher)?.map(|_| ()))
+    type Hand = Side;
+    type Reached = Reached;
+    type Path = HandPath;
+
+    fn hand(&self, env: &Env, call: &Call) -> Result<Side, Failure> {
+        hand_side(env, call)
     }
 
-    fn place(
+    fn grasp_goals(&self, env: &Env, side: Side, call: &Call, rng: &mut SimRng) -> Vec<Pose> {
+        match posed(env) {
+            Some((world, robot)) => approach_goals(world, &robot, call, side, rng),
+            None => Vec::new(),
+        }
+    }
+
+    /// The trigger is left as it is: the palm holds by the assisted grasp.
+    fn reach(
         &self,
-        env: &mut Env,
-        call: &Call,
-        relation: Relation,
-        watcher: Option<&mut dyn Watcher>,
-    ) -> Attempt<()> {
-        Ok(place(env, call, relation, watcher)?.map(|_| ()))
+        steps: &mut Stepper<'_, '_>,
+        side: Side,
+        goals: &[Pose],
+        _: Grip,
+        rng: &mut SimRng,
+    ) -> Attempt<Reached> {
+        reach(steps, side, goals, rng)
     }
 
+    fn descend(
+        &self,
+        steps: &mut Stepper<'_, '_>,
+        side: Side,
+        object: ObjectId,
+        reached: &mut Reached,
+    ) -> Attempt<()> {
+        descend(steps, side, object, &mut reached.path.after)
+    }
+
+    fn close(&self, steps: &mut Stepper<'_, '_>, call: &Call) -> Result<(), RunError> {
+        close(steps, call)
+    }
+
+    /// Opened first if it holds nothing; then straight back up as high as the approach
+    /// ended, turned as the palm now is (what it holds keeps its pose), lifting it off its
+    /// support.
+    fn lift_off(
+        &self,
+        steps: &mut Stepper<'_, '_>,
+        side: Side,
+        held: bool,
+        reached: &mut Reached,
+    ) -> Attempt<()> {
+        if !held {
+            attempt!(open(steps, side));
+        }
+        let mut up = palm(steps.env, side);
+        let top = reached.path.planned.last().map(|c| c.position.z);
+        up.translation.z = top.unwrap_or(up.translation.z);
+        let up = HandConfig::of(&up);
+        follow(steps, side, &[up, up], &mut reached.path.after)
+    }
+
+    fn open(&self, steps: &mut Stepper<'_, '_>, side: Side) -> Attempt<()> {
+        open(steps, side)
+    }
+
+    fn settle(&self, steps: &mut Stepper<'_, '_>, _: Side) -> Attempt<()> {
+        steps.wait_until(SETTLE_STEPS, |_| false)
+    }
+
+    /// Nothing here: coming back backs out the way the hand came in first.
+    fn leave(&self, _: &mut Stepper<'_, '_>, _: Side, _: &mut Reached) -> Attempt<()> {
+        Ok(Ok(()))
+    }
+
+    /// Backed out the way it came in, planned back, the body back at its height.
+    fn come_back(
+        &self,
+        steps: &mut Stepper<'_, '_>,
+        side: Side,
+        _: Grip,
+        reached: &mut Reached,
+    ) -> Attempt<()> {
+        retreat(steps, side, reached)
+    }
+
+    /// A palm that finds no way back is stuck where it is, whatever it holds.
+    const CARRIES_WHEN_STUCK: bool = false;
+
+    fn path(&self, reached: Reached) -> HandPath {
+        reached.path
+    }
+}
+
+impl Hands for PosedHands {
     fn reaches(&self, env: &Env, object: ObjectId, placement: Option<&Call>) -> bool {
         match (placement, env.world(), env.robot()) {
             (Some(call), ..) => placement_in_reach(env, call),
@@ -968,7 +1088,7 @@ impl Manipulator for PosedHands {
     }
 
     /// A palm sets down what it holds as it holds it.
-    fn set_down_turns(&self, _: &World, _: &Robot, _: ObjectId, _: &Pose) -> Vec<Option<Pose>> {
+    fn set_down_turns(&self, _: &World, _: &Robot, _: &Call, _: &Pose) -> Vec<Option<Pose>> {
         vec![None]
     }
 }

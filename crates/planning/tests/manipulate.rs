@@ -10,10 +10,9 @@ use behavior_env::Env;
 use behavior_env::record::{Recorder, read, replay_with};
 use behavior_motion::{HandConfig, HandSpace, Space};
 use behavior_planning::{
-    Call, Failure, Mode, Primitive, arm_grasp, grasp, hand_body, hand_grasp, hand_place,
-    replay_edit, run,
+    Call, Failure, Mode, Primitive, grasp, hand_body, hand_grasp, hand_place, replay_edit, run,
 };
-use behavior_robots::{Robot, RobotKind, Side};
+use behavior_robots::RobotKind;
 use behavior_sim::{ObjectId, Relation};
 
 const ACTIVITY: &str = "re-shelving_library_books";
@@ -71,10 +70,8 @@ fn the_hand_takes_a_book_and_puts_it_back_without_touching_anything_on_the_way()
     walk.result.unwrap();
 
     let before = env.world().unwrap().clone();
-    let Some(Robot::Behavior(robot, _)) = env.robot() else {
-        panic!("a BehaviorRobot")
-    };
-    let body = hand_body(&before, robot, Side::Right);
+    let robot = env.robot().expect("an episode's robot");
+    let body = hand_body(&before, robot.embodiment(), 1).expect("posed hands");
     let path = hand_grasp(&mut env, &call(Primitive::Grasp, book), None)
         .unwrap()
         .unwrap();
@@ -167,14 +164,14 @@ fn refused_physical_primitives_say_why_and_move_nothing() {
     assert_eq!(fetch.steps(), steps);
     assert_eq!(fetch.world().unwrap().pose(book), before);
     let second = Call { hand: 1, ..gripper };
-    let one_hand = arm_grasp(&mut fetch, &second, None).unwrap();
+    let one_hand = grasp(&mut fetch, &second, None).unwrap();
     assert!(matches!(one_hand, Err(Failure::NoHand(1))), "{one_hand:?}");
     // Fetch's arm is driven joint by joint: through the end-effector controller it is refused.
     let mut config = common::config(ACTIVITY);
     config.robot = RobotKind::Fetch;
     let mut through_ik = Env::new(config);
     through_ik.reset(0).unwrap();
-    let refused = arm_grasp(&mut through_ik, &gripper, None).unwrap();
+    let refused = grasp(&mut through_ik, &gripper, None).unwrap();
     assert!(
         matches!(refused, Err(Failure::Unavailable(_))),
         "{refused:?}"

@@ -1,7 +1,7 @@
 //! The BehaviorRobot: adding it to a world, stepping it, and reading it.
 
 use crate::action::{ACTION_DIM, ACTION_SCALE, Action, ActionError, ActionSpace};
-use crate::body::{BODY_HEIGHT, body_spec, eye_rest, hand_rest, head_round};
+use crate::body::{BODY_HEIGHT, HAND_REACH, body_spec, eye_rest, hand_rest, head_round};
 use crate::embodiment::{
     BaseDrive, BaseMove, Embodiment, EmbodimentSpec, HandMotion, LidarMount, Scan,
 };
@@ -10,6 +10,7 @@ use crate::grasp::{Grasp, GraspRules, Grasper, Hold, Release, centre_on, must_re
 use crate::hand::{FINGERS, Fingers, HandPoints, Side, hand_spec, sweep_shape};
 use crate::magic::MagicError;
 use crate::motion::{Blocker, Targets};
+use crate::posed_hand::PosedHand;
 use crate::proprioception::{LocalPose, Proprioception};
 use crate::robot::{RobotError, RobotKind, pose_ok};
 use behavior_sim::{
@@ -17,6 +18,7 @@ use behavior_sim::{
     STEP_SECONDS, StepHooks, Velocity, World, WorldError, groups,
 };
 use rapier3d::math::{Pose, Vector};
+use std::sync::Arc;
 
 /// The world objects a BehaviorRobot is made of.
 #[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq, Eq)]
@@ -326,6 +328,20 @@ impl Embodiment for BehaviorRobot {
 
     fn held(&self, hand: usize) -> Option<ObjectId> {
         self.holding(side(hand).ok()?).map(|b| b.object)
+    }
+
+    fn grasp_rules(&self) -> &GraspRules {
+        &self.rules
+    }
+
+    fn posed_hand(&self, hand: usize) -> Option<Arc<dyn PosedHand>> {
+        let side = side(hand).ok()?;
+        Some(Arc::new(Palm {
+            side,
+            body: self.parts.body,
+            target: self.hand_target(side),
+            trigger: self.trigger(side),
+        }))
     }
 
     fn camera_pose(&self, world: &World) -> Pose {
@@ -723,5 +739,79 @@ impl BehaviorRobot {
         let grasp = self.grasps[i].take()?;
         self.at_once().let_go(world, grasp.body, grasp.attachment);
         Some(grasp.body.object)
+    }
+}
+
+/// A BehaviorRobot's palm as a [`PosedHand`]: a snapshot of its target and trigger.
+#[derive(Clone, Copy, Debug)]
+struct Palm {
+    side: Side,
+    body: ObjectId,
+    target: Pose,
+    trigger: f32,
+}
+
+impl Palm {
+    /// An action of the full space with `values` (each divided by the action's scale and
+    /// clipped) at `at`, everything else still.
+    fn action(at: usize, values: &[f32]) -> Vec<f32> {
+        let mut action = vec![0.0; ACTION_DIM];
+        for (k, v) in values.iter().enumerate() {
+            action[at + k] = (v / ACTION_SCALE).clamp(-1.0, 1.0);
+        }
+        action
+    }
+}
+
+impl PosedHand for Palm {
+    fn hand(&self) -> usize {
+        self.side.index()
+    }
+
+    fn target(&self) -> Pose {
+        self.target
+    }
+
+    fn shoulder(&self, world: &World) -> Vector {
+        world
+            .pose(self.body)
+            .transform_point(crate::body::shoulder(self.side))
+    }
+
+    fn reach(&self) -> f32 {
+        HAND_REACH
+    }
+
+    fn step(&self) -> f32 {
+        ACTION_SCALE
+    }
+
+    fn sweep(&self) -> (Primitive, Pose) {
+        sweep_shape()
+    }
+
+    fn trigger(&self) -> f32 {
+        self.trigger
+    }
+
+    /// Drawn in so that palm and fingers lie within the body's capsule (at rest the fingertips
+    /// stick out 2 cm, and a door leaf the body pushes open caught them and left both palms
+    /// behind at a doorway).
+    fn tucked(&self) -> Pose {
+        Pose::from_translation(Vector::new(-0.02, self.side.sign() * 0.1, 0.05))
+    }
+
+    fn move_action(&self, offset: [f32; 6]) -> Vec<f32> {
+        Palm::action(Action::hand_range(self.side).start, &offset)
+    }
+
+    fn trigger_action(&self, press: f32) -> Vec<f32> {
+        let mut action = vec![0.0; ACTION_DIM];
+        action[Action::trigger_index(self.side)] = press;
+        action
+    }
+
+    fn lift_action(&self, up: f32) -> Vec<f32> {
+        Palm::action(Action::BODY.start + 2, &[up])
     }
 }

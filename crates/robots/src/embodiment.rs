@@ -7,11 +7,15 @@
 //! physics that symbolic primitives make (teleport, grasp now, release now) are part of it.
 
 use crate::action::{ActionError, ActionSpace};
+use crate::arm::Arm;
+use crate::grasp::GraspRules;
 use crate::magic::MagicError;
+use crate::posed_hand::PosedHand;
 use crate::relative;
 use crate::robot::RobotKind;
 use behavior_sim::{ObjectId, Primitive, StepHooks, World};
 use rapier3d::math::Pose;
+use std::sync::Arc;
 
 /// How a robot's base moves on the floor.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -177,11 +181,26 @@ pub trait Embodiment: StepHooks {
     /// The object hand `hand` holds.
     fn held(&self, hand: usize) -> Option<ObjectId>;
 
+    /// What its assisted grasp may take, and how.
+    fn grasp_rules(&self) -> &GraspRules;
+
     /// The on-board camera's pose in the world. It looks along its +x, with +z up.
     fn camera_pose(&self, world: &World) -> Pose;
 
     /// Its lidar now.
     fn lidar(&self, world: &World) -> LidarMount;
+
+    /// The jointed arm that moves hand `hand`, as it stands now, for arm planners; `None` for a
+    /// hand that is not at the end of one (the BehaviorRobot's posed palms) or no hand.
+    fn arm(&self, _hand: usize) -> Option<Arc<dyn Arm>> {
+        None
+    }
+
+    /// Hand `hand` as a hand posed directly by actions, as it stands now, for hand planners;
+    /// `None` for a hand at the end of an arm (Fetch's gripper) or no hand.
+    fn posed_hand(&self, _hand: usize) -> Option<Arc<dyn PosedHand>> {
+        None
+    }
 
     /// Shapes beyond its objects that move with the base and that a base plan must keep clear
     /// of fixed things, with their poses in the world: what stops the base where its objects

@@ -1,10 +1,12 @@
 //! Fetch: adding it to a world, stepping it, and reading it.
 
 use crate::action::{ActionError, ActionSpace};
+use crate::arm::Arm;
 use crate::embodiment::{
     BaseDrive, BaseMove, Embodiment, EmbodimentSpec, HandMotion, LidarMount, Scan,
 };
 use crate::fetch_action::{FetchAction, FetchCommand, MAX_ANGULAR_SPEED, MAX_LINEAR_SPEED};
+use crate::fetch_arm::FetchArm;
 use crate::fetch_body::{
     FETCH_LINKS, FINGER_LINKS, FINGER_OPEN, FetchJoint, FetchJoints, FetchLink, GRIPPER_CENTRE,
     LASER_OFFSET, WHEEL_RADIUS, WHEEL_SEPARATION, blocking_parts, link_centre, link_mass,
@@ -25,6 +27,7 @@ use behavior_sim::{
 use rapier3d::glamx::EulerRot;
 use rapier3d::math::{Pose, Rotation, Vector};
 use std::f32::consts::{FRAC_PI_2, PI};
+use std::sync::Arc;
 
 /// How fast the torso and arm joints close on the IK solution, 1/s (iGibson's `kv`): each
 /// moves at `ARM_GAIN · (q_ik − q)`, within its maximum velocity. A full Δ of 5 cm per step so
@@ -363,7 +366,7 @@ fn wheel_limited((v, w): (f32, f32)) -> ([f32; 2], (f32, f32)) {
 /// commanded rates; the torso and arm at theirs ([`FetchCommand::Joints`]), or toward the IK
 /// solution for the end-effector target (or the closest found, with why it is not exact),
 /// each within its maximum velocity and its limits.
-fn step_joints(
+pub(crate) fn step_joints(
     ik: &IkSolver,
     now: &FetchJoints,
     command: &FetchCommand,
@@ -549,6 +552,10 @@ impl Embodiment for Fetch {
         self.holding().filter(|_| hand == 0).map(|b| b.object)
     }
 
+    fn grasp_rules(&self) -> &GraspRules {
+        &self.rules
+    }
+
     fn camera_pose(&self, world: &World) -> Pose {
         Fetch::camera_pose(self, world)
     }
@@ -564,6 +571,12 @@ impl Embodiment for Fetch {
             min_range: 0.05,
             max_range: 25.0,
         }
+    }
+
+    fn arm(&self, hand: usize) -> Option<Arc<dyn Arm>> {
+        gripper(hand).ok()?;
+        let arm = FetchArm::new(self.parts, self.now.joints, self.ik);
+        Some(Arc::new(arm))
     }
 
     fn teleport(&mut self, world: &mut World, pose: Pose) -> Result<(), MagicError> {

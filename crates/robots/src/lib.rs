@@ -13,7 +13,10 @@
 //!
 //! Each implements [`Embodiment`], the one interface an environment, its sensors and metrics,
 //! recordings and planners use (action space, the step, grasping, proprioception, camera and
-//! lidar, the moves outside physics), with its facts in an [`EmbodimentSpec`]. [`Robot`] holds
+//! lidar, the moves outside physics), with its facts in an [`EmbodimentSpec`]. Its hands are read
+//! by planners through one of two more: an [`Arm`] for a hand at the end of a jointed arm
+//! (joints, limits, forward and inverse kinematics, the joint action and what it does: Fetch's)
+//! or a [`PosedHand`] for a hand the actions pose directly (the BehaviorRobot's). [`Robot`] holds
 //! one of them, chosen by [`RobotKind`], and derefs to its [`Embodiment`]: only `robot.rs` names
 //! every kind. [`ActionSpace`] names the original's reduced action spaces, which each kind reads
 //! its own way (see `fetch_action.rs` for Fetch's).
@@ -77,21 +80,25 @@
 //! assert!(fetch.step(&mut world, &[0.0; 26]).is_err());
 //! ```
 //!
-//! Inside: `embodiment.rs` (the interface), `robot.rs` (any robot by kind), `magic.rs` (why a
+//! Inside: `embodiment.rs` (the interface), `arm.rs` and `posed_hand.rs` (the hands' two
+//! interfaces), `robot.rs` (any robot by kind), `magic.rs` (why a
 //! move outside physics is refused), `relative.rs` (robot-relative predicates), `grasp.rs`
 //! (assisted grasping, shared); for the BehaviorRobot `action.rs` (the action and the reduced
 //! spaces), `body.rs` and `hand.rs` (the parts and their constants), `motion.rs` (from an action
 //! to the step's targets), `follow.rs` (how a palm follows its target), `proprioception.rs` and
 //! `behavior_robot.rs` (the robot as a step hook); for Fetch, `fetch_body.rs` (joints, links,
-//! forward kinematics), `fetch_model.rs` (its real meshes), `ik.rs`, `fetch_action.rs`,
+//! forward kinematics), `fetch_arm.rs` (its arm as an [`Arm`]), `fetch_model.rs` (its real
+//! meshes), `ik.rs`, `fetch_action.rs`,
 //! `fetch_proprioception.rs` and `fetch.rs` (the robot as a step hook).
 
 mod action;
+mod arm;
 mod behavior_robot;
 mod body;
 mod embodiment;
 mod fetch;
 mod fetch_action;
+mod fetch_arm;
 mod fetch_body;
 mod fetch_model;
 mod fetch_proprioception;
@@ -101,6 +108,7 @@ mod hand;
 mod ik;
 mod magic;
 mod motion;
+mod posed_hand;
 mod proprioception;
 mod relative;
 mod robot;
@@ -112,6 +120,7 @@ mod robot;
 struct GuideChapter;
 
 pub use action::{ACTION_DIM, ACTION_SCALE, Action, ActionError, ActionSpace};
+pub use arm::{Arm, ArmConfig, MAX_ARM_JOINTS};
 pub use behavior_robot::{BehaviorRobot, RobotParts};
 pub use body::{BODY_HEIGHT, BODY_LENGTH, BODY_MASS, BODY_RADIUS, EYE_REACH, HAND_REACH};
 pub use embodiment::{
@@ -137,6 +146,7 @@ pub use hand::{
 };
 pub use ik::{IK_JOINTS, IkError, IkSolver};
 pub use magic::MagicError;
+pub use posed_hand::PosedHand;
 pub use proprioception::{LocalPose, Proprioception};
 pub use relative::{EYE_FOV, REACH_DISTANCE};
 pub use robot::{Robot, RobotError, RobotKind};

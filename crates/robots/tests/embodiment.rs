@@ -96,3 +96,104 @@ fn a_space_without_the_base_has_no_base_action_and_unsupported_spaces_are_refuse
         assert_eq!(robot.held(spec.hands()), None, "{kind:?}");
     }
 }
+
+/// A robot of `kind` standing at the origin, driven through its primitive space.
+fn standing(kind: RobotKind, world: &mut World) -> Robot {
+    let start = Robot::standing_pose(kind, Vector::ZERO, 0.0);
+    Robot::add(kind, kind.spec().primitive_space, world, start).unwrap()
+}
+
+#[test]
+fn every_hand_is_lent_through_exactly_one_of_the_two_hand_interfaces() {
+    for kind in RobotKind::ALL {
+        let mut world = World::default();
+        let robot = standing(kind, &mut world);
+        for hand in 0..robot.hands() {
+            let (arm, posed) = (robot.arm(hand).is_some(), robot.posed_hand(hand).is_some());
+            assert!(
+                arm != posed,
+                "{}: hand {hand}: arm {arm}, posed {posed}",
+                kind.name()
+            );
+            if let Some(arm) = robot.arm(hand) {
+                assert_eq!(arm.hand(), hand);
+            }
+            if let Some(posed) = robot.posed_hand(hand) {
+                assert_eq!(posed.hand(), hand);
+            }
+        }
+        let beyond = robot.hands();
+        assert!(robot.arm(beyond).is_none() && robot.posed_hand(beyond).is_none());
+    }
+}
+
+#[test]
+fn an_arm_reads_its_own_pose_back_through_ik_and_predicts_its_joint_action() {
+    for kind in RobotKind::ALL {
+        let mut world = World::default();
+        let mut robot = standing(kind, &mut world);
+        let Some(arm) = robot.arm(0) else {
+            continue;
+        };
+        let now = arm.now();
+        assert_eq!(now.len(), arm.limits().len());
+        assert_eq!(arm.link_poses(&now).len(), arm.links().len());
+        // The end effector where the gripper's object is.
+        let gripper = world.pose(arm.links()[arm.gripper()]);
+        let eef = robot.base_pose(&world) * arm.eef(&now);
+        assert!((gripper.translation - eef.translation).length() < 1e-4);
+        // Its own pose is solved where it is; 5 cm higher, a solution near it (the search a
+        // straight line of the end effector makes, a step at a time) puts it there.
+        let here = arm.ik(&now, &arm.eef(&now)).expect("its own pose");
+        assert!((arm.eef(&here).translation - arm.eef(&now).translation).length() < 0.01);
+        let mut goal = arm.eef(&now);
+        goal.translation.z += 0.05;
+        let solved = arm.ik_near(&now, &goal).expect("5 cm up is within reach");
+        let reached = arm.eef(&solved);
+        assert!((reached.translation - goal.translation).length() < 0.01);
+        // A joint action's predicted step is the step the robot takes.
+        let mut delta = now;
+        delta.values_mut().fill(0.0);
+        delta[1] = 0.02;
+        let action = arm.joint_action(&delta, 1.0).expect("a finite action");
+        let predicted = arm.after(&now, &action);
+        assert!((predicted[1] - now[1] - 0.02).abs() < 1e-5, "{predicted:?}");
+        robot.set_action(&action).unwrap();
+        world.step_with(&mut robot);
+        let stepped = robot.arm(0).unwrap().now();
+        assert_eq!(stepped, predicted, "{}", kind.name());
+        assert!(robot.arm(0).unwrap().fingers_open(&world));
+    }
+}
+
+#[test]
+fn a_posed_hands_actions_move_its_target_press_its_trigger_and_raise_the_body() {
+    for kind in RobotKind::ALL {
+        let mut world = World::default();
+        let mut robot = standing(kind, &mut world);
+        let Some(hand) = robot.posed_hand(1) else {
+            continue;
+        };
+        let before = hand.target();
+        let body = robot.base_pose(&world).translation.z;
+        robot
+            .set_action(&hand.move_action([0.01, -0.02, 0.0, 0.0, 0.0, 0.0]))
+            .unwrap();
+        world.step_with(&mut robot);
+        let moved = robot.posed_hand(1).unwrap().target().translation - before.translation;
+        assert!(
+            (moved - Vector::new(0.01, -0.02, 0.0)).length() < 1e-5,
+            "{moved:?}"
+        );
+        robot.set_action(&hand.trigger_action(1.0)).unwrap();
+        world.step_with(&mut robot);
+        assert!(robot.posed_hand(1).unwrap().trigger() > 0.0);
+        assert_eq!(robot.posed_hand(0).unwrap().trigger(), 0.0);
+        robot.set_action(&hand.lift_action(-0.03)).unwrap();
+        world.step_with(&mut robot);
+        let lowered = body - robot.base_pose(&world).translation.z;
+        assert!((lowered - 0.03).abs() < 1e-3, "{lowered}");
+        // One action moved the target by 1 and 2 cm: within a step of it.
+        assert!(hand.step() >= 0.02 && hand.reach() > hand.step());
+    }
+}

@@ -47,9 +47,13 @@ pub enum WebError {
     /// The server failed while running.
     #[error("the server failed: {0}")]
     Io(#[from] std::io::Error),
-    /// Teleoperation drives the BehaviorRobot, the embodiment of the paper's demonstrations.
-    #[error("`behavior serve` drives the BehaviorRobot: build the environment with it")]
-    NotBehaviorRobot,
+    /// Teleoperation drives a robot whose two hands its 26 action numbers pose (the
+    /// BehaviorRobot, the embodiment of the paper's demonstrations).
+    #[error(
+        "`behavior serve` drives a robot whose two hands its 26 action numbers pose (the \
+         BehaviorRobot's `full` space): build the environment with it"
+    )]
+    NotTeleoperable,
     /// The environment has no episode (a reset failed earlier).
     #[error("the environment has no episode")]
     NoEpisode,

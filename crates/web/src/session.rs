@@ -16,7 +16,7 @@ use crate::xr::{Targets, XrInput, XrRig};
 use axum::body::Bytes;
 use behavior_env::Env;
 use behavior_env::record::Recorder;
-use behavior_robots::{ACTION_DIM, Robot, RobotKind};
+use behavior_robots::ACTION_DIM;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -142,9 +142,12 @@ impl Running {
     fn start(mut session: Session, files: Arc<SceneFiles>) -> Result<Running, WebError> {
         let seed = session.seed;
         session.env.reset(seed)?;
-        let kind = session.env.robot().map(|r| r.kind());
-        if kind != Some(RobotKind::Behavior) {
-            return Err(WebError::NotBehaviorRobot);
+        let drives = session
+            .env
+            .robot()
+            .is_some_and(|r| r.action_dim() == ACTION_DIM);
+        if !drives || targets(&session.env).is_none() {
+            return Err(WebError::NotTeleoperable);
         }
         let checklist = Checklist::new(&session.env.config().activity);
         let mut running = Running {
@@ -251,11 +254,7 @@ impl Running {
 
     /// Where the robot's eye and hands are told to be now.
     fn targets(&self) -> Option<Targets> {
-        let env = &self.session.env;
-        match (env.robot(), env.world()) {
-            (Some(Robot::Behavior(robot, _)), Some(world)) => Some(Targets::of(robot, world)),
-            _ => None,
-        }
+        targets(&self.session.env)
     }
 
     /// This step's action from the driver's latest command.
@@ -398,4 +397,10 @@ fn fresh_path(dir: &Path, stem: &str) -> Result<PathBuf, WebError> {
         }
         n += 1;
     }
+}
+
+/// Where the episode's robot's eye and posed hands are told to be now; `None` for a robot
+/// without two posed hands.
+fn targets(env: &Env) -> Option<Targets> {
+    Targets::of(env.robot()?.embodiment(), env.world()?)
 }

@@ -20,7 +20,7 @@
 //!   (a dead zone of 0.15 as for gamepads). Walking in the room does not move the body: the eye
 //!   follows the head up to its reach of 0.5 m.
 
-use behavior_robots::{ACTION_DIM, ACTION_SCALE, Action, BehaviorRobot, Side};
+use behavior_robots::{ACTION_DIM, ACTION_SCALE, Action, Embodiment, Side};
 use behavior_sim::World;
 use rapier3d::glamx::EulerRot;
 use rapier3d::math::{Pose, Rotation, Vector};
@@ -159,13 +159,15 @@ pub struct Targets {
 }
 
 impl Targets {
-    /// The robot's targets now.
-    pub fn of(robot: &BehaviorRobot, world: &World) -> Targets {
-        let body = robot.body_pose(world);
-        Targets {
-            eye: body.inverse() * robot.eye_pose(world),
-            hands: Side::BOTH.map(|side| robot.hand_target(side)),
-        }
+    /// The robot's targets now: its camera (the eye) and its two posed hands' targets, in
+    /// the base's frame; `None` for a robot without two posed hands.
+    pub fn of(robot: &dyn Embodiment, world: &World) -> Option<Targets> {
+        let body = robot.base_pose(world);
+        let target = |hand: usize| robot.posed_hand(hand).map(|h| h.target());
+        Some(Targets {
+            eye: body.inverse() * robot.camera_pose(world),
+            hands: [target(0)?, target(1)?],
+        })
     }
 }
 

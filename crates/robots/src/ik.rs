@@ -70,7 +70,7 @@ impl Default for IkSolver {
 }
 
 /// Iterating stops once the error is this small (m, rad): far below what is asked.
-const CONVERGED: (f32, f32) = (1e-4, 1e-3);
+pub(crate) const CONVERGED: (f32, f32) = (1e-4, 1e-3);
 /// The damping of the least-squares step (m): keeps steps small near singularities.
 const DAMPING: f64 = 0.05;
 /// The largest change of one joint in one iteration (rad or m).
@@ -124,7 +124,7 @@ pub(crate) fn rotation_error(from: Rotation, to: Rotation) -> Vector {
 }
 
 /// Solves `a x = b` for a symmetric positive definite 6 × 6 `a` (Cholesky).
-fn solve6(a: &[[f64; 6]; 6], b: &[f64; 6]) -> [f64; 6] {
+pub(crate) fn solve6(a: &[[f64; 6]; 6], b: &[f64; 6]) -> [f64; 6] {
     let mut l = [[0.0; 6]; 6];
     for i in 0..6 {
         for j in 0..=i {

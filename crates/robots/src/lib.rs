@@ -81,7 +81,9 @@
 //! ```
 //!
 //! Inside: `embodiment.rs` (the interface), `arm.rs` and `posed_hand.rs` (the hands' two
-//! interfaces), `robot.rs` (any robot by kind), `magic.rs` (why a
+//! interfaces), `chain.rs` (a serial chain of URDF joints: forward and inverse kinematics for
+//! any number of joints), `r1_kinematics.rs` (the Galaxea R1 Pro's torso and arms as chains, the
+//! third robot's first part), `robot.rs` (any robot by kind), `magic.rs` (why a
 //! move outside physics is refused), `relative.rs` (robot-relative predicates), `grasp.rs`
 //! (assisted grasping, shared); for the BehaviorRobot `action.rs` (the action and the reduced
 //! spaces), `body.rs` and `hand.rs` (the parts and their constants), `motion.rs` (from an action
@@ -95,6 +97,7 @@ mod action;
 mod arm;
 mod behavior_robot;
 mod body;
+mod chain;
 mod embodiment;
 mod fetch;
 mod fetch_action;
@@ -110,6 +113,7 @@ mod magic;
 mod motion;
 mod posed_hand;
 mod proprioception;
+mod r1_kinematics;
 mod relative;
 mod robot;
 
@@ -123,6 +127,7 @@ pub use action::{ACTION_DIM, ACTION_SCALE, Action, ActionError, ActionSpace};
 pub use arm::{Arm, ArmConfig, MAX_ARM_JOINTS};
 pub use behavior_robot::{BehaviorRobot, RobotParts};
 pub use body::{BODY_HEIGHT, BODY_LENGTH, BODY_MASS, BODY_RADIUS, EYE_REACH, HAND_REACH};
+pub use chain::{Chain, ChainIk, ChainJoint, urdf_origin};
 pub use embodiment::{
     BaseDrive, BaseMove, Embodiment, EmbodimentSpec, HandMotion, LidarMount, Scan, TrackedPart,
 };
@@ -148,5 +153,9 @@ pub use ik::{IK_JOINTS, IkError, IkSolver};
 pub use magic::MagicError;
 pub use posed_hand::PosedHand;
 pub use proprioception::{LocalPose, Proprioception};
+pub use r1_kinematics::{
+    EEF_DEPTH, GRIPPER_MOUNT, R1_ARM_JOINTS, R1_FINGER_OPEN, R1_START_TORSO, R1_TORSO_JOINTS,
+    arm_chain, arm_joints, arm_mount, eef_in_gripper, head_camera, torso_chain, torso_joints,
+};
 pub use relative::{EYE_FOV, REACH_DISTANCE};
 pub use robot::{Robot, RobotError, RobotKind};

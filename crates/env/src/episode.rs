@@ -145,8 +145,9 @@ fn first_floor_centre(world: &World) -> Vector {
 
 /// The start of an episode checkpoint's bytes, then a little-endian format version.
 const CHECKPOINT_MAGIC: &[u8; 8] = b"BHVEPISD";
-/// Bumped whenever a saved type changes shape (postcard does not describe its layout).
-pub const CHECKPOINT_FORMAT_VERSION: u32 = 1;
+/// Bumped whenever a saved type changes shape (postcard does not describe its layout): 2 when
+/// Fetch's gripper became a shared parallel gripper (issue 41).
+pub const CHECKPOINT_FORMAT_VERSION: u32 = 2;
 
 /// Why bytes are not an episode checkpoint.
 #[derive(Debug, thiserror::Error)]

@@ -13,7 +13,8 @@ use crate::fetch_body::{
     link_spec, pad_face,
 };
 use crate::fetch_proprioception::FetchProprioception;
-use crate::grasp::{GraspRules, Hold, Release, centre_on};
+use crate::grasp::GraspRules;
+use crate::gripper::{GraspContext, GripperSpec, ParallelGripper};
 use crate::ik::{IkError, IkSolver, rotation_error};
 use crate::magic::MagicError;
 use crate::motion::Blocker;
@@ -21,8 +22,8 @@ use crate::proprioception::LocalPose;
 use crate::robot::{RobotError, RobotKind, pose_ok};
 use behavior_core::wrap_angle;
 use behavior_sim::{
-    AttachmentId, AttachmentKind, AttachmentSpec, BodyRef, Drive, JointState, ObjectId, Primitive,
-    QueryFilter, STEP_SECONDS, StepHooks, Velocity, World, WorldError, groups,
+    BodyRef, JointState, ObjectId, Primitive, QueryFilter, STEP_SECONDS, StepHooks, Velocity,
+    World, WorldError, groups,
 };
 use rapier3d::glamx::EulerRot;
 use rapier3d::math::{Pose, Rotation, Vector};
@@ -44,6 +45,21 @@ pub const WORKSPACE_HEIGHT: [f32; 2] = [0.2, 1.5];
 /// force within 3 cm of travel, damped near critically for the finger's 0.08 kg.
 const FINGER_STIFFNESS: f32 = 2000.0;
 const FINGER_DAMPING: f32 = 25.0;
+
+/// Fetch's parallel gripper (its URDF's fingers, `fetch_body.rs`).
+fn gripper_spec() -> GripperSpec {
+    let finger = FetchJoint::RightFinger.info();
+    GripperSpec {
+        fingers: FINGER_LINKS,
+        open: FINGER_OPEN,
+        max_velocity: finger.max_velocity,
+        stiffness: FINGER_STIFFNESS,
+        damping: FINGER_DAMPING,
+        effort: finger.max_effort,
+        centre: GRIPPER_CENTRE,
+        pads: FINGER_LINKS.map(pad_face),
+    }
+}
 
 /// The world objects Fetch is made of: one kinematic body per link ([`FetchLink`]); the
 /// gripper's object carries the two fingers as dynamic links (0 right, 1 left).
@@ -80,13 +96,6 @@ impl FetchParts {
         let [right, left] = FINGER_LINKS.map(|l| BodyRef::link(gripper, l));
         [BodyRef::from(gripper), right, left]
     }
-}
-
-/// What the gripper holds.
-#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq)]
-struct FetchGrasp {
-    body: BodyRef,
-    attachment: AttachmentId,
 }
 
 /// Where every kinematic part is: the base on the floor and the joints.
@@ -145,12 +154,8 @@ pub struct Fetch {
     /// The wheels' angles and rates (right, left).
     wheels: [f32; 2],
     wheel_rates: [f32; 2],
-    /// The finger drives' target in force.
-    fingers: f32,
-    /// The gripper command of the step begun last.
-    gripper: f32,
-    grasp: Option<FetchGrasp>,
-    releases: Vec<Release>,
+    /// The parallel gripper: its command, what it holds, what it let go.
+    gripper: ParallelGripper,
     pending: FetchCommand,
     /// Why the last end-effector command could not be followed exactly.
     ik_error: Option<IkError>,
@@ -181,28 +186,22 @@ impl Fetch {
             joints: FetchJoints::default(),
         };
         let parts = add_parts(world, &config)?;
-        let mut fetch = Fetch {
+        let gripper = ParallelGripper::open_on(world, parts.gripper(), &gripper_spec())?;
+        let fetch = Fetch {
             parts,
             now: config,
             from: config,
             drive: (0.0, 0.0),
             wheels: [0.0; 2],
             wheel_rates: [0.0; 2],
-            fingers: f32::NAN,
-            gripper: 1.0,
-            grasp: None,
-            releases: Vec::new(),
+            gripper,
             pending: FetchCommand::default(),
             ik_error: None,
             moving: false,
             ik: IkSolver::default(),
             rules,
         };
-        for link in FINGER_LINKS {
-            world.set_joint_position(parts.gripper(), link, FINGER_OPEN)?;
-        }
-        fetch.drive_fingers(world, FINGER_OPEN);
-        fetch.press_with_gripper(world);
+        fetch.gripper.press(world, &gripper_spec());
         Ok(fetch)
     }
 
@@ -264,12 +263,12 @@ impl Fetch {
 
     /// The finger positions (right, left), m: 0 closed, 0.05 open.
     pub fn fingers(&self, world: &World) -> [f32; 2] {
-        FINGER_LINKS.map(|l| world.core().joint_position(self.parts.gripper(), l))
+        self.gripper.fingers(world, &gripper_spec())
     }
 
     /// The body the gripper holds.
     pub fn holding(&self) -> Option<BodyRef> {
-        self.grasp.map(|g| g.body)
+        self.gripper.holding()
     }
 
     /// The robot's proprioception now.
@@ -304,7 +303,7 @@ impl Fetch {
         });
         FetchProprioception {
             eef: LocalPose::of(eef),
-            grasping: self.grasp.is_some(),
+            grasping: self.gripper.holding().is_some(),
             joints,
         }
     }
@@ -622,15 +621,15 @@ impl StepHooks for Fetch {
     }
 
     fn after_step(&mut self, world: &mut World) {
-        self.update_grasp(world);
-        if !self.releases.is_empty() {
-            // Contacts come back after the release step, once apart, and not while held again.
-            let (held, now) = (self.holding(), world.steps());
-            self.releases
-                .retain_mut(|r| Some(r.body) == held || r.since == now || !r.settle(world));
-        }
+        let (spec, own) = (gripper_spec(), self.parts.all());
+        let cx = GraspContext {
+            spec: &spec,
+            rules: &self.rules,
+            own: &own,
+        };
+        self.gripper.after_step(world, cx);
         if self.from != self.now {
-            self.press_with_gripper(world);
+            self.gripper.press(world, &gripper_spec());
         }
     }
 }
@@ -658,13 +657,8 @@ impl Fetch {
             self.wheels[k] += self.wheel_rates[k] * STEP_SECONDS;
         }
         self.now = allowed;
-        self.gripper = action.gripper();
-        if self.grasp.is_none() {
-            let stroke = FetchJoint::RightFinger.info().max_velocity * STEP_SECONDS;
-            let direction = if self.gripper > 0.0 { 1.0 } else { -1.0 };
-            let target = (self.fingers + direction * stroke).clamp(0.0, FINGER_OPEN);
-            self.drive_fingers(world, target);
-        }
+        self.gripper
+            .command(world, &gripper_spec(), action.gripper());
     }
 
     /// The head's and arm's positions at the end of the step the command asks for.
@@ -755,146 +749,15 @@ impl Fetch {
         self.moving = true;
     }
 
-    /// Sets both finger drives toward `target` if it changed.
-    fn drive_fingers(&mut self, world: &mut World, target: f32) {
-        if target == self.fingers {
-            return;
-        }
-        let effort = FetchJoint::RightFinger.info().max_effort;
-        let drive = Drive::position(target, FINGER_STIFFNESS, FINGER_DAMPING, effort);
-        for link in FINGER_LINKS {
-            // The links exist and the drive's numbers are finite: this cannot fail.
-            let _ = world
-                .core_mut()
-                .drive_joint(self.parts.gripper(), link, drive);
-        }
-        self.fingers = target;
-    }
-
-    /// Tells the world where the gripper's centre and pads are, for buttons.
-    fn press_with_gripper(&self, world: &mut World) {
-        let gripper = self.parts.gripper();
-        let centre = world.pose(gripper).transform_point(GRIPPER_CENTRE);
-        let pads = FINGER_LINKS.map(|k| {
-            let pose = world.core().link_pose(gripper, k);
-            pose.transform_point(pad_face(k))
-        });
-        world.set_hand_points(&[centre, pads[0], pads[1]]);
-    }
-
-    /// After a step: lets go where the grasp must end, grasps where a closing gripper has a
-    /// body between its fingers.
-    fn update_grasp(&mut self, world: &mut World) {
-        match self.grasp {
-            Some(grasp) if self.must_release(world, &grasp) => {
-                world.core_mut().detach(grasp.attachment);
-                self.grasp = None;
-                self.releases.push(Release {
-                    body: grasp.body,
-                    parts: vec![self.parts.gripper()],
-                    since: world.steps(),
-                });
-            }
-            None if self.gripper < 0.0 => self.try_grasp(world),
-            _ => {}
-        }
-    }
-
-    fn must_release(&self, world: &World, grasp: &FetchGrasp) -> bool {
-        match world.core().attachment(grasp.attachment) {
-            None => true,
-            Some(state) => {
-                self.gripper > 0.0 || state.broken || state.violation > self.rules.max_violation
-            }
-        }
-    }
-
-    /// The assisted grasp (iGibson 2.0.3's `robots/fetch_gripper_robot.py`): a body touching both
-    /// fingers, the one closest to the gripper's centre, if the rules let it be held; attached to
-    /// the palm where it touches, its contacts with the gripper off and the fingers frozen while
-    /// held.
-    fn try_grasp(&mut self, world: &mut World) {
-        let Some((body, at)) = self.candidate(world) else {
-            return;
-        };
-        let Some(kind) = self.rules.holdable(world, body) else {
-            return;
-        };
-        let _ = self.hold(world, body, at, kind);
-    }
-
-    /// Attaches `body` to the palm at `at` as the assisted grasp does: its contacts with the
-    /// palm and fingers off, the fingers frozen where they are while it is held.
-    fn hold(
-        &mut self,
-        world: &mut World,
-        body: BodyRef,
-        at: Vector,
-        kind: AttachmentKind,
-    ) -> Result<(), WorldError> {
-        let gripper = self.parts.gripper();
-        let spec = AttachmentSpec {
-            holder: BodyRef::from(gripper),
-            held: body,
-            at,
-            kind,
-            max_force: self.rules.max_force(kind),
-        };
-        let attachment = world.core_mut().attach(spec)?;
-        for part in self.parts.gripper_bodies() {
-            let _ = world.core_mut().ignore_contacts(part, body, true);
-        }
-        let [right, _] = self.fingers(world);
-        self.drive_fingers(world, right.clamp(0.0, FINGER_OPEN));
-        self.grasp = Some(FetchGrasp { body, attachment });
-        Ok(())
-    }
-
-    /// The body touching both fingers closest to the gripper's centre, and the middle of its
-    /// contacts with them.
-    fn candidate(&self, world: &World) -> Option<(BodyRef, Vector)> {
-        let gripper = self.parts.gripper();
-        let own = self.parts.all();
-        let contacts = FINGER_LINKS.map(|l| {
-            let all = world.core().contacts(BodyRef::link(gripper, l));
-            all.unwrap_or_default()
-                .into_iter()
-                .filter_map(|c| Some((c.other?, c.point)))
-                .filter(|(b, _)| !own.contains(&b.object))
-                .collect::<Vec<_>>()
-        });
-        let centre = world.pose(gripper).transform_point(GRIPPER_CENTRE);
-        let mut best: Option<(f32, BodyRef, Vector)> = None;
-        for &(body, _) in &contacts[0] {
-            if !contacts[1].iter().any(|(b, _)| *b == body) {
-                continue;
-            }
-            let points: Vec<Vector> = contacts
-                .iter()
-                .flatten()
-                .filter(|(b, _)| *b == body)
-                .map(|(_, p)| *p)
-                .collect();
-            let at = points.iter().copied().sum::<Vector>() / points.len() as f32;
-            let d = points
-                .iter()
-                .map(|p| (*p - centre).length())
-                .fold(f32::INFINITY, f32::min);
-            if best.is_none_or(|(bd, bb, _)| d < bd || (d == bd && body < bb)) {
-                best = Some((d, body, at));
-            }
-        }
-        best.map(|(_, body, at)| (body, at))
-    }
-
     /// The static loads of the torso and the arm joints (torso first): what holds the links
     /// beyond each, and what the gripper holds, against gravity (see `fetch_proprioception.rs`).
     fn static_efforts(&self, world: &World) -> [f32; 8] {
         let gravity = self.now.base.rotation.inverse() * world.core().gravity();
         let poses = self.now.joints.link_poses();
         let held = self
-            .grasp
-            .map_or(0.0, |g| world.core().total_mass(g.body.object));
+            .gripper
+            .holding()
+            .map_or(0.0, |b| world.core().total_mass(b.object));
         // (mass, centre in the base frame) of each link the arm carries, gripper last.
         let mut loads: Vec<(f32, Vector)> = (4..FETCH_LINKS)
             .map(|k| {
@@ -957,8 +820,8 @@ impl Fetch {
         for (k, link) in FetchLink::ALL.into_iter().enumerate() {
             world.set_pose(self.parts.link(link), base * poses[k])?;
         }
-        if let Some(grasp) = self.grasp {
-            let held = grasp.body.object;
+        if let Some(body) = self.gripper.holding() {
+            let held = body.object;
             let relative = before.inv_mul(&world.pose(held));
             world.set_pose(held, world.pose(gripper) * relative)?;
         }
@@ -967,76 +830,43 @@ impl Fetch {
         self.drive = (0.0, 0.0);
         self.wheel_rates = [0.0; 2];
         self.moving = false;
-        self.press_with_gripper(world);
+        self.gripper.press(world, &gripper_spec());
         Ok(())
     }
 
     /// Puts `object` between the fingers, attaches it as the assisted grasp does and closes.
     fn grasp_now_in(&mut self, world: &mut World, object: ObjectId) -> Result<(), MagicError> {
-        self.empty_hand()?;
-        let body = BodyRef::from(object);
-        let kind = self.holdable(world, body)?;
-        let gripper = self.parts.gripper();
-        let centre = world.pose(gripper).transform_point(GRIPPER_CENTRE);
-        centre_on(world, object, centre)?;
-        let attachment = self.at_once().attach(world, gripper, body, centre, kind)?;
-        self.gripper = -1.0;
-        self.grasp = Some(FetchGrasp { body, attachment });
-        Ok(())
+        let (spec, own) = (gripper_spec(), self.parts.all());
+        let cx = GraspContext {
+            spec: &spec,
+            rules: &self.rules,
+            own: &own,
+        };
+        self.gripper.grasp_now(world, cx, object)
     }
 
     /// Holds `object` where it is, if the palm or a finger touches it: the forced assisted
     /// grasp after a physical GRASP closed the gripper (the BehaviorRobot's, which asks for
     /// contact too), attached at the middle of those contacts.
     fn grasp_touching_in(&mut self, world: &mut World, object: ObjectId) -> Result<(), MagicError> {
-        self.empty_hand()?;
-        let mut points = Vec::new();
-        let mut body = None;
-        for part in self.parts.gripper_bodies() {
-            for c in world.core().contacts(part)? {
-                if let Some(b) = c.other.filter(|b| b.object == object) {
-                    points.push(c.point);
-                    body = Some(body.map_or(b, |old: BodyRef| old.min(b)));
-                }
-            }
-        }
-        let body = body.ok_or(MagicError::NotTouching(object))?;
-        let kind = self.holdable(world, body)?;
-        let at = points.iter().copied().sum::<Vector>() / points.len() as f32;
-        self.hold(world, body, at, kind)?;
-        self.gripper = -1.0;
-        Ok(())
-    }
-
-    /// Refuses a grasp while the gripper holds something.
-    fn empty_hand(&self) -> Result<(), MagicError> {
-        match self.grasp {
-            Some(grasp) => Err(MagicError::HandFull(grasp.body.object)),
-            None => Ok(()),
-        }
-    }
-
-    /// How the grasp rules would hold `body`, if at all (never one of Fetch's own parts).
-    fn holdable(&self, world: &World, body: BodyRef) -> Result<AttachmentKind, MagicError> {
-        self.rules.kind_for(world, body, &self.parts.all(), None)
-    }
-
-    /// Takes and lets go of things at once, as the assisted grasp does.
-    fn at_once(&mut self) -> Hold<'_> {
-        Hold {
+        let (spec, own) = (gripper_spec(), self.parts.all());
+        let cx = GraspContext {
+            spec: &spec,
             rules: &self.rules,
-            own: self.parts.all().to_vec(),
-            releases: &mut self.releases,
-        }
+            own: &own,
+        };
+        self.gripper.grasp_touching(world, cx, object)
     }
 
     /// Detaches what the gripper holds and opens it.
     fn release_from(&mut self, world: &mut World) -> Option<ObjectId> {
-        self.gripper = 1.0;
-        let grasp = self.grasp.take()?;
-        self.at_once().let_go(world, grasp.body, grasp.attachment);
-        self.drive_fingers(world, FINGER_OPEN);
-        Some(grasp.body.object)
+        let (spec, own) = (gripper_spec(), self.parts.all());
+        let cx = GraspContext {
+            spec: &spec,
+            rules: &self.rules,
+            own: &own,
+        };
+        self.gripper.release(world, cx)
     }
 }
 

@@ -85,7 +85,8 @@
 //! any number of joints), `r1_kinematics.rs` (the Galaxea R1 Pro's torso and arms as chains, the
 //! third robot's first part), `robot.rs` (any robot by kind), `magic.rs` (why a
 //! move outside physics is refused), `relative.rs` (robot-relative predicates), `grasp.rs`
-//! (assisted grasping, shared); for the BehaviorRobot `action.rs` (the action and the reduced
+//! (assisted grasping, shared), `gripper.rs` (a parallel-jaw gripper and its assisted grasp,
+//! for any robot that carries one: Fetch's); for the BehaviorRobot `action.rs` (the action and the reduced
 //! spaces), `body.rs` and `hand.rs` (the parts and their constants), `motion.rs` (from an action
 //! to the step's targets), `follow.rs` (how a palm follows its target), `proprioception.rs` and
 //! `behavior_robot.rs` (the robot as a step hook); for Fetch, `fetch_body.rs` (joints, links,
@@ -107,6 +108,7 @@ mod fetch_model;
 mod fetch_proprioception;
 mod follow;
 mod grasp;
+mod gripper;
 mod hand;
 mod ik;
 mod magic;

@@ -508,8 +508,9 @@ fn goal_seed(goal: &Pose) -> u64 {
         .fold(0u64, |h, v| h.rotate_left(9) ^ u64::from(v.to_bits()))
 }
 
-/// An arm folded over its base before the robot drives (Fetch's, as the real robot's `tuck_arm` folds
-/// it (reference: robots §1.6, iGibson's tucked joints), the torso where it is or higher:
+/// An arm folded over its base before the robot drives ([`Arm::tucked`]: Fetch's as the real
+/// robot's `tuck_arm` folds it, reference: robots §1.6, iGibson's tucked joints), the torso
+/// where it is or higher:
 /// unfolded, the BEHAVIOR start pose holds the gripper 0.55 m ahead at a counter's height, and
 /// every stand found with it left a hamburger on a counter 0.9 m from the base. Holding
 /// something that does not fit the folded arm (a tile, a pad), it is carried over the front of
@@ -963,7 +964,7 @@ fn straight_up(
     follow(steps, hand, &path, gripper, Check::Touching, executed)
 }
 
-/// Still steps with the gripper at `gripper` (a still Fetch action closes it).
+/// Still steps with the gripper at `gripper` (the arm's joint action moving no joint).
 fn hold(
     steps: &mut Stepper<'_, '_>,
     hand: usize,

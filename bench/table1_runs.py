@@ -15,24 +15,21 @@ primitives did the same things for the same number of steps in every run.
 import argparse
 import concurrent.futures
 import hashlib
+import importlib.util
 import json
+import pathlib
 import subprocess
 import sys
 
-TABLE1 = [
-    "bringing_in_wood",
-    "collect_misplaced_items",
-    "moving_boxes_to_storage",
-    "organizing_file_cabinet",
-    "throwing_away_leftovers",
-    "putting_dishes_away_after_cleaning",
-    "putting_leftovers_away",
-    "re-shelving_library_books",
-    "laying_tile_floors",
-    "setting_up_candles",
-    "picking_up_trash",
-    "storing_food",
-]
+def table1():
+    """Table 1's 12 activities in the paper's order, as the Python baselines name them
+    (`python/behavior/baselines/rows.py`, plain Python: loaded by path, no package needed)."""
+    path = pathlib.Path(__file__).resolve().parent.parent / "python/behavior/baselines/rows.py"
+    spec = importlib.util.spec_from_file_location("table1_rows", path)
+    rows = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = rows
+    spec.loader.exec_module(rows)
+    return rows.ACTIVITIES
 
 
 def one(binary, robot, activity, seed):
@@ -51,7 +48,7 @@ def one(binary, robot, activity, seed):
 
 
 def run(args):
-    jobs = [(a, s) for a in TABLE1 for s in range(args.seeds)]
+    jobs = [(a, s) for a in table1() for s in range(args.seeds)]
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         rows = list(pool.map(lambda j: one(args.binary, args.robot, *j), jobs))
     with open(args.out, "w") as f:

@@ -36,7 +36,7 @@
 use crate::execute::RunError;
 use crate::manipulation::{
     CLOSE_STEPS, GRASP_JITTER, Grip, Hands, Manipulator, RELEASE_STEPS, SETTLE_STEPS, StandTest,
-    grasp_point, on_or_in_goals, placement_goals, rng_seed, vertical_axis,
+    grasp_point, holds, on_or_in_goals, placement_goals, rng_seed, vertical_axis,
 };
 use crate::physical::{Attempt, PHYSICAL_BUDGET, Stepper, attempt, call_rng, force_grasp};
 use crate::primitive::{Call, Failure};
@@ -204,11 +204,6 @@ fn arm_of(env: &Env, hand: usize) -> Option<(&World, &dyn Embodiment, Arc<dyn Ar
         return None;
     }
     Some((world, robot.embodiment(), robot.arm(hand)?))
-}
-
-/// Whether hand `hand` holds `object`.
-fn holding(env: &Env, hand: usize, object: ObjectId) -> bool {
-    env.robot().is_some_and(|r| r.held(hand) == Some(object))
 }
 
 /// The manipulator of hands at the end of jointed arms, read through each robot's [`Arm`].
@@ -1023,7 +1018,7 @@ fn descend(
 /// Closes the gripper until it holds the object; touching it and not holding it once closed,
 /// forces the grasp ([`force_grasp`]).
 fn close(steps: &mut Stepper<'_, '_>, call: &Call) -> Result<(), RunError> {
-    let holds = |env: &Env| holding(env, call.hand, call.object);
+    let holds = |env: &Env| holds(env, call);
     if hold(steps, call.hand, CLOSE_STEPS, CLOSED, holds)?.is_err() || holds(steps.env) {
         return Ok(());
     }

@@ -210,8 +210,8 @@ pub(crate) fn place_with<M: Manipulator>(
     Ok(Ok(hands.path(reached)))
 }
 
-/// Whether hand `call.hand` holds `call.object`.
-fn holds(env: &Env, call: &Call) -> bool {
+/// Whether hand `call.hand` of the episode's robot holds `call.object`.
+pub(crate) fn holds(env: &Env, call: &Call) -> bool {
     env.robot()
         .is_some_and(|r| r.held(call.hand) == Some(call.object))
 }

@@ -31,7 +31,7 @@ use crate::execute::Watcher;
 use crate::execute::{RecordedCall, RunError};
 use crate::manipulation::{
     CLOSE_STEPS, GRASP_JITTER, Grip, Hands, Manipulator, RELEASE_STEPS, SETTLE_STEPS, StandTest,
-    grasp_point, grasp_with, on_or_in_goals, on_top, place_with, placement_goals, rng_seed,
+    grasp_point, grasp_with, holds, on_or_in_goals, on_top, place_with, placement_goals, rng_seed,
 };
 use crate::physical::{
     Attempt, PHYSICAL_BUDGET, STEPS_PER_WAYPOINT, Stepper, attempt, base_config, call_rng,
@@ -855,7 +855,7 @@ fn close(steps: &mut Stepper<'_, '_>, call: &Call) -> Result<(), RunError> {
     let side = Side::BOTH[call.hand];
     let action = trigger_action(steps.env, side, 1.0);
     for _ in 0..CLOSE_STEPS {
-        if steps.act(&action)?.is_err() || holds(steps.env, side, call.object) {
+        if steps.act(&action)?.is_err() || holds(steps.env, call) {
             return Ok(());
         }
         // Past the grasp's threshold, touching and still not holding: force it.
@@ -966,11 +966,6 @@ fn touches(env: &Env, side: Side, object: ObjectId) -> bool {
             .iter()
             .any(|c| c.other.is_some_and(|b| b.object == object))
     })
-}
-
-/// Whether the hand holds the object.
-fn holds(env: &Env, side: Side, object: ObjectId) -> bool {
-    posed(env).is_some_and(|(_, robot)| robot.holding(side) == Some(object))
 }
 
 /// The manipulator of hands posed directly by the actions: the BehaviorRobot's.

@@ -28,7 +28,7 @@ use behavior_sim::{
 use rapier3d::glamx::EulerRot;
 use rapier3d::math::{Pose, Rotation, Vector};
 use std::f32::consts::{FRAC_PI_2, PI};
-use std::sync::Arc;
+use std::sync::{Arc, LazyLock};
 
 /// How fast the torso and arm joints close on the IK solution, 1/s (iGibson's `kv`): each
 /// moves at `ARM_GAIN · (q_ik − q)`, within its maximum velocity. A full Δ of 5 cm per step so
@@ -46,7 +46,9 @@ pub const WORKSPACE_HEIGHT: [f32; 2] = [0.2, 1.5];
 const FINGER_STIFFNESS: f32 = 2000.0;
 const FINGER_DAMPING: f32 = 25.0;
 
-/// Fetch's parallel gripper (its URDF's fingers, `fetch_body.rs`).
+/// Fetch's parallel gripper (its URDF's fingers, `fetch_body.rs`), made once: the step reads it.
+pub(crate) static GRIPPER: LazyLock<GripperSpec> = LazyLock::new(gripper_spec);
+
 fn gripper_spec() -> GripperSpec {
     let finger = FetchJoint::RightFinger.info();
     GripperSpec {
@@ -93,8 +95,7 @@ impl FetchParts {
     /// The bodies that touch what the gripper takes: its palm and its two fingers.
     pub fn gripper_bodies(&self) -> [BodyRef; 3] {
         let gripper = self.gripper();
-        let [right, left] = FINGER_LINKS.map(|l| BodyRef::link(gripper, l));
-        [BodyRef::from(gripper), right, left]
+        crate::gripper::bodies(gripper, &GRIPPER)
     }
 }
 
@@ -186,7 +187,7 @@ impl Fetch {
             joints: FetchJoints::default(),
         };
         let parts = add_parts(world, &config)?;
-        let gripper = ParallelGripper::open_on(world, parts.gripper(), &gripper_spec())?;
+        let gripper = ParallelGripper::open_on(world, parts.gripper(), &GRIPPER)?;
         let fetch = Fetch {
             parts,
             now: config,
@@ -201,7 +202,7 @@ impl Fetch {
             ik: IkSolver::default(),
             rules,
         };
-        fetch.gripper.press(world, &gripper_spec());
+        fetch.gripper.press(world, &GRIPPER);
         Ok(fetch)
     }
 
@@ -263,7 +264,7 @@ impl Fetch {
 
     /// The finger positions (right, left), m: 0 closed, 0.05 open.
     pub fn fingers(&self, world: &World) -> [f32; 2] {
-        self.gripper.fingers(world, &gripper_spec())
+        self.gripper.fingers(world, &GRIPPER)
     }
 
     /// The body the gripper holds.
@@ -621,15 +622,15 @@ impl StepHooks for Fetch {
     }
 
     fn after_step(&mut self, world: &mut World) {
-        let (spec, own) = (gripper_spec(), self.parts.all());
+        let own = self.parts.all();
         let cx = GraspContext {
-            spec: &spec,
+            spec: &GRIPPER,
             rules: &self.rules,
             own: &own,
         };
         self.gripper.after_step(world, cx);
         if self.from != self.now {
-            self.gripper.press(world, &gripper_spec());
+            self.gripper.press(world, &GRIPPER);
         }
     }
 }
@@ -657,8 +658,7 @@ impl Fetch {
             self.wheels[k] += self.wheel_rates[k] * STEP_SECONDS;
         }
         self.now = allowed;
-        self.gripper
-            .command(world, &gripper_spec(), action.gripper());
+        self.gripper.command(world, &GRIPPER, action.gripper());
     }
 
     /// The head's and arm's positions at the end of the step the command asks for.
@@ -830,15 +830,15 @@ impl Fetch {
         self.drive = (0.0, 0.0);
         self.wheel_rates = [0.0; 2];
         self.moving = false;
-        self.gripper.press(world, &gripper_spec());
+        self.gripper.press(world, &GRIPPER);
         Ok(())
     }
 
     /// Puts `object` between the fingers, attaches it as the assisted grasp does and closes.
     fn grasp_now_in(&mut self, world: &mut World, object: ObjectId) -> Result<(), MagicError> {
-        let (spec, own) = (gripper_spec(), self.parts.all());
+        let own = self.parts.all();
         let cx = GraspContext {
-            spec: &spec,
+            spec: &GRIPPER,
             rules: &self.rules,
             own: &own,
         };
@@ -849,9 +849,9 @@ impl Fetch {
     /// grasp after a physical GRASP closed the gripper (the BehaviorRobot's, which asks for
     /// contact too), attached at the middle of those contacts.
     fn grasp_touching_in(&mut self, world: &mut World, object: ObjectId) -> Result<(), MagicError> {
-        let (spec, own) = (gripper_spec(), self.parts.all());
+        let own = self.parts.all();
         let cx = GraspContext {
-            spec: &spec,
+            spec: &GRIPPER,
             rules: &self.rules,
             own: &own,
         };
@@ -860,9 +860,9 @@ impl Fetch {
 
     /// Detaches what the gripper holds and opens it.
     fn release_from(&mut self, world: &mut World) -> Option<ObjectId> {
-        let (spec, own) = (gripper_spec(), self.parts.all());
+        let own = self.parts.all();
         let cx = GraspContext {
-            spec: &spec,
+            spec: &GRIPPER,
             rules: &self.rules,
             own: &own,
         };

@@ -3,11 +3,9 @@
 //! ([`IkSolver`]) and joint-by-joint action ([`FetchJointAction`]).
 
 use crate::arm::{Arm, ArmConfig};
-use crate::fetch::{FetchParts, step_joints};
+use crate::fetch::{FetchParts, GRIPPER, step_joints};
 use crate::fetch_action::{FETCH_JOINT_ACTION_DIM, FetchCommand, FetchJointAction};
-use crate::fetch_body::{
-    FETCH_LINKS, FINGER_LINKS, FINGER_OPEN, FetchJoint, FetchJoints, FetchLink,
-};
+use crate::fetch_body::{FETCH_LINKS, FINGER_OPEN, FetchJoint, FetchJoints, FetchLink};
 use crate::ik::IkSolver;
 use behavior_sim::{BodyRef, ObjectId, Primitive, World};
 use rapier3d::math::{Pose, Vector};
@@ -138,7 +136,7 @@ impl Arm for FetchArm {
     }
 
     fn fingers_open(&self, world: &World) -> bool {
-        let [a, b] = FINGER_LINKS.map(|l| world.core().joint_position(self.parts.gripper(), l));
+        let [a, b] = crate::gripper::fingers(world, self.parts.gripper(), &GRIPPER);
         a.min(b) >= 0.9 * FINGER_OPEN
     }
 

@@ -59,6 +59,17 @@ pub(crate) struct ParallelGripper {
     releases: Vec<Release>,
 }
 
+/// The bodies of the gripper of `palm` that touch what it takes: the palm and the two fingers.
+pub(crate) fn bodies(palm: ObjectId, spec: &GripperSpec) -> [BodyRef; 3] {
+    let [a, b] = spec.fingers.map(|l| BodyRef::link(palm, l));
+    [BodyRef::from(palm), a, b]
+}
+
+/// The finger positions of the gripper of `palm`, m: 0 closed.
+pub(crate) fn fingers(world: &World, palm: ObjectId, spec: &GripperSpec) -> [f32; 2] {
+    spec.fingers.map(|l| world.core().joint_position(palm, l))
+}
+
 impl ParallelGripper {
     /// The gripper of `palm` (already in `world`, fingers at their joints), opened.
     pub(crate) fn open_on(
@@ -82,8 +93,7 @@ impl ParallelGripper {
 
     /// The bodies that touch what it takes: the palm and the two fingers.
     pub(crate) fn bodies(&self, spec: &GripperSpec) -> [BodyRef; 3] {
-        let [a, b] = spec.fingers.map(|l| BodyRef::link(self.palm, l));
-        [BodyRef::from(self.palm), a, b]
+        bodies(self.palm, spec)
     }
 
     /// The body it holds.
@@ -93,8 +103,7 @@ impl ParallelGripper {
 
     /// The fingers' positions, m: 0 closed.
     pub(crate) fn fingers(&self, world: &World, spec: &GripperSpec) -> [f32; 2] {
-        spec.fingers
-            .map(|l| world.core().joint_position(self.palm, l))
+        fingers(world, self.palm, spec)
     }
 
     /// Takes the step's command: the fingers a stroke further open or closed, unless it holds

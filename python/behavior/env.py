@@ -39,6 +39,13 @@ def _options(robot, scene, seed, max_steps, clutter, observations, image_size,
     }
 
 
+def _action_box(bounds) -> spaces.Box:
+    """The continuous action space: each number within its ``(low, high)`` from the engine
+    ([-1, 1], or a joint's limits where the number is the joint's position, as the R1's)."""
+    low, high = (np.array(b, dtype=np.float32) for b in zip(*bounds))
+    return spaces.Box(low, high, dtype=np.float32)
+
+
 def _box(value: np.ndarray) -> spaces.Box:
     """The space of one observation, from its first value: images of integers within their
     type's range, the rest unbounded."""
@@ -52,7 +59,8 @@ class BehaviorEnv(gymnasium.Env):
     """One BEHAVIOR activity with a robot, as Gymnasium's ``Env``.
 
     - ``activity``: an official activity's name (``behavior.activities()``).
-    - ``robot``: ``"behavior"`` (the BehaviorRobot, 26-d actions) or ``"fetch"`` (11-d).
+    - ``robot``: ``"behavior"`` (the BehaviorRobot, 26-d actions), ``"fetch"`` (11-d) or
+      ``"r1"`` (the Galaxea R1 Pro, the BEHAVIOR Challenge's 23-d joint-position action).
     - ``scene``: a named home; ``None`` for the first that covers the activity.
     - ``seed``: the first episode's seed (building the environment samples it once, to learn
       the observation's shapes).
@@ -127,8 +135,7 @@ class BehaviorEnv(gymnasium.Env):
         if self._primitives:
             self.action_space = spaces.Discrete(self._env.primitive_count)
         else:
-            dim = self._env.action_dim
-            self.action_space = spaces.Box(-1.0, 1.0, shape=(dim,), dtype=np.float32)
+            self.action_space = _action_box(self._env.action_bounds)
         self.render_mode = render_mode
 
     @property

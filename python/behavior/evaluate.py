@@ -194,7 +194,7 @@ def main(argv=None) -> int:
     who.add_argument("--policy", choices=["random"], help="a built-in agent")
     p.add_argument("--row", default="ap_nophys_fullobs", choices=sorted(ROWS),
                    help="the environment's setup for --policy (a model's own otherwise)")
-    p.add_argument("--robot", default="behavior", choices=["behavior", "fetch"])
+    p.add_argument("--robot", default="behavior", choices=["behavior", "fetch", "r1"])
     p.add_argument("--horizon", type=int, default=None, help="actions per episode")
     p.add_argument("--instances", type=int, nargs="+", default=list(INSTANCE_IDS),
                    help="instance ids, 0-29")

@@ -8,7 +8,7 @@ from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
 from . import _core
-from .env import _SEED_BOUND, STATE_OBSERVATIONS, _box, _options
+from .env import _SEED_BOUND, STATE_OBSERVATIONS, _action_box, _box, _options
 
 
 class BehaviorVecEnv(VectorEnv):
@@ -56,9 +56,7 @@ class BehaviorVecEnv(VectorEnv):
         self.single_observation_space = spaces.Dict(
             {name: _box(value[0]) for name, value in first.items()}
         )
-        self.single_action_space = spaces.Box(
-            -1.0, 1.0, shape=(self._env.action_dim,), dtype=np.float32
-        )
+        self.single_action_space = _action_box(self._env.action_bounds)
         self.observation_space = batch_space(self.single_observation_space, num_envs)
         self.action_space = batch_space(self.single_action_space, num_envs)
         self.render_mode = render_mode

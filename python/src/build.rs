@@ -57,7 +57,7 @@ pub enum BuildError {
 pub struct EnvSpec {
     /// An official activity's name.
     pub activity: String,
-    /// `behavior` or `fetch`.
+    /// `behavior`, `fetch` or `r1`.
     pub robot: String,
     /// A named home; `None` for the first that covers the activity.
     pub scene: Option<String>,

@@ -28,6 +28,12 @@ struct Episode {
 /// A BEHAVIOR environment: `reset` and `step` as Gymnasium's, observations as a dict of numpy
 /// arrays (`proprioception`, `task_obs`), info as a dict (`steps`, `q`, `success`,
 /// `conjuncts`). The Gymnasium class `behavior.BehaviorEnv` wraps it.
+/// Each action number's `(low, high)` for the robot of `env` (none without one).
+pub(crate) fn action_bounds(env: &Env) -> Vec<(f32, f32)> {
+    let bounds = env.robot().map_or(Vec::new(), |r| r.action_bounds());
+    bounds.into_iter().map(|[lo, hi]| (lo, hi)).collect()
+}
+
 #[pyclass(module = "behavior._core", name = "Env")]
 pub struct PyEnv {
     // Env is Send, not Sync: the lock makes the class shareable, as pyo3 asks.
@@ -36,6 +42,7 @@ pub struct PyEnv {
     /// to find the binding's own cost per step.
     inside: Mutex<(f64, u64)>,
     action_dim: usize,
+    action_bounds: Vec<(f32, f32)>,
     activity: String,
     robot: String,
     scene: String,
@@ -72,6 +79,7 @@ impl PyEnv {
         let (episode, scene) = built.map_err(PyValueError::new_err)?;
         Ok(PyEnv {
             action_dim: episode.env.robot().map_or(0, |r| r.action_dim()),
+            action_bounds: action_bounds(&episode.env),
             episode: Mutex::new(episode),
             inside: Mutex::new((0.0, 0)),
             activity,
@@ -196,10 +204,18 @@ impl PyEnv {
         Ok(*self.inside.lock().map_err(|_| broken())?)
     }
 
-    /// How many numbers a continuous action has (26 for the BehaviorRobot, 11 for Fetch).
+    /// How many numbers a continuous action has (26 for the BehaviorRobot, 11 for Fetch, 23
+    /// for the R1).
     #[getter]
     fn action_dim(&self) -> usize {
         self.action_dim
+    }
+
+    /// Each action number's `(low, high)`: (−1, 1), or a joint's limits where the number is
+    /// its position (the R1's); values beyond are clipped.
+    #[getter]
+    fn action_bounds(&self) -> Vec<(f32, f32)> {
+        self.action_bounds.clone()
     }
 
     /// The activity's name.
@@ -208,7 +224,7 @@ impl PyEnv {
         &self.activity
     }
 
-    /// `behavior` or `fetch`.
+    /// `behavior`, `fetch` or `r1`.
     #[getter]
     fn robot(&self) -> &str {
         &self.robot

@@ -18,7 +18,7 @@ const RENDER_FOV: f32 = std::f32::consts::FRAC_PI_3;
 #[derive(Clone, Debug, FromPyObject)]
 #[pyo3(from_item_all)]
 pub struct EnvOptions {
-    /// `behavior` or `fetch`.
+    /// `behavior`, `fetch` or `r1`.
     pub robot: String,
     /// A named home, or `None` for the first that covers the activity.
     pub scene: Option<String>,

@@ -45,6 +45,7 @@ pub struct PyVecEnv {
     slots: Mutex<Vec<Slot>>,
     pool: rayon::ThreadPool,
     action_dim: usize,
+    action_bounds: Vec<(f32, f32)>,
 }
 
 #[pymethods]
@@ -90,10 +91,12 @@ impl PyVecEnv {
         });
         let slots = slots.map_err(PyValueError::new_err)?;
         let action_dim = slots[0].env.robot().map_or(0, |r| r.action_dim());
+        let action_bounds = crate::env::action_bounds(&slots[0].env);
         Ok(PyVecEnv {
             slots: Mutex::new(slots),
             pool,
             action_dim,
+            action_bounds,
         })
     }
 
@@ -177,6 +180,12 @@ impl PyVecEnv {
     #[getter]
     fn num_envs(&self) -> PyResult<usize> {
         Ok(self.slots.lock().map_err(|_| broken())?.len())
+    }
+
+    /// Each action number's `(low, high)` (see `Env.action_bounds`).
+    #[getter]
+    fn action_bounds(&self) -> Vec<(f32, f32)> {
+        self.action_bounds.clone()
     }
 
     /// How many numbers one environment's action has.

@@ -25,10 +25,17 @@ def test_every_official_activity_is_registered():
         assert f"behavior/{name}-v0" in gymnasium.registry
 
 
-@pytest.mark.parametrize("robot,dim,proprioception", [("behavior", 26, 22), ("fetch", 11, 49)])
+@pytest.mark.parametrize(
+    "robot,dim,proprioception", [("behavior", 26, 22), ("fetch", 11, 49), ("r1", 23, 57)]
+)
 def test_check_env_passes_with_each_robot(robot, dim, proprioception):
     env = make(robot)
     assert env.action_space.shape == (dim,)
+    if robot == "r1":
+        # Joint positions within their limits: the torso's first joint -1.1345..1.8326 rad.
+        assert env.action_space.low[3] == pytest.approx(-1.1345)
+        assert env.action_space.high[3] == pytest.approx(1.8326)
+        assert env.action_space.low[0] == -1.0 and env.action_space.high[14] == 1.0
     assert env.observation_space["proprioception"].shape == (proprioception,)
     assert env.observation_space["task_obs"].shape == (456,)
     check_env(env.unwrapped, skip_render_check=True)
@@ -109,7 +116,7 @@ def test_two_environments_step_at_once_in_threads():
 
 
 @pytest.mark.parametrize("mode", ["symbolic", "physical"])
-@pytest.mark.parametrize("robot", ["behavior", "fetch"])
+@pytest.mark.parametrize("robot", ["behavior", "fetch", "r1"])
 def test_check_env_passes_with_primitives(robot, mode):
     env = make(robot, action_space="primitives", primitive_mode=mode)
     assert isinstance(env.action_space, gymnasium.spaces.Discrete)

@@ -1,4 +1,4 @@
-//! `behavior bench env`: environment steps per second for both robots, idle and random agents,
+//! `behavior bench env`: environment steps per second for every robot, idle and random agents,
 //! physics at 1/300 and 1/120 s, state only; then the BehaviorRobot with its eye camera's RGB,
 //! depth and segmentation at 128² and 512², in the image profiles asked for (realistic and fast
 //! by default) side by side, rendered on whatever adapter there is (lavapipe on a CPU). On the
@@ -13,6 +13,7 @@ use anyhow::{Context, Result};
 use behavior_core::WALL_SYNSET;
 use behavior_env::{Agent, CameraConfig, Env, EnvConfig, Instances};
 use behavior_render::ImageProfile;
+use behavior_robots::RobotKind;
 use indicatif::ProgressBar;
 use serde::Serialize;
 use std::path::Path;
@@ -54,8 +55,8 @@ pub struct BenchEnvArgs {
     /// The eye camera's image sizes, square (repeat the flag for several); default: 128 and 512.
     #[arg(long = "image-size", value_name = "N", value_parser = clap::value_parser!(u32).range(1..=4096))]
     image_sizes: Vec<u32>,
-    /// The robots to time, behavior or fetch (repeat the flag for both); default: both without
-    /// images, the BehaviorRobot with images.
+    /// The robots to time, behavior, fetch or r1 (repeat the flag for several); default: every
+    /// robot without images, the BehaviorRobot with images.
     #[arg(long = "robot", value_name = "ROBOT")]
     robots: Vec<String>,
     #[arg(long)]
@@ -176,7 +177,7 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
                 .count()
         });
         drop(sampler);
-        let both = ["behavior", "fetch"].map(String::from);
+        let both = RobotKind::ALL.map(|kind| kind.name().to_string());
         let state_robots: &[String] = match (args.images_only, args.robots.is_empty()) {
             (true, _) => &[],
             (false, true) => &both,
@@ -293,7 +294,7 @@ fn measure(config: EnvConfig, agent: &str, steps: u32) -> Result<Row> {
         if k == WARMUP {
             env.take_timings();
         }
-        agent.act(dim, &mut action);
+        agent.act(&env, &mut action);
         env.step(&action)?;
     }
     let t = env.take_timings();

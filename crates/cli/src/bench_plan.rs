@@ -44,7 +44,7 @@ pub struct BenchPlanArgs {
     /// widened by 1 m (the original's).
     #[arg(long)]
     home_bounds: bool,
-    /// The embodiment: behavior or fetch.
+    /// The embodiment: behavior, fetch or r1.
     #[arg(long, default_value = "behavior")]
     robot: String,
     /// Also drive to every object with physics (physical NAVIGATE_TO: its own stand search,

@@ -24,7 +24,7 @@ pub struct EpisodeArgs {
     pub scene: Option<String>,
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
-    /// The embodiment: behavior (the BehaviorRobot) or fetch.
+    /// The embodiment: behavior (the BehaviorRobot), fetch or r1 (the Galaxea R1 Pro).
     #[arg(long, default_value = "behavior")]
     pub robot: String,
     /// Physics time step: 1/300 or 1/120.

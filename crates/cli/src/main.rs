@@ -97,7 +97,7 @@ enum Command {
 
 #[derive(Subcommand)]
 enum BenchCommand {
-    /// Environment steps per second: both robots, idle and random agents, 1/300 and 1/120 s.
+    /// Environment steps per second: every robot, idle and random agents, 1/300 and 1/120 s.
     Env(bench_env::BenchEnvArgs),
     /// The base planner in furnished homes: a place to stand near each activity object, and a
     /// path there.

@@ -129,7 +129,6 @@ pub fn render(args: RenderArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let table = categories(&prelude.knowledge.taxonomy);
     let mut view = View::with_profile(camera(&args, &env)?, args.profile);
     let mut agent = Agent::named("random", args.episode.seed).context("the random agent")?;
-    let dim = env.robot().map_or(0, |r| r.action_dim());
     let mut action = Vec::new();
     for k in 0..args.steps {
         if k + 1 == args.steps {
@@ -137,7 +136,7 @@ pub fn render(args: RenderArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
             view.camera = camera(&args, &env)?;
             draw(&env, &mut view, &mut renderer, &table, &modalities)?;
         }
-        agent.act(dim, &mut action);
+        agent.act(&env, &mut action);
         env.step(&action)?;
     }
     view.camera = camera(&args, &env)?;

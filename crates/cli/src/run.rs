@@ -81,7 +81,7 @@ pub fn run(args: RunArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let mut action = Vec::with_capacity(dim);
     let start = Instant::now();
     loop {
-        agent.act(dim, &mut action);
+        agent.act(&env, &mut action);
         let step = env.step(&action)?;
         if let Some(r) = &mut recorder {
             r.record(&env, &action)?;

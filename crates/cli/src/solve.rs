@@ -52,7 +52,7 @@ pub struct SolveAllArgs {
     activities: Vec<String>,
     #[arg(long, default_value = "symbolic")]
     mode: String,
-    /// The embodiment: behavior or fetch.
+    /// The embodiment: behavior, fetch or r1.
     #[arg(long, default_value = "behavior")]
     robot: String,
     #[arg(long)]

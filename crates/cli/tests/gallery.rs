@@ -88,7 +88,7 @@ fn the_robots_sheet_shows_fetch_in_its_makers_meshes_and_each_robot_from_two_sid
             String::from_utf8_lossy(&output.stderr)
         );
         assert!(
-            stdout(&output).contains("4 pictures of 2 robots"),
+            stdout(&output).contains("6 pictures of 3 robots"),
             "{}",
             stdout(&output)
         );
@@ -96,13 +96,14 @@ fn the_robots_sheet_shows_fetch_in_its_makers_meshes_and_each_robot_from_two_sid
     };
     let meshes = draw("robots.png", None);
     let plain = draw("robots-plain.png", Some("none"));
-    assert_eq!((meshes.width(), meshes.height()), (4 * 96, 96 + 14));
+    assert_eq!((meshes.width(), meshes.height()), (6 * 96, 96 + 14));
     let tile = |sheet: &image::RgbImage, k: u32| {
         image::imageops::crop_imm(sheet, 96 * k, 0, 96, 96).to_image()
     };
-    // BehaviorRobot (tiles 0 and 1) has no meshes to fetch: the same either way. Fetch (2 and
-    // 3) is drawn differently from its makers' meshes, and each robot differs by side.
-    for k in 0..2 {
+    // The BehaviorRobot (tiles 0 and 1) and the R1 (4 and 5) have no meshes to fetch: the
+    // same either way. Fetch (2 and 3) is drawn differently from its makers' meshes, and each
+    // robot differs by side.
+    for k in [0, 1, 4, 5] {
         assert_eq!(tile(&meshes, k), tile(&plain, k), "tile {k}");
     }
     for k in 2..4 {
@@ -115,6 +116,7 @@ fn the_robots_sheet_shows_fetch_in_its_makers_meshes_and_each_robot_from_two_sid
     }
     assert_ne!(tile(&meshes, 2), tile(&meshes, 3));
     assert_ne!(tile(&meshes, 0), tile(&meshes, 1));
+    assert_ne!(tile(&meshes, 4), tile(&meshes, 5));
     let refused = behavior(&["gallery", "--robots", "--only", "bowl", "--out", "x.png"]);
     assert!(!refused.status.success(), "--robots with --only");
 }

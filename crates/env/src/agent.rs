@@ -1,14 +1,17 @@
 //! Built-in agents for baselines and benchmarks: one that does nothing, one that acts at random.
 
+use crate::Env;
 use rand_chacha::ChaCha8Rng;
 use rand_chacha::rand_core::{Rng, SeedableRng};
 
 /// A policy that needs no observation.
 #[derive(Clone, Debug)]
 pub enum Agent {
-    /// Every action all zeros: the robot holds still (the original's speed benchmark agent).
+    /// Every action the robot's still one (all zeros for the BehaviorRobot and Fetch; the
+    /// joints' present positions for the R1): the original's speed benchmark agent.
     Idle,
-    /// Every value uniform in [−1, 1], from a generator seeded once.
+    /// Every value uniform within its bounds ([−1, 1], or a joint's limits where the value is
+    /// its position), from a generator seeded once.
     Random(Box<ChaCha8Rng>),
 }
 
@@ -30,14 +33,19 @@ impl Agent {
         }
     }
 
-    /// Its next action of `dim` values, written into `out`.
-    pub fn act(&mut self, dim: usize, out: &mut Vec<f32>) {
+    /// Its next action for the robot of `env`, written into `out` (nothing without a robot).
+    pub fn act(&mut self, env: &Env, out: &mut Vec<f32>) {
         out.clear();
+        let Some(robot) = env.robot() else {
+            return;
+        };
         match self {
-            Agent::Idle => out.resize(dim, 0.0),
-            Agent::Random(rng) => out.extend((0..dim).map(|_| {
-                // 24 random bits, exactly representable: a value in [−1, 1).
-                (rng.next_u32() >> 8) as f32 / (1u32 << 23) as f32 - 1.0
+            Agent::Idle => out.extend(robot.still_action(robot.space())),
+            Agent::Random(rng) => out.extend(robot.action_bounds().into_iter().map(|[lo, hi]| {
+                // 24 random bits, exactly representable: a fraction in [0, 1). For [−1, 1]
+                // this is −1 + bits / 2^23, exactly.
+                let unit = (rng.next_u32() >> 8) as f32 / (1u32 << 24) as f32;
+                lo + (hi - lo) * unit
             })),
         }
     }

@@ -19,10 +19,9 @@
 //!     let mut env = Env::new(config);
 //!     env.reset(seed)?;
 //!     let mut agent = Agent::named("random", seed).expect("a built-in agent");
-//!     let dim = env.robot().map_or(0, |r| r.action_dim());
 //!     let mut action = Vec::new();
 //!     loop {
-//!         agent.act(dim, &mut action);
+//!         agent.act(&env, &mut action);
 //!         let step = env.step(&action)?;
 //!         if step.terminated || step.truncated {
 //!             return Ok(step.info.score.q);

@@ -106,7 +106,7 @@ fn the_first_option_reward_sums_to_the_change_of_that_option_s_satisfied_fractio
     let mut agent = Agent::named("random", 3).unwrap();
     let (mut action, mut total) = (Vec::new(), 0.0);
     for _ in 0..40 {
-        agent.act(26, &mut action);
+        agent.act(&env, &mut action);
         total += env.step(&action).unwrap().reward;
     }
     assert!((total - (fraction(&env) - before)).abs() < 1e-12, "{total}");

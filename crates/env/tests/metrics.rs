@@ -19,7 +19,7 @@ fn an_idle_episode_takes_time_and_disarranges_nothing() {
     let mut agent = Agent::named("idle", 0).unwrap();
     let mut action = Vec::new();
     for _ in 0..45 {
-        agent.act(26, &mut action);
+        agent.act(&env, &mut action);
         let step = env.step(&action).unwrap();
         assert_eq!(step.reward, 0.0);
     }
@@ -77,7 +77,7 @@ fn an_idle_agent_navigates_nothing_and_a_random_one_more() {
         let mut agent = Agent::named(agent, 4).unwrap();
         let mut action = Vec::new();
         for _ in 0..60 {
-            agent.act(26, &mut action);
+            agent.act(&env, &mut action);
             env.step(&action).unwrap();
         }
         env.metrics().unwrap()
@@ -109,7 +109,7 @@ fn an_agent_is_normalized_by_a_recorded_demonstration() {
     let mut agent = Agent::named("random", 6).unwrap();
     let mut action = Vec::new();
     for _ in 0..60 {
-        agent.act(26, &mut action);
+        agent.act(&env, &mut action);
         env.step(&action).unwrap();
         recorder.record(&env, &action).unwrap();
     }

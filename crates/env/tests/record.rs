@@ -31,12 +31,11 @@ fn record_with(
 ) -> Env {
     let mut env = Env::new(config);
     env.reset(5).unwrap();
-    let dim = env.robot().unwrap().action_dim();
     let mut recorder = Recorder::create(path, &env, "(definition text)", every).unwrap();
     let mut agent = Agent::named("random", 5).unwrap();
     let mut action = Vec::new();
     for _ in 0..steps {
-        agent.act(dim, &mut action);
+        agent.act(&env, &mut action);
         env.step(&action).unwrap();
         recorder.record(&env, &action).unwrap();
     }
@@ -139,7 +138,7 @@ fn an_episode_resumed_from_a_checkpoint_continues_identically() {
     let actions: Vec<Vec<f32>> = (0..60)
         .map(|_| {
             let mut a = Vec::new();
-            agent.act(26, &mut a);
+            agent.act(&env, &mut a);
             a
         })
         .collect();

@@ -181,7 +181,9 @@ pub fn run(
             step: ended(env)?,
         });
     }
-    let still = vec![0.0; env.robot().map_or(0, |r| r.action_dim())];
+    let still = env
+        .robot()
+        .map_or(Vec::new(), |r| r.still_action(r.space()));
     let mut last = None;
     for _ in 0..steps {
         let step = env.step(&still)?;

@@ -54,9 +54,6 @@ use std::sync::Arc;
 
 /// How far above the top of the object's box the fingertips stop before the descent, m.
 pub const ARM_APPROACH: f32 = 0.05;
-/// How far the fingertips reach beyond the end effector's frame along its x, m (the pads'
-/// ends: Fetch's).
-const TIP: f32 = 0.031;
 /// The longest descent onto the object, m, `DESCENT_STEP` a step.
 pub const ARM_DESCENT: f32 = 0.12;
 /// How far the gripper moves a step in its descent, m.
@@ -93,12 +90,12 @@ pub(crate) struct ArmPath {
     pub after: Vec<ArmConfig>,
 }
 
-/// Whether the arm of hand 0 (of `placement`'s hand, given one), from where the base stands,
-/// has a free configuration over the object for a grasp — or, holding something and given a
-/// placement, above a place for it; true for what cannot be held (a cabinet to open) and for a
-/// hand at the end of no arm.
+/// Whether the arm of the carrying hand ([`carrying`]; of `placement`'s hand, given one), from
+/// where the base stands, has a free configuration over the object for a grasp — or, holding
+/// something and given a placement, above a place for it; true for what cannot be held (a
+/// cabinet to open) and for a hand at the end of no arm.
 pub fn reaches(env: &Env, object: ObjectId, placement: Option<&Call>) -> bool {
-    let hand = placement.map_or(0, |call| call.hand);
+    let hand = placement.map_or_else(|| carrying(env), |call| call.hand);
     let (Some((world, robot, arm)), Some(goals)) =
         (arm_of(env, hand), reach_goals(env, hand, object, placement))
     else {
@@ -107,7 +104,14 @@ pub fn reaches(env: &Env, object: ObjectId, placement: Option<&Call>) -> bool {
     any_solved(world, &ArmBody::of(world, robot, arm), &goals)
 }
 
-/// A test of places to stand for NAVIGATE_TO `object`: whether the arm of hand 0, its base standing
+/// The hand whose arm a reach test tries when no call names one: the last, which the task
+/// solver carries with (the right of two; Fetch's one).
+fn carrying(env: &Env) -> usize {
+    env.robot().map_or(0, |r| r.hands().saturating_sub(1))
+}
+
+/// A test of places to stand for NAVIGATE_TO `object`: whether the arm of the hand that holds
+/// something (the last that does), else of the carrying hand ([`carrying`]), its base standing
 /// there, reaches over the object for a grasp or, holding something, above a place for it on
 /// or in the object, as OmniGibson's base-pose sampler checks IK reach for each candidate.
 /// The goals are the world poses [`reaches`] tries from where the base stands now (straight
@@ -117,7 +121,11 @@ pub(crate) fn reach_test<'e>(
     env: &'e Env,
     object: ObjectId,
 ) -> Option<impl Fn(&BaseConfig) -> bool + 'e> {
-    let hand = 0;
+    let hands = env.robot().map_or(0, |r| r.hands());
+    let holding = (0..hands)
+        .rev()
+        .find(|&h| env.robot().is_some_and(|r| r.held(h).is_some()));
+    let hand = holding.unwrap_or_else(|| carrying(env));
     let (world, robot, arm) = arm_of(env, hand)?;
     let goals = match robot.held(hand) {
         Some(_) => {
@@ -144,7 +152,7 @@ fn reach_goals(
     object: ObjectId,
     placement: Option<&Call>,
 ) -> Option<Vec<Pose>> {
-    let (world, robot, _) = arm_of(env, hand)?;
+    let (world, robot, arm) = arm_of(env, hand)?;
     match placement.and_then(|c| Some((c, c.primitive.relation()?))) {
         Some((call, relation)) if robot.held(hand).is_some() => {
             let mut rng = call_rng(env, call);
@@ -164,7 +172,8 @@ fn reach_goals(
                 object,
                 hand,
             };
-            Some(grasp_goals(world, robot, object, &mut call_rng(env, &call)))
+            let mut rng = call_rng(env, &call);
+            Some(grasp_goals(world, robot, arm.tip(), object, &mut rng))
         }
     }
 }
@@ -233,8 +242,8 @@ impl Manipulator for JointedArm {
     }
 
     fn grasp_goals(&self, env: &Env, hand: usize, call: &Call, rng: &mut SimRng) -> Vec<Pose> {
-        arm_of(env, hand).map_or(Vec::new(), |(world, robot, _)| {
-            grasp_goals(world, robot, call.object, rng)
+        arm_of(env, hand).map_or(Vec::new(), |(world, robot, arm)| {
+            grasp_goals(world, robot, arm.tip(), call.object, rng)
         })
     }
 
@@ -353,12 +362,13 @@ impl Hands for JointedArm {
 
 /// End-effector poses in the world over the object, best first, the gripper pointing at the
 /// top of its box (near its end nearest the base, for a long one), jittered, the fingertips
-/// [`ARM_APPROACH`] short of it: straight down, the fingers closing across the box's narrower
+/// [`ARM_APPROACH`] short of it (they reach `tip` beyond the end effector): straight down, the fingers closing across the box's narrower
 /// side, then the other, then at random headings; then tilted by each of [`PITCHES`] from the
 /// base's side (straight down, a hamburger 0.98 m ahead had no IK solution within 0.27 m).
 fn grasp_goals(
     world: &World,
     robot: &dyn Embodiment,
+    tip: f32,
     object: ObjectId,
     rng: &mut SimRng,
 ) -> Vec<Pose> {
@@ -381,7 +391,7 @@ fn grasp_goals(
                 at.y + uniform(rng, -GRASP_JITTER, GRASP_JITTER),
                 at.z,
             );
-            let back = rotation * Vector::X * (ARM_APPROACH + TIP);
+            let back = rotation * Vector::X * (ARM_APPROACH + tip);
             Pose::from_parts(target - back, rotation)
         })
         .collect()
@@ -817,7 +827,7 @@ fn joint_action(
         return None;
     }
     let delta = ArmConfig::from_fn(now.len(), |k| target[k] - now[k]);
-    arm.joint_action(&delta, gripper)
+    arm.joint_action(now, &delta, gripper)
 }
 
 /// The most steps taken toward one configuration of a path: a gap within a joint's range of a
@@ -969,7 +979,7 @@ fn hold(
 ) -> Attempt<()> {
     let still = arm_of(steps.env, hand).and_then(|(_, _, a)| {
         let none = ArmConfig::from_fn(a.now().len(), |_| 0.0);
-        a.joint_action(&none, gripper)
+        a.joint_action(&a.now(), &none, gripper)
     });
     let Some(action) = still else {
         return Ok(Err(Failure::Unavailable("no episode")));

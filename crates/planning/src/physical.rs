@@ -220,7 +220,10 @@ impl Stepper<'_, '_> {
         n: u32,
         mut done: impl FnMut(&Env) -> bool,
     ) -> Result<Result<(), Failure>, RunError> {
-        let still = vec![0.0; self.env.robot().map_or(0, |r| r.action_dim())];
+        let still = self
+            .env
+            .robot()
+            .map_or(Vec::new(), |r| r.still_action(r.space()));
         for _ in 0..n {
             if done(self.env) {
                 break;

@@ -108,6 +108,7 @@ fn put_into_furniture(env: &mut Env) -> behavior_sim::ObjectId {
     let radius = match robot.kind() {
         RobotKind::Behavior => behavior_robots::BODY_RADIUS,
         RobotKind::Fetch => behavior_robots::BASE_RADIUS,
+        RobotKind::R1 => behavior_robots::R1_BASE_RADIUS,
     };
     let found = world.objects().find_map(|(id, o)| {
         let b = world.aabb(id);

@@ -61,7 +61,7 @@ fn scene(kind: RobotKind, substeps: Substeps) -> (World, Robot) {
     }
     let pose = Robot::standing_pose(kind, Vector::new(-0.2, 0.0, 0.0), 0.0);
     let mut robot = Robot::add(kind, ActionSpace::Full, &mut world, pose).unwrap();
-    let still = vec![0.0; robot.action_dim()];
+    let still = robot.still_action(robot.space());
     for _ in 0..30 {
         robot.set_action(&still).unwrap();
         world.step_with(&mut robot);
@@ -86,11 +86,18 @@ fn motions(robot: &Robot) -> [(&'static str, Vec<Vec<f32>>); 3] {
         })
         .collect();
     let mut rng = seeded(3);
+    // Random within each number's bounds (a joint's limits where the number is its position).
+    let bounds = robot.action_bounds();
     let random = (0..600)
-        .map(|_| (0..dim).map(|_| uniform(&mut rng, -1.0, 1.0)).collect())
+        .map(|_| {
+            (0..dim)
+                .map(|k| uniform(&mut rng, bounds[k][0], bounds[k][1]))
+                .collect()
+        })
         .collect();
+    let still = robot.still_action(robot.space());
     [
-        ("still", vec![vec![0.0; dim]; 600]),
+        ("still", vec![still; 600]),
         ("driving", drive),
         ("random", random),
     ]

@@ -134,6 +134,9 @@ pub trait Arm: std::fmt::Debug + Send + Sync {
     /// fixed things whether they are open or closed.
     fn finger_sweep(&self) -> (Primitive, Pose);
 
+    /// How far the fingertips reach beyond the end effector along its x, m.
+    fn tip(&self) -> f32;
+
     /// The gripper's bodies that touch what it takes (palm and fingers).
     fn gripper_bodies(&self) -> Vec<BodyRef>;
 
@@ -141,10 +144,12 @@ pub trait Arm: std::fmt::Debug + Send + Sync {
     fn fingers_open(&self, world: &World) -> bool;
 
     /// The robot's action, in the space its physical primitives drive it through
-    /// ([`crate::EmbodimentSpec::primitive_space`]), that moves each joint by `delta` as far
-    /// as one step allows, the base and everything else still, the gripper commanded
-    /// `gripper` (1 open, −1 closed); `None` if that is no valid action (not finite).
-    fn joint_action(&self, delta: &ArmConfig, gripper: f32) -> Option<Vec<f32>>;
+    /// ([`crate::EmbodimentSpec::primitive_space`]), that moves each joint from `from` by
+    /// `delta` as far as one step allows, the base and everything else still, the gripper
+    /// commanded `gripper` (1 open, −1 closed); `None` if that is no valid action (not
+    /// finite). A robot whose action moves joints by rates reads only `delta`; one whose action
+    /// gives their positions (the R1's) needs `from`, where the planner has the arm.
+    fn joint_action(&self, from: &ArmConfig, delta: &ArmConfig, gripper: f32) -> Option<Vec<f32>>;
 
     /// Where one step of `action` (as [`Arm::joint_action`] makes them) takes the joints from
     /// `c`, nothing in their way: the robot's own update, for planners that predict a path.

@@ -160,6 +160,20 @@ pub trait Embodiment: StepHooks {
     /// without the base.
     fn base_action(&self, space: ActionSpace, step: BaseMove) -> Option<Vec<f32>>;
 
+    /// Each number's lower and upper bound in an action of `space` (values beyond are clipped
+    /// to them): [−1, 1] for a robot whose actions are normalised motions, a joint's limits
+    /// for a number that is its position (the R1's).
+    fn action_bounds(&self, space: ActionSpace) -> Vec<[f32; 2]> {
+        vec![[-1.0, 1.0]; self.action_dim(space)]
+    }
+
+    /// The action of `space` that holds everything where it is for a step: zeros for a robot
+    /// whose actions are motions, the joints' present positions for one whose actions are
+    /// positions (the R1's).
+    fn still_action(&self, space: ActionSpace) -> Vec<f32> {
+        vec![0.0; self.action_dim(space)]
+    }
+
     /// How many numbers [`Embodiment::proprioception_into`] gives.
     fn proprioception_dim(&self) -> usize;
 

@@ -15,15 +15,14 @@ use crate::fetch_body::{
 use crate::fetch_proprioception::FetchProprioception;
 use crate::grasp::GraspRules;
 use crate::gripper::{GraspContext, GripperSpec, ParallelGripper};
-use crate::ik::{IkError, IkSolver, rotation_error};
+use crate::ik::{IkError, IkSolver};
+use crate::kinematic_links::{LinkModel, LinkMotion, Posture, Twist, add_links};
 use crate::magic::MagicError;
-use crate::motion::Blocker;
 use crate::proprioception::LocalPose;
 use crate::robot::{RobotError, RobotKind, pose_ok};
 use behavior_core::wrap_angle;
 use behavior_sim::{
-    BodyRef, JointState, ObjectId, Primitive, QueryFilter, STEP_SECONDS, StepHooks, Velocity,
-    World, WorldError, groups,
+    BodyRef, JointState, ObjectId, Primitive, STEP_SECONDS, StepHooks, World, WorldError,
 };
 use rapier3d::glamx::EulerRot;
 use rapier3d::math::{Pose, Rotation, Vector};
@@ -99,13 +98,6 @@ impl FetchParts {
     }
 }
 
-/// Where every kinematic part is: the base on the floor and the joints.
-#[derive(serde::Serialize, serde::Deserialize, Clone, Copy, Debug, PartialEq)]
-struct Config {
-    base: Pose,
-    joints: FetchJoints,
-}
-
 /// The Fetch mobile manipulator (iGibson 2.0's `FetchGripper`, iGibson 2.0.3's
 /// `robots/fetch_gripper_robot.py`): a differential-drive base, a torso lift, a pan/tilt head with
 /// the camera, a 7-joint arm and a parallel gripper, driven by an 11-d [`FetchAction`] whose
@@ -129,12 +121,8 @@ struct Config {
 ///   with the URDF's 60 N, so they close on what they meet and yield, and a body they both
 ///   touch can be grasped ([`Fetch::holding`]).
 ///
-/// Why velocity-driven kinematic bodies, each given each substep the velocity that lands it on
-/// its pose: rapier derives a position-driven body's velocity from its target and its pose
-/// through a product that is not exactly the identity once the body is turned, so a turned
-/// position-driven body never has exactly zero velocity and never sleeps (measured: a
-/// BehaviorRobot that has turned away from the origin idles at ≈ 390 µs per step instead of
-/// 0.3). Ours are stopped at exactly zero and sleep.
+/// The links are velocity-driven kinematic bodies, moved as `kinematic_links.rs` moves them
+/// (it says why not position-driven).
 ///
 /// Measured (`benches/step.rs`, release, a table with 20 objects, 10 × 1/300 s): 1.7 µs per
 /// step standing still, ≈ 0.12 ms driving, ≈ 0.2 ms under random actions — a simulated 9-link
@@ -146,12 +134,8 @@ struct Config {
 #[derive(serde::Serialize, serde::Deserialize, Clone, Debug)]
 pub struct Fetch {
     parts: FetchParts,
-    /// Where the parts are at the end of the step begun last.
-    now: Config,
-    /// Where they were at its start.
-    from: Config,
-    /// The base's (v, ω) in that step.
-    drive: (f32, f32),
+    /// Where the links are and how they move in the step begun last.
+    motion: LinkMotion<FetchJoints>,
     /// The wheels' angles and rates (right, left).
     wheels: [f32; 2],
     wheel_rates: [f32; 2],
@@ -160,8 +144,6 @@ pub struct Fetch {
     pending: FetchCommand,
     /// Why the last end-effector command could not be followed exactly.
     ik_error: Option<IkError>,
-    /// Whether the kinematic parts have a velocity set.
-    moving: bool,
     ik: IkSolver,
     rules: GraspRules,
 }
@@ -182,23 +164,20 @@ impl Fetch {
         }
         let (yaw, _, _) = pose.rotation.normalize().to_euler(EulerRot::ZYX);
         let base = Pose::from_parts(pose.translation, Rotation::from_rotation_z(yaw));
-        let config = Config {
+        let posture = Posture {
             base,
             joints: FetchJoints::default(),
         };
-        let parts = add_parts(world, &config)?;
+        let parts = add_parts(world, &posture)?;
         let gripper = ParallelGripper::open_on(world, parts.gripper(), &GRIPPER)?;
         let fetch = Fetch {
             parts,
-            now: config,
-            from: config,
-            drive: (0.0, 0.0),
+            motion: LinkMotion::at(posture),
             wheels: [0.0; 2],
             wheel_rates: [0.0; 2],
             gripper,
             pending: FetchCommand::default(),
             ik_error: None,
-            moving: false,
             ik: IkSolver::default(),
             rules,
         };
@@ -248,7 +227,7 @@ impl Fetch {
 
     /// The torso, head and arm positions (where the step begun last ends).
     pub fn joints(&self) -> FetchJoints {
-        self.now.joints
+        self.motion.now.joints
     }
 
     /// The end effector's pose in the world (`gripper_link`: x out of the gripper, the fingers
@@ -259,7 +238,7 @@ impl Fetch {
 
     /// The head camera's pose in the world: it looks along its +x, with no roll.
     pub fn camera_pose(&self, world: &World) -> Pose {
-        self.base_pose(world) * self.now.joints.camera()
+        self.base_pose(world) * self.motion.now.joints.camera()
     }
 
     /// The finger positions (right, left), m: 0 closed, 0.05 open.
@@ -274,9 +253,9 @@ impl Fetch {
 
     /// The robot's proprioception now.
     pub fn proprioception(&self, world: &World) -> FetchProprioception {
-        let eef = self.now.joints.eef();
+        let eef = self.motion.now.joints.eef();
         let rate = |a: f32, b: f32| (b - a) / STEP_SECONDS;
-        let (from, now) = (self.from.joints, self.now.joints);
+        let (from, now) = (self.motion.from.joints, self.motion.now.joints);
         let efforts = self.static_efforts(world);
         let joints = FetchJoint::ALL.map(|j| match j {
             FetchJoint::RightWheel | FetchJoint::LeftWheel => JointState {
@@ -322,32 +301,14 @@ fn load_index(joint: FetchJoint) -> Option<usize> {
 }
 
 /// Adds every link at its place, in the robot's collision group.
-fn add_parts(world: &mut World, config: &Config) -> Result<FetchParts, WorldError> {
-    let poses = config.joints.link_poses();
-    let mut links = [ObjectId(0); FETCH_LINKS];
-    for (k, link) in FetchLink::ALL.into_iter().enumerate() {
-        links[k] = world.add(link_spec(link, config.base * poses[k]))?;
-    }
-    // Robot parts touch neither each other nor water.
-    let others = groups::ALL & !groups::ROBOT & !groups::WATER;
-    for id in links {
-        world
-            .core_mut()
-            .set_collision_groups(id, groups::ROBOT, others);
-    }
-    Ok(FetchParts { links })
-}
-
-/// Where a unicycle at `pose` is after `t` seconds at (v, ω): along an arc in its own frame.
-fn unicycle(pose: Pose, (v, w): (f32, f32), t: f32) -> Pose {
-    let turn = w * t;
-    let local = if turn.abs() < 1e-6 {
-        Vector::new(v * t, 0.0, 0.0)
-    } else {
-        let r = v / w;
-        Vector::new(r * turn.sin(), r * (1.0 - turn.cos()), 0.0)
-    };
-    pose * Pose::from_parts(local, Rotation::from_rotation_z(turn))
+fn add_parts(world: &mut World, posture: &Posture<FetchJoints>) -> Result<FetchParts, WorldError> {
+    let poses = posture.joints.link_poses();
+    let specs = (FetchLink::ALL.into_iter().enumerate())
+        .map(|(k, link)| link_spec(link, posture.base * poses[k]));
+    let links = add_links(world, specs)?;
+    let mut parts = [ObjectId(0); FETCH_LINKS];
+    parts.copy_from_slice(&links);
+    Ok(FetchParts { links: parts })
 }
 
 /// The wheel rates (right, left) for (v, ω), each within its maximum, and the (v, ω) they give.
@@ -427,17 +388,6 @@ fn in_workspace(p: Vector) -> Vector {
     }
     let z = p.z.clamp(WORKSPACE_HEIGHT[0], WORKSPACE_HEIGHT[1]);
     centre + flat + Vector::new(0.0, 0.0, z)
-}
-
-/// The velocity that takes a link from `now` to `target` in one substep of `dt`, as the
-/// physics integrates a body: a turn about its centre of mass, then the centre's motion.
-fn velocity_to(now: Pose, target: Pose, link: FetchLink, dt: f32) -> Velocity {
-    let centre = link_centre(link);
-    let turn = rotation_error(now.rotation, target.rotation);
-    Velocity {
-        linear: (target.transform_point(centre) - now.transform_point(centre)) / dt,
-        angular: turn / dt,
-    }
 }
 
 /// `q` moved toward `goal` for one step at `ARM_GAIN · (goal − q)`, within `max_velocity`.
@@ -575,7 +525,7 @@ impl Embodiment for Fetch {
 
     fn arm(&self, hand: usize) -> Option<Arc<dyn Arm>> {
         gripper(hand).ok()?;
-        let arm = FetchArm::new(self.parts, self.now.joints, self.ik);
+        let arm = FetchArm::new(self.parts, self.motion.now.joints, self.ik);
         Some(Arc::new(arm))
     }
 
@@ -618,7 +568,8 @@ impl StepHooks for Fetch {
         if substep == 0 {
             self.begin_step(world);
         }
-        self.move_parts(world, substep);
+        let links = self.parts.all();
+        self.motion.move_links::<Fetch>(world, &links, substep);
     }
 
     fn after_step(&mut self, world: &mut World) {
@@ -629,7 +580,7 @@ impl StepHooks for Fetch {
             own: &own,
         };
         self.gripper.after_step(world, cx);
-        if self.from != self.now {
+        if self.motion.moves() {
             self.gripper.press(world, &GRIPPER);
         }
     }
@@ -640,30 +591,25 @@ impl Fetch {
     /// fixed bodies, and the fingers' drive.
     fn begin_step(&mut self, world: &mut World) {
         let action = std::mem::take(&mut self.pending);
-        self.from = self.now;
-        let (rates, drive) = wheel_limited(action.base());
-        let wanted = Config {
-            base: unicycle(self.now.base, drive, STEP_SECONDS),
-            joints: self.joint_targets(&action),
+        let (rates, (v, w)) = wheel_limited(action.base());
+        let twist = Twist {
+            forward: v,
+            left: 0.0,
+            turn: w,
         };
-        let allowed = if wanted == self.now {
-            wanted
-        } else {
-            self.allow(world, wanted)
-        };
-        let base_moves = allowed.base != self.now.base;
-        self.drive = if base_moves { drive } else { (0.0, 0.0) };
+        let joints = self.joint_targets(&action);
+        let links = self.parts.all();
+        let base_moves = self.motion.begin::<Fetch>(world, &links, twist, joints);
         self.wheel_rates = if base_moves { rates } else { [0.0; 2] };
         for k in 0..2 {
             self.wheels[k] += self.wheel_rates[k] * STEP_SECONDS;
         }
-        self.now = allowed;
         self.gripper.command(world, &GRIPPER, action.gripper());
     }
 
     /// The head's and arm's positions at the end of the step the command asks for.
     fn joint_targets(&mut self, command: &FetchCommand) -> FetchJoints {
-        let (joints, error) = step_joints(&self.ik, &self.now.joints, command);
+        let (joints, error) = step_joints(&self.ik, &self.motion.now.joints, command);
         match command {
             FetchCommand::EndEffector(action) if !action.moves_eef() => {}
             _ => self.ik_error = error,
@@ -678,82 +624,11 @@ impl Fetch {
         step_joints(&self.ik, joints, command).0
     }
 
-    /// `wanted` as far as fixed bodies let it be: all of it, or the joints' motion without the
-    /// base's, or the base's without the joints', or nothing.
-    fn allow(&self, world: &World, wanted: Config) -> Config {
-        let own = self.parts.all();
-        let blocker = Blocker {
-            world,
-            filter: QueryFilter {
-                fixed_only: true,
-                ..QueryFilter::excluding(&own)
-            },
-        };
-        let now = self.now;
-        let candidates = [
-            wanted,
-            Config {
-                base: now.base,
-                ..wanted
-            },
-            Config {
-                joints: now.joints,
-                ..wanted
-            },
-        ];
-        candidates
-            .into_iter()
-            .find(|c| *c != now && !blocked(&blocker, &now, c))
-            .unwrap_or(now)
-    }
-
-    /// Moves every kinematic part for one substep, if any moves in this step; stops them
-    /// (velocity exactly 0, so that they can sleep) in the first substep of a step without
-    /// motion.
-    fn move_parts(&mut self, world: &mut World, substep: u32) {
-        if self.from == self.now {
-            if self.moving {
-                for &id in &self.parts.links {
-                    let _ = world
-                        .core_mut()
-                        .set_velocity(id.into(), Velocity::default());
-                }
-                self.moving = false;
-            }
-            return;
-        }
-        let n = world.core().substeps().count();
-        let config = if substep + 1 >= n {
-            self.now
-        } else {
-            let t = (substep + 1) as f32 / n as f32;
-            let lerp = |a: f32, b: f32| a + (b - a) * t;
-            let (a, b) = (self.from.joints, self.now.joints);
-            Config {
-                base: unicycle(self.from.base, self.drive, t * STEP_SECONDS),
-                joints: FetchJoints {
-                    torso: lerp(a.torso, b.torso),
-                    head: std::array::from_fn(|k| lerp(a.head[k], b.head[k])),
-                    arm: std::array::from_fn(|k| lerp(a.arm[k], b.arm[k])),
-                },
-            }
-        };
-        let poses = config.joints.link_poses();
-        let dt = STEP_SECONDS / n as f32;
-        for (k, link) in FetchLink::ALL.into_iter().enumerate() {
-            let id = self.parts.link(link);
-            let velocity = velocity_to(world.pose(id), config.base * poses[k], link, dt);
-            // Finite poses make finite velocities: the world cannot refuse these.
-            let _ = world.core_mut().set_velocity(id.into(), velocity);
-        }
-        self.moving = true;
-    }
-
     /// The static loads of the torso and the arm joints (torso first): what holds the links
     /// beyond each, and what the gripper holds, against gravity (see `fetch_proprioception.rs`).
     fn static_efforts(&self, world: &World) -> [f32; 8] {
-        let gravity = self.now.base.rotation.inverse() * world.core().gravity();
-        let poses = self.now.joints.link_poses();
+        let gravity = self.motion.now.base.rotation.inverse() * world.core().gravity();
+        let poses = self.motion.now.joints.link_poses();
         let held = self
             .gripper
             .holding()
@@ -784,23 +659,37 @@ impl Fetch {
                 .map(|&(m, c)| (c - at.translation).cross(gravity * m))
                 .sum();
             out[k + 1] = -axis.dot(moment);
-            frame *= joint.transform(self.now.joints.arm[k]);
+            frame *= joint.transform(self.motion.now.joints.arm[k]);
         }
         out
     }
 }
 
-/// Whether moving every part from `from` to `to` makes one newly overlap a fixed body.
-fn blocked(blocker: &Blocker, from: &Config, to: &Config) -> bool {
-    let (a, b) = (from.joints.link_poses(), to.joints.link_poses());
-    FetchLink::ALL.into_iter().enumerate().any(|(k, link)| {
-        let (pa, pb) = (from.base * a[k], to.base * b[k]);
-        pa != pb
-            && blocking_parts(link).into_iter().any(|part| {
-                let shape: (Primitive, Pose) = (part.primitive, part.offset);
-                blocker.blocked(&shape, pa, pb)
-            })
-    })
+/// Fetch's links for their motion: [`FetchLink::ALL`] placed by [`FetchJoints::link_poses`].
+impl LinkModel for Fetch {
+    type Joints = FetchJoints;
+
+    fn link_poses(joints: &FetchJoints) -> Vec<Pose> {
+        joints.link_poses().to_vec()
+    }
+
+    fn between(a: &FetchJoints, b: &FetchJoints, t: f32) -> FetchJoints {
+        let lerp = |a: f32, b: f32| a + (b - a) * t;
+        FetchJoints {
+            torso: lerp(a.torso, b.torso),
+            head: std::array::from_fn(|k| lerp(a.head[k], b.head[k])),
+            arm: std::array::from_fn(|k| lerp(a.arm[k], b.arm[k])),
+        }
+    }
+
+    fn centre(link: usize) -> Vector {
+        link_centre(FetchLink::ALL[link])
+    }
+
+    fn blocking(link: usize) -> Vec<(Primitive, Pose)> {
+        let parts = blocking_parts(FetchLink::ALL[link]);
+        parts.into_iter().map(|p| (p.primitive, p.offset)).collect()
+    }
 }
 
 /// Symbolic moves (see `magic.rs`).
@@ -815,21 +704,14 @@ impl Fetch {
         let base = Pose::from_parts(pose.translation, Rotation::from_rotation_z(yaw));
         let gripper = self.parts.gripper();
         let before = world.pose(gripper);
-        let config = Config { base, ..self.now };
-        let poses = config.joints.link_poses();
-        for (k, link) in FetchLink::ALL.into_iter().enumerate() {
-            world.set_pose(self.parts.link(link), base * poses[k])?;
-        }
+        let links = self.parts.all();
+        self.motion.place::<Fetch>(world, &links, base)?;
         if let Some(body) = self.gripper.holding() {
             let held = body.object;
             let relative = before.inv_mul(&world.pose(held));
             world.set_pose(held, world.pose(gripper) * relative)?;
         }
-        self.now = config;
-        self.from = config;
-        self.drive = (0.0, 0.0);
         self.wheel_rates = [0.0; 2];
-        self.moving = false;
         self.gripper.press(world, &GRIPPER);
         Ok(())
     }
@@ -875,14 +757,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn the_base_drives_along_arcs_within_its_wheels() {
-        let end = unicycle(Pose::IDENTITY, (1.0, 0.0), 1.0);
-        assert!((end.translation - Vector::X).length() < 1e-6);
-        // A quarter turn at radius 1: from (0, 0) to (1, 1), facing +y.
-        let quarter = std::f32::consts::FRAC_PI_2;
-        let end = unicycle(Pose::IDENTITY, (quarter, quarter), 1.0);
-        assert!((end.translation - Vector::new(1.0, 1.0, 0.0)).length() < 1e-5);
-        assert!(((end.rotation * Vector::X) - Vector::Y).length() < 1e-5);
+    fn the_base_drives_within_its_wheels() {
         // Full speed ahead and full turn at once is more than the wheels give.
         let (rates, (v, w)) = wheel_limited((1.0, std::f32::consts::PI));
         assert_eq!(rates[0], 17.4);

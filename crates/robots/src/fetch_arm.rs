@@ -131,6 +131,11 @@ impl Arm for FetchArm {
         )
     }
 
+    /// The pads' ends (Fetch's pads reach 3.1 cm beyond its finger-joint line).
+    fn tip(&self) -> f32 {
+        0.031
+    }
+
     fn gripper_bodies(&self) -> Vec<BodyRef> {
         self.parts.gripper_bodies().to_vec()
     }
@@ -140,7 +145,8 @@ impl Arm for FetchArm {
         a.min(b) >= 0.9 * FINGER_OPEN
     }
 
-    fn joint_action(&self, delta: &ArmConfig, gripper: f32) -> Option<Vec<f32>> {
+    /// Fetch's joint action gives rates: `from` does not matter.
+    fn joint_action(&self, _from: &ArmConfig, delta: &ArmConfig, gripper: f32) -> Option<Vec<f32>> {
         let mut values = [0.0; FETCH_JOINT_ACTION_DIM];
         for (k, &d) in delta.values().iter().enumerate().take(ARM_JOINTS) {
             values[FetchJointAction::JOINTS.start + k] = FetchJointAction::value_for(k, d);

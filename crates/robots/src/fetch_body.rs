@@ -11,6 +11,7 @@
 //! wheels, the laser and the head camera are frames, not bodies: the wheels lie inside the base's
 //! cylinder. The head tilt has no +15° offset (Fetch's URDF; iGibson's own copy adds one).
 
+use crate::kinematic_links::{part_volume, parts_centre};
 use behavior_core::AGENT_SYNSET;
 use behavior_sim::{
     BodyKind, Form, JointKind, JointModel, JointSpec, LinkSpec, Material, ObjectSpec, Part,
@@ -561,22 +562,6 @@ pub(crate) fn link_parts(link: FetchLink) -> Vec<Part> {
     }
 }
 
-fn volume(part: &Part) -> f32 {
-    let pi = std::f32::consts::PI;
-    match part.primitive {
-        Primitive::Box { half_extents: h } => 8.0 * h.x * h.y * h.z,
-        Primitive::Cylinder {
-            radius,
-            half_height,
-        } => pi * radius * radius * 2.0 * half_height,
-        Primitive::Capsule {
-            radius,
-            half_height,
-        } => pi * radius * radius * 2.0 * half_height + 4.0 / 3.0 * pi * radius.powi(3),
-        _ => 1.0,
-    }
-}
-
 /// A finger pad's half size (the URDF mesh's 0.060 × 0.0143 × 0.0263 m pad).
 const PAD_HALF: Vector = Vector::new(0.030, 0.00715, 0.01315);
 /// The pad's inner face is this far inside the finger joint's position, m.
@@ -634,13 +619,7 @@ pub(crate) fn pad_face(k: usize) -> Vector {
 
 /// A link's centre of mass in its own frame: the centroid of its parts, by volume.
 pub(crate) fn link_centre(link: FetchLink) -> Vector {
-    let parts = link_parts(link);
-    let total: f32 = parts.iter().map(volume).sum();
-    parts
-        .iter()
-        .map(|p| p.offset.translation * volume(p))
-        .sum::<Vector>()
-        / total
+    parts_centre(&link_parts(link))
 }
 
 /// The spec of a kinematic link standing at `pose`: a velocity-driven kinematic body of the
@@ -648,7 +627,7 @@ pub(crate) fn link_centre(link: FetchLink) -> Vector {
 /// fingers as dynamic links.
 pub(crate) fn link_spec(link: FetchLink, pose: Pose) -> ObjectSpec {
     let parts = link_parts(link);
-    let total: f32 = parts.iter().map(volume).sum();
+    let total: f32 = parts.iter().map(part_volume).sum();
     let colour = match link {
         FetchLink::Base | FetchLink::Torso | FetchLink::HeadTilt => [235, 235, 235],
         _ => [60, 80, 160],

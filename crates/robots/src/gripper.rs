@@ -142,14 +142,20 @@ impl ParallelGripper {
         }
     }
 
-    /// Tells the world where the gripper's centre and pads are, for buttons.
+    /// Tells the world where the gripper's centre and pads are, for buttons: a robot with one
+    /// gripper.
     pub(crate) fn press(&self, world: &mut World, spec: &GripperSpec) {
+        world.set_hand_points(&self.points(world, spec));
+    }
+
+    /// Where the gripper's centre and pads are, in the world.
+    pub(crate) fn points(&self, world: &World, spec: &GripperSpec) -> [Vector; 3] {
         let centre = world.pose(self.palm).transform_point(spec.centre);
         let pads = [0, 1].map(|k| {
             let pose = world.core().link_pose(self.palm, spec.fingers[k]);
             pose.transform_point(spec.pads[k])
         });
-        world.set_hand_points(&[centre, pads[0], pads[1]]);
+        [centre, pads[0], pads[1]]
     }
 
     /// Sets both finger drives toward `target` if it changed.

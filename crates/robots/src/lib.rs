@@ -4,36 +4,41 @@
 //! It owns the robots' bodies (built from our own simple shapes, with the original robots' real
 //! dimensions and masses), their action spaces, how an action becomes motion, assisted grasping,
 //! proprioception and the robot-relative predicates (in hand, in reach, in the same room, in the
-//! field of view). The two embodiments of BEHAVIOR:
+//! field of view). The two embodiments of BEHAVIOR, and the BEHAVIOR Challenge's:
 //! - the [`BehaviorRobot`], the bimanual humanoid of the VR demonstrations (26-d [`Action`],
 //!   22-d [`Proprioception`]);
 //! - [`Fetch`], the mobile manipulator (11-d [`FetchAction`] with an end-effector controller
 //!   through inverse kinematics, [`IkSolver`], or 13-d [`FetchJointAction`] driving the arm
-//!   joint by joint; 49-d [`FetchProprioception`]).
+//!   joint by joint; 49-d [`FetchProprioception`]);
+//! - the [`R1`], the Galaxea R1 Pro of the BEHAVIOR Challenge 2025 (23-d [`R1Action`]: a
+//!   holonomic base's velocity and the torso's and both arms' joint positions; 57-d
+//!   proprioception), built only through the interfaces below.
 //!
 //! Each implements [`Embodiment`], the one interface an environment, its sensors and metrics,
 //! recordings and planners use (action space, the step, grasping, proprioception, camera and
 //! lidar, the moves outside physics), with its facts in an [`EmbodimentSpec`]. Its hands are read
 //! by planners through one of two more: an [`Arm`] for a hand at the end of a jointed arm
-//! (joints, limits, forward and inverse kinematics, the joint action and what it does: Fetch's)
-//! or a [`PosedHand`] for a hand the actions pose directly (the BehaviorRobot's). [`Robot`] holds
+//! (joints, limits, forward and inverse kinematics, the joint action and what it does: Fetch's
+//! and the R1's) or a [`PosedHand`] for a hand the actions pose directly (the BehaviorRobot's). [`Robot`] holds
 //! one of them, chosen by [`RobotKind`], and derefs to its [`Embodiment`]: only `robot.rs` names
 //! every kind. [`ActionSpace`] names the original's reduced action spaces, which each kind reads
 //! its own way (see `fetch_action.rs` for Fetch's).
 //!
-//! **Body models, chosen for cost.** Both robots move their bodies kinematically (exactly where
-//! they are told, refusing moves into fixed bodies) and keep dynamic bodies only where contact
+//! **Body models, chosen for cost.** Every robot moves its body kinematically (exactly where
+//! it is told, refusing moves into fixed bodies) and keeps dynamic bodies only where contact
 //! forces matter: the BehaviorRobot's hands (each one body, its fingers shapes turned with the
-//! trigger rather than jointed links: see `hand.rs`), Fetch's fingers. Fetch's torso, head
-//! and arm are kinematic links placed by forward kinematics each substep, not a simulated
-//! chain: measured in `benches/step.rs` (release, a table with 20 objects, 10 × 1/300 s), a
-//! Fetch step costs 1.7 µs standing still, ≈ 0.12 ms driving and ≈ 0.2 ms under random actions
+//! trigger rather than jointed links: see `hand.rs`), Fetch's and the R1's fingers (one shared
+//! parallel gripper, `gripper.rs`). Fetch's and the R1's links are kinematic bodies placed by
+//! forward kinematics each substep (`kinematic_links.rs`, shared), not a simulated chain:
+//! measured in `benches/step.rs` (release, a table with 20 objects, 10 × 1/300 s), a Fetch step
+//! costs 1.7 µs standing still, ≈ 0.12 ms driving and ≈ 0.2 ms under random actions
 //! (IK, the fixed-body checks and the awake fingers) — where `docs/design.md` §4 measured
 //! 0.65–3 ms for a simulated 9-link arm while driving.
 //!
 //! **Looks.** Fetch's links name model pieces whose real meshes ([`shared_models`]) come from
 //! gymnasium-robotics' MuJoCo model, fetched from PyPI at first use (`fetch_model.rs`); the
-//! BehaviorRobot's body is drawn as a trunk ([`behavior_sim::Form::Torso`]). Collision is our own
+//! BehaviorRobot's body is drawn as a trunk ([`behavior_sim::Form::Torso`]), the R1 as its own
+//! boxes (no mesh of it is on PyPI). Collision is our own
 //! primitives either way.
 //!
 //! It knows nothing of BDDL, activities, episodes, rewards, metrics or how anything is drawn (it
@@ -111,10 +116,15 @@ mod grasp;
 mod gripper;
 mod hand;
 mod ik;
+mod kinematic_links;
 mod magic;
 mod motion;
 mod posed_hand;
 mod proprioception;
+mod r1;
+mod r1_action;
+mod r1_arm;
+mod r1_body;
 mod r1_kinematics;
 mod relative;
 mod robot;
@@ -155,9 +165,13 @@ pub use ik::{IK_JOINTS, IkError, IkSolver};
 pub use magic::MagicError;
 pub use posed_hand::PosedHand;
 pub use proprioception::{LocalPose, Proprioception};
+pub use r1::R1;
+pub use r1_action::{R1_ACTION_DIM, R1_BASE_SPEED, R1Action};
+pub use r1_body::{R1_BASE_RADIUS, R1_LINKS, R1Joints, R1Link};
 pub use r1_kinematics::{
     EEF_DEPTH, GRIPPER_MOUNT, R1_ARM_JOINTS, R1_FINGER_OPEN, R1_START_TORSO, R1_TORSO_JOINTS,
-    arm_chain, arm_joints, arm_mount, eef_in_gripper, head_camera, torso_chain, torso_joints,
+    arm_chain, arm_joints, arm_mount, eef_in_gripper, head_camera, torso_arm_chain, torso_chain,
+    torso_joints,
 };
 pub use relative::{EYE_FOV, REACH_DISTANCE};
 pub use robot::{Robot, RobotError, RobotKind};

@@ -247,6 +247,21 @@ pub fn arm_chain(side: Side, torso: &[f32; R1_TORSO_JOINTS]) -> Chain {
     }
 }
 
+/// The torso and the arm of `side` as one chain from the base to the end effector (4 + 7
+/// joints, the arm's mount folded into its first joint's origin): the chain an arm planner
+/// moves when the torso helps the arm reach.
+pub fn torso_arm_chain(side: Side) -> Chain {
+    let mut joints = torso_joints().to_vec();
+    let mut arm = arm_joints(side);
+    arm[0].origin = arm_mount(side) * arm[0].origin;
+    joints.extend(arm);
+    Chain {
+        root: Pose::IDENTITY,
+        joints,
+        tip: Pose::from_translation(GRIPPER_MOUNT) * eef_in_gripper(),
+    }
+}
+
 /// The head camera in the base frame, the torso at `torso`: at the stereo camera's mount
 /// (`zed_link`), looking along its +x with +z up, pitched 20° down as the mount is (its URDF
 /// roll of −1.9199 rad, less the quarter turn of an optical frame).

@@ -9,6 +9,7 @@ use crate::action::{ActionError, ActionSpace};
 use crate::behavior_robot::BehaviorRobot;
 use crate::embodiment::{Embodiment, EmbodimentSpec};
 use crate::fetch::Fetch;
+use crate::r1::R1;
 use behavior_sim::{StepHooks, World, WorldError};
 use rapier3d::math::{Pose, Rotation, Vector};
 
@@ -51,17 +52,20 @@ pub enum RobotKind {
     Behavior,
     /// The Fetch mobile manipulator ([`Fetch`]).
     Fetch,
+    /// The Galaxea R1 Pro of the BEHAVIOR Challenge ([`R1`]).
+    R1,
 }
 
 impl RobotKind {
     /// Every embodiment.
-    pub const ALL: [RobotKind; 2] = [RobotKind::Behavior, RobotKind::Fetch];
+    pub const ALL: [RobotKind; 3] = [RobotKind::Behavior, RobotKind::Fetch, RobotKind::R1];
 
-    /// Its name on the command line and in files: `behavior` or `fetch`.
+    /// Its name on the command line and in files: `behavior`, `fetch` or `r1`.
     pub fn name(self) -> &'static str {
         match self {
             RobotKind::Behavior => "behavior",
             RobotKind::Fetch => "fetch",
+            RobotKind::R1 => "r1",
         }
     }
 
@@ -75,6 +79,7 @@ impl RobotKind {
         match self {
             RobotKind::Behavior => &BehaviorRobot::SPEC,
             RobotKind::Fetch => &Fetch::SPEC,
+            RobotKind::R1 => &R1::SPEC,
         }
     }
 }
@@ -86,6 +91,8 @@ pub enum Robot {
     Behavior(BehaviorRobot, ActionSpace),
     /// A [`Fetch`] and the space its actions come in.
     Fetch(Fetch, ActionSpace),
+    /// An [`R1`] and the space its actions come in.
+    R1(R1, ActionSpace),
 }
 
 impl Robot {
@@ -111,6 +118,7 @@ impl Robot {
         match kind {
             RobotKind::Behavior => Ok(Robot::Behavior(BehaviorRobot::add(world, pose)?, space)),
             RobotKind::Fetch => Ok(Robot::Fetch(Fetch::add(world, pose)?, space)),
+            RobotKind::R1 => Ok(Robot::R1(R1::add(world, pose)?, space)),
         }
     }
 
@@ -126,6 +134,7 @@ impl Robot {
         match self {
             Robot::Behavior(robot, _) => robot,
             Robot::Fetch(robot, _) => robot,
+            Robot::R1(robot, _) => robot,
         }
     }
 
@@ -134,6 +143,7 @@ impl Robot {
         match self {
             Robot::Behavior(robot, _) => robot,
             Robot::Fetch(robot, _) => robot,
+            Robot::R1(robot, _) => robot,
         }
     }
 
@@ -145,13 +155,18 @@ impl Robot {
     /// The action space it is driven through.
     pub fn space(&self) -> ActionSpace {
         match self {
-            Robot::Behavior(_, space) | Robot::Fetch(_, space) => *space,
+            Robot::Behavior(_, space) | Robot::Fetch(_, space) | Robot::R1(_, space) => *space,
         }
     }
 
     /// How many numbers an action has.
     pub fn action_dim(&self) -> usize {
         self.embodiment().action_dim(self.space())
+    }
+
+    /// Each action number's lower and upper bound.
+    pub fn action_bounds(&self) -> Vec<[f32; 2]> {
+        self.embodiment().action_bounds(self.space())
     }
 
     /// Checks `values` as an action and sets it for the next step. A bad one is an error and

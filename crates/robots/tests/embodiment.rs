@@ -132,37 +132,51 @@ fn an_arm_reads_its_own_pose_back_through_ik_and_predicts_its_joint_action() {
     for kind in RobotKind::ALL {
         let mut world = World::default();
         let mut robot = standing(kind, &mut world);
-        let Some(arm) = robot.arm(0) else {
-            continue;
-        };
-        let now = arm.now();
-        assert_eq!(now.len(), arm.limits().len());
-        assert_eq!(arm.link_poses(&now).len(), arm.links().len());
-        // The end effector where the gripper's object is.
-        let gripper = world.pose(arm.links()[arm.gripper()]);
-        let eef = robot.base_pose(&world) * arm.eef(&now);
-        assert!((gripper.translation - eef.translation).length() < 1e-4);
-        // Its own pose is solved where it is; 5 cm higher, a solution near it (the search a
-        // straight line of the end effector makes, a step at a time) puts it there.
-        let here = arm.ik(&now, &arm.eef(&now)).expect("its own pose");
-        assert!((arm.eef(&here).translation - arm.eef(&now).translation).length() < 0.01);
-        let mut goal = arm.eef(&now);
-        goal.translation.z += 0.05;
-        let solved = arm.ik_near(&now, &goal).expect("5 cm up is within reach");
-        let reached = arm.eef(&solved);
-        assert!((reached.translation - goal.translation).length() < 0.01);
-        // A joint action's predicted step is the step the robot takes.
-        let mut delta = now;
-        delta.values_mut().fill(0.0);
-        delta[1] = 0.02;
-        let action = arm.joint_action(&delta, 1.0).expect("a finite action");
-        let predicted = arm.after(&now, &action);
-        assert!((predicted[1] - now[1] - 0.02).abs() < 1e-5, "{predicted:?}");
-        robot.set_action(&action).unwrap();
-        world.step_with(&mut robot);
-        let stepped = robot.arm(0).unwrap().now();
-        assert_eq!(stepped, predicted, "{}", kind.name());
-        assert!(robot.arm(0).unwrap().fingers_open(&world));
+        for hand in 0..robot.hands() {
+            let Some(arm) = robot.arm(hand) else {
+                continue;
+            };
+            let name = format!("{} hand {hand}", kind.name());
+            let now = arm.now();
+            assert_eq!(now.len(), arm.limits().len());
+            assert_eq!(arm.link_poses(&now).len(), arm.links().len());
+            // The end effector where the gripper's object is.
+            let gripper = world.pose(arm.links()[arm.gripper()]);
+            let eef = robot.base_pose(&world) * arm.eef(&now);
+            assert!(
+                (gripper.translation - eef.translation).length() < 1e-4,
+                "{name}"
+            );
+            // Its own pose is solved where it is; 5 cm higher, a solution near it (the search
+            // a straight line of the end effector makes, a step at a time) puts it there.
+            let here = arm.ik(&now, &arm.eef(&now)).expect("its own pose");
+            assert!((arm.eef(&here).translation - arm.eef(&now).translation).length() < 0.01);
+            let mut goal = arm.eef(&now);
+            goal.translation.z += 0.05;
+            let solved = arm.ik_near(&now, &goal).expect("5 cm up is within reach");
+            let reached = arm.eef(&solved);
+            assert!(
+                (reached.translation - goal.translation).length() < 0.01,
+                "{name}"
+            );
+            // A joint action's predicted step is the step the robot takes.
+            let mut delta = now;
+            delta.values_mut().fill(0.0);
+            delta[1] = 0.02;
+            let action = arm
+                .joint_action(&now, &delta, 1.0)
+                .expect("a finite action");
+            let predicted = arm.after(&now, &action);
+            assert!(
+                (predicted[1] - now[1] - 0.02).abs() < 1e-5,
+                "{name}: {predicted:?}"
+            );
+            robot.set_action(&action).unwrap();
+            world.step_with(&mut robot);
+            let stepped = robot.arm(hand).unwrap().now();
+            assert_eq!(stepped, predicted, "{name}");
+            assert!(robot.arm(hand).unwrap().fingers_open(&world), "{name}");
+        }
     }
 }
 

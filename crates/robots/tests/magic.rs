@@ -29,7 +29,7 @@ fn scene(kind: RobotKind) -> (World, Robot, behavior_sim::ObjectId) {
 }
 
 fn steps(world: &mut World, robot: &mut Robot, n: usize) {
-    let still = vec![0.0; robot.action_dim()];
+    let still = robot.still_action(robot.space());
     for _ in 0..n {
         robot.set_action(&still).unwrap();
         world.step_with(robot);
@@ -63,13 +63,13 @@ fn a_grasp_made_at_once_holds_through_steps_and_a_teleport() {
         );
         let near = (world.aabb(carton).center() - base).length();
         assert!(near < 1.5, "{kind:?}: the carton is {near} m from the base");
+        let held_at = world.aabb(carton).mins.z;
         assert_eq!(robot.release_now(&mut world, hand), Some(carton));
         steps(&mut world, &mut robot, 60);
         assert_eq!(robot.held(hand), None);
-        assert!(
-            world.aabb(carton).mins.z < 0.05,
-            "{kind:?}: the released carton falls to the floor"
-        );
+        // To the floor, or onto the R1's base, over which its hands hang.
+        let fell = held_at - world.aabb(carton).mins.z;
+        assert!(fell > 0.1, "{kind:?}: the released carton fell {fell} m");
     }
 }
 

@@ -138,7 +138,7 @@ def main(argv=None) -> int:
     p.add_argument("--row", default="ap_nophys_fullobs")
     p.add_argument("--seeds", type=int, nargs="+", default=[0, 1, 2])
     p.add_argument("--timesteps", type=int, default=100_000)
-    p.add_argument("--robot", default="behavior", choices=["behavior", "fetch"])
+    p.add_argument("--robot", default="behavior", choices=["behavior", "fetch", "r1"])
     p.add_argument("--jobs", type=int, default=2, help="runs at a time (one core each)")
     p.add_argument("--out", type=Path, default=Path("runs/table1"))
     p.add_argument("--report", action="store_true",

@@ -202,7 +202,7 @@ def parser(description: str) -> argparse.ArgumentParser:
     p.add_argument("--seed", type=int, default=0, help="the learner's seed")
     p.add_argument("--timesteps", type=int, default=TrainConfig.timesteps,
                    help="actions to train for (primitives or continuous steps)")
-    p.add_argument("--robot", default="behavior", choices=["behavior", "fetch"])
+    p.add_argument("--robot", default="behavior", choices=["behavior", "fetch", "r1"])
     p.add_argument("--instance", type=int, default=0,
                    help="the instance's sampling seed, the same every episode")
     p.add_argument("--sampled", action="store_true",

@@ -50,9 +50,9 @@ pub struct EpisodeMetrics {
     pub logical_states: u32,
     /// The base's distance travelled, m.
     pub distance_navigated: f64,
-    /// The left hand's (a gripper's) displacement while touching or holding, m.
+    /// The left (or only) hand's displacement while touching or holding, m.
     pub hand_displacement_left: f64,
-    /// The right hand's displacement while touching or holding (0 for Fetch), m.
+    /// The right hand's displacement while touching or holding (0 for a one-handed robot), m.
     pub hand_displacement_right: f64,
     /// Work of all parts, J.
     pub work: f64,
@@ -133,13 +133,9 @@ impl Tracker {
     pub(crate) fn finish(&self, world: &World) -> EpisodeMetrics {
         let logical = self.logical.compare(world);
         let parts = self.agent.parts.clone();
-        let contact = |name: &str| {
-            parts
-                .iter()
-                .find(|p| p.name == name)
-                .map_or(0.0, |p| p.contact_distance)
-        };
-        let left = contact("left_hand") + contact("gripper");
+        // The body first, then the hands in the robot's order: the left (or only) one, then the
+        // right.
+        let contact = |hand: usize| parts.get(1 + hand).map_or(0.0, |p| p.contact_distance);
         EpisodeMetrics {
             steps: self.steps,
             success: self.success,
@@ -152,8 +148,8 @@ impl Tracker {
             logical_objects: logical.total_objects,
             logical_states: logical.total_states,
             distance_navigated: parts.first().map_or(0.0, |p| p.distance),
-            hand_displacement_left: left,
-            hand_displacement_right: contact("right_hand"),
+            hand_displacement_left: contact(0),
+            hand_displacement_right: contact(1),
             work: parts.iter().map(|p| p.work).sum(),
             parts,
         }

@@ -5,7 +5,6 @@
 use crate::options::EnvOptions;
 use crate::primitives::{Done, PrimitiveError, Primitives};
 use crate::record::{self, record_error};
-use behavior_env::record::Recorder;
 use behavior_env::{Checkpoint, Env, EnvError, Obs, Score};
 use behavior_planning::RunError;
 use behavior_render::Pixels;
@@ -17,12 +16,11 @@ use std::path::PathBuf;
 use std::sync::{Mutex, MutexGuard};
 use std::time::{Duration, Instant};
 
-/// The episode, when actions are primitives their space over its objects, and the recording
-/// it is being written to, if any.
+/// The episode (which records itself when asked: `Env::record_to`) and, when actions are
+/// primitives, their space over its objects.
 struct Episode {
     env: Env,
     primitives: Option<Primitives>,
-    recorder: Option<Recorder>,
 }
 
 /// A BEHAVIOR environment: `reset` and `step` as Gymnasium's, observations as a dict of numpy
@@ -71,7 +69,6 @@ impl PyEnv {
             let mut episode = Episode {
                 env: Env::new(config),
                 primitives,
-                recorder: None,
             };
             episode.reset(options.seed).map_err(|e| e.to_string())?;
             Ok((episode, scene))
@@ -116,7 +113,7 @@ impl PyEnv {
             PyValueError::new_err("the action must be a contiguous one-dimensional array")
         })?;
         let mut guard = self.lock()?;
-        let Episode { env, recorder, .. } = &mut *guard;
+        let Episode { env, .. } = &mut *guard;
         // Timed inside, so that releasing and taking back the lock counts as the binding's.
         let (step, took) = py.detach(|| {
             let started = Instant::now();
@@ -124,11 +121,6 @@ impl PyEnv {
         });
         self.count(took);
         let step = step.map_err(env_error)?;
-        if let Some(r) = recorder {
-            // `env` goes in as `&mut` (an `Env` is `Send`, not `Sync`).
-            py.detach(move || r.record(env, &action))
-                .map_err(record_error)?;
-        }
         let info = info_dict(py, step.info.steps, &step.info.score)?;
         Ok((
             obs_dict(py, step.obs)?,
@@ -150,16 +142,12 @@ impl PyEnv {
         a: usize,
     ) -> PyResult<(Bound<'py, PyDict>, f64, bool, bool, Bound<'py, PyDict>)> {
         let mut guard = self.lock()?;
-        let Episode {
-            env,
-            primitives,
-            recorder,
-        } = &mut *guard;
+        let Episode { env, primitives } = &mut *guard;
         let primitives = primitives.as_ref().ok_or_else(|| {
             PyValueError::new_err("this environment's actions are continuous, not primitives")
         })?;
         let done = py
-            .detach(|| primitives.step(env, a, recorder.as_mut()))
+            .detach(|| primitives.step(env, a))
             .map_err(primitive_error)?;
         let Done {
             step,
@@ -285,9 +273,7 @@ impl PyEnv {
         let episode: &mut Episode = &mut guard;
         episode.stop_recording()?;
         let (env, activity) = (&mut episode.env, &self.activity);
-        let recorder = py.detach(move || record::start(&path, env, activity, checkpoint_every))?;
-        episode.recorder = Some(recorder);
-        Ok(())
+        py.detach(move || record::start(&path, env, activity, checkpoint_every))
     }
 
     /// Finishes the recording under way (its summary and index written); nothing if none is.
@@ -298,7 +284,7 @@ impl PyEnv {
     /// Whether a recording is under way.
     #[getter]
     fn recording(&self) -> PyResult<bool> {
-        Ok(self.lock()?.recorder.is_some())
+        Ok(self.lock()?.env.is_recording())
     }
 
     /// The episode's metrics so far (the per-episode JSON of `behavior run --json`), as a JSON
@@ -326,10 +312,7 @@ impl Episode {
 
     /// Finishes the recording under way, if any.
     fn stop_recording(&mut self) -> PyResult<()> {
-        match self.recorder.take() {
-            Some(recorder) => recorder.finish().map_err(record_error),
-            None => Ok(()),
-        }
+        self.env.finish_recording().map_err(record_error)
     }
 
     /// Back to a checkpoint; the primitives find its objects.
@@ -361,9 +344,7 @@ impl Drop for Episode {
     /// A recording still under way is finished when the environment goes; an error there has
     /// no one to go to, and the file still reads up to its last whole chunk.
     fn drop(&mut self) {
-        if let Some(recorder) = self.recorder.take() {
-            let _ = recorder.finish();
-        }
+        let _ = self.env.finish_recording();
     }
 }
 

@@ -2,9 +2,8 @@
 //! primitive `a div n`, `behavior-planning`'s [`PrimitiveSpace`]), each action one primitive
 //! run to its end in the episode (symbolic or physical), with the mask of feasible actions.
 
-use behavior_env::record::Recorder;
 use behavior_env::{Env, Step};
-use behavior_planning::{Mode, PrimitiveSet, PrimitiveSpace, RunError, Watcher, run};
+use behavior_planning::{Mode, PrimitiveSet, PrimitiveSpace, RunError, run};
 
 /// Which primitives, run how, over which objects (the episode's, found again at each reset).
 pub struct Primitives {
@@ -68,13 +67,8 @@ impl Primitives {
         self.space.as_ref().map_or_else(Vec::new, |s| s.mask(env))
     }
 
-    /// Runs action `a` to its end, recording what it does if `recorder` is given.
-    pub fn step(
-        &self,
-        env: &mut Env,
-        a: usize,
-        recorder: Option<&mut Recorder>,
-    ) -> Result<Done, PrimitiveError> {
+    /// Runs action `a` to its end (the episode records it if it is recording).
+    pub fn step(&self, env: &mut Env, a: usize) -> Result<Done, PrimitiveError> {
         let call =
             self.space
                 .as_ref()
@@ -88,8 +82,7 @@ impl Primitives {
             .world()
             .map(|w| w.object(call.object).name.clone())
             .unwrap_or_default();
-        let watcher = recorder.map(|r| r as &mut dyn Watcher);
-        let outcome = run(env, call, self.mode, watcher)?;
+        let outcome = run(env, call, self.mode, None)?;
         Ok(Done {
             reward: outcome.step.info.score.q - before,
             step: outcome.step,

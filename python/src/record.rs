@@ -6,8 +6,8 @@
 use crate::build::Catalog;
 use behavior_bddl::Source;
 use behavior_env::Env;
-use behavior_env::record::{ReadError, RecordError, Recorder, read, replay_with};
-use behavior_planning::replay_edit;
+use behavior_env::record::{ReadError, RecordError, read, replay_with};
+use behavior_planning::RecordedCall;
 use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
 use serde_json::json;
@@ -15,13 +15,14 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 /// Starts recording `env`'s episode of the official `activity`, as it is now, to `path`.
-pub fn start(path: &Path, env: &Env, activity: &str, checkpoint_every: u32) -> PyResult<Recorder> {
+pub fn start(path: &Path, env: &mut Env, activity: &str, checkpoint_every: u32) -> PyResult<()> {
     let catalog = Catalog::load().map_err(|e| PyValueError::new_err(e.to_string()))?;
     let definition = catalog
         .source(activity)
         .map_err(|e| PyValueError::new_err(e.to_string()))?
         .text;
-    Recorder::create(path, env, &definition, checkpoint_every).map_err(record_error)
+    env.record_to(path, &definition, checkpoint_every)
+        .map_err(record_error)
 }
 
 /// A recording that could not be written: an `OSError` saying which file and why.
@@ -69,7 +70,7 @@ pub fn replay(py: Python<'_>, path: PathBuf, verify: bool) -> PyResult<String> {
                 .config(Arc::new(activity), taxonomy)
                 .map_err(invalid)?;
             // Recorded primitives are done again by the planner's code that did them.
-            let report = replay_with(&recording, config, &mut replay_edit).map_err(invalid)?;
+            let report = replay_with::<RecordedCall>(&recording, config).map_err(invalid)?;
             out["frames"] = json!(report.frames);
             out["checkpoints"] = json!(report.checkpoints);
             out["identical"] = json!(report.identical);

@@ -13,9 +13,10 @@ use crate::lerobot::{Dataset, Episode, Shapes};
 use crate::prelude::Prelude;
 use crate::replay::recorded_config;
 use anyhow::{Context, Result, bail};
+use behavior_env::record::redo;
 use behavior_env::record::{Recording, read, state_digest};
 use behavior_env::{CameraConfig, Env, Obs, Start};
-use behavior_planning::replay_edit;
+use behavior_planning::RecordedCall;
 use behavior_render::Modality;
 use serde_json::json;
 use std::path::{Path, PathBuf};
@@ -174,9 +175,8 @@ fn resimulate(
     for frame in &recording.frames {
         let mut edited = false;
         while let Some((step, edit)) = edits.next_if(|(s, _)| *s < frame.step) {
-            replay_edit(&mut env, edit).map_err(|why| {
-                anyhow::anyhow!("{}: the edit after step {step}: {why}", file.display())
-            })?;
+            redo::<RecordedCall>(&mut env, *step, edit)
+                .with_context(|| format!("{}: replaying", file.display()))?;
             edited = true;
         }
         // An edit (a symbolic primitive) moved things: observe them as they are now.

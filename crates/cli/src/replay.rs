@@ -6,7 +6,7 @@ use anyhow::{Context, Result};
 use behavior_bddl::Source;
 use behavior_env::EnvConfig;
 use behavior_env::record::{Recording, ReplayReport, read, replay_with};
-use behavior_planning::replay_edit;
+use behavior_planning::RecordedCall;
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -113,7 +113,7 @@ pub(crate) fn resimulate(
     prelude: &Prelude,
 ) -> Result<ReplayReport> {
     let config = recorded_config(file, recording, prelude)?;
-    replay_with(recording, config, &mut replay_edit)
+    replay_with::<RecordedCall>(recording, config)
         .with_context(|| format!("replaying {}", file.display()))
 }
 

@@ -5,7 +5,7 @@ use crate::plot::plot_episode;
 use crate::prelude::Prelude;
 use crate::video::{Video, VideoArgs};
 use anyhow::{Context, Result};
-use behavior_env::record::{CHECKPOINT_EVERY, Recorder};
+use behavior_env::record::CHECKPOINT_EVERY;
 use behavior_env::{Agent, EpisodeMetrics};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
@@ -66,15 +66,9 @@ pub fn run(args: RunArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let Built { mut env, source } = e.build(&prelude, |config| {
         config.max_steps = args.steps.max(1);
     })?;
-    let mut recorder = match &args.record {
-        Some(path) => Some(Recorder::create(
-            path,
-            &env,
-            &source.text,
-            args.checkpoint_every,
-        )?),
-        None => None,
-    };
+    if let Some(path) = &args.record {
+        env.record_to(path, &source.text, args.checkpoint_every)?;
+    }
     let mut video = args.video.start(&env, &prelude.knowledge.taxonomy)?;
     let bar = progress(args.steps, args.json);
     let dim = env.robot().map_or(0, |r| r.action_dim());
@@ -83,9 +77,6 @@ pub fn run(args: RunArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     loop {
         agent.act(&env, &mut action);
         let step = env.step(&action)?;
-        if let Some(r) = &mut recorder {
-            r.record(&env, &action)?;
-        }
         let last = step.terminated || step.truncated;
         if let Some(v) = &mut video {
             v.capture(&env, step.info.steps, step.info.score.q, last)?;
@@ -98,9 +89,7 @@ pub fn run(args: RunArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     }
     let wall_s = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
-    if let Some(r) = recorder {
-        r.finish()?;
-    }
+    env.finish_recording()?;
     let frames = video.map(Video::finish).transpose()?;
     let metrics = env.metrics().context("no episode")?;
     if let (Some(path), Some(series)) = (&args.plot, env.series()) {

@@ -6,8 +6,9 @@ use crate::prelude::Prelude;
 use crate::replay::recorded_config;
 use anyhow::{Context, Result, bail};
 use behavior_env::Env;
+use behavior_env::record::redo;
 use behavior_env::record::{CHECKPOINT_EVERY, read};
-use behavior_planning::replay_edit;
+use behavior_planning::RecordedCall;
 use behavior_web::{Playback, ServeOptions, Session, serve as run_server, view as run_viewer};
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};
 use std::path::{Path, PathBuf};
@@ -111,7 +112,7 @@ pub fn view(args: ViewArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let playback = Playback {
         env: Env::new(config),
         recording,
-        editor: Box::new(replay_edit),
+        editor: redo::<RecordedCall>,
         name,
     };
     run_viewer(playback, &args.listen.options(), |addr| {

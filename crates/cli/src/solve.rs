@@ -7,11 +7,11 @@ use crate::sample::all_covering;
 use crate::scene::with_clutter;
 use crate::video::{Video, VideoArgs};
 use anyhow::{Context, Result, bail};
-use behavior_env::record::{CHECKPOINT_EVERY, Recorder};
+use behavior_env::record::CHECKPOINT_EVERY;
 use behavior_env::{Env, EnvConfig, EpisodeMetrics};
 use behavior_planning::{
-    Executed, GivenUp, Limits, Mode, PrimitiveSet, PrimitiveSpace, RecordedCall, RunError,
-    Solution, Solver, Watcher,
+    Executed, GivenUp, Limits, Mode, PrimitiveSet, PrimitiveSpace, RunError, Solution, Solver,
+    Watcher,
 };
 use behavior_sim::STEP_SECONDS;
 use serde::Serialize;
@@ -91,17 +91,10 @@ pub fn solve(args: SolveArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         c.action_space = mode.action_space(c.robot);
     })?;
     let mut env = built.env;
-    let recorder = match &args.record {
-        Some(path) => Some(Recorder::create(
-            path,
-            &env,
-            &built.source.text,
-            CHECKPOINT_EVERY,
-        )?),
-        None => None,
-    };
-    let video = args.video.start(&env, &prelude.knowledge.taxonomy)?;
-    let mut watch = Watch { recorder, video };
+    if let Some(path) = &args.record {
+        env.record_to(path, &built.source.text, CHECKPOINT_EVERY)?;
+    }
+    let mut video = args.video.start(&env, &prelude.knowledge.taxonomy)?;
     let limits = Limits {
         primitives: args.max_primitives,
         ..Limits::default()
@@ -113,14 +106,11 @@ pub fn solve(args: SolveArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         }
     };
     let start = Instant::now();
-    let watching = watch.recorder.is_some() || watch.video.is_some();
-    let watcher = watching.then_some(&mut watch as &mut dyn Watcher);
+    let watcher = video.as_mut().map(|v| v as &mut dyn Watcher);
     let solution = Solver::new(&mut env, mode, limits, watcher, &mut print).solve()?;
     let wall = start.elapsed().as_secs_f64();
-    if let Some(r) = watch.recorder {
-        r.finish()?;
-    }
-    let frames = match watch.video {
+    env.finish_recording()?;
+    let frames = match video {
         Some(mut video) => {
             // The last state, whatever step it came at.
             video.capture(&env, env.steps(), env.score().map_or(0.0, |s| s.q), true)?;
@@ -150,30 +140,12 @@ pub fn solve(args: SolveArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     })
 }
 
-/// What watches a solve besides its printout: its recording and its video, either or both.
-struct Watch {
-    recorder: Option<Recorder>,
-    video: Option<Video>,
-}
-
-impl Watcher for Watch {
-    fn stepped(&mut self, env: &Env, action: &[f32]) -> Result<(), RunError> {
-        if let Some(r) = &mut self.recorder {
-            r.stepped(env, action)?;
-        }
-        if let Some(v) = &mut self.video {
-            let q = env.score().map_or(0.0, |s| s.q);
-            v.capture(env, env.steps(), q, false)
-                .map_err(|e| RunError::Watcher(format!("{e:#}")))?;
-        }
-        Ok(())
-    }
-
-    fn edited(&mut self, env: &Env, edit: &RecordedCall) -> Result<(), RunError> {
-        match &mut self.recorder {
-            Some(r) => r.edited(env, edit),
-            None => Ok(()),
-        }
+/// A solve's video sees every step.
+impl Watcher for Video {
+    fn stepped(&mut self, env: &Env, _action: &[f32]) -> Result<(), RunError> {
+        let q = env.score().map_or(0.0, |s| s.q);
+        self.capture(env, env.steps(), q, false)
+            .map_err(|e| RunError::Watcher(format!("{e:#}")))
     }
 }
 

@@ -1,9 +1,11 @@
 //! The environment: Gymnasium's `reset` and `step`, in Rust.
 
 use crate::config::{EnvConfig, Instances, Reward};
+use crate::edit::{Edit, WorldEdit};
 use crate::episode::{CheckpointError, Episode, Start, embody};
 use crate::metrics::{EpisodeMetrics, Series, Tracker};
 use crate::observation::{Obs, Sensor, SensorInput, task_obs};
+use crate::record::{RecordError, Recorder};
 use crate::score::{Score, Scorer};
 use crate::sensors::{CameraSensor, LidarSensor, categories};
 use crate::timing::{StepTimings, Timed};
@@ -67,6 +69,14 @@ pub enum EnvError {
     /// The camera could not be made (no graphics adapter, a bad camera size).
     #[error("the camera: {0}")]
     Render(#[from] RenderError),
+    /// The episode's recording could not be written: after a step, the step was taken and the
+    /// recording stopped (the file keeps what was written up to its last whole chunk).
+    #[error("the recording: {0}")]
+    Record(#[from] RecordError),
+    /// An edit of the world that would not be recorded while the episode is recording: a
+    /// recorded episode's edits go through [`Env::apply`].
+    #[error("the episode is recording: an edit of the world must be a recorded value (Env::apply)")]
+    UnrecordedEdit,
     /// A sensor failed to observe. After a step the step was taken; only its observation is
     /// missing.
     #[error("sensor `{sensor}`: {source}")]
@@ -102,21 +112,6 @@ pub struct Info {
     pub score: Score,
 }
 
-/// What code that acts on the world between steps (a symbolic action primitive) may touch,
-/// through [`Env::edit`].
-pub struct Edit<'a> {
-    /// The episode's world.
-    pub world: &'a mut World,
-    /// The robot in it.
-    pub robot: &'a mut Robot,
-    /// The object of each activity instance.
-    pub bindings: &'a [Option<ObjectId>],
-    /// The seed the episode was reset with, for edits that draw random numbers.
-    pub seed: u64,
-    /// Steps taken in the episode.
-    pub steps: u32,
-}
-
 /// A saved episode state; [`Env::restore`] continues from it bit-identically.
 #[derive(Clone)]
 pub struct Checkpoint(Episode);
@@ -149,6 +144,8 @@ pub struct Env {
     sensors: Vec<Box<dyn Sensor>>,
     episode: Option<Episode>,
     timings: StepTimings,
+    /// The recording of the episode, if it is being recorded.
+    recorder: Option<Recorder>,
 }
 
 impl Env {
@@ -173,6 +170,7 @@ impl Env {
             sensors: Vec::new(),
             episode: None,
             timings: StepTimings::default(),
+            recorder: None,
         }
     }
 
@@ -191,6 +189,7 @@ impl Env {
     /// observation. On error the previous episode is gone and `step` refuses until a reset
     /// succeeds.
     pub fn reset(&mut self, seed: u64) -> Result<(Obs, Info), EnvError> {
+        self.finish_recording()?;
         self.episode = None;
         let instance = self.instance_for(seed)?;
         self.reset_to(Start { seed, instance })
@@ -198,6 +197,7 @@ impl Env {
 
     /// Starts an episode from a given initial state (a recording's header does this).
     pub fn reset_to(&mut self, start: Start) -> Result<(Obs, Info), EnvError> {
+        self.finish_recording()?;
         self.episode = None;
         self.make_onboard_sensors()?;
         let library = Library::new(&self.config.taxonomy);
@@ -345,6 +345,7 @@ impl Env {
             score,
         };
         let scored = Instant::now();
+        self.record_step(action)?;
         let obs = self.observe()?;
         let observed = Instant::now();
         let parts = [physics, rules, scored - stepped, observed - scored];
@@ -481,12 +482,35 @@ impl Env {
         self.episode.as_mut().map(|e| &mut e.robot)
     }
 
-    /// Lets `f` change the world and the robot between two steps, outside physics and actions
-    /// (a symbolic primitive teleports, attaches, sets states). The score, metrics and
-    /// observation see the change at the next step, as the original's primitives are followed
-    /// by one step. A recording must say what was done ([`crate::record::Recorder::record_edit`])
-    /// for a replay to do it again.
+    /// Does `edit` to the world and the robot between two steps, outside physics and actions
+    /// (a symbolic primitive teleports, attaches, sets states; see `edit.rs`), and records it
+    /// when the episode is recording and it was done. The score, metrics and observation see
+    /// the change at the next step, as the original's primitives are followed by one step. The
+    /// outer error: no episode, or the recording failed (the edit was done); the inner one: the
+    /// edit's own.
+    pub fn apply<E: WorldEdit>(&mut self, edit: &E) -> Result<Result<(), E::Error>, EnvError> {
+        let done = self.edit_unrecorded(|e| edit.apply(e))?;
+        if done.is_ok()
+            && let Some(mut recorder) = self.recorder.take()
+        {
+            recorder.record_edit(self, edit)?;
+            self.recorder = Some(recorder);
+        }
+        Ok(done)
+    }
+
+    /// Lets `f` change the world and the robot between two steps without saying what it did:
+    /// for setting up an episode that is not being recorded (a test puts the robot somewhere).
+    /// While the episode records, [`EnvError::UnrecordedEdit`]: its edits go through
+    /// [`Env::apply`].
     pub fn edit<R>(&mut self, f: impl FnOnce(Edit<'_>) -> R) -> Result<R, EnvError> {
+        if self.recorder.is_some() {
+            return Err(EnvError::UnrecordedEdit);
+        }
+        self.edit_unrecorded(f)
+    }
+
+    fn edit_unrecorded<R>(&mut self, f: impl FnOnce(Edit<'_>) -> R) -> Result<R, EnvError> {
         let episode = self.episode.as_mut().ok_or(EnvError::NotReset)?;
         if episode.over {
             return Err(EnvError::EpisodeOver {
@@ -500,6 +524,57 @@ impl Env {
             seed: episode.start.seed,
             steps: episode.steps,
         }))
+    }
+
+    /// Starts recording the episode just reset to `path` (an MCAP file; see [`crate::record`]):
+    /// from now on every step and every edit ([`Env::apply`]) is written as it happens, until
+    /// [`Env::finish_recording`] or the next reset closes the file. `definition` is the
+    /// activity's BDDL text (a replay needs no other file); a full state is saved every
+    /// `checkpoint_every` steps. A recording already running is closed first.
+    pub fn record_to(
+        &mut self,
+        path: &std::path::Path,
+        definition: &str,
+        checkpoint_every: u32,
+    ) -> Result<(), RecordError> {
+        self.finish_recording()?;
+        self.recorder = Some(Recorder::create(path, self, definition, checkpoint_every)?);
+        Ok(())
+    }
+
+    /// Closes the recording, if one is running, with MCAP's summary and index.
+    pub fn finish_recording(&mut self) -> Result<(), RecordError> {
+        match self.recorder.take() {
+            Some(recorder) => recorder.finish(),
+            None => Ok(()),
+        }
+    }
+
+    /// Whether the episode is being recorded.
+    pub fn is_recording(&self) -> bool {
+        self.recorder.is_some()
+    }
+
+    /// Records what a teleoperation device reported for the step about to be taken (raw
+    /// headset poses, keyboard rates), if recording: not needed to replay, kept so that a
+    /// demonstration says what the person did as well as what the robot was told.
+    pub fn record_device(&mut self, device: &impl serde::Serialize) -> Result<(), RecordError> {
+        let Some(mut recorder) = self.recorder.take() else {
+            return Ok(());
+        };
+        recorder.record_device(self, device)?;
+        self.recorder = Some(recorder);
+        Ok(())
+    }
+
+    /// Records the step just taken with `action`, if recording. A failure stops the recording.
+    fn record_step(&mut self, action: &[f32]) -> Result<(), RecordError> {
+        let Some(mut recorder) = self.recorder.take() else {
+            return Ok(());
+        };
+        recorder.record(self, action)?;
+        self.recorder = Some(recorder);
+        Ok(())
     }
 }
 

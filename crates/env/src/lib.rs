@@ -39,6 +39,7 @@
 
 mod agent;
 mod config;
+mod edit;
 mod env;
 mod episode;
 pub mod metrics;
@@ -50,9 +51,8 @@ mod timing;
 
 pub use agent::Agent;
 pub use config::{DEFAULT_MAX_STEPS, EnvConfig, Instances, Observations, Reward};
-pub use env::{
-    Checkpoint, Edit, Env, EnvError, Info, SAMPLE_TRIES, SETTLE_STEPS, Step, derived_seed,
-};
+pub use edit::{Edit, NoEdit, NoEdits, WorldEdit};
+pub use env::{Checkpoint, Env, EnvError, Info, SAMPLE_TRIES, SETTLE_STEPS, Step, derived_seed};
 pub use episode::{CHECKPOINT_FORMAT_VERSION, CheckpointError, Start};
 pub use metrics::{EpisodeMetrics, Series};
 pub use observation::{

@@ -96,7 +96,7 @@ fn an_idle_agent_navigates_nothing_and_a_random_one_more() {
 fn an_agent_is_normalized_by_a_recorded_demonstration() {
     use behavior_env::Start;
     use behavior_env::metrics::HumanReference;
-    use behavior_env::record::{Recorder, read};
+    use behavior_env::record::read;
     // A "demonstration": 60 random steps, recorded.
     let dir = tempfile::Builder::new()
         .prefix("behavior-demo-")
@@ -105,15 +105,14 @@ fn an_agent_is_normalized_by_a_recorded_demonstration() {
     let path = dir.path().join("demo.mcap");
     let mut env = common::env("bringing_in_wood");
     env.reset(6).unwrap();
-    let mut recorder = Recorder::create(&path, &env, "(text)", 30).unwrap();
+    env.record_to(&path, "(text)", 30).unwrap();
     let mut agent = Agent::named("random", 6).unwrap();
     let mut action = Vec::new();
     for _ in 0..60 {
         agent.act(&env, &mut action);
         env.step(&action).unwrap();
-        recorder.record(&env, &action).unwrap();
     }
-    recorder.finish().unwrap();
+    env.finish_recording().unwrap();
     // The demonstration's metrics, from the recording alone (begun again, its actions replayed).
     let recording = read(&path).unwrap();
     let config = recording

@@ -4,7 +4,7 @@
 
 mod common;
 
-use behavior_env::record::{Recorder, read, replay, resume, state_digest};
+use behavior_env::record::{read, replay, resume, state_digest};
 use behavior_env::{Agent, Env};
 use std::path::PathBuf;
 
@@ -31,15 +31,14 @@ fn record_with(
 ) -> Env {
     let mut env = Env::new(config);
     env.reset(5).unwrap();
-    let mut recorder = Recorder::create(path, &env, "(definition text)", every).unwrap();
+    env.record_to(path, "(definition text)", every).unwrap();
     let mut agent = Agent::named("random", 5).unwrap();
     let mut action = Vec::new();
     for _ in 0..steps {
         agent.act(&env, &mut action);
         env.step(&action).unwrap();
-        recorder.record(&env, &action).unwrap();
     }
-    recorder.finish().unwrap();
+    env.finish_recording().unwrap();
     env
 }
 
@@ -200,4 +199,87 @@ fn a_recording_resumed_at_a_checkpoint_continues_as_recorded() {
     recording.states.clear();
     let resimulated = resume(&recording, config(&recording), 40).unwrap();
     assert_eq!(resimulated.steps(), 40);
+}
+
+/// An edit of the world for the tests: lifts the object of that name by `mm` millimetres.
+#[derive(serde::Serialize, serde::Deserialize)]
+struct Lift {
+    object: String,
+    mm: u32,
+}
+
+#[derive(Debug, thiserror::Error)]
+#[error("no object `{0}`")]
+struct NoSuchObject(String);
+
+impl behavior_env::WorldEdit for Lift {
+    type Error = NoSuchObject;
+
+    fn apply(&self, edit: behavior_env::Edit<'_>) -> Result<(), NoSuchObject> {
+        let id = (edit.world.object_named(&self.object))
+            .ok_or_else(|| NoSuchObject(self.object.clone()))?;
+        let mut pose = edit.world.pose(id);
+        pose.translation.z += self.mm as f32 / 1000.0;
+        edit.world
+            .set_pose(id, pose)
+            .map_err(|_| NoSuchObject(self.object.clone()))
+    }
+}
+
+#[test]
+fn the_episode_records_its_own_edits_and_a_replay_of_their_type_does_them_again() {
+    use behavior_env::EnvError;
+    use behavior_env::record::{ReplayError, replay_with};
+    let (_dir, path) = temp("edited.mcap");
+    let mut env = common::env("bringing_in_wood");
+    env.reset(5).unwrap();
+    env.record_to(&path, "(definition text)", 10).unwrap();
+    let plank = env.world().unwrap().objects().map(|(_, o)| o.name.clone());
+    let plank = plank
+        .into_iter()
+        .find(|n| n.starts_with("plywood"))
+        .unwrap();
+    let still = vec![0.0; env.robot().unwrap().action_dim()];
+    for step in 0..20 {
+        if step == 7 {
+            // Recorded, as every edit of a recording episode must be.
+            let lift = Lift {
+                object: plank.clone(),
+                mm: 30,
+            };
+            env.apply(&lift).unwrap().unwrap();
+            // An edit that fails changes nothing and is not recorded.
+            let missing = Lift {
+                object: "no_such_thing".into(),
+                mm: 1,
+            };
+            assert!(env.apply(&missing).unwrap().is_err());
+            // An edit that would go unrecorded is refused.
+            let refused = env.edit(|e| e.world.objects().count());
+            assert!(
+                matches!(refused, Err(EnvError::UnrecordedEdit)),
+                "{refused:?}"
+            );
+        }
+        env.step(&still).unwrap();
+    }
+    env.finish_recording().unwrap();
+    assert!(!env.is_recording());
+    let recording = read(&path).unwrap();
+    assert_eq!(recording.frames.len(), 20);
+    assert_eq!(recording.edits.len(), 1, "{:?}", recording.edits);
+    assert_eq!(recording.edits[0].0, 7, "after step 7");
+    let config = || {
+        recording
+            .config(common::activity("bringing_in_wood"), common::taxonomy())
+            .unwrap()
+    };
+    let report = replay_with::<Lift>(&recording, config()).unwrap();
+    assert!(report.identical && report.checkpoints == 3, "{report:?}");
+    // Without the edit's type, the replay stops at the edit and says why.
+    let plain = replay(&recording, config());
+    assert!(
+        matches!(plain, Err(ReplayError::UnreadableEdit { step: 7, .. })),
+        "{plain:?}"
+    );
 }

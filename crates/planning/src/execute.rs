@@ -1,11 +1,11 @@
-//! Running primitives in an environment: each is done between two steps ([`Env::edit`]; a
-//! physical one by steps of its own) and followed by one step of a still action, as the original's primitive environment does, so
-//! that reward, done and observation come from that step. What a recording needs to replay
-//! them is written as they run.
+//! Running primitives in an environment: each is done between two steps ([`Env::apply`], a
+//! recorded edit; a physical one by steps of its own) and followed by one step of a still
+//! action, as the original's primitive environment does, so that reward, done and observation
+//! come from that step.
 
+use crate::edits::{EditError, RecordedCall};
 use crate::primitive::{Call, Failure, Primitive, WAIT_STEPS};
-use crate::{manipulation, physical, posed_hands, symbolic};
-use behavior_env::record::Recorder;
+use crate::{manipulation, physical};
 use behavior_env::{Env, EnvError, Info, Step};
 use behavior_robots::{ActionSpace, RobotKind};
 use serde::{Deserialize, Serialize};
@@ -80,13 +80,11 @@ pub enum RunError {
     Watcher(String),
 }
 
-/// What sees each step a primitive takes and each edit of the world it makes between steps: a
-/// recording ([`Recorder`] is one), a video, a viewer. Its error ends the run.
+/// What sees each step a primitive takes: a video, a viewer (the episode records itself:
+/// [`Env::record_to`]). Its error ends the run.
 pub trait Watcher {
     /// After a step taken with `action`.
     fn stepped(&mut self, env: &Env, action: &[f32]) -> Result<(), RunError>;
-    /// After an edit of the world between steps (a symbolic primitive's outcome, a switch).
-    fn edited(&mut self, env: &Env, edit: &RecordedCall) -> Result<(), RunError>;
 }
 
 /// The watcher once more, for one call (an `Option<&mut dyn Watcher>` does not reborrow as
@@ -95,16 +93,6 @@ pub(crate) fn again<'b>(watcher: &'b mut Option<&mut dyn Watcher>) -> Option<&'b
     match watcher {
         Some(w) => Some(&mut **w),
         None => None,
-    }
-}
-
-impl Watcher for Recorder {
-    fn stepped(&mut self, env: &Env, action: &[f32]) -> Result<(), RunError> {
-        Ok(self.record(env, action)?)
-    }
-
-    fn edited(&mut self, env: &Env, edit: &RecordedCall) -> Result<(), RunError> {
-        Ok(self.record_edit(env, edit)?)
     }
 }
 
@@ -118,17 +106,6 @@ pub struct Outcome {
     pub seconds: f64,
     /// The last step it took (a wait takes [`WAIT_STEPS`], any other one).
     pub step: Step,
-}
-
-/// How a recording describes a primitive: its name, the object's name and the hand.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
-pub struct RecordedCall {
-    /// [`Primitive::name`].
-    pub primitive: String,
-    /// The world object's name.
-    pub object: String,
-    /// The hand.
-    pub hand: usize,
 }
 
 /// Runs one primitive in `mode` and the steps after it, each shown to `watcher` if given.
@@ -149,7 +126,7 @@ pub fn run(
         | (
             Mode::Physical,
             Primitive::Open | Primitive::Close | Primitive::ToggleOn | Primitive::ToggleOff,
-        ) => env.edit(|edit| symbolic::apply(edit, &call))?,
+        ) => apply(env, &call)?,
         (Mode::Physical, Primitive::Grasp) => manipulation::grasp(env, &call, again(&mut watcher))?,
         (Mode::Physical, p) => match p.relation() {
             Some(r) => manipulation::place(env, &call, r, again(&mut watcher))?,
@@ -159,14 +136,6 @@ pub fn run(
         },
     };
     let seconds = began.elapsed().as_secs_f64();
-    let edited = mode == Mode::Symbolic || call.primitive.is_switch();
-    if result.is_ok()
-        && edited
-        && call.primitive != Primitive::Wait
-        && let Some(r) = again(&mut watcher)
-    {
-        r.edited(env, &describe(env, &call))?;
-    }
     let steps = if call.primitive == Primitive::Wait {
         WAIT_STEPS
     } else {
@@ -220,65 +189,15 @@ fn ended(env: &mut Env) -> Result<Step, EnvError> {
     })
 }
 
-/// The call as a recording says it.
-fn describe(env: &Env, call: &Call) -> RecordedCall {
-    let object = env
-        .world()
-        .map(|w| w.object(call.object).name.clone())
-        .unwrap_or_default();
-    RecordedCall {
-        primitive: call.primitive.name().to_string(),
-        object,
-        hand: call.hand,
-    }
-}
-
-/// Does a recorded symbolic primitive again, for [`behavior_env::record::replay_with`]: an
-/// edit it cannot read, or a primitive that now fails, is an error that says so.
-pub fn replay_edit(env: &mut Env, edit: &serde_json::Value) -> Result<(), String> {
-    let recorded: RecordedCall =
-        serde_json::from_value(edit.clone()).map_err(|e| format!("not a primitive: {e}"))?;
-    if recorded.primitive == posed_hands::HAND_RESET {
-        return env
-            .edit(|edit| edit.robot.reset_hand(edit.world, recorded.hand))
-            .map_err(|e| e.to_string())?
-            .map_err(|e| format!("the reset of hand {} failed on replay: {e}", recorded.hand));
-    }
-    if recorded.primitive == physical::DOORS_OPENED {
-        return env
-            .edit(|edit| {
-                physical::open_doors_in(edit.world, edit.bindings);
-            })
-            .map_err(|e| e.to_string());
-    }
-    let object = env
-        .world()
-        .and_then(|w| w.object_named(&recorded.object))
-        .ok_or_else(|| format!("no object `{}` in the world", recorded.object))?;
-    if recorded.primitive == manipulation::FORCED_GRASP {
-        return env
-            .edit(|edit| edit.robot.grasp_touching(edit.world, recorded.hand, object))
-            .map_err(|e| e.to_string())?
-            .map_err(|e| {
-                format!(
-                    "the forced grasp of {} failed on replay: {e}",
-                    recorded.object
-                )
-            });
-    }
-    let primitive = Primitive::from_name(&recorded.primitive)
-        .ok_or_else(|| format!("unknown primitive `{}`", recorded.primitive))?;
-    let call = Call {
-        primitive,
-        object,
-        hand: recorded.hand,
-    };
-    env.edit(|edit| symbolic::apply(edit, &call))
-        .map_err(|e| e.to_string())?
-        .map_err(|e| {
-            format!(
-                "{} on {} failed on replay: {e}",
-                recorded.primitive, recorded.object
-            )
-        })
+/// A primitive's outcome set at once, between steps: an edit the episode records.
+fn apply(env: &mut Env, call: &Call) -> Result<Result<(), Failure>, EnvError> {
+    let done = env.apply(&RecordedCall::of(env, call))?;
+    Ok(done.map_err(|e| match e {
+        EditError::Failed { failure, .. } => failure,
+        EditError::Robot(e) => Failure::Robot(e),
+        // A live call names its object by id and its primitive by value.
+        EditError::UnknownPrimitive(_) | EditError::NoObject(_) | EditError::NoDoorClosed => {
+            Failure::Unavailable("the primitive could not be described")
+        }
+    }))
 }

@@ -4,14 +4,15 @@
 //! - **Primitives** ([`Primitive`], [`Call`]): the paper's six and what the activities need
 //!   beyond them. In symbolic mode ([`check`], [`apply`]) the original's feasibility checks, then
 //!   the outcome set at once; a refusal is a [`Failure`] that says why and changes nothing.
-//!   [`run`] does one in an episode between two steps ([`behavior_env::Env::edit`]), followed by
-//!   one still step, recording it for [`replay_edit`] to do again. In physical mode
+//!   [`run`] does one in an episode between two steps as a [`RecordedCall`] (an edit of the
+//!   world the episode records, [`behavior_env::Env::apply`], and a replay does again),
+//!   followed by one still step. In physical mode
 //!   navigation ([`drive_to`]) and grasps and placements ([`grasp`], [`place`]) are planned
 //!   and executed by the robot's own actions with physics; grasps and placements, and whether
 //!   a hand [`reaches`], through the robot's manipulator (`manipulation.rs`): hands posed
 //!   directly (`posed_hands.rs`, read through the robot's [`behavior_robots::PosedHand`]: the
 //!   BehaviorRobot's) or on a jointed arm (`jointed_arm.rs`, read through its
-//!   [`behavior_robots::Arm`]: Fetch's). Neither names a robot: a new robot implements one of
+//!   [`behavior_robots::Arm`]: Fetch's and the R1's). Neither names a robot: a new robot implements one of
 //!   the two interfaces.
 //! - **The action space** ([`PrimitiveSpace`]): the original's `Discrete(n × K)` with a mask.
 //! - **The task planner** ([`Solver`]): goal options, the next literal, the primitives that make
@@ -38,6 +39,7 @@
 //! ```
 
 mod action_space;
+mod edits;
 mod execute;
 mod jointed_arm;
 mod manipulation;
@@ -48,7 +50,8 @@ mod symbolic;
 mod task;
 
 pub use action_space::{PrimitiveSet, PrimitiveSpace};
-pub use execute::{ARM_REACH, Mode, Outcome, RecordedCall, RunError, Watcher, replay_edit, run};
+pub use edits::{EditError, RecordedCall};
+pub use execute::{ARM_REACH, Mode, Outcome, RunError, Watcher, run};
 pub use jointed_arm::{ARM_APPROACH, ARM_DESCENT};
 pub use manipulation::{
     CLOSE_STEPS, FORCED_GRASP, GRASP_INSET, GRASP_JITTER, PLACE_HEIGHT, PLACE_TRIES, RELEASE_STEPS,

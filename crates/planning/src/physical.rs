@@ -5,8 +5,9 @@
 //! manipulator's (`manipulation.rs`). OPEN, CLOSE and the toggles are kinematic in the original's motion-planning
 //! mode too, and are done as in symbolic mode.
 
+use crate::edits::RecordedCall;
+use crate::execute::RunError;
 use crate::execute::Watcher;
-use crate::execute::{RecordedCall, RunError};
 use crate::manipulation::manipulator;
 use crate::primitive::{Call, Failure};
 use crate::symbolic::{call_seed, limited_links, open_all_the_way, stand_for};
@@ -111,16 +112,8 @@ pub const DOORS_OPENED: &str = "open_doors";
 /// ahead of its base met a leaf as the base pushed it: a sheet of plywood's grasp broke on
 /// one. A door the activity names keeps its state: its openness may be the goal.
 fn open_doors(steps: &mut Stepper<'_, '_>) -> Result<(), RunError> {
-    let opened = steps
-        .env
-        .edit(|edit| open_doors_in(edit.world, edit.bindings))?;
-    if opened {
-        steps.record_edit(&RecordedCall {
-            primitive: DOORS_OPENED.to_string(),
-            object: String::new(),
-            hand: 0,
-        })?;
-    }
+    // None closed is no failure: there is nothing to open.
+    let _ = steps.env.apply(&RecordedCall::own(DOORS_OPENED, 0))?;
     Ok(())
 }
 
@@ -167,22 +160,9 @@ pub(crate) fn call_rng(env: &Env, call: &Call) -> SimRng {
 /// the original does after closing, recorded as the edit [`crate::FORCED_GRASP`] for replays to do
 /// again; nothing where it does not touch it.
 pub(crate) fn force_grasp(steps: &mut Stepper<'_, '_>, call: &Call) -> Result<(), RunError> {
-    let forced = steps.env.edit(|edit| {
-        edit.robot
-            .grasp_touching(edit.world, call.hand, call.object)
-            .is_ok()
-    })?;
-    if forced {
-        let object = steps
-            .env
-            .world()
-            .map(|w| w.object(call.object).name.clone());
-        steps.record_edit(&RecordedCall {
-            primitive: crate::FORCED_GRASP.to_string(),
-            object: object.unwrap_or_default(),
-            hand: call.hand,
-        })?;
-    }
+    // Not touching it is no failure here: the grasp is then not held, which the caller sees.
+    let forced = RecordedCall::own_of(steps.env, crate::FORCED_GRASP, call);
+    let _ = steps.env.apply(&forced)?;
     Ok(())
 }
 
@@ -204,14 +184,6 @@ impl Stepper<'_, '_> {
             return Ok(Err(Failure::Unavailable("the episode ended on the way")));
         }
         Ok(Ok(()))
-    }
-
-    /// Records an edit done between steps, if recording.
-    pub(crate) fn record_edit(&mut self, edit: &RecordedCall) -> Result<(), RunError> {
-        if let Some(r) = crate::execute::again(&mut self.watcher) {
-            r.edited(self.env, edit)?;
-        }
-        Ok(())
     }
 
     /// `n` steps of a still action, or fewer if `done` holds first.

@@ -27,8 +27,9 @@
 //! the hand where it let go, ours comes back, so that the next NAVIGATE_TO finds the robot as
 //! compact as it started.
 
+use crate::edits::RecordedCall;
+use crate::execute::RunError;
 use crate::execute::Watcher;
-use crate::execute::{RecordedCall, RunError};
 use crate::manipulation::{
     CLOSE_STEPS, GRASP_JITTER, Grip, Hands, Manipulator, RELEASE_STEPS, SETTLE_STEPS, StandTest,
     grasp_point, grasp_with, holds, on_or_in_goals, on_top, place_with, placement_goals, rng_seed,
@@ -214,16 +215,8 @@ fn free_stranded(steps: &mut Stepper<'_, '_>) -> Result<(), RunError> {
             continue;
         }
         let hand = side.index();
-        let reset = steps
-            .env
-            .edit(|edit| edit.robot.reset_hand(edit.world, hand).is_ok())?;
-        if reset {
-            steps.record_edit(&RecordedCall {
-                primitive: HAND_RESET.to_string(),
-                object: String::new(),
-                hand,
-            })?;
-        }
+        // A hand that cannot be put back stays where it is: the next motion says so.
+        let _ = steps.env.apply(&RecordedCall::own(HAND_RESET, hand))?;
     }
     Ok(())
 }

@@ -7,10 +7,10 @@
 mod common;
 
 use behavior_env::Env;
-use behavior_env::record::{Recorder, read, replay_with};
+use behavior_env::record::{read, replay_with};
 use behavior_motion::{HandConfig, HandSpace, Space};
 use behavior_planning::{
-    Call, Failure, Mode, Primitive, grasp, hand_body, hand_grasp, hand_place, replay_edit, run,
+    Call, Failure, Mode, Primitive, RecordedCall, grasp, hand_body, hand_grasp, hand_place, run,
 };
 use behavior_robots::RobotKind;
 use behavior_sim::{ObjectId, Relation};
@@ -184,7 +184,7 @@ fn a_recorded_physical_grasp_and_placement_replay_bit_for_bit() {
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("hand.mcap");
     let mut env = episode(RobotKind::Behavior);
-    let mut recorder = Recorder::create(&path, &env, "", 10).unwrap();
+    env.record_to(&path, "", 10).unwrap();
     let book = object(&env, "book.n.02_1");
     let under = support(&env, book);
     for (primitive, target) in [
@@ -192,23 +192,17 @@ fn a_recorded_physical_grasp_and_placement_replay_bit_for_bit() {
         (Primitive::Grasp, book),
         (Primitive::PlaceOnTop, under),
     ] {
-        let outcome = run(
-            &mut env,
-            call(primitive, target),
-            Mode::Physical,
-            Some(&mut recorder),
-        )
-        .unwrap();
+        let outcome = run(&mut env, call(primitive, target), Mode::Physical, None).unwrap();
         assert!(
             outcome.result.is_ok(),
             "{primitive:?}: {:?}",
             outcome.result
         );
     }
-    recorder.finish().unwrap();
+    env.finish_recording().unwrap();
     let recording = read(&path).unwrap();
     assert_eq!(recording.frames.len() as u32, env.steps());
-    let report = replay_with(&recording, common::config(ACTIVITY), &mut replay_edit).unwrap();
+    let report = replay_with::<RecordedCall>(&recording, common::config(ACTIVITY)).unwrap();
     assert!(report.identical && report.checkpoints > 1, "{report:?}");
     std::fs::remove_dir_all(&dir).unwrap();
 }

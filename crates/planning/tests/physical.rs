@@ -7,10 +7,10 @@ mod common;
 
 use behavior_core::Predicate;
 use behavior_env::Env;
-use behavior_env::record::{Recorder, read, replay_with};
+use behavior_env::record::{read, replay_with};
 use behavior_motion::{BaseConfig, BaseSpace, Space, Standing};
 use behavior_planning::{
-    Call, Mode, Primitive, base_config, drive_to, reaches, replay_edit, within_reach,
+    Call, Mode, Primitive, RecordedCall, base_config, drive_to, reaches, within_reach,
 };
 use behavior_robots::RobotKind;
 
@@ -76,16 +76,14 @@ fn a_recorded_drive_replays_bit_for_bit() {
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("drive.mcap");
     let mut env = episode("bringing_in_wood", RobotKind::Behavior, 1);
-    let mut recorder = Recorder::create(&path, &env, "", 10).unwrap();
+    env.record_to(&path, "", 10).unwrap();
     let call = Call {
         primitive: Primitive::NavigateTo,
         object: object(&env, "plywood.n.01_2"),
         hand: 1,
     };
-    drive_to(&mut env, &call, Some(&mut recorder))
-        .unwrap()
-        .unwrap();
-    recorder.finish().unwrap();
+    drive_to(&mut env, &call, None).unwrap().unwrap();
+    env.finish_recording().unwrap();
     let recording = read(&path).unwrap();
     // Driving is actions; the one edit opens the home's doors before the first drive.
     let edits: Vec<&str> = (recording.edits.iter())
@@ -94,7 +92,7 @@ fn a_recorded_drive_replays_bit_for_bit() {
     assert_eq!(edits, [behavior_planning::DOORS_OPENED]);
     assert_eq!(recording.frames.len() as u32, env.steps());
     let config = common::config("bringing_in_wood");
-    let report = replay_with(&recording, config, &mut replay_edit).unwrap();
+    let report = replay_with::<RecordedCall>(&recording, config).unwrap();
     assert!(report.identical && report.checkpoints > 1, "{report:?}");
     std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -5,29 +5,23 @@
 #[path = "../../env/tests/common/mod.rs"]
 mod common;
 
-use behavior_env::record::{Recorder, read, replay, replay_with};
-use behavior_planning::{Limits, Mode, Solution, Solver, Watcher, replay_edit};
+use behavior_env::record::{read, replay, replay_with};
+use behavior_planning::{Limits, Mode, RecordedCall, Solution, Solver};
 use behavior_robots::RobotKind;
 
-fn solve(
-    activity: &str,
-    seed: u64,
-    recorder: Option<&mut Recorder>,
-) -> (Solution, behavior_env::Env) {
+fn solve(activity: &str, seed: u64) -> (Solution, behavior_env::Env) {
     let mut env = common::env(activity);
     env.reset(seed).unwrap();
-    let solution = solve_in(&mut env, Mode::Symbolic, recorder).unwrap();
+    let solution = solve_in(&mut env, Mode::Symbolic).unwrap();
     (solution, env)
 }
 
-/// The planner in `env` as it is.
+/// The planner in `env` as it is (recording if the episode records).
 fn solve_in(
     env: &mut behavior_env::Env,
     mode: Mode,
-    recorder: Option<&mut Recorder>,
 ) -> Result<Solution, behavior_planning::RunError> {
-    let watcher = recorder.map(|r| r as &mut dyn Watcher);
-    Solver::new(env, mode, Limits::default(), watcher, &mut |_| {}).solve()
+    Solver::new(env, mode, Limits::default(), None, &mut |_| {}).solve()
 }
 
 #[test]
@@ -39,7 +33,7 @@ fn three_activities_are_solved_with_symbolic_primitives() {
         "preserving_food",
     ] {
         // Seed 1: at seed 0 a sheet of bringing_in_wood is drawn too heavy for the hand.
-        let (solution, env) = solve(activity, 1, None);
+        let (solution, env) = solve(activity, 1);
         assert!(
             solution.success,
             "{activity}: Q = {}, stopped: {}, given up: {:?}",
@@ -59,9 +53,9 @@ fn a_recorded_solution_replays_bit_for_bit() {
     let activity = "putting_leftovers_away";
     let mut env = common::env(activity);
     env.reset(2).unwrap();
-    let mut recorder = Recorder::create(&path, &env, "", 5).unwrap();
-    let solution = solve_in(&mut env, Mode::Symbolic, Some(&mut recorder)).unwrap();
-    recorder.finish().unwrap();
+    env.record_to(&path, "", 5).unwrap();
+    let solution = solve_in(&mut env, Mode::Symbolic).unwrap();
+    env.finish_recording().unwrap();
     assert!(solution.success, "{:?}", solution.given_up);
     let recording = read(&path).unwrap();
     let edits = solution
@@ -75,7 +69,7 @@ fn a_recorded_solution_replays_bit_for_bit() {
         "every successful primitive is recorded"
     );
     let config = || common::config(activity);
-    let report = replay_with(&recording, config(), &mut replay_edit).unwrap();
+    let report = replay_with::<RecordedCall>(&recording, config()).unwrap();
     assert!(
         report.identical,
         "differs from step {:?}",
@@ -92,7 +86,7 @@ fn a_recorded_solution_replays_bit_for_bit() {
 #[test]
 fn solving_before_a_reset_is_an_error() {
     let mut env = common::env("bringing_in_wood");
-    let err = solve_in(&mut env, Mode::Symbolic, None).unwrap_err();
+    let err = solve_in(&mut env, Mode::Symbolic).unwrap_err();
     assert!(
         matches!(
             err,
@@ -157,9 +151,9 @@ fn solve_physically(
     };
     let mut env = behavior_env::Env::new(config());
     env.reset(seed).unwrap();
-    let mut recorder = Recorder::create(&path, &env, "", 50).unwrap();
-    let solution = solve_in(&mut env, Mode::Physical, Some(&mut recorder)).unwrap();
-    recorder.finish().unwrap();
+    env.record_to(&path, "", 50).unwrap();
+    let solution = solve_in(&mut env, Mode::Physical).unwrap();
+    env.finish_recording().unwrap();
     if !solution.success {
         std::fs::remove_dir_all(&dir).unwrap();
         return Err(format!(
@@ -186,7 +180,7 @@ fn solve_physically(
         let name = edit["primitive"].as_str().unwrap_or_default();
         assert!(edited.contains(&name), "{activity}: step {step}: {edit}");
     }
-    let report = replay_with(&recording, config(), &mut replay_edit).unwrap();
+    let report = replay_with::<RecordedCall>(&recording, config()).unwrap();
     assert!(
         report.identical,
         "{activity}: differs from step {:?}",

@@ -17,7 +17,7 @@ use crate::scene::{Describe, Particles, Recolor, SceneFiles, SceneView};
 use crate::server::WebError;
 use crate::session::{Event, ToSim, ticks};
 use axum::body::Bytes;
-use behavior_env::record::{Recording, state_digest};
+use behavior_env::record::{Recording, ReplayError, state_digest};
 use behavior_env::{Env, EpisodeMetrics, Start};
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -27,9 +27,10 @@ use std::sync::mpsc::Receiver;
 use std::time::{Duration, Instant};
 use tokio::sync::mpsc::Sender;
 
-/// Does a recorded edit of the world again (a planner's primitive): see
-/// [`behavior_env::record::Editor`].
-pub type PlaybackEditor = Box<dyn FnMut(&mut Env, &serde_json::Value) -> Result<(), String> + Send>;
+/// Does the edit recorded after a step again (a planner's primitive), as
+/// [`behavior_env::record::redo`] does for the edits' own type:
+/// `redo::<behavior_planning::RecordedCall>`.
+pub type PlaybackEditor = fn(&mut Env, u32, &serde_json::Value) -> Result<(), ReplayError>;
 
 /// What `behavior view` plays: a recording and the environment it was made in.
 pub struct Playback {
@@ -240,11 +241,11 @@ impl Viewer {
             .edits
             .iter()
             .filter(|(s, _)| *s >= done && *s < step)
-            .map(|(_, edit)| edit.clone())
+            .cloned()
             .collect();
-        for edit in edits {
-            if let Err(why) = (self.playback.editor)(&mut self.playback.env, &edit) {
-                return self.stop(format!("the edit after step {done} ({edit}): {why}"));
+        for (at, edit) in edits {
+            if let Err(e) = (self.playback.editor)(&mut self.playback.env, at, &edit) {
+                return self.stop(e.to_string());
             }
         }
         if let Err(e) = self.playback.env.step(&action) {

@@ -15,7 +15,6 @@ use crate::teleop::Drive;
 use crate::xr::{Targets, XrInput, XrRig};
 use axum::body::Bytes;
 use behavior_env::Env;
-use behavior_env::record::Recorder;
 use behavior_robots::ACTION_DIM;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -77,7 +76,7 @@ struct Running {
     scene_text: String,
     /// Where the scenes' glTF files are published for the pages.
     files: Arc<SceneFiles>,
-    recorder: Option<Recorder>,
+    /// The file the episode records to, from its first step.
     recording: Option<PathBuf>,
     episodes: u32,
     seed: u64,
@@ -156,7 +155,6 @@ impl Running {
             view: SceneView::default(),
             scene_text: String::new(),
             files,
-            recorder: None,
             recording: None,
             episodes: 1,
             seed,
@@ -278,20 +276,15 @@ impl Running {
     /// One action step with the driver's latest command.
     fn step(&mut self) -> Result<(), WebError> {
         let action = self.action();
-        let recorder = match self.recorder.take() {
-            Some(recorder) => recorder,
-            None => {
-                let path = fresh_path(&self.session.record_dir, &self.file_stem())?;
-                let s = &self.session;
-                let recorder = Recorder::create(&path, &s.env, &s.definition, s.checkpoint_every)?;
-                self.recording = Some(path);
-                recorder
-            }
-        };
-        let recorder = self.recorder.insert(recorder);
-        recorder.record_device(&self.session.env, &self.control)?;
+        // An episode is recorded from its first step: one file per episode with steps.
+        if self.recording.is_none() {
+            let path = fresh_path(&self.session.record_dir, &self.file_stem())?;
+            let s = &mut self.session;
+            s.env.record_to(&path, &s.definition, s.checkpoint_every)?;
+            self.recording = Some(path);
+        }
+        self.session.env.record_device(&self.control)?;
         let step = self.session.env.step(&action)?;
-        recorder.record(&self.session.env, &action)?;
         let world = self.session.env.world().ok_or(WebError::NoEpisode)?;
         if !self.view.matches(world) {
             self.describe();
@@ -344,15 +337,13 @@ impl Running {
 
     /// Ends the episode (keeping its recording) and resets to the next seed's.
     fn end(&mut self, reason: &'static str) -> Result<(), WebError> {
-        let env = &self.session.env;
+        let env = &mut self.session.env;
         let steps = env.steps();
         if steps == 0 {
             return Ok(());
         }
         let score = env.score().cloned().unwrap_or_default();
-        if let Some(recorder) = self.recorder.take() {
-            recorder.finish()?;
-        }
+        env.finish_recording()?;
         let recording = self.recording.take();
         self.written.extend(recording.clone());
         let ended = ServerMessage::Ended(Ended {

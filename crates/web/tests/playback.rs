@@ -5,7 +5,7 @@
 mod common;
 mod support;
 
-use behavior_env::record::{Recorder, read};
+use behavior_env::record::read;
 use behavior_robots::ACTION_DIM;
 use behavior_web::Playback;
 use support::{Socket, bind_local, next_frame, next_of, send, shutdown};
@@ -19,7 +19,7 @@ const STEPS: u32 = 40;
 fn record(path: &std::path::Path) -> Vec<[f32; 3]> {
     let mut env = common::env(ACTIVITY);
     env.reset(5).unwrap();
-    let mut recorder = Recorder::create(path, &env, "", 10).unwrap();
+    env.record_to(path, "", 10).unwrap();
     let body = env.robot().unwrap().objects()[0];
     let position = |env: &behavior_env::Env| {
         let t = env.world().unwrap().core().pose(body).translation;
@@ -30,10 +30,9 @@ fn record(path: &std::path::Path) -> Vec<[f32; 3]> {
         let mut action = [0.0; ACTION_DIM];
         action[if step < 20 { 0 } else { 5 }] = 1.0;
         env.step(&action).unwrap();
-        recorder.record(&env, &action).unwrap();
         positions.push(position(&env));
     }
-    recorder.finish().unwrap();
+    env.finish_recording().unwrap();
     positions
 }
 
@@ -60,7 +59,7 @@ async fn a_recording_plays_every_step_where_the_episode_had_it_and_refuses_drivi
     let playback = Playback {
         env: behavior_env::Env::new(config),
         recording,
-        editor: Box::new(|_, _| Err("no edits here".to_string())),
+        editor: behavior_env::record::redo::<behavior_env::NoEdits>,
         name: "episode.mcap".to_string(),
     };
     let (server, addr) = bind_local().await;

@@ -11,7 +11,7 @@
 //! | `/poses` | every step | `{"step", "poses"}`: every object's position and quaternion (x, y, z, qx, qy, qz, qw), in the header's object order, after the step |
 //! | `/score` | every step | `{"step", "q", "success", "conjuncts"}` after the step |
 //! | `/checkpoint` | step 0 and every `checkpoint_every` steps | `{"step", "digest"}`: SHA-256 of the full state (see `digest.rs`) |
-//! | `/edit` | after a step (or the reset) when the world was edited before the next ([`crate::Env::edit`]) | `{"step", "edit"}`: what was done, in its doer's words (a symbolic primitive: `{"primitive", "object"}`) |
+//! | `/edit` | after a step (or the reset) when the world was edited before the next ([`crate::Env::apply`]) | `{"step", "edit"}`: what was done, a [`crate::WorldEdit`] value in its own words (a symbolic primitive: `{"primitive", "object", "hand"}`) |
 //! | `/device` | before a teleoperated step | `{"step", "device"}`: what the person's device reported for that step (a headset's raw poses, keyboard rates), in the teleoperator's words; a replay does not need it |
 //! | `/state` | with each checkpoint | the full state as bytes (encoding [`STATE_ENCODING`], no schema): the world (`World::to_bytes`), the robot, the bindings, the running metrics; an episode resumes from it |
 //!
@@ -26,8 +26,9 @@ mod writer;
 
 pub use digest::state_digest;
 pub use reader::{Frame, ReadError, Recording, read};
-pub use replay::{Editor, ReplayError, ReplayReport, replay, replay_with, resume};
-pub use writer::{RecordError, Recorder};
+pub use replay::{ReplayError, ReplayReport, redo, replay, replay_with, resume};
+pub use writer::RecordError;
+pub(crate) use writer::Recorder;
 
 use behavior_sampling::SavedInstance;
 use serde::{Deserialize, Serialize};

@@ -4,6 +4,7 @@
 use super::reader::Recording;
 use super::state_digest;
 use crate::config::{EnvConfig, Instances};
+use crate::edit::{NoEdits, WorldEdit};
 use crate::env::{Env, EnvError};
 use crate::episode::Start;
 use crate::metrics::EpisodeMetrics;
@@ -36,16 +37,41 @@ pub enum ReplayError {
         /// Why.
         source: crate::CheckpointError,
     },
-    /// The recording edits the world between steps and the replay was given no editor that
-    /// does it, or the editor could not.
-    #[error("the world was edited after step {step} ({edit}): {why}")]
+    /// The recording edits the world between steps in words this replay's edit type does not
+    /// read: replay it with the type that made the edits (a plain [`replay`] reads none).
+    #[error(
+        "the world was edited after step {step} ({edit}), in a way this replay does not read \
+         ({source}): replay it with the code that made the edits"
+    )]
+    UnreadableEdit {
+        /// The step after which the edit was made.
+        step: u32,
+        /// What the recording says was done.
+        edit: String,
+        /// Why it does not read as an edit of the replay's type.
+        source: serde_json::Error,
+    },
+    /// A recorded edit could not be done again.
+    #[error("the world was edited after step {step} ({edit}); done again, it failed: {source}")]
     Edit {
         /// The step after which the edit was made.
         step: u32,
         /// What the recording says was done.
         edit: String,
         /// Why it was not done again.
-        why: String,
+        source: Box<dyn std::error::Error + Send + Sync>,
+    },
+    /// Resuming at a step re-simulates from the start, which cannot redo edits: resume at a
+    /// checkpoint whose full state was saved.
+    #[error(
+        "the world was edited after step {step} ({edit}), before the checkpoint asked for, \
+         which has no saved state to resume from"
+    )]
+    EditBeforeResume {
+        /// The step after which the edit was made.
+        step: u32,
+        /// What the recording says was done.
+        edit: String,
     },
     /// The environment refused the start or a step.
     #[error("replaying step {step}: {source}")]
@@ -105,24 +131,18 @@ impl Recording {
     }
 }
 
-/// Does a recorded edit of the world again ([`crate::Env::edit`], [`super::Recorder::record_edit`]):
-/// whoever made the edits knows what their words mean. An error says why it could not.
-pub type Editor<'a> = dyn FnMut(&mut Env, &serde_json::Value) -> Result<(), String> + 'a;
-
 /// Replays a recording in `config` (see [`Recording::config`]), comparing the state digest at
 /// every checkpoint. A recording with edits of the world between steps needs
-/// [`replay_with`] and an editor.
+/// [`replay_with`] and the type of its edits.
 pub fn replay(recording: &Recording, config: EnvConfig) -> Result<ReplayReport, ReplayError> {
-    replay_with(recording, config, &mut |_, _| {
-        Err("this replay has no editor: replay with the code that made the edits".to_string())
-    })
+    replay_with::<NoEdits>(recording, config)
 }
 
-/// [`replay`], doing every recorded edit again with `editor` after the step it followed.
-pub fn replay_with(
+/// [`replay`], reading every recorded edit as an `E` and applying it again
+/// ([`crate::Env::apply`]) after the step it followed.
+pub fn replay_with<E: WorldEdit>(
     recording: &Recording,
     config: EnvConfig,
-    editor: &mut Editor<'_>,
 ) -> Result<ReplayReport, ReplayError> {
     let mut env = Env::new(config);
     let start = Start {
@@ -155,11 +175,7 @@ pub fn replay_with(
     let mut edits = recording.edits.iter().peekable();
     for frame in &recording.frames {
         while let Some((step, edit)) = edits.next_if(|(s, _)| *s < frame.step) {
-            editor(&mut env, edit).map_err(|why| ReplayError::Edit {
-                step: *step,
-                edit: edit.to_string(),
-                why,
-            })?;
+            redo::<E>(&mut env, *step, edit)?;
         }
         env.step(&frame.action).map_err(|source| ReplayError::Env {
             step: frame.step,
@@ -171,6 +187,28 @@ pub fn replay_with(
     report.q_final = env.score().map_or(0.0, |s| s.q);
     report.metrics = env.metrics();
     Ok(report)
+}
+
+/// Reads the edit recorded after step `step` as an `E` and does it again: what a replay does
+/// between two recorded steps, for code that walks a recording its own way (an exporter, a
+/// viewer).
+pub fn redo<E: WorldEdit>(
+    env: &mut Env,
+    step: u32,
+    recorded: &serde_json::Value,
+) -> Result<(), ReplayError> {
+    let edit = E::deserialize(recorded).map_err(|source| ReplayError::UnreadableEdit {
+        step,
+        edit: recorded.to_string(),
+        source,
+    })?;
+    let failed = |source: Box<dyn std::error::Error + Send + Sync>| ReplayError::Edit {
+        step,
+        edit: recorded.to_string(),
+        source,
+    };
+    let done = env.apply(&edit).map_err(|e| failed(Box::new(e)))?;
+    done.map_err(|e| failed(Box::new(e)))
 }
 
 /// Resumes a recorded episode at one of its checkpoints: loads the full state saved there (or,
@@ -213,12 +251,9 @@ fn resimulate(
     step: u32,
 ) -> Result<(), ReplayError> {
     if let Some((at, edit)) = recording.edits.iter().find(|(s, _)| *s < step) {
-        return Err(ReplayError::Edit {
+        return Err(ReplayError::EditBeforeResume {
             step: *at,
             edit: edit.to_string(),
-            why:
-                "resuming re-simulates without an editor: resume at a checkpoint with a saved state"
-                    .to_string(),
         });
     }
     env.reset_to(start)

@@ -50,8 +50,9 @@ const TOPICS: [&str; 8] = [
 /// The index in [`TOPICS`] of `/state`, the one channel without a JSON schema.
 const STATE: usize = 7;
 
-/// An episode being recorded.
-pub struct Recorder {
+/// An episode being recorded: the environment owns it ([`Env::record_to`]) and writes every
+/// step and edit as it happens, so that no caller pairs a step with its recording.
+pub(crate) struct Recorder {
     writer: Writer<File>,
     path: PathBuf,
     channels: [u16; 8],
@@ -62,7 +63,7 @@ pub struct Recorder {
 impl Recorder {
     /// Starts a recording of the episode `env` has just reset: writes the header, the starting
     /// poses and the first checkpoint. `definition` is the activity's BDDL text.
-    pub fn create(
+    pub(crate) fn create(
         path: &Path,
         env: &Env,
         definition: &str,
@@ -128,16 +129,20 @@ impl Recorder {
     }
 
     /// Records the step `env` has just taken with `action`.
-    pub fn record(&mut self, env: &Env, action: &[f32]) -> Result<(), RecordError> {
+    pub(crate) fn record(&mut self, env: &Env, action: &[f32]) -> Result<(), RecordError> {
         let step = env.steps();
         self.write(1, step, &json!({ "step": step, "values": action }))?;
         self.write_state(env)
     }
 
-    /// Records that the world was edited between steps ([`Env::edit`]) after the step `env`
+    /// Records that the world was edited between steps ([`Env::apply`]) after the step `env`
     /// has taken last: `edit` says what was done, in the words of whoever did it (a symbolic
     /// primitive's name and object), for a replay's editor to do it again.
-    pub fn record_edit(&mut self, env: &Env, edit: &impl Serialize) -> Result<(), RecordError> {
+    pub(crate) fn record_edit(
+        &mut self,
+        env: &Env,
+        edit: &impl Serialize,
+    ) -> Result<(), RecordError> {
         let step = env.steps();
         self.write(5, step, &json!({ "step": step, "edit": edit }))
     }
@@ -145,13 +150,17 @@ impl Recorder {
     /// Records what a teleoperation device reported for the step `env` is about to take (raw
     /// headset poses, keyboard rates): not needed to replay, kept so that a demonstration says
     /// what the person did as well as what the robot was told.
-    pub fn record_device(&mut self, env: &Env, device: &impl Serialize) -> Result<(), RecordError> {
+    pub(crate) fn record_device(
+        &mut self,
+        env: &Env,
+        device: &impl Serialize,
+    ) -> Result<(), RecordError> {
         let step = env.steps() + 1;
         self.write(6, step, &json!({ "step": step, "device": device }))
     }
 
     /// Closes the file with MCAP's summary and index.
-    pub fn finish(mut self) -> Result<(), RecordError> {
+    pub(crate) fn finish(mut self) -> Result<(), RecordError> {
         let path = self.path.clone();
         self.writer
             .finish()

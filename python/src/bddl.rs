@@ -4,13 +4,16 @@
 //! file's path. Results cross as plain values (counts, strings, JSON); the Python module shapes
 //! them.
 
-use crate::build::{BuildError, Catalog};
+use crate::build::catalog;
 use behavior_bddl::domain::{is_domain_text, load_domain};
 use behavior_bddl::options::options_with;
 use behavior_bddl::{Counting, FactSet, GroundGoal, Optimizer};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use serde_json::json;
+
+/// Why a BDDL tool failed: the data, the definition or the state given.
+type Failed = Box<dyn std::error::Error + Send + Sync>;
 
 fn value_error(e: impl std::fmt::Display) -> PyErr {
     PyValueError::new_err(e.to_string())
@@ -19,8 +22,8 @@ fn value_error(e: impl std::fmt::Display) -> PyErr {
 /// Checks a problem or domain file: `(errors, warnings, rendered diagnostics)`.
 #[pyfunction]
 pub fn bddl_check(py: Python<'_>, definition: String) -> PyResult<(usize, usize, String)> {
-    py.detach(|| -> Result<_, BuildError> {
-        let catalog = Catalog::load()?;
+    py.detach(|| -> Result<_, Failed> {
+        let catalog = catalog()?;
         let source = catalog.source(&definition)?;
         let diagnostics = if is_domain_text(&source.text) {
             load_domain(&source).map(|(_, warnings)| warnings)
@@ -45,8 +48,8 @@ pub fn bddl_check(py: Python<'_>, definition: String) -> PyResult<(usize, usize,
 /// `conjuncts` (each top-level conjunct's text and whether it holds).
 #[pyfunction]
 pub fn bddl_evaluate(py: Python<'_>, definition: String, state: String) -> PyResult<String> {
-    py.detach(|| -> Result<String, BuildError> {
-        let catalog = Catalog::load()?;
+    py.detach(|| -> Result<String, Failed> {
+        let catalog = catalog()?;
         let source = catalog.source(&definition)?;
         let (activity, _warnings) = catalog.knowledge().load(&source)?;
         let facts = FactSet::from_json(&activity, &state)?;
@@ -80,8 +83,8 @@ pub fn bddl_options(
     definition: String,
     limit: usize,
 ) -> PyResult<(Option<u64>, Vec<Vec<String>>)> {
-    py.detach(|| -> Result<_, BuildError> {
-        let catalog = Catalog::load()?;
+    py.detach(|| -> Result<_, Failed> {
+        let catalog = catalog()?;
         let (activity, _warnings) = catalog.knowledge().load(&catalog.source(&definition)?)?;
         let goal = GroundGoal::new(&activity);
         let volume = Optimizer::with_counting(&goal, Counting::Set).volume();

@@ -35,7 +35,7 @@ fn activities(py: Python<'_>) -> PyResult<Vec<String>> {
 /// sample by default; the benchmark protocol's unseen-furniture episodes use the second.
 #[pyfunction]
 fn covering_homes(py: Python<'_>, activity: String) -> PyResult<Vec<String>> {
-    py.detach(|| build::Catalog::load()?.covering_homes(&activity))
+    py.detach(|| build::catalog()?.covering_homes(&activity))
         .map_err(|e| PyValueError::new_err(e.to_string()))
 }
 

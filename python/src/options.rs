@@ -1,18 +1,11 @@
 //! What a Python environment is built with: one plain struct, read from the dict the Python
 //! classes pass (they own the defaults and the documentation), turned into an [`EnvConfig`].
 
-use crate::build::{Catalog, EnvSpec};
-use behavior_env::{CameraConfig, EnvConfig, FixedCamera, Placement};
+use crate::build::catalog;
+use behavior_catalog::{EnvSpec, ObservationSpec};
+use behavior_env::EnvConfig;
 use behavior_planning::Mode;
-use behavior_render::{ImageProfile, Modality};
 use pyo3::FromPyObject;
-
-/// Names of the observations besides the images' modalities.
-const STATE: [&str; 3] = ["proprioception", "task_obs", "lidar"];
-/// The key prefix of the camera that `render()` reads; its readings are no observation.
-pub const RENDER_CAMERA: &str = "render";
-/// Its vertical field of view, rad (as `behavior run --video`'s overview).
-const RENDER_FOV: f32 = std::f32::consts::FRAC_PI_3;
 
 /// The environment's options (every key of the dict must be there).
 #[derive(Clone, Debug, FromPyObject)]
@@ -49,16 +42,21 @@ impl EnvOptions {
     /// The configuration of `activity` with these options, from the official data.
     pub fn config(&self, activity: &str) -> Result<EnvConfig, String> {
         let spec = EnvSpec {
-            activity: activity.to_string(),
-            robot: self.robot.clone(),
             scene: self.scene.clone(),
+            seed: self.seed,
+            robot: self.robot.clone(),
             clutter: self.clutter,
+            max_steps: self.max_steps,
+            observations: Some(ObservationSpec {
+                names: self.observations.clone(),
+                image_size: self.image_size,
+                image_profile: self.image_profile.clone(),
+                render_size: self.render_size,
+            }),
+            ..EnvSpec::new(activity)
         };
-        let catalog = Catalog::load().map_err(|e| e.to_string())?;
-        let mut config = catalog.config(&spec).map_err(|e| e.to_string())?;
-        if let Some(max) = self.max_steps {
-            config.max_steps = max;
-        }
+        let catalog = catalog().map_err(|e| e.to_string())?;
+        let (mut config, _, _) = catalog.config(&spec).map_err(|e| e.to_string())?;
         // Primitives drive the robot through the space their mode needs (Fetch's arm joint by
         // joint when physical); continuous actions are the robot's full space.
         if self.primitives.is_some() {
@@ -66,56 +64,6 @@ impl EnvOptions {
                 .ok_or_else(|| format!("unknown primitive_mode `{}`", self.primitive_mode))?;
             config.action_space = mode.action_space(config.robot);
         }
-        self.observe(&mut config)?;
         Ok(config)
-    }
-
-    /// Sets what the episode observes.
-    fn observe(&self, config: &mut EnvConfig) -> Result<(), String> {
-        let wanted = |name: &str| self.observations.iter().any(|o| o == name);
-        let mut modalities = Vec::new();
-        for name in &self.observations {
-            if STATE.contains(&name.as_str()) {
-                continue;
-            }
-            let modality: Modality = name.parse().map_err(|e| {
-                format!("{e}; or one of proprioception, task_obs, lidar (observations)")
-            })?;
-            if !modalities.contains(&modality) {
-                modalities.push(modality);
-            }
-        }
-        if self.image_size == 0 || self.render_size == Some(0) {
-            return Err("image_size and render_size must be at least 1 pixel".into());
-        }
-        let profile: ImageProfile = self
-            .image_profile
-            .parse()
-            .map_err(|e| format!("{e} (image_profile)"))?;
-        let observations = &mut config.observations;
-        observations.proprioception = wanted("proprioception");
-        observations.task_obs = wanted("task_obs");
-        observations.lidar = wanted("lidar");
-        observations.camera = (!modalities.is_empty()).then(|| CameraConfig {
-            modalities,
-            width: self.image_size,
-            height: self.image_size,
-            profile,
-            ..CameraConfig::default()
-        });
-        if let Some(size) = self.render_size {
-            observations.fixed_cameras.push(FixedCamera {
-                name: RENDER_CAMERA.to_string(),
-                placement: Placement::Overview,
-                config: CameraConfig {
-                    modalities: vec![Modality::Rgb],
-                    width: size,
-                    height: size,
-                    vertical_fov: RENDER_FOV,
-                    profile,
-                },
-            });
-        }
-        Ok(())
     }
 }

@@ -3,7 +3,7 @@
 //! took, with the symbolic primitives' edits of the world) to MCAP, with state digests at
 //! checkpoints; a replay re-simulates it and compares every checkpoint bit for bit.
 
-use crate::build::Catalog;
+use crate::build::catalog;
 use behavior_bddl::Source;
 use behavior_env::Env;
 use behavior_env::record::{ReadError, RecordError, read, replay_with};
@@ -16,7 +16,7 @@ use std::sync::Arc;
 
 /// Starts recording `env`'s episode of the official `activity`, as it is now, to `path`.
 pub fn start(path: &Path, env: &mut Env, activity: &str, checkpoint_every: u32) -> PyResult<()> {
-    let catalog = Catalog::load().map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let catalog = catalog().map_err(|e| PyValueError::new_err(e.to_string()))?;
     let definition = catalog
         .source(activity)
         .map_err(|e| PyValueError::new_err(e.to_string()))?
@@ -57,7 +57,7 @@ pub fn replay(py: Python<'_>, path: PathBuf, verify: bool) -> PyResult<String> {
             "damage": recording.damage,
         });
         if verify {
-            let catalog = Catalog::load().map_err(|e| PyValueError::new_err(e.to_string()))?;
+            let catalog = catalog().map_err(|e| PyValueError::new_err(e.to_string()))?;
             let source = Source::new(&h.activity, &h.definition);
             let (activity, _warnings) = catalog.knowledge().load(&source).map_err(|e| {
                 PyValueError::new_err(format!("the definition in {}: {e}", path.display()))

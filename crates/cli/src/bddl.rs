@@ -112,7 +112,7 @@ pub fn run(command: BddlCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
 }
 
 fn check(prelude: &Prelude, paths: &[PathBuf]) -> Result<ExitCode> {
-    let (data, knowledge) = (&prelude.data, &prelude.knowledge);
+    let (data, knowledge) = (&prelude.data(), &prelude.knowledge());
     let paths: Vec<PathBuf> = if paths.is_empty() {
         let mut all: Vec<PathBuf> = data
             .activities()?
@@ -340,13 +340,13 @@ fn bench(
     counting: Counting,
 ) -> Result<ExitCode> {
     let names = if only.is_empty() {
-        prelude.data.activities()?
+        prelude.data().activities()?
     } else {
         only.to_vec()
     };
     let mut rows = Vec::new();
     for name in names {
-        let activity = prelude.load_activity(&prelude.official_source(&name)?)?;
+        let activity = prelude.load_activity(&prelude.official(&name)?)?;
         let goal = GroundGoal::new(&activity);
         let optimizer = Optimizer::with_counting(&goal, counting);
         let state: FactSet = activity.initial_facts().into_iter().collect();

@@ -112,7 +112,7 @@ fn resident_mb() -> f64 {
 pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let prelude = Prelude::load(data_dir)?;
     let library = prelude.library();
-    let taxonomy = Arc::new(prelude.knowledge.taxonomy.clone());
+    let taxonomy = Arc::new(prelude.knowledge().taxonomy.clone());
     let mut rows = Vec::new();
     let mut memory = 0.0f64;
     let mut memory_images: Option<f64> = None;
@@ -152,7 +152,7 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     };
     for name in names {
         let activity = Arc::new(prelude.activity(name)?);
-        let home = first_covering(&activity, &library, &prelude.knowledge.taxonomy)?;
+        let home = first_covering(&activity, &library, &prelude.knowledge().taxonomy)?;
         let home = with_clutter(home, &library, true)?;
         let base = EnvConfig::new(activity.clone(), taxonomy.clone(), vec![home.clone()]);
         // Sample once; every configuration starts from the same instance.

@@ -136,7 +136,7 @@ struct Report {
 pub fn run(args: BenchPlanArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let prelude = Prelude::load(data_dir)?;
     let library = prelude.library();
-    let taxonomy = Arc::new(prelude.knowledge.taxonomy.clone());
+    let taxonomy = Arc::new(prelude.knowledge().taxonomy.clone());
     let names: Vec<String> = if args.all || !args.activities.is_empty() {
         prelude.activity_names(&args.activities)?
     } else {
@@ -151,7 +151,7 @@ pub fn run(args: BenchPlanArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let mut activities = Vec::new();
     for name in &names {
         let activity = Arc::new(prelude.activity(name)?);
-        let home = first_covering(&activity, &library, &prelude.knowledge.taxonomy)?;
+        let home = first_covering(&activity, &library, &prelude.knowledge().taxonomy)?;
         let home = with_clutter(home, &library, true)?;
         let mut config = EnvConfig::new(activity, taxonomy.clone(), vec![home.clone()]);
         config.robot = robot_kind(&args.robot)?;

@@ -35,10 +35,7 @@ pub fn facts(args: FactsArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         SavedInstance::from_json(&text).with_context(|| format!("{}", args.instance.display()))?;
     let activity = match &args.activity {
         Some(file) => prelude.activity(file)?,
-        None => prelude.activity(&crate::episode::official_activity(
-            &prelude,
-            &saved.activity,
-        )?)?,
+        None => prelude.activity(&prelude.official_activity(&saved.activity)?)?,
     };
     let instance = saved
         .load(&activity, &library)
@@ -55,21 +52,4 @@ pub fn facts(args: FactsArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         }
     }
     Ok(ExitCode::SUCCESS)
-}
-
-#[cfg(test)]
-mod tests {
-    #[test]
-    fn the_official_name_drops_the_problem_index() {
-        assert_eq!(
-            crate::episode::official_name("packing_lunches_0"),
-            "packing_lunches"
-        );
-        assert_eq!(
-            crate::episode::official_name("re-shelving_library_books_0"),
-            "re-shelving_library_books"
-        );
-        assert_eq!(crate::episode::official_name("mine"), "mine");
-        assert_eq!(crate::episode::official_name("mine_"), "mine_");
-    }
 }

@@ -156,7 +156,7 @@ pub fn gallery(args: GalleryArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         );
     }
     let prelude = Prelude::load(data_dir)?;
-    let table = categories(&prelude.knowledge.taxonomy);
+    let table = categories(&prelude.knowledge().taxonomy);
     let sitters: Vec<Subject> = if args.robots {
         RobotKind::ALL
             .into_iter()

@@ -4,62 +4,48 @@
 
 use anyhow::{Context, Result};
 use behavior_assets::{Library, Scene};
-use behavior_bddl::load::read_source;
-use behavior_bddl::{Activity, Knowledge, Source};
-use behavior_data::DataDir;
+use behavior_bddl::{Activity, Source};
+use behavior_catalog::Catalog;
 use std::path::Path;
 
-/// The official data and the knowledge loaded from it.
+/// The official data and the knowledge loaded from it: the catalog environments are built
+/// from (`behavior-catalog`), with what the subcommands read of it.
 pub struct Prelude {
-    /// Where the official definitions are.
-    pub data: DataDir,
-    /// The taxonomy and the domain, to load definitions with.
-    pub knowledge: Knowledge,
+    catalog: Catalog,
+}
+
+impl std::ops::Deref for Prelude {
+    type Target = Catalog;
+
+    fn deref(&self) -> &Catalog {
+        &self.catalog
+    }
 }
 
 impl Prelude {
     /// Locates the data (`--data-dir`, `$BEHAVIOR_DATA_DIR`, else the cache, filled on first
     /// use with a progress message) and loads the knowledge.
     pub fn load(data_dir: Option<&Path>) -> Result<Prelude> {
-        let data = DataDir::locate(data_dir, |message| eprintln!("{message}"))?;
-        let knowledge = Knowledge::read(&data.taxonomy_path(), &data.domain_path())?;
-        Ok(Prelude { data, knowledge })
-    }
-
-    /// The object library over the knowledge's taxonomy. It borrows the taxonomy, so it is made
-    /// here rather than kept in the prelude.
-    pub fn library(&self) -> Library<'_> {
-        Library::new(&self.knowledge.taxonomy)
-    }
-
-    /// A problem file if one exists at `file`, else the official activity of that name.
-    pub fn source(&self, file: &str) -> Result<Source> {
-        let path = Path::new(file);
-        if path.exists() {
-            return Ok(read_source(path)?);
-        }
-        let path = self
-            .data
-            .problem_path(file)
-            .with_context(|| format!("`{file}` is neither a file nor an official activity"))?;
-        Ok(read_source(&path)?)
+        let catalog = Catalog::load(data_dir, |message| eprintln!("{message}"))?;
+        Ok(Prelude { catalog })
     }
 
     /// The definition of an official activity.
-    pub fn official_source(&self, name: &str) -> Result<Source> {
-        Ok(read_source(&self.data.problem_path(name)?)?)
+    pub fn official(&self, name: &str) -> Result<Source> {
+        let source = self.official_source(name)?;
+        source.with_context(|| format!("`{name}` is not an official activity"))
     }
 
     /// Loads a definition, printing its warnings (with their locations) to stderr.
     pub fn load_activity(&self, source: &Source) -> Result<Activity> {
-        let (activity, warnings) = self.knowledge.load(source)?;
+        let (activity, warnings) = self.knowledge().load(source)?;
         if !warnings.0.is_empty() {
             eprint!("{}", warnings.render(source));
         }
         Ok(activity)
     }
 
-    /// The definition at `file` (see [`Prelude::source`]).
+    /// The definition at `file` (see [`Catalog::source`]).
     pub fn activity(&self, file: &str) -> Result<Activity> {
         self.load_activity(&self.source(file)?)
     }
@@ -78,11 +64,11 @@ impl Prelude {
     }
 
     pub fn official_activities(&self) -> Result<Vec<(String, Activity)>> {
-        self.data
+        self.data()
             .activities()?
             .into_iter()
             .map(|name| {
-                let activity = self.load_activity(&self.official_source(&name)?)?;
+                let activity = self.load_activity(&self.official(&name)?)?;
                 Ok((name, activity))
             })
             .collect()

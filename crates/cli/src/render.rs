@@ -126,7 +126,7 @@ pub fn render(args: RenderArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let Built { mut env, .. } = args.episode.build(&prelude, |_| {})?;
     let mut renderer = Renderer::new()?;
     renderer.set_models(behavior_robots::shared_models());
-    let table = categories(&prelude.knowledge.taxonomy);
+    let table = categories(&prelude.knowledge().taxonomy);
     let mut view = View::with_profile(camera(&args, &env)?, args.profile);
     let mut agent = Agent::named("random", args.episode.seed).context("the random agent")?;
     let mut action = Vec::new();

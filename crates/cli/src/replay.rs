@@ -129,6 +129,6 @@ pub(crate) fn recorded_config(
     let activity = prelude
         .load_activity(&source)
         .with_context(|| format!("the definition in {}", file.display()))?;
-    let taxonomy = Arc::new(prelude.knowledge.taxonomy.clone());
+    let taxonomy = Arc::new(prelude.knowledge().taxonomy.clone());
     Ok(recording.config(Arc::new(activity), taxonomy)?)
 }

@@ -69,7 +69,7 @@ pub fn run(args: RunArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     if let Some(path) = &args.record {
         env.record_to(path, &source.text, args.checkpoint_every)?;
     }
-    let mut video = args.video.start(&env, &prelude.knowledge.taxonomy)?;
+    let mut video = args.video.start(&env, &prelude.knowledge().taxonomy)?;
     let bar = progress(args.steps, args.json);
     let dim = env.robot().map_or(0, |r| r.action_dim());
     let mut action = Vec::with_capacity(dim);

@@ -162,7 +162,7 @@ pub fn sample(args: SampleArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let activity = prelude.activity(&args.activity)?;
     let scene = match &args.scene {
         Some(name) => crate::scene::load_scene(name, &library)?,
-        None => first_covering(&activity, &library, &prelude.knowledge.taxonomy)?,
+        None => first_covering(&activity, &library, &prelude.knowledge().taxonomy)?,
     };
     let scene = with_clutter(scene, &library, !args.no_clutter)?;
     let start = Instant::now();
@@ -171,7 +171,7 @@ pub fn sample(args: SampleArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         &scene,
         args.seed,
         &library,
-        &prelude.knowledge.taxonomy,
+        &prelude.knowledge().taxonomy,
     )
     .with_context(|| format!("{} in {} (seed {})", args.activity, scene.name, args.seed))?;
     let seconds = start.elapsed().as_secs_f64();
@@ -318,7 +318,7 @@ struct Job<'a> {
 pub fn sample_all(args: SampleAllArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     let prelude = Prelude::load(data_dir)?;
     let library = prelude.library();
-    let taxonomy = &prelude.knowledge.taxonomy;
+    let taxonomy = &prelude.knowledge().taxonomy;
     let homes = cluttered(named_homes(&library)?, &library, !args.no_clutter)?;
     let activities = prelude.official_activities()?;
     let mut jobs = Vec::new();

@@ -5,7 +5,7 @@ use crate::episode::{Built, EpisodeArgs};
 use crate::prelude::{Prelude, named_homes};
 use anyhow::{Context, Result, bail};
 use behavior_assets::covering;
-use behavior_assets::{Family, Library, NAMED_HOMES, Scene, clutter, generate, generate_family};
+use behavior_assets::{Family, Library, NAMED_HOMES, Scene, generate, generate_family};
 use clap::Subcommand;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -206,7 +206,7 @@ fn coverage(prelude: &Prelude, library: &Library, json: bool) -> Result<()> {
     let homes = named_homes(library)?;
     let mut rows = Vec::new();
     for (name, activity) in prelude.official_activities()? {
-        let scenes = covering(&homes, &activity, &prelude.knowledge.taxonomy)
+        let scenes = covering(&homes, &activity, &prelude.knowledge().taxonomy)
             .iter()
             .map(|h| h.name.clone())
             .collect();
@@ -233,24 +233,11 @@ fn coverage(prelude: &Prelude, library: &Library, json: bool) -> Result<()> {
 /// The home as it is used: with clutter when `on` (a home without any gets the clutter its own
 /// seed gives; a scene file's own clutter is kept), furniture only when not.
 pub(crate) fn with_clutter(scene: Scene, library: &Library, on: bool) -> Result<Scene> {
-    if !on {
-        return Ok(scene.without_clutter());
-    }
-    if !scene.clutter.is_empty() {
-        return Ok(scene);
-    }
-    clutter(&scene, library, scene.seed).with_context(|| format!("cluttering {}", scene.name))
+    let name = scene.name.clone();
+    behavior_catalog::with_clutter(scene, library, on).with_context(|| format!("cluttering {name}"))
 }
 
 /// A named home, or a scene file.
 pub(crate) fn load_scene(name: &str, library: &Library) -> Result<Scene> {
-    if let Some(home) = behavior_assets::named_home(name, library) {
-        return Ok(home?);
-    }
-    let text = std::fs::read_to_string(name).with_context(|| {
-        format!(
-            "`{name}` is neither a named home (see `behavior scene list`) nor a readable scene file"
-        )
-    })?;
-    Scene::from_json(&text).with_context(|| name.to_string())
+    Ok(behavior_catalog::load_scene(name, library)?)
 }

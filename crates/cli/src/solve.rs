@@ -94,7 +94,7 @@ pub fn solve(args: SolveArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     if let Some(path) = &args.record {
         env.record_to(path, &built.source.text, CHECKPOINT_EVERY)?;
     }
-    let mut video = args.video.start(&env, &prelude.knowledge.taxonomy)?;
+    let mut video = args.video.start(&env, &prelude.knowledge().taxonomy)?;
     let limits = Limits {
         primitives: args.max_primitives,
         ..Limits::default()
@@ -227,7 +227,7 @@ pub fn solve_all(args: SolveAllArgs, data_dir: Option<&Path>) -> Result<ExitCode
     let mode = mode(&args.mode)?;
     let prelude = Prelude::load(data_dir)?;
     let library = prelude.library();
-    let taxonomy = Arc::new(prelude.knowledge.taxonomy.clone());
+    let taxonomy = Arc::new(prelude.knowledge().taxonomy.clone());
     let names = prelude.activity_names(&args.activities)?;
     let bar = counting_bar(names.len(), args.json);
     let start = Instant::now();
@@ -238,7 +238,7 @@ pub fn solve_all(args: SolveAllArgs, data_dir: Option<&Path>) -> Result<ExitCode
     for name in &names {
         bar.set_message(name.clone());
         let activity = Arc::new(prelude.activity(name)?);
-        let homes = all_covering(&activity, &library, &prelude.knowledge.taxonomy)?;
+        let homes = all_covering(&activity, &library, &prelude.knowledge().taxonomy)?;
         let Some(mut env) =
             first_sampled(&activity, homes, &library, &args.robot, &taxonomy, mode)?
         else {

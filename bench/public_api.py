@@ -27,7 +27,7 @@ import sys
 CRATES = [
     "behavior-core", "behavior-data", "behavior-bddl", "behavior-sim", "behavior-forms",
     "behavior-assets", "behavior-sampling", "behavior-robots", "behavior-render",
-    "behavior-env", "behavior-motion", "behavior-planning", "behavior-web",
+    "behavior-env", "behavior-catalog", "behavior-motion", "behavior-planning", "behavior-web",
 ]
 KINDS = {
     "struct": "types", "enum": "types", "union": "types", "trait": "types",

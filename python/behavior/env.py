@@ -58,7 +58,7 @@ def _box(value: np.ndarray) -> spaces.Box:
 class BehaviorEnv(gymnasium.Env):
     """One BEHAVIOR activity with a robot, as Gymnasium's ``Env``.
 
-    - ``activity``: an official activity's name (``behavior.activities()``).
+    - ``activity``: an official activity's name (``behavior.activities()``) or a definition file.
     - ``robot``: ``"behavior"`` (the BehaviorRobot, 26-d actions), ``"fetch"`` (11-d) or
       ``"r1"`` (the Galaxea R1 Pro, the BEHAVIOR Challenge's 23-d joint-position action).
     - ``scene``: a named home; ``None`` for the first that covers the activity.

@@ -52,7 +52,7 @@ pub fn bddl_evaluate(py: Python<'_>, definition: String, state: String) -> PyRes
         let catalog = catalog()?;
         let source = catalog.source(&definition)?;
         let (activity, _warnings) = catalog.knowledge().load(&source)?;
-        let facts = FactSet::from_json(&activity, &state)?;
+        let facts = FactSet::from_json(&activity, &state).map_err(|e| format!("the state: {e}"))?;
         let goal = GroundGoal::new(&activity);
         let optimizer = Optimizer::with_counting(&goal, Counting::Set);
         let q = optimizer.q(&facts);

@@ -84,7 +84,8 @@ def test_bad_input_raises_clear_errors():
     env.step(np.zeros(26, dtype=np.float32))
     with pytest.raises(ValueError, match="episode is over"):
         raw.step(np.zeros(26, dtype=np.float32))
-    with pytest.raises(ValueError, match="not an official activity"):
+    # An activity is an official name or a definition file (the builder the CLI uses).
+    with pytest.raises(ValueError, match="`juggling` is neither a file nor an official activity"):
         behavior.BehaviorEnv(activity="juggling")
     with pytest.raises(ValueError, match="robot must be one of"):
         behavior.BehaviorEnv(robot="roomba")

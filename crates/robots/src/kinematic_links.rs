@@ -150,6 +150,11 @@ impl<J: Copy + PartialEq> LinkMotion<J> {
         }
     }
 
+    /// The base's velocity in the step begun last (zero where it did not move).
+    pub(crate) fn twist(&self) -> Twist {
+        self.twist
+    }
+
     /// Whether the step begun last moves any part.
     pub(crate) fn moves(&self) -> bool {
         self.from != self.now

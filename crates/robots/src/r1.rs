@@ -20,7 +20,7 @@ use crate::embodiment::{
 use crate::grasp::GraspRules;
 use crate::gripper::{GraspContext, GripperSpec, ParallelGripper};
 use crate::hand::Side;
-use crate::kinematic_links::{LinkModel, LinkMotion, Posture, Twist, add_links};
+use crate::kinematic_links::{LinkModel, LinkMotion, Posture, add_links};
 use crate::magic::MagicError;
 use crate::proprioception::LocalPose;
 use crate::r1_action::{R1_ACTION_DIM, R1_BASE_SPEED, R1Action, step_toward};
@@ -63,8 +63,6 @@ pub struct R1 {
     grippers: [ParallelGripper; 2],
     /// The action for the next step; none holds every joint where it is.
     pending: Option<R1Action>,
-    /// The base's velocity in the step begun last.
-    twist: Twist,
     rules: GraspRules,
 }
 
@@ -107,7 +105,6 @@ impl R1 {
             motion: LinkMotion::at(posture),
             grippers,
             pending: None,
-            twist: Twist::default(),
             rules: GraspRules::default(),
         };
         robot.press(world);
@@ -152,9 +149,8 @@ impl R1 {
     fn begin_step(&mut self, world: &mut World) {
         let action = self.pending.take().unwrap_or_else(|| self.still());
         let joints = step_toward(&self.motion.now.joints, &action.joints(), STEP_SECONDS);
-        let twist = action.twist();
-        let base_moves = self.motion.begin::<R1>(world, &self.links, twist, joints);
-        self.twist = if base_moves { twist } else { Twist::default() };
+        self.motion
+            .begin::<R1>(world, &self.links, action.twist(), joints);
         for side in Side::BOTH {
             let command = action.gripper(side);
             if command != 0.0 {
@@ -180,7 +176,8 @@ impl R1 {
             let g = &self.grippers[side.index()];
             out.extend(g.fingers(world, &GRIPPER));
         }
-        out.extend([self.twist.forward, self.twist.left, self.twist.turn]);
+        let twist = self.motion.twist();
+        out.extend([twist.forward, twist.left, twist.turn]);
         for side in Side::BOTH {
             let eef = LocalPose::of(now.eef(side));
             out.extend(eef.position.iter().chain(&eef.euler));
@@ -390,7 +387,6 @@ impl Embodiment for R1 {
                 world.set_pose(body.object, world.pose(grippers[k]) * relative)?;
             }
         }
-        self.twist = Twist::default();
         self.press(world);
         Ok(())
     }

@@ -15,7 +15,8 @@ Importing the package registers one Gymnasium environment per official activity,
 in Rust threads; ``behavior.activities()`` lists the activities and
 ``behavior.covering_homes(activity)`` the homes that hold what one needs; ``behavior.bddl``
 checks definitions, evaluates goals on states and lists their options;
-``env.unwrapped.record(path)`` records an episode and ``behavior.replay(path)`` re-simulates it;
+``env.unwrapped.record(path)`` records an episode, ``behavior.replay(path)`` re-simulates it and
+``behavior.export_lerobot(dataset, recordings)`` writes recordings as a LeRobot dataset;
 ``behavior.evaluate`` runs the benchmark's evaluation protocol; ``behavior.baselines`` (the ``baselines`` extra) trains
 the paper's RL baselines; ``behavior.ray`` (the ``ray`` extra) runs on a Ray cluster.
 """
@@ -25,11 +26,11 @@ from gymnasium.envs.registration import register, registry
 from . import bddl
 from ._core import activities, covering_homes
 from .env import BehaviorEnv
-from .recording import replay
+from .recording import export_lerobot, replay
 from .vector import BehaviorVecEnv, make_vec
 
-__all__ = ["BehaviorEnv", "BehaviorVecEnv", "activities", "bddl", "covering_homes", "make_vec",
-           "register_envs", "replay"]
+__all__ = ["BehaviorEnv", "BehaviorVecEnv", "activities", "bddl", "covering_homes",
+           "export_lerobot", "make_vec", "register_envs", "replay"]
 
 
 def register_envs():

@@ -1,5 +1,6 @@
 """Recordings of episodes (MCAP, as ``behavior run --record`` writes them): made with
-``BehaviorEnv.record(path)``, read and re-simulated with ``replay(path)``."""
+``BehaviorEnv.record(path)``, read and re-simulated with ``replay(path)``, exported as a LeRobot
+dataset with ``export_lerobot(dataset, recordings)``."""
 
 import json
 import os
@@ -15,3 +16,23 @@ def replay(path: "str | os.PathLike", verify: bool = True) -> dict:
     cut or damaged file, whose steps before it are still read). A file that is not a recording
     raises ``ValueError``; one that cannot be read, ``OSError``."""
     return json.loads(_core.replay(os.fspath(path), verify))
+
+
+def export_lerobot(
+    dataset: "str | os.PathLike",
+    recordings: "list[str | os.PathLike]",
+    image_size: "int | None" = 128,
+) -> dict:
+    """Writes ``recordings`` (one episode each, all of one robot) as a LeRobot dataset (format
+    v2.1) in the new folder ``dataset``, as ``behavior demos export --lerobot`` does: each
+    recording is re-simulated, so the dataset holds what the agent observed at every step
+    (proprioception, ``task_obs`` and, unless ``image_size`` is ``None``, the robot's camera
+    re-rendered at ``image_size`` pixels, 16–1024). A recording that does not re-simulate bit
+    for bit, or is cut, is refused, and nothing is left under ``dataset``.
+
+    Returns ``dataset``, ``format``, ``episodes``, ``frames``, ``teleoperated``, ``images`` and
+    ``recordings`` (each file with its frames). Raises ``FileExistsError`` when ``dataset`` is
+    there and not empty, ``ValueError`` for a recording that cannot be exported, ``OSError`` for
+    files that cannot be read or written."""
+    paths = [os.fspath(r) for r in recordings]
+    return json.loads(_core.export_lerobot(os.fspath(dataset), paths, image_size))

@@ -66,6 +66,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(covering_homes, m)?)?;
     m.add_function(wrap_pyfunction!(aggregate, m)?)?;
     m.add_function(wrap_pyfunction!(record::replay, m)?)?;
+    m.add_function(wrap_pyfunction!(record::export_lerobot, m)?)?;
     m.add_function(wrap_pyfunction!(bddl::bddl_check, m)?)?;
     m.add_function(wrap_pyfunction!(bddl::bddl_evaluate, m)?)?;
     m.add_function(wrap_pyfunction!(bddl::bddl_options, m)?)?;

@@ -4,15 +4,14 @@
 //! checkpoints; a replay re-simulates it and compares every checkpoint bit for bit.
 
 use crate::build::catalog;
-use behavior_bddl::Source;
 use behavior_env::Env;
+use behavior_env::record::lerobot::{ExportError, ExportOptions, export};
 use behavior_env::record::{ReadError, RecordError, read, replay_with};
 use behavior_planning::RecordedCall;
-use pyo3::exceptions::{PyOSError, PyValueError};
+use pyo3::exceptions::{PyFileExistsError, PyOSError, PyValueError};
 use pyo3::prelude::*;
 use serde_json::json;
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
 
 /// Starts recording `env`'s episode of the official `activity`, as it is now, to `path`.
 pub fn start(path: &Path, env: &mut Env, activity: &str, checkpoint_every: u32) -> PyResult<()> {
@@ -58,16 +57,11 @@ pub fn replay(py: Python<'_>, path: PathBuf, verify: bool) -> PyResult<String> {
         });
         if verify {
             let catalog = catalog().map_err(|e| PyValueError::new_err(e.to_string()))?;
-            let source = Source::new(&h.activity, &h.definition);
-            let (activity, _warnings) = catalog.knowledge().load(&source).map_err(|e| {
-                PyValueError::new_err(format!("the definition in {}: {e}", path.display()))
-            })?;
-            let taxonomy = Arc::new(catalog.knowledge().taxonomy.clone());
             let invalid = |e: behavior_env::record::ReplayError| {
                 PyValueError::new_err(format!("replaying {}: {e}", path.display()))
             };
             let config = recording
-                .config(Arc::new(activity), taxonomy)
+                .config_from(catalog.knowledge())
                 .map_err(invalid)?;
             // Recorded primitives are done again by the planner's code that did them.
             let report = replay_with::<RecordedCall>(&recording, config).map_err(invalid)?;
@@ -79,6 +73,45 @@ pub fn replay(py: Python<'_>, path: PathBuf, verify: bool) -> PyResult<String> {
         }
         Ok(out.to_string())
     })
+}
+
+/// Writes `recordings` as a LeRobot v2.1 dataset in the folder `dataset`, with the robot's camera
+/// re-rendered at `image_size` pixels (none: no images), as `behavior demos export --lerobot`
+/// does; returns its summary as JSON.
+#[pyfunction]
+#[pyo3(signature = (dataset, recordings, image_size))]
+pub fn export_lerobot(
+    py: Python<'_>,
+    dataset: PathBuf,
+    recordings: Vec<PathBuf>,
+    image_size: Option<u32>,
+) -> PyResult<String> {
+    py.detach(|| -> PyResult<String> {
+        let catalog = catalog().map_err(|e| PyValueError::new_err(e.to_string()))?;
+        let options = ExportOptions {
+            image_side: image_size,
+        };
+        let summary = export::<RecordedCall>(catalog.knowledge(), &recordings, &dataset, &options)
+            .map_err(export_error)?;
+        Ok(serde_json::to_string(&summary).expect("the summary serializes"))
+    })
+}
+
+/// An export that failed: `FileExistsError` for a dataset folder in the way, `OSError` for
+/// files that could not be read or written, `ValueError` for recordings that cannot be
+/// exported.
+fn export_error(e: ExportError) -> PyErr {
+    match e {
+        ExportError::NotEmpty(_) => PyFileExistsError::new_err(e.to_string()),
+        ExportError::Write { .. } | ExportError::Parquet { .. } => {
+            PyOSError::new_err(e.to_string())
+        }
+        ExportError::Read {
+            source: ReadError::Io { .. },
+            ..
+        } => PyOSError::new_err(e.to_string()),
+        other => PyValueError::new_err(other.to_string()),
+    }
 }
 
 fn read_error(e: ReadError) -> PyErr {

@@ -1,20 +1,15 @@
-"""A LeRobot dataset exported by `behavior demos export --lerobot`, read with pyarrow as
-LeRobot's loader reads it: an episode recorded from Python, its frames and metadata."""
+"""A LeRobot dataset exported from Python by `behavior.export_lerobot` (the library function
+`behavior demos export --lerobot` calls too), read with pyarrow as LeRobot's loader reads it: an
+episode recorded from Python, its frames and metadata; and the export's refusals."""
 
 import json
-import os
 import struct
-import subprocess
-from pathlib import Path
 
 import numpy as np
 import pyarrow.parquet as pq
+import pytest
 
-from behavior import BehaviorEnv
-
-ROOT = Path(__file__).resolve().parents[2]
-# The command-line tool `cargo test` built (the CI runs the Rust tests first), or $BEHAVIOR_BIN.
-BIN = Path(os.environ.get("BEHAVIOR_BIN", ROOT / "target" / "debug" / "behavior"))
+from behavior import BehaviorEnv, export_lerobot
 
 
 def png_size(data):
@@ -22,25 +17,28 @@ def png_size(data):
     return struct.unpack(">II", data[16:24])
 
 
-def test_an_exported_episode_reads_back_with_pyarrow(tmp_path):
-    assert BIN.exists(), f"{BIN} is missing: build it with `cargo build -p behavior-cli`"
+def record_episode(path, steps=10):
+    """Records `steps` random actions of bringing_in_wood (seed 2) to `path`; returns them."""
     env = BehaviorEnv("bringing_in_wood", seed=2)
     env.reset(seed=2)
-    recording = tmp_path / "episode.mcap"
-    env.record(recording)
+    env.record(path)
     rng = np.random.default_rng(1)
-    actions = [rng.uniform(-1, 1, env.action_space.shape).astype(np.float32) for _ in range(10)]
+    actions = [rng.uniform(-1, 1, env.action_space.shape).astype(np.float32) for _ in range(steps)]
     for action in actions:
         env.step(action)
     env.stop_recording()
+    return actions
+
+
+def test_an_exported_episode_reads_back_with_pyarrow(tmp_path):
+    recording = tmp_path / "episode.mcap"
+    actions = record_episode(recording)
 
     dataset = tmp_path / "dataset"
-    out = subprocess.run(
-        [str(BIN), "demos", "export", "--lerobot", str(dataset), str(recording),
-         "--image-size", "48", "--json"],
-        check=True, capture_output=True, text=True,
-    )
-    assert json.loads(out.stdout)["frames"] == 10
+    summary = export_lerobot(dataset, [recording], image_size=48)
+    assert summary["frames"] == 10 and summary["episodes"] == 1
+    assert summary["teleoperated"] == 0 and summary["images"] is True
+    assert summary["recordings"] == [[str(recording), 10]]
 
     info = json.loads((dataset / "meta" / "info.json").read_text())
     assert info["codebase_version"] == "v2.1" and info["total_frames"] == 10
@@ -57,3 +55,28 @@ def test_an_exported_episode_reads_back_with_pyarrow(tmp_path):
         assert png_size(image["bytes"]) == (48, 48)
     tasks = [json.loads(line) for line in (dataset / "meta" / "tasks.jsonl").read_text().splitlines()]
     assert tasks == [{"task_index": 0, "task": "bringing in wood"}]
+
+
+def test_the_export_refuses_what_it_cannot_write_and_leaves_nothing(tmp_path):
+    recording = tmp_path / "episode.mcap"
+    record_episode(recording, steps=3)
+
+    taken = tmp_path / "taken"
+    taken.mkdir()
+    (taken / "keep.txt").write_text("mine")
+    with pytest.raises(FileExistsError, match="exists and is not empty"):
+        export_lerobot(taken, [recording], image_size=None)
+    assert [p.name for p in taken.iterdir()] == ["keep.txt"]
+
+    dataset = tmp_path / "dataset"
+    with pytest.raises(ValueError, match="16–1024 pixels, not 8"):
+        export_lerobot(dataset, [recording], image_size=8)
+    not_a_recording = tmp_path / "notes.mcap"
+    not_a_recording.write_text("not MCAP")
+    with pytest.raises(ValueError, match="notes.mcap"):
+        export_lerobot(dataset, [recording, not_a_recording], image_size=None)
+    with pytest.raises(OSError, match="missing.mcap"):
+        export_lerobot(dataset, [tmp_path / "missing.mcap"], image_size=None)
+    # Nothing half-written under the dataset's name or beside it.
+    assert not dataset.exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["episode.mcap", "notes.mcap", "taken"]

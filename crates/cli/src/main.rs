@@ -11,8 +11,6 @@ mod demos;
 mod episode;
 mod facts;
 mod gallery;
-#[cfg(feature = "lerobot")]
-mod lerobot;
 mod map;
 mod metrics;
 mod plot;
@@ -139,8 +137,22 @@ fn main() -> ExitCode {
     match result {
         Ok(code) => code,
         Err(error) => {
-            eprintln!("error: {error:#}");
+            eprintln!("error: {}", report(&error));
             ExitCode::FAILURE
         }
     }
+}
+
+/// The error and its causes, as `{:#}` writes them but without a cause whose words the message
+/// already holds (typed errors here say their cause in their own message).
+fn report(error: &anyhow::Error) -> String {
+    let mut text = error.to_string();
+    for cause in error.chain().skip(1) {
+        let cause = cause.to_string();
+        if !text.contains(&cause) {
+            text.push_str(": ");
+            text.push_str(&cause);
+        }
+    }
+    text
 }

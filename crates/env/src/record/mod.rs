@@ -20,6 +20,8 @@
 //! chunk. Reading stops at the first damaged record with an error naming the last whole step.
 
 mod digest;
+#[cfg(feature = "lerobot")]
+pub mod lerobot;
 mod reader;
 mod replay;
 mod writer;

@@ -23,6 +23,9 @@ pub enum ReplayError {
         /// Its value.
         value: String,
     },
+    /// The recording's definition does not load.
+    #[error("the recording's definition: {0}")]
+    Definition(behavior_bddl::SourceErrors),
     /// The recording has no checkpoint at the step asked to resume from.
     #[error("the recording has no checkpoint at step {0}")]
     NoCheckpoint(u32),
@@ -102,6 +105,18 @@ pub struct ReplayReport {
 }
 
 impl Recording {
+    /// [`Recording::config`] for the activity of the recording's own definition, parsed with
+    /// `knowledge` (its warnings dropped).
+    pub fn config_from(
+        &self,
+        knowledge: &behavior_bddl::Knowledge,
+    ) -> Result<EnvConfig, ReplayError> {
+        let source = behavior_bddl::Source::new(&self.header.activity, &self.header.definition);
+        let (activity, _warnings) = knowledge.load(&source).map_err(ReplayError::Definition)?;
+        let taxonomy = std::sync::Arc::new(knowledge.taxonomy.clone());
+        self.config(std::sync::Arc::new(activity), taxonomy)
+    }
+
     /// The environment the recording was made in, for its activity (parsed from
     /// [`super::Header::definition`] by the caller, who has the taxonomy).
     pub fn config(

@@ -6,9 +6,9 @@
 //! dataset needs no video codec. v2.1 rather than v3.0 because it keeps an episode to a file;
 //! LeRobot converts it (`lerobot.scripts.convert_dataset_v21_to_v30`).
 //!
-//! This module only writes what it is given; `demos.rs` re-simulates the recordings.
+//! This module only writes what it is given; `mod.rs` re-simulates the recordings.
 
-use anyhow::{Context, Result, bail};
+use super::ExportError;
 use arrow_array::builder::{BinaryBuilder, FixedSizeListBuilder, Float32Builder, StringBuilder};
 use arrow_array::{
     Array, ArrayRef, BooleanArray, Float32Array, Int64Array, RecordBatch, StructArray,
@@ -23,15 +23,17 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
+type Result<T> = std::result::Result<T, ExportError>;
+
 /// Frames per second: the action rate of every recording.
-pub const FPS: u32 = 30;
+pub(super) const FPS: u32 = 30;
 /// Episodes per `data/chunk-CCC` folder, as LeRobot's default.
 const CHUNK_SIZE: usize = 1000;
 
 /// One episode's frames: frame k is the observation before the episode's k-th action, the
 /// action, and what followed it.
 #[derive(Default)]
-pub struct Episode {
+pub(super) struct Episode {
     /// What was to be done: the activity's name.
     pub task: String,
     /// Proprioception, one vector per frame.
@@ -40,6 +42,7 @@ pub struct Episode {
     pub environment: Vec<Vec<f32>>,
     /// The robot's camera as RGB (height × width × 3), one per frame, if images are written.
     pub images: Vec<Vec<u8>>,
+    /// The action, one per frame.
     pub action: Vec<Vec<f32>>,
     /// ΔQ of the step.
     pub reward: Vec<f32>,
@@ -52,15 +55,18 @@ pub struct Episode {
 /// The vector sizes every episode of the dataset must share.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Shapes {
+    /// Proprioception's length.
     pub state: usize,
+    /// `task_obs`'s length.
     pub environment: usize,
+    /// The action's length.
     pub action: usize,
     /// Image side in pixels; none when the dataset has no images.
     pub image: Option<u32>,
 }
 
 /// A dataset being written into a folder of its own.
-pub struct Dataset {
+pub(super) struct Dataset {
     dir: PathBuf,
     robot: String,
     shapes: Shapes,
@@ -73,8 +79,8 @@ pub struct Dataset {
 impl Dataset {
     /// Starts a dataset in `dir` (which must not exist yet).
     pub fn create(dir: &Path, robot: &str, shapes: Shapes) -> Result<Dataset> {
-        std::fs::create_dir_all(dir.join("meta"))
-            .with_context(|| format!("cannot make {}", dir.display()))?;
+        let meta = dir.join("meta");
+        std::fs::create_dir_all(&meta).map_err(write_error(&meta))?;
         Ok(Dataset {
             dir: dir.to_path_buf(),
             robot: robot.to_string(),
@@ -140,10 +146,9 @@ impl Dataset {
             "splits": {"train": format!("0:{}", self.episodes.len())},
             "features": features(self.shapes),
         });
-        write_text(
-            &meta.join("info.json"),
-            &serde_json::to_string_pretty(&info)?,
-        )?;
+        let info_path = meta.join("info.json");
+        let text = serde_json::to_string_pretty(&info).expect("JSON values serialize");
+        std::fs::write(&info_path, text).map_err(write_error(&info_path))?;
         let tasks = self
             .tasks
             .iter()
@@ -215,7 +220,9 @@ impl Columns {
         ];
         for (name, rows, size) in vectors {
             if rows.len() != n || rows.iter().any(|r| r.len() != size) {
-                bail!("episode {index}: `{name}` is not {n} rows of {size} numbers");
+                return Err(ExportError::Shape(format!(
+                    "episode {index}: `{name}` is not {n} rows of {size} numbers"
+                )));
             }
             let (field, array) = fixed_list(name, rows, size);
             c.stats.insert(
@@ -227,10 +234,10 @@ impl Columns {
         }
         if let Some(side) = shapes.image {
             if episode.images.len() != n {
-                bail!(
+                return Err(ExportError::Shape(format!(
                     "episode {index}: {} images for {n} frames",
                     episode.images.len()
-                );
+                )));
             }
             let (field, array, image_stats) = images(&episode.images, side)?;
             c.stats.insert(IMAGE.into(), image_stats);
@@ -240,10 +247,10 @@ impl Columns {
         let scalars = scalar_columns(episode, index, task_index, first);
         for (name, array, dtype, values) in scalars {
             if array.len() != n {
-                bail!(
+                return Err(ExportError::Shape(format!(
                     "episode {index}: `{name}` has {} values for {n} frames",
                     array.len()
-                );
+                )));
             }
             c.stats.insert(
                 name.into(),
@@ -258,20 +265,22 @@ impl Columns {
 
     fn write(&self, path: &Path) -> Result<()> {
         if let Some(dir) = path.parent() {
-            std::fs::create_dir_all(dir)
-                .with_context(|| format!("cannot make {}", dir.display()))?;
+            std::fs::create_dir_all(dir).map_err(write_error(dir))?;
         }
-        let batch = RecordBatch::try_new(self.schema.clone(), self.arrays.clone())?;
-        let file =
-            File::create(path).with_context(|| format!("cannot write {}", path.display()))?;
+        let parquet = |source| ExportError::Parquet {
+            path: path.to_path_buf(),
+            source,
+        };
+        let batch = RecordBatch::try_new(self.schema.clone(), self.arrays.clone())
+            .map_err(|e| parquet(e.into()))?;
+        let file = File::create(path).map_err(write_error(path))?;
         let props = WriterProperties::builder()
             .set_compression(Compression::SNAPPY)
             .build();
-        let mut writer = ArrowWriter::try_new(file, self.schema.clone(), Some(props))?;
-        writer.write(&batch)?;
-        writer
-            .close()
-            .with_context(|| format!("cannot write {}", path.display()))?;
+        let mut writer =
+            ArrowWriter::try_new(file, self.schema.clone(), Some(props)).map_err(parquet)?;
+        writer.write(&batch).map_err(parquet)?;
+        writer.close().map_err(parquet)?;
         Ok(())
     }
 }
@@ -346,10 +355,13 @@ fn images(frames: &[Vec<u8>], side: u32) -> Result<(Field, ArrayRef, Value)> {
     let mut paths = StringBuilder::new();
     let mut channels = Accumulator::new(3);
     for rgb in frames {
-        let image = image::RgbImage::from_raw(side, side, rgb.clone())
-            .context("an image of the wrong size")?;
+        let wrong =
+            || ExportError::Shape(format!("an image of {} bytes, not {side}²×3", rgb.len()));
+        let image = image::RgbImage::from_raw(side, side, rgb.clone()).ok_or_else(wrong)?;
         let mut png = Vec::new();
-        image.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)?;
+        image
+            .write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
+            .map_err(|_| wrong())?;
         bytes.append_value(&png);
         paths.append_null();
         for pixel in rgb.chunks_exact(3) {
@@ -364,7 +376,8 @@ fn images(frames: &[Vec<u8>], side: u32) -> Result<(Field, ArrayRef, Value)> {
         fields.clone(),
         vec![Arc::new(bytes.finish()), Arc::new(paths.finish())],
         None,
-    )?;
+    )
+    .map_err(|e| ExportError::Shape(e.to_string()))?;
     let field = Field::new(IMAGE, DataType::Struct(fields), false);
     let mut stats = channels.finish();
     // Counted in frames, not pixels, as LeRobot counts them.
@@ -433,15 +446,18 @@ impl Accumulator {
     }
 }
 
-fn write_text(path: &Path, text: &str) -> Result<()> {
-    std::fs::write(path, text).with_context(|| format!("cannot write {}", path.display()))
+/// An I/O failure at `path`, as an [`ExportError::Write`].
+pub(super) fn write_error(path: &Path) -> impl Fn(std::io::Error) -> ExportError + '_ {
+    move |source| ExportError::Write {
+        path: path.to_path_buf(),
+        source,
+    }
 }
 
 fn write_lines(path: &Path, lines: impl Iterator<Item = Value>) -> Result<()> {
-    let mut file =
-        File::create(path).with_context(|| format!("cannot write {}", path.display()))?;
+    let mut file = File::create(path).map_err(write_error(path))?;
     for line in lines {
-        writeln!(file, "{line}").with_context(|| format!("cannot write {}", path.display()))?;
+        writeln!(file, "{line}").map_err(write_error(path))?;
     }
     Ok(())
 }

@@ -11,7 +11,7 @@ use behavior_core::FLOOR_SYNSET;
 use behavior_core::rng::seeded;
 use behavior_env::{Env, EnvConfig};
 use behavior_motion::{BaseSpace, PlanError, PlanParams, Standing, home_extent, plan};
-use behavior_planning::{Call, Mode, Primitive, approach_plan, check, drive_to};
+use behavior_planning::{Call, Mode, Primitive, Tuning, approach_plan, check, drive_to};
 use behavior_sim::ObjectId;
 use serde::Serialize;
 use std::path::Path;
@@ -319,7 +319,7 @@ fn drives(env: &mut Env) -> Result<Vec<Drive>> {
             object,
             hand: 0,
         };
-        let outcome = match drive_to(env, &call, None)? {
+        let outcome = match drive_to(env, &call, &Tuning::default(), None)? {
             Ok(_) => "ok".to_string(),
             Err(e) => e.to_string(),
         };
@@ -358,7 +358,7 @@ fn hands(env: &mut Env) -> Result<Vec<HandPlan>> {
         };
         if tried {
             let clock = Instant::now();
-            let result = approach_plan(env, &call(Primitive::Grasp));
+            let result = approach_plan(env, &call(Primitive::Grasp), &Tuning::default());
             let plan_ms = clock.elapsed().as_secs_f64() * 1e3;
             out.push(HandPlan {
                 object: env

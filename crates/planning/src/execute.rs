@@ -5,6 +5,7 @@
 
 use crate::edits::{EditError, RecordedCall};
 use crate::primitive::{Call, Failure, Primitive, WAIT_STEPS};
+use crate::tuning::Tuning;
 use crate::{manipulation, physical};
 use behavior_env::{Env, EnvError, Info, Step};
 use behavior_robots::{ActionSpace, RobotKind};
@@ -108,18 +109,30 @@ pub struct Outcome {
     pub step: Step,
 }
 
-/// Runs one primitive in `mode` and the steps after it, each shown to `watcher` if given.
+/// Runs one primitive in `mode` and the steps after it, each shown to `watcher` if given, with
+/// the physical primitives' default [`Tuning`].
 pub fn run(
     env: &mut Env,
     call: Call,
     mode: Mode,
+    watcher: Option<&mut dyn Watcher>,
+) -> Result<Outcome, RunError> {
+    run_with(env, call, mode, &Tuning::default(), watcher)
+}
+
+/// [`run`] with the physical primitives' settings `tuning`.
+pub fn run_with(
+    env: &mut Env,
+    call: Call,
+    mode: Mode,
+    tuning: &Tuning,
     mut watcher: Option<&mut dyn Watcher>,
 ) -> Result<Outcome, RunError> {
     let began = std::time::Instant::now();
     let result = match (mode, call.primitive) {
         (_, Primitive::Wait) => Ok(()),
         (Mode::Physical, Primitive::NavigateTo) => {
-            physical::drive_to(env, &call, again(&mut watcher))?.map(|_| ())
+            physical::drive_to(env, &call, tuning, again(&mut watcher))?.map(|_| ())
         }
         // Switches are kinematic in the original's motion-planning mode too.
         (Mode::Symbolic, _)
@@ -127,9 +140,11 @@ pub fn run(
             Mode::Physical,
             Primitive::Open | Primitive::Close | Primitive::ToggleOn | Primitive::ToggleOff,
         ) => apply(env, &call)?,
-        (Mode::Physical, Primitive::Grasp) => manipulation::grasp(env, &call, again(&mut watcher))?,
+        (Mode::Physical, Primitive::Grasp) => {
+            manipulation::grasp(env, &call, tuning, again(&mut watcher))?
+        }
         (Mode::Physical, p) => match p.relation() {
-            Some(r) => manipulation::place(env, &call, r, again(&mut watcher))?,
+            Some(r) => manipulation::place(env, &call, r, tuning, again(&mut watcher))?,
             None => Err(Failure::Unavailable(
                 "physical slice, wipe and soak are not built yet",
             )),

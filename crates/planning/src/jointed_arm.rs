@@ -10,16 +10,16 @@
 //!
 //! - GRASP: the gripper pointing down at the top of the object's box, its fingers across the
 //!   narrower side of its own box (other headings after; then tilted toward it from the base's
-//!   side), the fingertips [`ARM_APPROACH`] short of it; on in a straight line until the palm
-//!   or a finger touches the object (at most [`ARM_DESCENT`]), closed until it holds (at most
-//!   [`CLOSE_STEPS`]; touching and not held, the grasp is forced as the BehaviorRobot's is),
+//!   side), the fingertips [`Tuning::arm_approach`] short of it; on in a straight line until
+//!   the palm or a finger touches the object (at most [`Tuning::arm_descent`]), closed until it
+//!   holds (at most [`Tuning::close_steps`]; touching and not held, the grasp is forced as the BehaviorRobot's is),
 //!   straight back up, then the arm planned back to where it was, with what it holds (where
 //!   that is not free — a tile does not fit the folded arm — it stays, and the next drive's
 //!   [`tuck`] finds a way to carry it).
 //! - PLACE_*: poses for the held object by the world's sampler (in a copy of the world where the
 //!   gripper let go; held as the gripper points down, tilted or level, upright ways first), the
-//!   arm planned with it to [`crate::PLACE_HEIGHT`] above one, the gripper opened,
-//!   [`SETTLE_STEPS`] steps to settle, straight up and back.
+//!   arm planned with it to [`Tuning::place_height`] above one, the gripper opened,
+//!   [`Tuning::settle_steps`] steps to settle, straight up and back.
 //!
 //! Executing joint by joint, each step's configuration is what the robot's own joint update
 //! ([`Arm::after`]) makes of the action, so every configuration the arm will pass is
@@ -35,12 +35,13 @@
 
 use crate::execute::RunError;
 use crate::manipulation::{
-    CLOSE_STEPS, GRASP_JITTER, Grip, Hands, Manipulator, RELEASE_STEPS, SETTLE_STEPS, StandTest,
-    grasp_point, holds, on_or_in_goals, placement_goals, rng_seed, vertical_axis,
+    Grip, Hands, Manipulator, StandTest, grasp_point, holds, on_or_in_goals, placement_goals,
+    rng_seed, vertical_axis,
 };
-use crate::physical::{Attempt, PHYSICAL_BUDGET, Stepper, attempt, call_rng, force_grasp};
+use crate::physical::{Attempt, Stepper, attempt, call_rng, force_grasp};
 use crate::primitive::{Call, Failure};
 use crate::symbolic::check;
+use crate::tuning::Tuning;
 use behavior_core::rng::{SimRng, seeded, uniform};
 use behavior_env::Env;
 use behavior_motion::BaseConfig;
@@ -52,10 +53,6 @@ use rapier3d::math::{Pose, Rotation, Vector};
 use std::f32::consts::{FRAC_PI_2, PI};
 use std::sync::Arc;
 
-/// How far above the top of the object's box the fingertips stop before the descent, m.
-pub const ARM_APPROACH: f32 = 0.05;
-/// The longest descent onto the object, m, `DESCENT_STEP` a step.
-pub const ARM_DESCENT: f32 = 0.12;
 /// How far the gripper moves a step in its descent, m.
 const DESCENT_STEP: f32 = 0.004;
 /// How far apart the IK solutions of an end effector's straight line are, m.
@@ -94,11 +91,12 @@ pub(crate) struct ArmPath {
 /// where the base stands, has a free configuration over the object for a grasp — or, holding
 /// something and given a placement, above a place for it; true for what cannot be held (a
 /// cabinet to open) and for a hand at the end of no arm.
-pub fn reaches(env: &Env, object: ObjectId, placement: Option<&Call>) -> bool {
+pub fn reaches(env: &Env, object: ObjectId, placement: Option<&Call>, tuning: &Tuning) -> bool {
     let hand = placement.map_or_else(|| carrying(env), |call| call.hand);
-    let (Some((world, robot, arm)), Some(goals)) =
-        (arm_of(env, hand), reach_goals(env, hand, object, placement))
-    else {
+    let (Some((world, robot, arm)), Some(goals)) = (
+        arm_of(env, hand),
+        reach_goals(env, hand, object, placement, tuning),
+    ) else {
         return true;
     };
     any_solved(world, &ArmBody::of(world, robot, arm), &goals)
@@ -120,6 +118,7 @@ fn carrying(env: &Env) -> usize {
 pub(crate) fn reach_test<'e>(
     env: &'e Env,
     object: ObjectId,
+    tuning: &Tuning,
 ) -> Option<impl Fn(&BaseConfig) -> bool + 'e> {
     let hands = env.robot().map_or(0, |r| r.hands());
     let holding = (0..hands)
@@ -129,10 +128,10 @@ pub(crate) fn reach_test<'e>(
     let (world, robot, arm) = arm_of(env, hand)?;
     let goals = match robot.held(hand) {
         Some(_) => {
-            let goals = on_or_in_goals(env, object, hand);
+            let goals = on_or_in_goals(env, object, hand, tuning);
             (!goals.is_empty()).then_some(goals)?
         }
-        None => reach_goals(env, hand, object, None)?,
+        None => reach_goals(env, hand, object, None, tuning)?,
     };
     let body = ArmBody::of(world, robot, arm);
     // The base's frame over the floor's at its configuration: kept as the base moves.
@@ -151,12 +150,13 @@ fn reach_goals(
     hand: usize,
     object: ObjectId,
     placement: Option<&Call>,
+    tuning: &Tuning,
 ) -> Option<Vec<Pose>> {
     let (world, robot, arm) = arm_of(env, hand)?;
     match placement.and_then(|c| Some((c, c.primitive.relation()?))) {
         Some((call, relation)) if robot.held(hand).is_some() => {
             let mut rng = call_rng(env, call);
-            let goals = placement_goals(world, env.robot()?, call, relation, &mut rng);
+            let goals = placement_goals(world, env.robot()?, call, relation, tuning, &mut rng);
             Some(goals.unwrap_or_default())
         }
         _ if robot
@@ -173,7 +173,14 @@ fn reach_goals(
                 hand,
             };
             let mut rng = call_rng(env, &call);
-            Some(grasp_goals(world, robot, arm.tip(), object, &mut rng))
+            Some(grasp_goals(
+                world,
+                robot,
+                arm.tip(),
+                object,
+                tuning,
+                &mut rng,
+            ))
         }
     }
 }
@@ -241,9 +248,16 @@ impl Manipulator for JointedArm {
         precondition(env, call).map(|()| call.hand)
     }
 
-    fn grasp_goals(&self, env: &Env, hand: usize, call: &Call, rng: &mut SimRng) -> Vec<Pose> {
+    fn grasp_goals(
+        &self,
+        env: &Env,
+        hand: usize,
+        call: &Call,
+        tuning: &Tuning,
+        rng: &mut SimRng,
+    ) -> Vec<Pose> {
         arm_of(env, hand).map_or(Vec::new(), |(world, robot, arm)| {
-            grasp_goals(world, robot, arm.tip(), call.object, rng)
+            grasp_goals(world, robot, arm.tip(), call.object, tuning, rng)
         })
     }
 
@@ -291,7 +305,8 @@ impl Manipulator for JointedArm {
     }
 
     fn settle(&self, steps: &mut Stepper<'_, '_>, hand: usize) -> Attempt<()> {
-        wait(steps, hand, SETTLE_STEPS)
+        let n = steps.tuning.settle_steps;
+        wait(steps, hand, n)
     }
 
     /// Straight up by [`LEAVE`], open.
@@ -329,12 +344,23 @@ impl Manipulator for JointedArm {
 }
 
 impl Hands for JointedArm {
-    fn reaches(&self, env: &Env, object: ObjectId, placement: Option<&Call>) -> bool {
-        reaches(env, object, placement)
+    fn reaches(
+        &self,
+        env: &Env,
+        object: ObjectId,
+        placement: Option<&Call>,
+        tuning: &Tuning,
+    ) -> bool {
+        reaches(env, object, placement, tuning)
     }
 
-    fn reach_test<'e>(&self, env: &'e Env, object: ObjectId) -> Option<StandTest<'e>> {
-        reach_test(env, object).map(|test| Box::new(test) as StandTest<'e>)
+    fn reach_test<'e>(
+        &self,
+        env: &'e Env,
+        object: ObjectId,
+        tuning: &'e Tuning,
+    ) -> Option<StandTest<'e>> {
+        reach_test(env, object, tuning).map(|test| Box::new(test) as StandTest<'e>)
     }
 
     fn tuck(&self, steps: &mut Stepper<'_, '_>) -> Attempt<()> {
@@ -362,7 +388,7 @@ impl Hands for JointedArm {
 
 /// End-effector poses in the world over the object, best first, the gripper pointing at the
 /// top of its box (near its end nearest the base, for a long one), jittered, the fingertips
-/// [`ARM_APPROACH`] short of it (they reach `tip` beyond the end effector): straight down, the fingers closing across the box's narrower
+/// [`Tuning::arm_approach`] short of it (they reach `tip` beyond the end effector): straight down, the fingers closing across the box's narrower
 /// side, then the other, then at random headings; then tilted by each of [`PITCHES`] from the
 /// base's side (straight down, a hamburger 0.98 m ahead had no IK solution within 0.27 m).
 fn grasp_goals(
@@ -370,10 +396,11 @@ fn grasp_goals(
     robot: &dyn Embodiment,
     tip: f32,
     object: ObjectId,
+    tuning: &Tuning,
     rng: &mut SimRng,
 ) -> Vec<Pose> {
     let base = robot.base_pose(world).translation;
-    let at = grasp_point(world, object, base);
+    let at = grasp_point(world, object, base, tuning.grasp_inset);
     let across = across_heading(world, object);
     let facing = (at.y - base.y).atan2(at.x - base.x);
     let mut rotations: Vec<Rotation> =
@@ -387,11 +414,11 @@ fn grasp_goals(
         .into_iter()
         .map(|rotation| {
             let target = Vector::new(
-                at.x + uniform(rng, -GRASP_JITTER, GRASP_JITTER),
-                at.y + uniform(rng, -GRASP_JITTER, GRASP_JITTER),
+                at.x + uniform(rng, -tuning.grasp_jitter, tuning.grasp_jitter),
+                at.y + uniform(rng, -tuning.grasp_jitter, tuning.grasp_jitter),
                 at.z,
             );
-            let back = rotation * Vector::X * (ARM_APPROACH + tip);
+            let back = rotation * Vector::X * (tuning.arm_approach + tip);
             Pose::from_parts(target - back, rotation)
         })
         .collect()
@@ -547,7 +574,7 @@ pub(crate) fn tuck(steps: &mut Stepper<'_, '_>, hand: usize) -> Attempt<()> {
     let planned = goals
         .into_iter()
         .take(CARRY_TRIES)
-        .find_map(|goal| plan_arm_to(world, body.clone(), goal, &mut rng).ok());
+        .find_map(|goal| plan_arm_to(world, body.clone(), goal, steps.tuning, &mut rng).ok());
     let Some(planned) = planned else {
         return Ok(Ok(()));
     };
@@ -712,7 +739,7 @@ fn reach(
             break;
         }
         tried += 1;
-        let planned = match plan_arm_to(world, body, config, rng) {
+        let planned = match plan_arm_to(world, body, config, steps.tuning, rng) {
             Ok(planned) => planned,
             Err(failure) => {
                 last = failure;
@@ -795,6 +822,7 @@ fn plan_arm_to(
     world: &World,
     body: ArmBody,
     goal: ArmConfig,
+    tuning: &Tuning,
     rng: &mut SimRng,
 ) -> Result<Vec<ArmConfig>, Failure> {
     let start = body.arm.now();
@@ -802,7 +830,7 @@ fn plan_arm_to(
     let space = ArmSpace::new(world, body, &start);
     let params = PlanParams {
         seed: rng_seed(rng),
-        ..PHYSICAL_BUDGET
+        ..tuning.budget
     };
     let planned = plan(&space, &start, &goal, &params)?;
     let mut dense = vec![start];
@@ -1006,7 +1034,7 @@ fn descend(
 ) -> Attempt<()> {
     let path = arm_of(steps.env, hand).and_then(|(_, _, a)| {
         let ahead = a.eef(&a.now()).rotation * Vector::X;
-        line(a.as_ref(), ahead * ARM_DESCENT, DESCENT_STEP)
+        line(a.as_ref(), ahead * steps.tuning.arm_descent, DESCENT_STEP)
     });
     // Not a step further: the gripper closes where it is.
     let Some(path) = path else {
@@ -1029,7 +1057,8 @@ fn descend(
 /// forces the grasp ([`force_grasp`]).
 fn close(steps: &mut Stepper<'_, '_>, call: &Call) -> Result<(), RunError> {
     let holds = |env: &Env| holds(env, call);
-    if hold(steps, call.hand, CLOSE_STEPS, CLOSED, holds)?.is_err() || holds(steps.env) {
+    let n = steps.tuning.close_steps;
+    if hold(steps, call.hand, n, CLOSED, holds)?.is_err() || holds(steps.env) {
         return Ok(());
     }
     force_grasp(steps, call)
@@ -1037,7 +1066,8 @@ fn close(steps: &mut Stepper<'_, '_>, call: &Call) -> Result<(), RunError> {
 
 /// Opens the gripper until it holds nothing and the fingers are apart.
 fn open(steps: &mut Stepper<'_, '_>, hand: usize) -> Attempt<()> {
-    hold(steps, hand, RELEASE_STEPS, OPEN, |env| {
+    let n = steps.tuning.release_steps;
+    hold(steps, hand, n, OPEN, |env| {
         arm_of(env, hand)
             .is_none_or(|(world, robot, a)| robot.held(hand).is_none() && a.fingers_open(world))
     })
@@ -1061,7 +1091,7 @@ fn come_back(
                 .map(|k| lifted(body.arm.as_ref(), &start, LIFT * k as f32, false))
                 .find(|c| body.clear(world, c));
             match goal {
-                Some(goal) => plan_arm_to(world, body, goal, &mut rng),
+                Some(goal) => plan_arm_to(world, body, goal, steps.tuning, &mut rng),
                 None => Err(Failure::NoHandPose),
             }
         }

@@ -48,23 +48,17 @@ mod posed_hands;
 mod primitive;
 mod symbolic;
 mod task;
+mod tuning;
 
 pub use action_space::{PrimitiveSet, PrimitiveSpace};
 pub use edits::{EditError, RecordedCall};
-pub use execute::{ARM_REACH, Mode, Outcome, RunError, Watcher, run};
-pub use jointed_arm::{ARM_APPROACH, ARM_DESCENT};
-pub use manipulation::{
-    CLOSE_STEPS, FORCED_GRASP, GRASP_INSET, GRASP_JITTER, PLACE_HEIGHT, PLACE_TRIES, RELEASE_STEPS,
-    SETTLE_STEPS, grasp, place, reaches,
-};
-pub use physical::{
-    BasePath, DOORS_OPENED, PHYSICAL_BUDGET, POSITION_TOLERANCE, STAND_PLANS, STEPS_PER_WAYPOINT,
-    YAW_TOLERANCE, base_config, drive_to,
-};
+pub use execute::{ARM_REACH, Mode, Outcome, RunError, Watcher, run, run_with};
+pub use manipulation::{FORCED_GRASP, grasp, place, reaches};
+pub use physical::{BasePath, DOORS_OPENED, base_config, drive_to};
 pub use posed_hands::{
-    APPROACH_HEIGHT, CROUCH, DESCENT_STEP, DESCENT_STEPS, GRASP_HEADINGS, HAND_RESET, HandPath,
-    RISE, approach_plan, grasp as hand_grasp, hand_body, place as hand_place,
+    HAND_RESET, HandPath, approach_plan, grasp as hand_grasp, hand_body, place as hand_place,
 };
 pub use primitive::{Call, Failure, Primitive, WAIT_STEPS};
-pub use symbolic::{ELEMENT_TRIES, FLOOR_STAND_TRIES, WIDE_OPEN, apply, check, within_reach};
+pub use symbolic::{apply, check, within_reach};
 pub use task::{Executed, GivenUp, Limits, Solution, Solver};
+pub use tuning::Tuning;

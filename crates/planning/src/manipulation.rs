@@ -10,6 +10,7 @@ use crate::execute::{RunError, Watcher};
 use crate::physical::{Attempt, Stepper, attempt, call_rng};
 use crate::primitive::{Call, Failure, Primitive};
 use crate::symbolic::put;
+use crate::tuning::Tuning;
 use crate::{jointed_arm, posed_hands};
 use behavior_core::rng::{SimRng, uniform};
 use behavior_env::Env;
@@ -44,12 +45,23 @@ pub(crate) trait Hands: Sync {
     /// Whether, from where the base stands, a hand reaches `object` for a grasp — or, holding
     /// something and given a `placement` (a PLACE_* call), a place for it; true where there is
     /// nothing to test (the primitive then says why it cannot).
-    fn reaches(&self, env: &Env, object: ObjectId, placement: Option<&Call>) -> bool;
+    fn reaches(
+        &self,
+        env: &Env,
+        object: ObjectId,
+        placement: Option<&Call>,
+        tuning: &Tuning,
+    ) -> bool;
 
     /// A test of places to stand for NAVIGATE_TO `object`: whether, the base standing there, a
     /// hand reaches it as the manipulator's `reaches` asks, or, holding something, a place for it
     /// on or in the object. `None` where there is nothing to test.
-    fn reach_test<'e>(&self, env: &'e Env, object: ObjectId) -> Option<StandTest<'e>>;
+    fn reach_test<'e>(
+        &self,
+        env: &'e Env,
+        object: ObjectId,
+        tuning: &'e Tuning,
+    ) -> Option<StandTest<'e>>;
 
     /// Draws the hands (and what they hold) in before the base drives.
     fn tuck(&self, steps: &mut Stepper<'_, '_>) -> Attempt<()>;
@@ -83,7 +95,14 @@ pub(crate) trait Manipulator: Hands {
     fn hand(&self, env: &Env, call: &Call) -> Result<Self::Hand, Failure>;
 
     /// Poses of the hand (in the world) over `call.object` for a grasp, best first.
-    fn grasp_goals(&self, env: &Env, hand: Self::Hand, call: &Call, rng: &mut SimRng) -> Vec<Pose>;
+    fn grasp_goals(
+        &self,
+        env: &Env,
+        hand: Self::Hand,
+        call: &Call,
+        tuning: &Tuning,
+        rng: &mut SimRng,
+    ) -> Vec<Pose>;
 
     /// The hand brought to the first of `goals` it can reach, its grip held as `grip`; on
     /// failure, brought back.
@@ -120,7 +139,7 @@ pub(crate) trait Manipulator: Hands {
     /// Opens the hand until it holds nothing.
     fn open(&self, steps: &mut Stepper<'_, '_>, hand: Self::Hand) -> Attempt<()>;
 
-    /// Still steps for what was let go to fall and settle ([`SETTLE_STEPS`]).
+    /// Still steps for what was let go to fall and settle ([`Tuning::settle_steps`]).
     fn settle(&self, steps: &mut Stepper<'_, '_>, hand: Self::Hand) -> Attempt<()>;
 
     /// The open hand drawn away from what it let go.
@@ -155,6 +174,7 @@ pub(crate) fn grasp_with<M: Manipulator>(
     hands: &M,
     env: &mut Env,
     call: &Call,
+    tuning: &Tuning,
     watcher: Option<&mut dyn Watcher>,
 ) -> Attempt<M::Path> {
     let hand = match hands.hand(env, call) {
@@ -162,8 +182,12 @@ pub(crate) fn grasp_with<M: Manipulator>(
         Err(failure) => return Ok(Err(failure)),
     };
     let mut rng = call_rng(env, call);
-    let goals = hands.grasp_goals(env, hand, call, &mut rng);
-    let mut steps = Stepper { env, watcher };
+    let goals = hands.grasp_goals(env, hand, call, tuning, &mut rng);
+    let mut steps = Stepper {
+        env,
+        tuning,
+        watcher,
+    };
     let mut reached = attempt!(hands.reach(&mut steps, hand, &goals, Grip::Open, &mut rng));
     attempt!(hands.descend(&mut steps, hand, call.object, &mut reached));
     hands.close(&mut steps, call)?;
@@ -186,6 +210,7 @@ pub(crate) fn place_with<M: Manipulator>(
     env: &mut Env,
     call: &Call,
     relation: Relation,
+    tuning: &Tuning,
     watcher: Option<&mut dyn Watcher>,
 ) -> Attempt<M::Path> {
     let hand = match hands.hand(env, call) {
@@ -194,14 +219,20 @@ pub(crate) fn place_with<M: Manipulator>(
     };
     let mut rng = call_rng(env, call);
     let goals = match (env.world(), env.robot()) {
-        (Some(world), Some(robot)) => placement_goals(world, robot, call, relation, &mut rng),
+        (Some(world), Some(robot)) => {
+            placement_goals(world, robot, call, relation, tuning, &mut rng)
+        }
         _ => Err(Failure::Unavailable("no episode")),
     };
     let goals = match goals {
         Ok(goals) => goals,
         Err(failure) => return Ok(Err(failure)),
     };
-    let mut steps = Stepper { env, watcher };
+    let mut steps = Stepper {
+        env,
+        tuning,
+        watcher,
+    };
     let mut reached = attempt!(hands.reach(&mut steps, hand, &goals, Grip::Closed, &mut rng));
     attempt!(hands.open(&mut steps, hand));
     attempt!(hands.settle(&mut steps, hand));
@@ -220,7 +251,13 @@ pub(crate) fn holds(env: &Env, call: &Call) -> bool {
 /// by [`grasp_with`] and [`place_with`].
 pub(crate) trait AnyManipulator: Hands {
     /// GRASP with physics.
-    fn grasp(&self, env: &mut Env, call: &Call, watcher: Option<&mut dyn Watcher>) -> Attempt<()>;
+    fn grasp(
+        &self,
+        env: &mut Env,
+        call: &Call,
+        tuning: &Tuning,
+        watcher: Option<&mut dyn Watcher>,
+    ) -> Attempt<()>;
 
     /// PLACE_* with physics.
     fn place(
@@ -228,13 +265,20 @@ pub(crate) trait AnyManipulator: Hands {
         env: &mut Env,
         call: &Call,
         relation: Relation,
+        tuning: &Tuning,
         watcher: Option<&mut dyn Watcher>,
     ) -> Attempt<()>;
 }
 
 impl<M: Manipulator> AnyManipulator for M {
-    fn grasp(&self, env: &mut Env, call: &Call, watcher: Option<&mut dyn Watcher>) -> Attempt<()> {
-        Ok(grasp_with(self, env, call, watcher)?.map(|_| ()))
+    fn grasp(
+        &self,
+        env: &mut Env,
+        call: &Call,
+        tuning: &Tuning,
+        watcher: Option<&mut dyn Watcher>,
+    ) -> Attempt<()> {
+        Ok(grasp_with(self, env, call, tuning, watcher)?.map(|_| ()))
     }
 
     fn place(
@@ -242,9 +286,10 @@ impl<M: Manipulator> AnyManipulator for M {
         env: &mut Env,
         call: &Call,
         relation: Relation,
+        tuning: &Tuning,
         watcher: Option<&mut dyn Watcher>,
     ) -> Attempt<()> {
-        Ok(place_with(self, env, call, relation, watcher)?.map(|_| ()))
+        Ok(place_with(self, env, call, relation, tuning, watcher)?.map(|_| ()))
     }
 }
 
@@ -258,9 +303,14 @@ pub(crate) fn manipulator(robot: &Robot) -> &'static dyn AnyManipulator {
 
 /// GRASP with physics by the episode's robot's manipulator (see `posed_hands.rs` and
 /// `jointed_arm.rs` for how each moves).
-pub fn grasp(env: &mut Env, call: &Call, watcher: Option<&mut dyn Watcher>) -> Attempt<()> {
+pub fn grasp(
+    env: &mut Env,
+    call: &Call,
+    tuning: &Tuning,
+    watcher: Option<&mut dyn Watcher>,
+) -> Attempt<()> {
     match env.robot().map(manipulator) {
-        Some(hands) => hands.grasp(env, call, watcher),
+        Some(hands) => hands.grasp(env, call, tuning, watcher),
         None => Ok(Err(Failure::Unavailable("no episode"))),
     }
 }
@@ -270,10 +320,11 @@ pub fn place(
     env: &mut Env,
     call: &Call,
     relation: Relation,
+    tuning: &Tuning,
     watcher: Option<&mut dyn Watcher>,
 ) -> Attempt<()> {
     match env.robot().map(manipulator) {
-        Some(hands) => hands.place(env, call, relation, watcher),
+        Some(hands) => hands.place(env, call, relation, tuning, watcher),
         None => Ok(Err(Failure::Unavailable("no episode"))),
     }
 }
@@ -281,40 +332,26 @@ pub fn place(
 /// Whether, from where the episode's robot stands, a hand reaches `object` for a grasp, or,
 /// holding something and given a `placement` (a PLACE_* call), a place for it (see
 /// the manipulator's `reaches`); true with no episode.
-pub fn reaches(env: &Env, object: ObjectId, placement: Option<&Call>) -> bool {
+pub fn reaches(env: &Env, object: ObjectId, placement: Option<&Call>, tuning: &Tuning) -> bool {
     env.robot()
-        .is_none_or(|robot| manipulator(robot).reaches(env, object, placement))
+        .is_none_or(|robot| manipulator(robot).reaches(env, object, placement, tuning))
 }
 
 /// How a recording names the forced grasp of a physical GRASP (see `physical.rs`'s
 /// `force_grasp`).
 pub const FORCED_GRASP: &str = "grasp_touching";
 
-/// The random offset of the approach across the top, m (the original's ±0.025).
-pub const GRASP_JITTER: f32 = 0.025;
-/// How far in from the sides of an object's box its grasp point lies, at most, m.
-pub const GRASP_INSET: f32 = 0.05;
-
-/// The most steps the trigger is pressed for (the original closes for 50).
-pub const CLOSE_STEPS: u32 = 50;
-/// How far above the sampled pose the held object is let go, m (the original's).
-pub const PLACE_HEIGHT: f32 = 0.1;
-/// Heights tried above a sampled pose when [`PLACE_HEIGHT`] collides (a shelf above), m.
-const PLACE_HEIGHTS: [f32; 3] = [PLACE_HEIGHT, 0.05, 0.02];
-/// Poses sampled for a placement until the hand can get there.
-pub const PLACE_TRIES: usize = 20;
-/// The most steps the trigger is let go for (the original's 100).
-pub const RELEASE_STEPS: u32 = 100;
-/// Steps for a placed object to fall and settle (the original's 100).
-pub const SETTLE_STEPS: u32 = 100;
+/// Heights tried above a sampled pose when [`Tuning::place_height`] collides (a shelf above),
+/// m.
+const LOWER_PLACE_HEIGHTS: [f32; 2] = [0.05, 0.02];
 
 /// Where on the top of the object's box the hand goes: the point nearest the shoulder, at
-/// least [`GRASP_INSET`] in from the box's sides (its centre, for a small object), so that a
+/// least `inset` ([`Tuning::grasp_inset`]) in from the box's sides (its centre, for a small object), so that a
 /// board is taken by its near end. The box is the object's own, turned as it lies (a plank
 /// turned about the vertical fills only part of its axis-aligned box: a corner of that box
 /// may be floor).
-pub(crate) fn grasp_point(world: &World, object: ObjectId, shoulder: Vector) -> Vector {
-    on_top(world, object, shoulder, GRASP_INSET)
+pub(crate) fn grasp_point(world: &World, object: ObjectId, shoulder: Vector, inset: f32) -> Vector {
+    on_top(world, object, shoulder, inset)
 }
 
 /// Which of an object's own axes (0 x, 1 y, 2 z), turned by `rotation`, lies nearest the
@@ -352,7 +389,12 @@ pub(crate) fn on_top(world: &World, object: ObjectId, toward: Vector, inset: f32
 /// PLACE_INSIDE would sample them (drawing the numbers those placements will): what a place
 /// to stand is tested against when the robot carries something there. Empty where the hand
 /// holds nothing or neither finds a place.
-pub(crate) fn on_or_in_goals(env: &Env, object: ObjectId, hand: usize) -> Vec<Pose> {
+pub(crate) fn on_or_in_goals(
+    env: &Env,
+    object: ObjectId,
+    hand: usize,
+    tuning: &Tuning,
+) -> Vec<Pose> {
     let (Some(world), Some(robot)) = (env.world(), env.robot()) else {
         return Vec::new();
     };
@@ -365,7 +407,8 @@ pub(crate) fn on_or_in_goals(env: &Env, object: ObjectId, hand: usize) -> Vec<Po
                 hand,
             };
             let relation = primitive.relation()?;
-            placement_goals(world, robot, &call, relation, &mut call_rng(env, &call)).ok()
+            let mut rng = call_rng(env, &call);
+            placement_goals(world, robot, &call, relation, tuning, &mut rng).ok()
         })
         .flatten()
         .collect()
@@ -379,6 +422,7 @@ pub(crate) fn placement_goals(
     robot: &Robot,
     call: &Call,
     relation: Relation,
+    tuning: &Tuning,
     rng: &mut SimRng,
 ) -> Result<Vec<Pose>, Failure> {
     let held = robot.held(call.hand).ok_or(Failure::HandEmpty)?;
@@ -398,7 +442,7 @@ pub(crate) fn placement_goals(
             // A finite pose turned by a finite rotation: the teleport cannot fail.
             let _ = let_go.set_pose(held, turned);
         }
-        match poses_above_places(&let_go, held, call.object, relation, rng) {
+        match poses_above_places(&let_go, held, call.object, relation, tuning, rng) {
             Ok(found) => poses.extend(found.into_iter().map(|p| p * grip.inverse())),
             Err(failure) => last = failure,
         }
@@ -410,11 +454,11 @@ pub(crate) fn placement_goals(
 }
 
 /// Poses of `held` above the places the world's sampler finds for it (in `let_go`, a copy of
-/// the world where the hand has let go of it; [`PLACE_TRIES`] samples): each sample as found
-/// and turned half round about its centre (a hand then comes from the other side), at the
-/// heights of [`PLACE_HEIGHTS`]. Where the sampler finds no place for it tilted as it is held,
-/// it is levelled (see [`levelled`]) and sampled again, as a person sets a thing
-/// down upright. Traced: a sock (one compound shape) held 12° off level found no place on a
+/// the world where the hand has let go of it; [`Tuning::place_tries`] samples): each sample as
+/// found and turned half round about its centre (a hand then comes from the other side), at
+/// [`Tuning::place_height`] and the [`LOWER_PLACE_HEIGHTS`]. Where the sampler finds no place
+/// for it tilted as it is held, it is levelled (see [`levelled`]) and sampled again, as a
+/// person sets a thing down upright. Traced: a sock (one compound shape) held 12° off level found no place on a
 /// table in 400 samples: the sampler sets an object down by its box, which for a turned
 /// compound is its box as built, turned (parry's), deeper than the sock itself; the sock was
 /// set short of touching the table and `ontop` did not hold.
@@ -423,6 +467,7 @@ fn poses_above_places(
     held: ObjectId,
     target: ObjectId,
     relation: Relation,
+    tuning: &Tuning,
     rng: &mut SimRng,
 ) -> Result<Vec<Pose>, Failure> {
     let mut poses = Vec::new();
@@ -435,10 +480,10 @@ fn poses_above_places(
         } else {
             let_go
         };
-        for _ in 0..PLACE_TRIES {
+        for _ in 0..tuning.place_tries {
             let mut scratch = world.clone();
             match put(&mut scratch, held, target, relation, rng) {
-                Ok(()) => poses.extend(above_place(&scratch, held)),
+                Ok(()) => poses.extend(above_place(&scratch, held, tuning.place_height)),
                 Err(failure) => last = failure,
             }
         }
@@ -467,8 +512,8 @@ fn levelled(world: &World, object: ObjectId) -> World {
 }
 
 /// `object`'s poses above where it lies in `world`: as it lies and turned half round about its
-/// centre, at each of [`PLACE_HEIGHTS`].
-fn above_place(world: &World, object: ObjectId) -> impl Iterator<Item = Pose> {
+/// centre, at `height` and each of the [`LOWER_PLACE_HEIGHTS`].
+fn above_place(world: &World, object: ObjectId, height: f32) -> impl Iterator<Item = Pose> {
     let placed = world.pose(object);
     let centre = world.aabb(object).center();
     [0.0, PI].into_iter().flat_map(move |turn| {
@@ -477,8 +522,8 @@ fn above_place(world: &World, object: ObjectId) -> impl Iterator<Item = Pose> {
             centre + about * (placed.translation - centre),
             about * placed.rotation,
         );
-        PLACE_HEIGHTS
-            .into_iter()
+        std::iter::once(height)
+            .chain(LOWER_PLACE_HEIGHTS)
             .map(move |h| Pose::from_parts(turned.translation + Vector::Z * h, turned.rotation))
     })
 }
@@ -491,6 +536,9 @@ pub(crate) fn rng_seed(rng: &mut SimRng) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// [`Tuning::grasp_inset`]'s default.
+    const GRASP_INSET: f32 = 0.05;
     use behavior_sim::{ObjectSpec, Part, Primitive};
     use rapier3d::glamx::EulerRot;
 
@@ -513,7 +561,7 @@ mod tests {
             // From the corner of the box around the board, where a turned board leaves floor.
             let b = world.aabb(id);
             let shoulder = Vector::new(b.mins.x - 0.3, b.mins.y - 0.3, 1.0);
-            let at = grasp_point(&world, id, shoulder);
+            let at = grasp_point(&world, id, shoulder, GRASP_INSET);
             let local = world.pose(id).inverse_transform_point(at);
             let inside = |x: f32, half: f32| x.abs() <= half - GRASP_INSET + 1e-4;
             assert!(
@@ -542,7 +590,7 @@ mod tests {
         let mut spec = ObjectSpec::new("eraser_1", "eraser.n.01", vec![eraser]);
         spec.pose = Pose::from_parts(Vector::new(1.0, 1.0, 0.5), Rotation::from_rotation_z(0.3));
         let id = world.add(spec).unwrap();
-        let at = grasp_point(&world, id, Vector::new(0.0, 3.0, 1.0));
+        let at = grasp_point(&world, id, Vector::new(0.0, 3.0, 1.0), GRASP_INSET);
         let local = world.pose(id).inverse_transform_point(at);
         assert!(local.x.abs() < 1e-4 && local.y.abs() < 1e-4, "{local:?}");
     }
@@ -571,23 +619,29 @@ mod tests {
 
     #[test]
     fn what_is_held_tilted_is_set_down_level_where_it_finds_no_place_as_it_is() {
+        let tuning = Tuning::default();
         let mut rng = behavior_core::rng::seeded(7);
         // Level, the sock is placed as it is held: every place keeps its turn (or its half
         // turn) about the vertical.
         let (world, table, sock) = table_and_sock(0.0);
-        let poses = poses_above_places(&world, sock, table, Relation::OnTop, &mut rng).unwrap();
+        let poses =
+            poses_above_places(&world, sock, table, Relation::OnTop, &tuning, &mut rng).unwrap();
         let up = |p: &Pose| (p.rotation * Vector::Y).z.abs();
         assert!(poses.iter().all(|p| up(p) > 0.999), "kept as held");
         // 12° off level, the sampler finds no place for it as it is...
         let (world, table, sock) = table_and_sock(0.21);
         let mut tilted = world.clone();
-        let placed = (0..PLACE_TRIES)
+        let placed = (0..tuning.place_tries)
             .filter(|_| put(&mut tilted, sock, table, Relation::OnTop, &mut rng).is_ok())
             .count();
         assert_eq!(placed, 0, "as held, the sock was placed {placed} times");
         // ...so it is set down levelled: lying along the table, touching it.
-        let poses = poses_above_places(&world, sock, table, Relation::OnTop, &mut rng).unwrap();
-        assert_eq!(poses.len(), PLACE_TRIES * 2 * PLACE_HEIGHTS.len());
+        let poses =
+            poses_above_places(&world, sock, table, Relation::OnTop, &tuning, &mut rng).unwrap();
+        assert_eq!(
+            poses.len(),
+            tuning.place_tries * 2 * (1 + LOWER_PLACE_HEIGHTS.len())
+        );
         assert!(
             poses.iter().all(|p| up(p) > 0.999),
             "levelled: {:?}",

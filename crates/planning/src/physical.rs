@@ -11,6 +11,7 @@ use crate::execute::Watcher;
 use crate::manipulation::manipulator;
 use crate::primitive::{Call, Failure};
 use crate::symbolic::{call_seed, limited_links, open_all_the_way, stand_for};
+use crate::tuning::Tuning;
 use behavior_core::rng::{SimRng, seeded};
 use behavior_core::wrap_angle;
 use behavior_core::{DOOR_SYNSET, Predicate};
@@ -23,28 +24,6 @@ use behavior_motion::{PlanParams, Space, plan, steps_along};
 use behavior_robots::{BaseDrive, BaseMove, Robot};
 use behavior_sim::{BodyRef, ObjectId, World};
 use std::f32::consts::PI;
-
-/// Steps the robot has to reach each configuration of the densified path before the
-/// execution is given up as blocked.
-pub const STEPS_PER_WAYPOINT: u32 = 10;
-/// How close to a configuration counts as there, m and rad.
-pub const POSITION_TOLERANCE: f32 = 0.01;
-/// See [`POSITION_TOLERANCE`].
-pub const YAW_TOLERANCE: f32 = 0.02;
-
-/// The motion planners' budget in physical mode (base and hand): 25 times the original's
-/// iterations. The original's 20 × 3 found no base path for 297 of the 447 stands `bench plan`
-/// tried where 500 iterations found more (README, "Base plans and drives"), and a robot carrying
-/// a board through a door, or a hand reaching round a shelf's edge, needs them; the original's
-/// headless mode teleports after planning, ours executes. Ten times the original's shortcuts
-/// too: a driven path's every wiggle costs steps, and 20 shortcuts left 380 rad of turning in
-/// a 9 m drive (7,857 steps).
-pub const PHYSICAL_BUDGET: PlanParams = PlanParams {
-    iterations: 500,
-    restarts: 2,
-    smoothing: 200,
-    seed: 0,
-};
 
 /// A robot's base path as planned and as executed.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -62,15 +41,20 @@ pub struct BasePath {
 pub fn drive_to(
     env: &mut Env,
     call: &Call,
+    tuning: &Tuning,
     watcher: Option<&mut dyn Watcher>,
 ) -> Result<Result<BasePath, Failure>, RunError> {
-    let mut steps = Stepper { env, watcher };
+    let mut steps = Stepper {
+        env,
+        tuning,
+        watcher,
+    };
     open_doors(&mut steps)?;
     // Best effort: a hand that cannot get there is planned around where it is.
     if let Some(hands) = steps.env.robot().map(manipulator) {
         let _ = hands.tuck(&mut steps)?;
     }
-    let planned = match plan_base(steps.env, call) {
+    let planned = match plan_base(steps.env, call, tuning) {
         Ok(path) => path,
         Err(failure) => return Ok(Err(failure)),
     };
@@ -80,8 +64,8 @@ pub fn drive_to(
     };
     for target in path.planned.clone() {
         let mut reached = false;
-        for _ in 0..STEPS_PER_WAYPOINT {
-            let Some(action) = drive_toward(steps.env, &target) else {
+        for _ in 0..tuning.steps_per_waypoint {
+            let Some(action) = drive_toward(steps.env, &target, tuning) else {
                 reached = true;
                 break;
             };
@@ -90,7 +74,7 @@ pub fn drive_to(
             }
             path.executed.push(base_config(steps.env));
         }
-        if !reached && drive_toward(steps.env, &target).is_some() {
+        if !reached && drive_toward(steps.env, &target, tuning).is_some() {
             return Ok(Err(Failure::Blocked {
                 at: base_config(steps.env),
                 toward: target,
@@ -169,6 +153,7 @@ pub(crate) fn force_grasp(steps: &mut Stepper<'_, '_>, call: &Call) -> Result<()
 /// The steps a physical primitive takes, each shown to the watcher if one is given.
 pub(crate) struct Stepper<'a, 'w> {
     pub(crate) env: &'a mut Env,
+    pub(crate) tuning: &'a Tuning,
     pub(crate) watcher: Option<&'w mut dyn Watcher>,
 }
 
@@ -209,7 +194,7 @@ impl Stepper<'_, '_> {
 }
 
 /// The densified base path to where the robot will stand for `call.object`.
-fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
+fn plan_base(env: &Env, call: &Call, tuning: &Tuning) -> Result<Vec<BaseConfig>, Failure> {
     let (world, robot) = match (env.world(), env.robot()) {
         (Some(w), Some(r)) => (w, r),
         _ => return Err(Failure::Unavailable("no episode")),
@@ -236,7 +221,7 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
     let reach = robot.spec().arm_reach;
     let start = standing.config;
     // The robot stands first where a hand reaches the object from.
-    let test = manipulator(robot).reach_test(env, call.object);
+    let test = manipulator(robot).reach_test(env, call.object, tuning);
     let arm = test.as_deref();
     // A robot put or pushed into something fixed first backs out of it, by the shortest free
     // move nearby, then plans from there.
@@ -245,11 +230,11 @@ fn plan_base(env: &Env, call: &Call) -> Result<Vec<BaseConfig>, Failure> {
     let mut last = Failure::NoPlaceToStand;
     let params = PlanParams {
         seed,
-        ..PHYSICAL_BUDGET
+        ..tuning.budget
     };
     // A clear place to stand may lie in a pocket no way leads into (between a cabinet and a
     // corner), which the lattice tells at once: then another one.
-    for k in 0..STAND_PLANS {
+    for k in 0..tuning.stand_plans {
         let mut rng = seeded(seed.wrapping_add(k));
         let Some(goal) = stand_for(world, &standing, call.object, reach, arm, &mut rng) else {
             break;
@@ -288,9 +273,6 @@ fn ends_navigation(e: &PlanError) -> bool {
         _ => false,
     }
 }
-
-/// Places to stand tried in turn for one NAVIGATE_TO, each with a base plan there.
-pub const STAND_PLANS: u64 = 3;
 
 /// The base's space from `start` to `goal` for `standing`, sampled anywhere in the home as the
 /// July 2021 version did: the way round a table may leave the box around the ends.
@@ -379,12 +361,12 @@ pub fn base_config(env: &Env) -> BaseConfig {
 }
 
 /// The action that takes the base one step toward `target`, or `None` when it is there.
-fn drive_toward(env: &Env, target: &BaseConfig) -> Option<Vec<f32>> {
+fn drive_toward(env: &Env, target: &BaseConfig, tuning: &Tuning) -> Option<Vec<f32>> {
     let robot = env.robot()?;
     let now = base_config(env);
     let (dx, dy) = (target.x - now.x, target.y - now.y);
     let dyaw = wrap_angle(target.yaw - now.yaw);
-    if dx.hypot(dy) <= POSITION_TOLERANCE && dyaw.abs() <= YAW_TOLERANCE {
+    if dx.hypot(dy) <= tuning.position_tolerance && dyaw.abs() <= tuning.yaw_tolerance {
         return None;
     }
     let (c, s) = (now.yaw.cos(), now.yaw.sin());
@@ -393,7 +375,7 @@ fn drive_toward(env: &Env, target: &BaseConfig) -> Option<Vec<f32>> {
         forward: c * dx + s * dy,
         left: -s * dx + c * dy,
         turn: dyaw,
-        within: POSITION_TOLERANCE,
+        within: tuning.position_tolerance,
     };
     robot.base_action(step)
 }

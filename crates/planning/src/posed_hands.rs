@@ -5,17 +5,17 @@
 //! assisted grasp as the trigger closes, the placement by letting go above a pose the world's
 //! sampler found, then settling.
 //!
-//! - GRASP: palm down over the top of the object's box ([`APPROACH_HEIGHT`] above it, ±
-//!   [`GRASP_JITTER`], a random heading), down in steps of [`DESCENT_STEP`] until the hand
-//!   touches it (at most [`DESCENT_STEPS`]), the trigger pressed until it holds (at most
-//!   [`CLOSE_STEPS`]), then back to where the hand was — raised if what it now carries would
+//! - GRASP: palm down over the top of the object's box ([`Tuning::approach_height`] above it,
+//!   ± [`Tuning::grasp_jitter`], a random heading), down in steps of [`Tuning::descent_step`]
+//!   until the hand touches it (at most [`Tuning::descent_steps`]), the trigger pressed until it
+//!   holds (at most [`Tuning::close_steps`]), then back to where the hand was — raised if what it now carries would
 //!   not fit there.
-//! - PLACE_*: poses for the held object by the world's sampler ([`PLACE_TRIES`], in a copy of
-//!   the world, so that the episode itself only ever moves by actions), the hand planned with
-//!   the object to [`PLACE_HEIGHT`] above one, the trigger let go, [`SETTLE_STEPS`] steps for it
-//!   to fall and settle, then the hand back.
+//! - PLACE_*: poses for the held object by the world's sampler ([`Tuning::place_tries`], in a
+//!   copy of the world, so that the episode itself only ever moves by actions), the hand
+//!   planned with the object to [`Tuning::place_height`] above one, the trigger let go,
+//!   [`Tuning::settle_steps`] steps for it to fall and settle, then the hand back.
 //! - Where the hand cannot reach its goal from the shoulder, the body goes down (at most
-//!   [`CROUCH`]) or up ([`RISE`]) first, and back after.
+//!   [`Tuning::crouch`]) or up ([`Tuning::rise`]) first, and back after.
 //!
 //! - The hand is planned to a little above its goal, or in front of it, and comes straight in;
 //!   it backs out the same way after ([`plan_with_approach`], [`back_out`]).
@@ -31,15 +31,13 @@ use crate::edits::RecordedCall;
 use crate::execute::RunError;
 use crate::execute::Watcher;
 use crate::manipulation::{
-    CLOSE_STEPS, GRASP_JITTER, Grip, Hands, Manipulator, RELEASE_STEPS, SETTLE_STEPS, StandTest,
-    grasp_point, grasp_with, holds, on_or_in_goals, on_top, place_with, placement_goals, rng_seed,
+    Grip, Hands, Manipulator, StandTest, grasp_point, grasp_with, holds, on_or_in_goals, on_top,
+    place_with, placement_goals, rng_seed,
 };
-use crate::physical::{
-    Attempt, PHYSICAL_BUDGET, STEPS_PER_WAYPOINT, Stepper, attempt, base_config, call_rng,
-    force_grasp,
-};
+use crate::physical::{Attempt, Stepper, attempt, base_config, call_rng, force_grasp};
 use crate::primitive::{Call, Failure};
 use crate::symbolic::check;
+use crate::tuning::Tuning;
 use behavior_core::rng::{SimRng, uniform};
 use behavior_env::Env;
 use behavior_motion::BaseConfig;
@@ -58,27 +56,17 @@ pub const HAND_RESET: &str = "reset_hand";
 /// A palm this far from its target is pinned, not trailing, m (it trails by about a step,
 /// ≤ 0.05 m).
 const STRANDED: f32 = 0.1;
-/// How far above the top of the object's box the grasp's approach ends, m (the original's).
-pub const APPROACH_HEIGHT: f32 = 0.05;
-/// How much higher the approach is tried where fingers at [`APPROACH_HEIGHT`] would touch
+/// How much higher the approach is tried where fingers at [`Tuning::approach_height`] would touch
 /// something, m, in turn: a tilted tile's edge is cleared by the second; the higher ones are
 /// for an object low among others or in an open box, where a column the hand can come down
 /// clear of all but the object leads to it ([`clear_column`]). The descent grows by the raise.
 const APPROACH_RAISES: [f32; 5] = [0.0, 0.05, 0.15, 0.25, 0.35];
 /// How far apart the poses checked down a raised approach's column are, m.
 const COLUMN_STEP: f32 = 0.025;
-/// How far the body may go down to reach low things, m: its capsule's bottom is 0.2 m above
-/// the floor at the original's standing height ([`behavior_robots::BODY_HEIGHT`]).
-pub const CROUCH: f32 = 0.19;
 /// Room left within a hand's reach for the grasp's jitter and the hand's own size, m.
 const REACH_MARGIN: f32 = 0.05;
 /// Room left within a hand's reach for a goal, m: the path to it may bend outward.
 const REACH_SLACK: f32 = 0.02;
-/// How far the body may go up to reach high things, m (the BehaviorRobot's body floats; a
-/// person in VR stands up or stretches).
-pub const RISE: f32 = 0.4;
-/// Headings tried for the approach until one is free and within reach.
-pub const GRASP_HEADINGS: usize = 8;
 /// Free goals (at the body height of the first) that the hand is planned to in turn, until a
 /// plan is found: a free goal may have no way to it (the last folder into a file cabinet had
 /// none on four seeds).
@@ -90,11 +78,6 @@ const PRE_ABOVE: [f32; 2] = [0.1, 0.05];
 /// hand is planned to, m, best first, where it cannot come from above, before it goes straight
 /// in (see [`plan_with_approach`]).
 const PRE_FRONT: [f32; 3] = [0.3, 0.2, 0.1];
-/// One step of the descent onto the object, m.
-pub const DESCENT_STEP: f32 = 0.005;
-/// The most steps of descent from [`APPROACH_HEIGHT`] (the original's 25), more from a raised
-/// approach (see `APPROACH_RAISES`).
-pub const DESCENT_STEPS: u32 = 25;
 /// Raises of the way-back pose tried when what the hand carries would not fit where it
 /// started, m each.
 const RAISE: f32 = 0.1;
@@ -123,8 +106,13 @@ pub struct HandPath {
 }
 
 /// GRASP with physics (see the module docs). The paths it planned and executed come back.
-pub fn grasp(env: &mut Env, call: &Call, watcher: Option<&mut dyn Watcher>) -> Attempt<HandPath> {
-    grasp_with(&PosedHands, env, call, watcher)
+pub fn grasp(
+    env: &mut Env,
+    call: &Call,
+    tuning: &Tuning,
+    watcher: Option<&mut dyn Watcher>,
+) -> Attempt<HandPath> {
+    grasp_with(&PosedHands, env, call, tuning, watcher)
 }
 
 /// PLACE_* with physics (see the module docs).
@@ -132,27 +120,28 @@ pub fn place(
     env: &mut Env,
     call: &Call,
     relation: Relation,
+    tuning: &Tuning,
     watcher: Option<&mut dyn Watcher>,
 ) -> Attempt<HandPath> {
-    place_with(&PosedHands, env, call, relation, watcher)
+    place_with(&PosedHands, env, call, relation, tuning, watcher)
 }
 
 /// The hand's plan to over `call.object` for a GRASP from where the robot stands, as the
 /// physical primitive makes it (without moving the body: a goal out of reach at the body's
 /// height counts as none). For measuring the planner (`behavior bench plan --hands`).
-pub fn approach_plan(env: &Env, call: &Call) -> Result<Vec<HandConfig>, Failure> {
+pub fn approach_plan(env: &Env, call: &Call, tuning: &Tuning) -> Result<Vec<HandConfig>, Failure> {
     let side = hand_side(env, call)?;
     let (world, robot) = posed(env).ok_or(Failure::Unavailable("no episode"))?;
     let mut rng = call_rng(env, call);
-    let goals = approach_goals(world, &robot, call, side, &mut rng);
-    plan_hand(world, &robot, side, goals, rng_seed(&mut rng))
+    let goals = approach_goals(world, &robot, call, side, tuning, &mut rng);
+    plan_hand(world, &robot, side, goals, tuning, rng_seed(&mut rng))
 }
 
 /// Whether a hand holding something reaches, its body down or up if need be, above one of the
 /// places the world's sampler finds for it by `call` (a PLACE_*), drawing the numbers the
 /// placement itself will; true where the call is no physical BehaviorRobot placement or the
 /// hand is empty (the primitive then says why it cannot).
-pub(crate) fn placement_in_reach(env: &Env, call: &Call) -> bool {
+pub(crate) fn placement_in_reach(env: &Env, call: &Call, tuning: &Tuning) -> bool {
     let (Some((world, robot)), Some(relation), Some(&side)) = (
         posed(env),
         call.primitive.relation(),
@@ -167,8 +156,8 @@ pub(crate) fn placement_in_reach(env: &Env, call: &Call) -> bool {
     let (Some(embodied), mut rng) = (env.robot(), call_rng(env, call)) else {
         return true;
     };
-    placement_goals(world, embodied, call, relation, &mut rng)
-        .is_ok_and(|goals| places_from(world, &robot, side, &goals, shoulder))
+    placement_goals(world, embodied, call, relation, tuning, &mut rng)
+        .is_ok_and(|goals| places_from(world, &robot, side, &goals, shoulder, tuning))
 }
 
 /// Draws the hands in to where they are tucked ([`PosedHand::tucked`]), with what they hold
@@ -193,7 +182,7 @@ pub(crate) fn tuck(steps: &mut Stepper<'_, '_>) -> Attempt<()> {
             direct
         } else {
             let seed = u64::from(steps.env.steps());
-            plan_hand(world, &robot, side, [tuck], seed).unwrap_or(direct)
+            plan_hand(world, &robot, side, [tuck], steps.tuning, seed).unwrap_or(direct)
         };
         let mut poses = Vec::new();
         attempt!(follow(steps, side, &path, &mut poses));
@@ -244,7 +233,7 @@ fn reach(
     let Some((world, robot)) = posed(steps.env) else {
         return Ok(Err(Failure::Unavailable("no episode")));
     };
-    let Some((chosen, depth)) = choose_goals(world, &robot, side, goals) else {
+    let Some((chosen, depth)) = choose_goals(world, &robot, side, goals, steps.tuning) else {
         return Ok(Err(Failure::NoHandPose));
     };
     attempt!(crouch(steps, depth));
@@ -252,7 +241,9 @@ fn reach(
     let mut planned = Err(Failure::NoHandPose);
     for goal in chosen {
         planned = match posed(steps.env) {
-            Some((world, robot)) => plan_with_approach(world, &robot, side, goal, rng_seed(rng)),
+            Some((world, robot)) => {
+                plan_with_approach(world, &robot, side, goal, steps.tuning, rng_seed(rng))
+            }
             None => Err(Failure::Unavailable("no episode")),
         };
         if planned.is_ok() {
@@ -444,14 +435,14 @@ fn planning_body(world: &World, robot: &PosedRobot<'_>, side: Side) -> HandBody 
 /// object's box within its reach less `REACH_MARGIN` (for a small object, over it; for a
 /// shelf, its near side), and the top of the box there lies `open_to` the shoulder (a
 /// necklace in a cabinet is not in reach from beside the cabinet).
-pub fn hand_reaches(world: &World, robot: &Robot, object: ObjectId) -> bool {
+pub fn hand_reaches(world: &World, robot: &Robot, object: ObjectId, tuning: &Tuning) -> bool {
     let Some(hands) = PosedRobot::of(robot.embodiment()) else {
         return true;
     };
     let sides = &Side::BOTH[..hands.posed.len()];
     sides.iter().any(|&side| {
         let shoulder = hands.shoulder(world, side);
-        reaches_from(world, &hands, side, object, shoulder)
+        reaches_from(world, &hands, side, object, shoulder, tuning)
     })
 }
 
@@ -462,12 +453,13 @@ fn reaches_from(
     side: Side,
     object: ObjectId,
     shoulder: Vector,
+    tuning: &Tuning,
 ) -> bool {
     let b = world.aabb(object);
     let top = on_top(world, object, shoulder, 0.0);
     let nearest = top.with_z(shoulder.z.clamp(b.mins.z, b.maxs.z));
     let reach = robot.hand(side).reach();
-    shift_for(shoulder, nearest, reach - REACH_MARGIN).is_some()
+    shift_for(shoulder, nearest, reach - REACH_MARGIN, tuning).is_some()
         && open_to(world, robot, top, shoulder, &[object])
 }
 
@@ -479,10 +471,11 @@ fn places_from(
     side: Side,
     goals: &[Pose],
     shoulder: Vector,
+    tuning: &Tuning,
 ) -> bool {
     let reach = robot.hand(side).reach();
     goals.iter().any(|g| {
-        shift_for(shoulder, g.translation, reach - REACH_SLACK).is_some()
+        shift_for(shoulder, g.translation, reach - REACH_SLACK, tuning).is_some()
             && open_to(world, robot, g.translation, shoulder, &[])
     })
 }
@@ -498,13 +491,14 @@ fn places_from(
 pub(crate) fn reach_test<'e>(
     env: &'e Env,
     object: ObjectId,
+    tuning: &'e Tuning,
 ) -> Option<impl Fn(&BaseConfig) -> bool + 'e> {
     let (world, robot) = posed(env)?;
     let to_base = base_config(env).pose().inverse();
     let shoulder_of = |side: Side| (side, to_base.transform_point(robot.shoulder(world, side)));
     let all = sides(env);
     let holding = all.iter().rposition(|&side| robot.holding(side).is_some());
-    let goals = holding.map_or_else(Vec::new, |hand| on_or_in_goals(env, object, hand));
+    let goals = holding.map_or_else(Vec::new, |hand| on_or_in_goals(env, object, hand, tuning));
     // Holding something with no place for it there, the object's box in reach is what counts.
     let shoulders: Vec<(Side, Vector)> = match holding {
         Some(hand) if !goals.is_empty() => vec![shoulder_of(all[hand])],
@@ -515,9 +509,9 @@ pub(crate) fn reach_test<'e>(
         shoulders.iter().any(|&(side, s)| {
             let shoulder = pose.transform_point(s);
             if goals.is_empty() {
-                reaches_from(world, &robot, side, object, shoulder)
+                reaches_from(world, &robot, side, object, shoulder, tuning)
             } else {
-                places_from(world, &robot, side, &goals, shoulder)
+                places_from(world, &robot, side, &goals, shoulder, tuning)
             }
         })
     })
@@ -556,9 +550,9 @@ fn open_to(
 }
 
 /// How far the body must go down (up, if negative) for a shoulder at `shoulder` to reach
-/// `point` within `reach`: 0 if it does, `None` if no height within [`CROUCH`] down and
-/// [`RISE`] up does.
-fn shift_for(shoulder: Vector, point: Vector, reach: f32) -> Option<f32> {
+/// `point` within `reach`: 0 if it does, `None` if no height within [`Tuning::crouch`] down and
+/// [`Tuning::rise`] up does.
+fn shift_for(shoulder: Vector, point: Vector, reach: f32, tuning: &Tuning) -> Option<f32> {
     let across = (point - shoulder).truncate().length();
     if across > reach {
         return None;
@@ -566,7 +560,9 @@ fn shift_for(shoulder: Vector, point: Vector, reach: f32) -> Option<f32> {
     let half = (reach * reach - across * across).sqrt();
     let height = shoulder.z.clamp(point.z - half, point.z + half);
     let shift = shoulder.z - height;
-    (-RISE..=CROUCH).contains(&shift).then_some(shift)
+    (-tuning.rise..=tuning.crouch)
+        .contains(&shift)
+        .then_some(shift)
 }
 
 /// Up to [`GOALS_PLANNED`] of `goals` (hand poses, best first) that are clear of everything and
@@ -577,11 +573,12 @@ fn choose_goals(
     robot: &PosedRobot<'_>,
     side: Side,
     goals: &[Pose],
+    tuning: &Tuning,
 ) -> Option<(Vec<Pose>, f32)> {
     let body = planning_body(world, robot, side);
     let reach = robot.hand(side).reach() - REACH_SLACK;
     let mut free = goals.iter().filter_map(|g| {
-        let shift = shift_for(body.shoulder, g.translation, reach)?;
+        let shift = shift_for(body.shoulder, g.translation, reach, tuning)?;
         body.clear(world, &HandConfig::of(g)).then_some((*g, shift))
     });
     let (first, depth) = free.next()?;
@@ -596,7 +593,7 @@ fn crouch(steps: &mut Stepper<'_, '_>, depth: f32) -> Attempt<()> {
         return Ok(Err(Failure::Unavailable("no episode")));
     };
     let goal = robot.body_pose(world).translation.z - depth;
-    for _ in 0..STEPS_PER_WAYPOINT {
+    for _ in 0..steps.tuning.steps_per_waypoint {
         let Some((world, robot)) = posed(steps.env) else {
             break;
         };
@@ -618,6 +615,7 @@ fn plan_hand(
     robot: &PosedRobot<'_>,
     side: Side,
     goals: impl IntoIterator<Item = Pose>,
+    tuning: &Tuning,
     seed: u64,
 ) -> Result<Vec<HandConfig>, Failure> {
     let start = HandConfig::of(&(robot.body_pose(world) * robot.hand_target(side)));
@@ -630,7 +628,7 @@ fn plan_hand(
     let space = HandSpace::new(world, body, &start, &goal);
     let params = PlanParams {
         seed,
-        ..PHYSICAL_BUDGET
+        ..tuning.budget
     };
     let planned = plan(&space, &start, &goal, &params)?;
     let mut dense = vec![start];
@@ -649,6 +647,7 @@ fn plan_with_approach(
     robot: &PosedRobot<'_>,
     side: Side,
     goal: Pose,
+    tuning: &Tuning,
     seed: u64,
 ) -> Result<(Vec<HandConfig>, Option<Vector>), Failure> {
     let body = planning_body(world, robot, side);
@@ -666,12 +665,12 @@ fn plan_with_approach(
         if !free {
             continue;
         }
-        if let Ok(mut path) = plan_hand(world, robot, side, [pre.pose()], seed) {
+        if let Ok(mut path) = plan_hand(world, robot, side, [pre.pose()], tuning, seed) {
             path.extend(last);
             return Ok((path, Some(offset)));
         }
     }
-    Ok((plan_hand(world, robot, side, [goal], seed)?, None))
+    Ok((plan_hand(world, robot, side, [goal], tuning, seed)?, None))
 }
 
 /// The hand's configurations from `from` straight to `to`, at the hand planner's resolution,
@@ -691,7 +690,7 @@ fn straight(from: &HandConfig, to: &HandConfig) -> Vec<HandConfig> {
 /// Hand poses over the object, palm down, best first: over the top of its box near the
 /// shoulder, jittered, at headings around the one from the body to the object; then the same
 /// higher up, by each of `APPROACH_RAISES` (fingers that would touch a tilted tile at
-/// [`APPROACH_HEIGHT`] clear it higher, and the descent still reaches it), those raised more
+/// [`Tuning::approach_height`] clear it higher, and the descent still reaches it), those raised more
 /// than the first only above a column the hand can come down clear of everything but the
 /// object.
 fn approach_goals(
@@ -699,18 +698,20 @@ fn approach_goals(
     robot: &PosedRobot<'_>,
     call: &Call,
     side: Side,
+    tuning: &Tuning,
     rng: &mut SimRng,
 ) -> Vec<Pose> {
     let shoulder = robot.shoulder(world, side);
-    let at = grasp_point(world, call.object, shoulder);
+    let at = grasp_point(world, call.object, shoulder, tuning.grasp_inset);
     let body = robot.body_pose(world).translation;
     let facing = (at.y - body.y).atan2(at.x - body.x);
-    let low: Vec<Pose> = (0..GRASP_HEADINGS)
+    let jitter = tuning.grasp_jitter;
+    let low: Vec<Pose> = (0..tuning.grasp_headings)
         .map(|k| {
             let top = Vector::new(
-                at.x + uniform(rng, -GRASP_JITTER, GRASP_JITTER),
-                at.y + uniform(rng, -GRASP_JITTER, GRASP_JITTER),
-                at.z + APPROACH_HEIGHT,
+                at.x + uniform(rng, -jitter, jitter),
+                at.y + uniform(rng, -jitter, jitter),
+                at.z + tuning.approach_height,
             );
             let spread = if k == 0 { 0.0 } else { PI / 2.0 };
             let heading = facing + uniform(rng, -spread, spread);
@@ -797,7 +798,7 @@ fn follow(
         let goal = c.pose();
         // Waypoints a resolution apart take a step each; a straight move (tucking the hands)
         // takes as many as it needs.
-        for _ in 0..STEPS_PER_WAYPOINT + steps_to(steps.env, side, &goal) {
+        for _ in 0..steps.tuning.steps_per_waypoint + steps_to(steps.env, side, &goal) {
             let Some(action) = hand_action(steps.env, side, &goal) else {
                 break;
             };
@@ -812,8 +813,8 @@ fn follow(
     Ok(Ok(()))
 }
 
-/// Down onto the object until the hand touches it: at most [`DESCENT_STEPS`], more from an
-/// approach raised above [`APPROACH_HEIGHT`] (by as many steps as the raise).
+/// Down onto the object until the hand touches it: at most [`Tuning::descent_steps`], more from
+/// an approach raised above [`Tuning::approach_height`] (by as many steps as the raise).
 fn descend(
     steps: &mut Stepper<'_, '_>,
     side: Side,
@@ -822,15 +823,16 @@ fn descend(
 ) -> Attempt<()> {
     let above = posed(steps.env).map_or(0.0, |(world, _)| {
         let fingers = palm(steps.env, side).transform_point(GRASP_POINT).z;
-        fingers - world.aabb(object).maxs.z - APPROACH_HEIGHT
+        fingers - world.aabb(object).maxs.z - steps.tuning.approach_height
     });
-    let raised = (above.max(0.0) / DESCENT_STEP).ceil() as u32;
-    for _ in 0..DESCENT_STEPS + raised {
+    let step = steps.tuning.descent_step;
+    let raised = (above.max(0.0) / step).ceil() as u32;
+    for _ in 0..steps.tuning.descent_steps + raised {
         if touches(steps.env, side, object) {
             break;
         }
         let mut goal = target_in_world(steps.env, side);
-        goal.translation.z -= DESCENT_STEP;
+        goal.translation.z -= step;
         let Some(action) = hand_action(steps.env, side, &goal) else {
             break;
         };
@@ -847,7 +849,7 @@ fn descend(
 fn close(steps: &mut Stepper<'_, '_>, call: &Call) -> Result<(), RunError> {
     let side = Side::BOTH[call.hand];
     let action = trigger_action(steps.env, side, 1.0);
-    for _ in 0..CLOSE_STEPS {
+    for _ in 0..steps.tuning.close_steps {
         if steps.act(&action)?.is_err() || holds(steps.env, call) {
             return Ok(());
         }
@@ -864,7 +866,7 @@ fn close(steps: &mut Stepper<'_, '_>, call: &Call) -> Result<(), RunError> {
 /// Lets the trigger go until the hand is open and holds nothing.
 fn open(steps: &mut Stepper<'_, '_>, side: Side) -> Attempt<()> {
     let action = trigger_action(steps.env, side, -1.0);
-    for _ in 0..RELEASE_STEPS {
+    for _ in 0..steps.tuning.release_steps {
         let done = posed(steps.env)
             .is_none_or(|(_, r)| r.trigger(side) == 0.0 && r.holding(side).is_none());
         if done {
@@ -928,7 +930,7 @@ fn come_back(
     let goals = (0..RAISES)
         .map(|k| Pose::from_parts(start.translation + Vector::Z * (RAISE * k as f32), turn));
     let seed = u64::from(steps.env.steps());
-    let path = match plan_hand(world, &robot, side, goals, seed) {
+    let path = match plan_hand(world, &robot, side, goals, steps.tuning, seed) {
         Ok(path) => path,
         Err(failure) => return Ok(Err(failure)),
     };
@@ -973,9 +975,16 @@ impl Manipulator for PosedHands {
         hand_side(env, call)
     }
 
-    fn grasp_goals(&self, env: &Env, side: Side, call: &Call, rng: &mut SimRng) -> Vec<Pose> {
+    fn grasp_goals(
+        &self,
+        env: &Env,
+        side: Side,
+        call: &Call,
+        tuning: &Tuning,
+        rng: &mut SimRng,
+    ) -> Vec<Pose> {
         match posed(env) {
-            Some((world, robot)) => approach_goals(world, &robot, call, side, rng),
+            Some((world, robot)) => approach_goals(world, &robot, call, side, tuning, rng),
             None => Vec::new(),
         }
     }
@@ -1031,7 +1040,8 @@ impl Manipulator for PosedHands {
     }
 
     fn settle(&self, steps: &mut Stepper<'_, '_>, _: Side) -> Attempt<()> {
-        steps.wait_until(SETTLE_STEPS, |_| false)
+        let n = steps.tuning.settle_steps;
+        steps.wait_until(n, |_| false)
     }
 
     /// Nothing here: coming back backs out the way the hand came in first.
@@ -1059,16 +1069,27 @@ impl Manipulator for PosedHands {
 }
 
 impl Hands for PosedHands {
-    fn reaches(&self, env: &Env, object: ObjectId, placement: Option<&Call>) -> bool {
+    fn reaches(
+        &self,
+        env: &Env,
+        object: ObjectId,
+        placement: Option<&Call>,
+        tuning: &Tuning,
+    ) -> bool {
         match (placement, env.world(), env.robot()) {
-            (Some(call), ..) => placement_in_reach(env, call),
-            (None, Some(world), Some(robot)) => hand_reaches(world, robot, object),
+            (Some(call), ..) => placement_in_reach(env, call, tuning),
+            (None, Some(world), Some(robot)) => hand_reaches(world, robot, object, tuning),
             _ => true,
         }
     }
 
-    fn reach_test<'e>(&self, env: &'e Env, object: ObjectId) -> Option<StandTest<'e>> {
-        reach_test(env, object).map(|test| Box::new(test) as StandTest<'e>)
+    fn reach_test<'e>(
+        &self,
+        env: &'e Env,
+        object: ObjectId,
+        tuning: &'e Tuning,
+    ) -> Option<StandTest<'e>> {
+        reach_test(env, object, tuning).map(|test| Box::new(test) as StandTest<'e>)
     }
 
     fn tuck(&self, steps: &mut Stepper<'_, '_>) -> Attempt<()> {

@@ -13,10 +13,10 @@ use behavior_sim::{BodyRef, JointKind, ObjectId, PointKind, Relation, SUPPORT_CO
 use rapier3d::math::{Pose, Rotation, Vector};
 
 /// Random points tried in a room for standing on its floor (the original's 60).
-pub const FLOOR_STAND_TRIES: usize = 60;
+const FLOOR_STAND_TRIES: usize = 60;
 /// Placements tried on a heat or cold source to land near one of its elements (as
 /// OmniGibson's PLACE_NEAR_HEATING_ELEMENT).
-pub const ELEMENT_TRIES: usize = 10;
+const ELEMENT_TRIES: usize = 10;
 
 /// Checks a primitive's preconditions in the world as it is, without changing anything (the
 /// action mask). What only doing it can tell — a place to stand, a pose for the placement — is
@@ -250,7 +250,7 @@ fn set(
 
 /// How far along its range a door or lid must be to count as opened all the way by OPEN
 /// (a door pushed back a little by what the robot did since still counts).
-pub const WIDE_OPEN: f32 = 0.9;
+const WIDE_OPEN: f32 = 0.9;
 
 /// The object's jointed parts with limits and their ranges, of `kind` if given: the hinged
 /// doors and lids OPEN swings all the way, or every part of a room's door.

@@ -13,10 +13,11 @@
 //! left; Fetch, with one gripper, puts one down to take the other.
 
 use crate::execute::Watcher;
-use crate::execute::{Mode, RunError, run};
+use crate::execute::{Mode, RunError, run_with};
 use crate::manipulation::reaches;
 use crate::primitive::{Call, Failure, Primitive};
 use crate::symbolic::{container_where, wide_open, within};
+use crate::tuning::Tuning;
 use behavior_bddl::{GroundGoal, Literal, Predicate, PredicateOracle};
 use behavior_core::{Ability, FLOOR_SYNSET};
 use behavior_env::Env;
@@ -114,6 +115,8 @@ pub struct Solver<'a> {
     env: &'a mut Env,
     mode: Mode,
     limits: Limits,
+    /// The physical primitives' settings.
+    tuning: Tuning,
     watcher: Option<&'a mut dyn Watcher>,
     observer: &'a mut dyn FnMut(&Executed),
     log: Vec<Executed>,
@@ -148,6 +151,7 @@ impl<'a> Solver<'a> {
             env,
             mode,
             limits,
+            tuning: Tuning::default(),
             watcher,
             observer,
             log: Vec::new(),
@@ -158,6 +162,12 @@ impl<'a> Solver<'a> {
             fatal: None,
             stand_again: false,
         }
+    }
+
+    /// The solver with the physical primitives' settings `tuning` instead of the defaults.
+    pub fn with_tuning(mut self, tuning: Tuning) -> Solver<'a> {
+        self.tuning = tuning;
+        self
     }
 
     /// Plans and runs until the goal holds, the episode ends, the budget is spent or no
@@ -366,10 +376,11 @@ impl<'a> Solver<'a> {
             ));
         }
         let before = self.env.steps();
-        let outcome = match run(
+        let outcome = match run_with(
             self.env,
             call,
             self.mode,
+            &self.tuning,
             crate::execute::again(&mut self.watcher),
         ) {
             Ok(outcome) => outcome,
@@ -442,7 +453,8 @@ impl<'a> Solver<'a> {
             let robot = self.env.robot().ok_or("no robot")?;
             let near = !std::mem::take(&mut self.stand_again)
                 && within(self.world(), robot, x, self.mode.reach())
-                && (self.mode == Mode::Symbolic || reaches(self.env, x, placement.as_ref()));
+                && (self.mode == Mode::Symbolic
+                    || reaches(self.env, x, placement.as_ref(), &self.tuning));
             if near {
                 return Ok(());
             }

@@ -10,7 +10,8 @@ use behavior_env::Env;
 use behavior_env::record::{read, replay_with};
 use behavior_motion::{HandConfig, HandSpace, Space};
 use behavior_planning::{
-    Call, Failure, Mode, Primitive, RecordedCall, grasp, hand_body, hand_grasp, hand_place, run,
+    Call, Failure, Mode, Primitive, RecordedCall, Tuning, grasp, hand_body, hand_grasp, hand_place,
+    run,
 };
 use behavior_robots::RobotKind;
 use behavior_sim::{ObjectId, Relation};
@@ -72,9 +73,14 @@ fn the_hand_takes_a_book_and_puts_it_back_without_touching_anything_on_the_way()
     let before = env.world().unwrap().clone();
     let robot = env.robot().expect("an episode's robot");
     let body = hand_body(&before, robot.embodiment(), 1).expect("posed hands");
-    let path = hand_grasp(&mut env, &call(Primitive::Grasp, book), None)
-        .unwrap()
-        .unwrap();
+    let path = hand_grasp(
+        &mut env,
+        &call(Primitive::Grasp, book),
+        &Tuning::default(),
+        None,
+    )
+    .unwrap()
+    .unwrap();
     assert!(holds(&env, book), "the right hand holds the book");
     assert!(path.planned.len() > 1 && !path.executed.is_empty());
     // The approach as executed, every pose and the moves between them checked at 2 mm in the
@@ -94,6 +100,7 @@ fn the_hand_takes_a_book_and_puts_it_back_without_touching_anything_on_the_way()
         &mut env,
         &call(Primitive::PlaceOnTop, under),
         Relation::OnTop,
+        &Tuning::default(),
         None,
     )
     .unwrap();
@@ -117,13 +124,26 @@ fn refused_physical_primitives_say_why_and_move_nothing() {
         &mut env,
         &call(Primitive::PlaceOnTop, shelf),
         Relation::OnTop,
+        &Tuning::default(),
         None,
     );
     assert!(matches!(empty.unwrap(), Err(Failure::HandEmpty)));
-    let fixed = hand_grasp(&mut env, &call(Primitive::Grasp, shelf), None).unwrap();
+    let fixed = hand_grasp(
+        &mut env,
+        &call(Primitive::Grasp, shelf),
+        &Tuning::default(),
+        None,
+    )
+    .unwrap();
     assert!(matches!(fixed, Err(Failure::NotGraspable(_))), "{fixed:?}");
     // From where the episode starts the book is out of the primitives' reach.
-    let far = hand_grasp(&mut env, &call(Primitive::Grasp, book), None).unwrap();
+    let far = hand_grasp(
+        &mut env,
+        &call(Primitive::Grasp, book),
+        &Tuning::default(),
+        None,
+    )
+    .unwrap();
     assert!(
         matches!(far, Err(Failure::Unreachable | Failure::NoHandPose)),
         "{far:?}"
@@ -136,7 +156,13 @@ fn refused_physical_primitives_say_why_and_move_nothing() {
     let mut reduced = Env::new(config);
     reduced.reset(0).unwrap();
     let book = object(&reduced, "book.n.02_1");
-    let refused = hand_grasp(&mut reduced, &call(Primitive::Grasp, book), None).unwrap();
+    let refused = hand_grasp(
+        &mut reduced,
+        &call(Primitive::Grasp, book),
+        &Tuning::default(),
+        None,
+    )
+    .unwrap();
     assert!(
         matches!(refused, Err(Failure::Unavailable(_))),
         "{refused:?}"
@@ -150,7 +176,7 @@ fn refused_physical_primitives_say_why_and_move_nothing() {
         hand: 0,
         ..call(Primitive::Grasp, book)
     };
-    let refused = hand_grasp(&mut fetch, &gripper, None).unwrap();
+    let refused = hand_grasp(&mut fetch, &gripper, &Tuning::default(), None).unwrap();
     assert!(
         matches!(refused, Err(Failure::Unavailable(_))),
         "{refused:?}"
@@ -159,19 +185,19 @@ fn refused_physical_primitives_say_why_and_move_nothing() {
     // reach; no step taken.
     let before = fetch.world().unwrap().pose(book);
     let steps = fetch.steps();
-    let far = grasp(&mut fetch, &gripper, None).unwrap();
+    let far = grasp(&mut fetch, &gripper, &Tuning::default(), None).unwrap();
     assert!(matches!(far, Err(Failure::Unreachable)), "{far:?}");
     assert_eq!(fetch.steps(), steps);
     assert_eq!(fetch.world().unwrap().pose(book), before);
     let second = Call { hand: 1, ..gripper };
-    let one_hand = grasp(&mut fetch, &second, None).unwrap();
+    let one_hand = grasp(&mut fetch, &second, &Tuning::default(), None).unwrap();
     assert!(matches!(one_hand, Err(Failure::NoHand(1))), "{one_hand:?}");
     // Fetch's arm is driven joint by joint: through the end-effector controller it is refused.
     let mut config = common::config(ACTIVITY);
     config.robot = RobotKind::Fetch;
     let mut through_ik = Env::new(config);
     through_ik.reset(0).unwrap();
-    let refused = grasp(&mut through_ik, &gripper, None).unwrap();
+    let refused = grasp(&mut through_ik, &gripper, &Tuning::default(), None).unwrap();
     assert!(
         matches!(refused, Err(Failure::Unavailable(_))),
         "{refused:?}"

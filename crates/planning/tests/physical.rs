@@ -10,7 +10,7 @@ use behavior_env::Env;
 use behavior_env::record::{read, replay_with};
 use behavior_motion::{BaseConfig, BaseSpace, Space, Standing};
 use behavior_planning::{
-    Call, Mode, Primitive, RecordedCall, base_config, drive_to, reaches, within_reach,
+    Call, Mode, Primitive, RecordedCall, Tuning, base_config, drive_to, reaches, within_reach,
 };
 use behavior_robots::RobotKind;
 
@@ -39,13 +39,18 @@ fn both_robots_drive_to_an_object_without_touching_anything() {
             object: plank,
             hand: 0,
         };
-        let path = drive_to(&mut env, &call, None).unwrap().unwrap();
+        let path = drive_to(&mut env, &call, &Tuning::default(), None)
+            .unwrap()
+            .unwrap();
         assert!(!path.executed.is_empty(), "{robot:?} moved");
         let (world, bot) = (env.world().unwrap(), env.robot().unwrap());
         assert!(within_reach(world, bot, plank), "{robot:?} ends in reach");
         // Each robot stands where what it acts with reaches the plank: Fetch's arm has a free
         // configuration over it, a BehaviorRobot's hand comes to it open from above or across.
-        assert!(reaches(&env, plank, None), "{robot:?}'s hand reaches it");
+        assert!(
+            reaches(&env, plank, None, &Tuning::default()),
+            "{robot:?}'s hand reaches it"
+        );
         let after = base_config(&env);
         assert!(
             (after.x - before.x).hypot(after.y - before.y) > 0.1,
@@ -53,8 +58,7 @@ fn both_robots_drive_to_an_object_without_touching_anything() {
         );
         let end = path.planned.last().unwrap();
         assert!(
-            (after.x - end.x).hypot(after.y - end.y)
-                <= behavior_planning::POSITION_TOLERANCE + 1e-4
+            (after.x - end.x).hypot(after.y - end.y) <= Tuning::default().position_tolerance + 1e-4
         );
         // Every configuration driven through, and every move between two of them checked ten
         // times more finely than the planner's resolution, is free.
@@ -82,7 +86,9 @@ fn a_recorded_drive_replays_bit_for_bit() {
         object: object(&env, "plywood.n.01_2"),
         hand: 1,
     };
-    drive_to(&mut env, &call, None).unwrap().unwrap();
+    drive_to(&mut env, &call, &Tuning::default(), None)
+        .unwrap()
+        .unwrap();
     env.finish_recording().unwrap();
     let recording = read(&path).unwrap();
     // Driving is actions; the one edit opens the home's doors before the first drive.
@@ -147,7 +153,7 @@ fn a_robot_put_into_furniture_backs_out_and_stands_clear_by_it() {
             object: furniture,
             hand: 0,
         };
-        let path = drive_to(&mut env, &call, None).unwrap();
+        let path = drive_to(&mut env, &call, &Tuning::default(), None).unwrap();
         let path = path.unwrap_or_else(|f| panic!("{robot:?}: {f}"));
         let (world, bot) = (env.world().unwrap(), env.robot().unwrap());
         assert!(
@@ -211,7 +217,7 @@ fn a_drive_opens_the_homes_doors_but_not_one_the_activity_names() {
         object: object(&env, "hand_towel.n.01_1"),
         hand: 0,
     };
-    let _ = drive_to(&mut env, &call, None).unwrap();
+    let _ = drive_to(&mut env, &call, &Tuning::default(), None).unwrap();
     for ((id, was), (_, is)) in before.iter().zip(doors(&env)) {
         if *id == named {
             assert_eq!(is, *was, "the activity's door keeps its state");

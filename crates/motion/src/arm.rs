@@ -24,12 +24,12 @@ use std::sync::Arc;
 
 /// How far apart the checked configurations of an arm motion are, rad (m for a prismatic
 /// joint).
-pub const ARM_RESOLUTION: f32 = 0.05;
+pub(crate) const ARM_RESOLUTION: f32 = 0.05;
 
 /// How much larger what the gripper holds is checked against the world than it is, m: held
 /// by a joint of finite stiffness, it lags the arm (a tile planned past a wall grazed it and
 /// its grasp broke).
-pub const HELD_MARGIN: f32 = 0.02;
+pub(crate) const HELD_MARGIN: f32 = 0.02;
 
 /// `c` with each continuous joint of `arm` turned by whole turns to within half a turn of
 /// `from`'s: the same pose of every link, the shorter way there (an IK solution may lie a turn
@@ -142,7 +142,7 @@ impl ArmBody {
             .map(|(lo, hi)| (lo + hi) / 2.0)
     }
 
-    /// The arm's planning resolution, rad (m for a prismatic joint): [`ARM_RESOLUTION`], finer
+    /// The arm's planning resolution, rad (m for a prismatic joint): `ARM_RESOLUTION`, finer
     /// for what reaches farther than `HELD_REACH` from the gripper, so that its far end moves no
     /// more per step than that of something within it. At 0.05 rad a step, the far end of a
     /// sheet of plywood held by its edge moves about 5 cm between checked configurations: the
@@ -233,11 +233,11 @@ pub fn any_config(arm: &dyn Arm, start: &ArmConfig, rng: &mut SimRng) -> ArmConf
 
 /// How far what the gripper holds may reach from it before the arm plans and moves in finer
 /// steps ([`ArmBody::resolution`]), m.
-pub const HELD_REACH: f32 = 0.3;
+pub(crate) const HELD_REACH: f32 = 0.3;
 
 /// How much the reach from the base's axis counts beside the width across its heading in
 /// [`ArmBody::spread`].
-pub const REACH_WEIGHT: f32 = 0.2;
+pub(crate) const REACH_WEIGHT: f32 = 0.2;
 
 /// An arm moving among the world's objects, its base still.
 pub struct ArmSpace<'w> {

@@ -138,10 +138,10 @@ pub fn home_extent(world: &World) -> Option<([f32; 2], [f32; 2])> {
 
 /// How high above the floor the check for standing inside something starts, m: under the
 /// BehaviorRobot's body (its capsule ends 0.2 m up), over what lies flat on the floor.
-pub const KEEL: f32 = 0.15;
+pub(crate) const KEEL: f32 = 0.15;
 
 /// Whether a base at (x, y) stands within something whose walls its parts clear (an open
-/// container, a bathtub): straight down from [`KEEL`], the first thing met reaches above it.
+/// container, a bathtub): straight down from `KEEL`, the first thing met reaches above it.
 /// The BehaviorRobot's body floats 0.2 m up, over what is lower than that.
 pub fn stands_inside(world: &World, filter: &QueryFilter, x: f32, y: f32) -> bool {
     let from = Vector::new(x, y, KEEL);

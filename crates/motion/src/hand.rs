@@ -59,14 +59,14 @@ impl HandConfig {
 }
 
 /// The weights of the six coordinates in the planner's distance (the original's).
-pub const HAND_WEIGHTS: [f32; 6] = [1.0, 1.0, 1.0, 5.0, 5.0, 5.0];
+pub(crate) const HAND_WEIGHTS: [f32; 6] = [1.0, 1.0, 1.0, 5.0, 5.0, 5.0];
 /// How far apart the checked poses of a hand motion are, m or rad per coordinate.
 pub const HAND_RESOLUTION: f32 = 0.02;
 /// Room around the hand and its goal that samples may use, m.
-pub const HAND_MARGIN: f32 = 0.5;
+pub(crate) const HAND_MARGIN: f32 = 0.5;
 /// Room around the ends' angles that samples may use, rad. (The original samples any
 /// orientation; a hand that turns over on the way to a table is no better a plan.)
-pub const ANGLE_MARGIN: f32 = 0.5;
+pub(crate) const ANGLE_MARGIN: f32 = 0.5;
 
 /// A hand, and what it holds, moving among the world's objects.
 pub struct HandSpace<'w> {

@@ -2,11 +2,11 @@
 //! random samples miss a narrow way (a door between two rooms, a gap between a sofa and a
 //! table). The July 2021 version of the original sampled its base planner's points from the
 //! home's traversable map for the same reason; a lattice finds such a way where one exists at
-//! its resolution within [`LATTICE_EXPANSIONS`] nodes, and says at once when the goal's cells
+//! its resolution within [`PlanParams::expansions`] nodes, and says at once when the goal's cells
 //! are cut off from the start's.
 //!
-//! Nodes stand on a square grid of [`LATTICE_CELL`] anchored at the start, facing one of
-//! [`LATTICE_HEADINGS`] headings. From a node the base turns to the next heading either way, or
+//! Nodes stand on a square grid of `LATTICE_CELL` anchored at the start, facing one of
+//! `LATTICE_HEADINGS` headings. From a node the base turns to the next heading either way, or
 //! drives one cell ahead or back (the grid's neighbour along its heading, straight or diagonal):
 //! exactly the motions [`BaseSpace`]'s steps make, so the path found is checked by the same
 //! space, at the same resolution, as an RRT path, then shortcut like one.
@@ -22,14 +22,9 @@ use std::collections::HashMap;
 use std::f32::consts::PI;
 
 /// The grid's spacing on the floor, m: two of the space's 0.05 m steps.
-pub const LATTICE_CELL: f32 = 0.1;
+pub(crate) const LATTICE_CELL: f32 = 0.1;
 /// The headings a node may face: along the grid's axes and diagonals.
-pub const LATTICE_HEADINGS: u8 = 8;
-/// Nodes expanded before the search gives up, about 2 s on this machine. Traced in one Fetch
-/// run (setting_up_candles, seed 1): the searches that found a way expanded up to 6,700; those
-/// that found none where the goal's cells joined the start's went on to 35,000–51,000 (stands
-/// by a wall that the base can only turn into at their own heading).
-pub const LATTICE_EXPANSIONS: usize = 25_000;
+pub(crate) const LATTICE_HEADINGS: u8 = 8;
 /// How near the goal a node must stand to try the direct motion into it, m.
 const GOAL_RADIUS: f32 = 0.25;
 /// How many cells away from the start the first nodes may lie, either way along each axis.
@@ -53,6 +48,8 @@ struct Lattice<'s, 'w> {
     /// Whether each configuration met is free, by its position and heading to the millimetre
     /// and milliradian: a turn's steps are met again from both sides.
     free: RefCell<HashMap<[i32; 3], bool>>,
+    /// Nodes expanded before the search gives up.
+    budget: usize,
     /// The drive from each cell to the goal's ([`Lattice::drives_to_goal`]).
     to_goal: HashMap<(i32, i32), u32>,
     expanded: Cell<usize>,
@@ -94,7 +91,7 @@ impl Lattice<'_, '_> {
     fn successors(&self, node: Node) -> Vec<(Node, u32)> {
         let n = self.expanded.get() + 1;
         self.expanded.set(n);
-        if n > LATTICE_EXPANSIONS {
+        if n > self.budget {
             return Vec::new();
         }
         let mut next = Vec::new();
@@ -252,6 +249,7 @@ pub fn lattice_plan(
         start: *start,
         goal: *goal,
         free: RefCell::new(HashMap::new()),
+        budget: params.expansions,
         to_goal: HashMap::new(),
         expanded: Cell::new(0),
     };
@@ -264,7 +262,7 @@ pub fn lattice_plan(
     )
     .ok_or(PlanError::NoLatticePath {
         cell: LATTICE_CELL,
-        expansions: lattice.expanded.get().min(LATTICE_EXPANSIONS),
+        expansions: lattice.expanded.get().min(params.expansions),
     })?;
     let path = straightened(nodes.into_iter().map(|n| lattice.config(n)).collect());
     let path = smooth(space, path, params.smoothing, &mut seeded(params.seed));

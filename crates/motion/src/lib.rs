@@ -69,17 +69,10 @@ mod lattice;
 mod navigate;
 mod rrt;
 
-pub use arm::{
-    ARM_RESOLUTION, ArmBody, ArmSpace, HELD_MARGIN, HELD_REACH, REACH_WEIGHT, any_config,
-    closest_turn,
-};
-pub use base::{BaseConfig, BaseSpace, Footprint, KEEL, home_extent, stands_inside};
+pub use arm::{ArmBody, ArmSpace, any_config, closest_turn};
+pub use base::{BaseConfig, BaseSpace, Footprint, home_extent, stands_inside};
 pub use error::PlanError;
-pub use hand::{
-    ANGLE_MARGIN, HAND_MARGIN, HAND_RESOLUTION, HAND_WEIGHTS, HandBody, HandConfig, HandSpace,
-};
-pub use lattice::{LATTICE_CELL, LATTICE_EXPANSIONS, LATTICE_HEADINGS, lattice_plan};
-pub use navigate::{
-    STAND_CLEARANCE, STAND_DISTANCES, STAND_HEADINGS, Standing, floor_gap, inflated, shapes_in,
-};
+pub use hand::{HAND_RESOLUTION, HandBody, HandConfig, HandSpace};
+pub use lattice::lattice_plan;
+pub use navigate::{Standing, floor_gap, inflated, shapes_in};
 pub use rrt::{Path, PlanParams, Planned, Space, plan, smooth, steps_along, valid};

@@ -10,11 +10,11 @@ use rapier3d::math::{Pose, Vector};
 use std::f32::consts::PI;
 
 /// The distances from the object tried, nearest first, m.
-pub const STAND_DISTANCES: [f32; 6] = [0.6, 0.8, 1.0, 1.2, 1.8, 2.4];
+pub(crate) const STAND_DISTANCES: [f32; 6] = [0.6, 0.8, 1.0, 1.2, 1.8, 2.4];
 /// Random headings tried per distance.
-pub const STAND_HEADINGS: usize = 20;
+pub(crate) const STAND_HEADINGS: usize = 20;
 /// How clear of everything the robot must stand, m.
-pub const STAND_CLEARANCE: f32 = 0.01;
+pub(crate) const STAND_CLEARANCE: f32 = 0.01;
 
 /// The robot as it stands now: its base's configuration on the floor, and the shapes of its
 /// parts (base, hands or arm) and of what it holds, in the base's floor frame, which move with
@@ -83,7 +83,7 @@ impl Standing {
         out
     }
 
-    /// Whether every part would stand at least [`STAND_CLEARANCE`] from everything at `c`,
+    /// Whether every part would stand at least `STAND_CLEARANCE` from everything at `c`,
     /// and not within something whose walls it clears.
     pub fn clear_at(&self, world: &World, c: &BaseConfig) -> bool {
         let base = c.pose();
@@ -134,8 +134,8 @@ impl Standing {
             .is_some_and(|hit| hit.body.is_some_and(|b| b.object == object))
     }
 
-    /// A place to stand facing `object`: at each of [`STAND_DISTANCES`] from its centre in turn,
-    /// [`STAND_HEADINGS`] random headings, the first that is clear and sees it.
+    /// A place to stand facing `object`: at each of `STAND_DISTANCES` from its centre in turn,
+    /// `STAND_HEADINGS` random headings, the first that is clear and sees it.
     pub fn near(&self, world: &World, object: ObjectId, rng: &mut SimRng) -> Option<BaseConfig> {
         self.search(world, object, rng, |c| self.sees(world, c, object))
     }
@@ -156,7 +156,7 @@ impl Standing {
     }
 
     /// As [`Standing::near`], but only where the object's box lies within `reach` across the
-    /// floor: where a hand can act on what it sees (the farther rings of [`STAND_DISTANCES`]
+    /// floor: where a hand can act on what it sees (the farther rings of `STAND_DISTANCES`
     /// see a plate on a counter but leave it out of reach). Both take only the places that
     /// `accept` (an arm's reach from there, say; checked last, being the dearest).
     pub fn near_within(

@@ -39,6 +39,12 @@ pub struct PlanParams {
     pub smoothing: u32,
     /// Seeds the samples: the same seed, world and endpoints give the same path.
     pub seed: u64,
+    /// Nodes [`crate::lattice_plan`]'s search expands before it gives up (ours: the original
+    /// has no lattice). 25,000 is about 2 s on this machine; traced in one Fetch run
+    /// (setting_up_candles, seed 1), the searches that found a way expanded up to 6,700, those
+    /// that found none where the goal's cells joined the start's 35,000–51,000 (stands by a
+    /// wall that the base can only turn into at their own heading).
+    pub expansions: usize,
 }
 
 impl Default for PlanParams {
@@ -48,6 +54,7 @@ impl Default for PlanParams {
             restarts: 2,
             smoothing: 20,
             seed: 0,
+            expansions: 25_000,
         }
     }
 }

@@ -18,8 +18,8 @@ use behavior_core::{DOOR_SYNSET, Predicate};
 use behavior_env::Env;
 use behavior_motion::PlanError;
 use behavior_motion::Standing;
+use behavior_motion::lattice_plan;
 use behavior_motion::{BaseConfig, BaseSpace, home_extent};
-use behavior_motion::{LATTICE_EXPANSIONS, lattice_plan};
 use behavior_motion::{PlanParams, Space, plan, steps_along};
 use behavior_robots::{BaseDrive, BaseMove, Robot};
 use behavior_sim::{BodyRef, ObjectId, World};
@@ -256,7 +256,7 @@ fn plan_base(env: &Env, call: &Call, tuning: &Tuning) -> Result<Vec<BaseConfig>,
                 dense.extend(steps_along(&space, &path));
                 return Ok(dense);
             }
-            Err(e) if ends_navigation(&e) => return Err(e.into()),
+            Err(e) if ends_navigation(&e, &params) => return Err(e.into()),
             Err(other) => last = other.into(),
         }
     }
@@ -266,10 +266,10 @@ fn plan_base(env: &Env, call: &Call, tuning: &Tuning) -> Result<Vec<BaseConfig>,
 /// Whether a base plan's failure ends NAVIGATE_TO rather than sending it to the next stand: a
 /// start in collision (no stand helps), or a lattice search that ran out of nodes (seconds
 /// spent; where one stand by a wall cannot be turned into, the next one by it is no better).
-fn ends_navigation(e: &PlanError) -> bool {
+fn ends_navigation(e: &PlanError, params: &PlanParams) -> bool {
     match e {
         PlanError::StartInCollision => true,
-        PlanError::NoLatticePath { expansions, .. } => *expansions >= LATTICE_EXPANSIONS,
+        PlanError::NoLatticePath { expansions, .. } => *expansions >= params.expansions,
         _ => false,
     }
 }

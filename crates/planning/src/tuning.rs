@@ -57,7 +57,8 @@ pub struct Tuning {
     /// 447 stands `bench plan` tried where 500 iterations found more (README, "Base plans and
     /// drives"); a robot carrying a board through a door, or a hand reaching round a shelf's
     /// edge, needs them, and a driven path's every wiggle costs steps (20 shortcuts left 380
-    /// rad of turning in a 9 m drive).
+    /// rad of turning in a 9 m drive). The lattice's search keeps its 25,000 nodes
+    /// ([`PlanParams::expansions`]); one that runs out of them ends NAVIGATE_TO.
     pub budget: PlanParams,
     /// Places to stand tried in turn for one NAVIGATE_TO, each with a base plan there.
     pub stand_plans: u64,
@@ -89,6 +90,7 @@ impl Default for Tuning {
                 restarts: 2,
                 smoothing: 200,
                 seed: 0,
+                expansions: 25_000,
             },
             stand_plans: 3,
         }

@@ -32,14 +32,14 @@ use std::sync::{Arc, LazyLock};
 /// How fast the torso and arm joints close on the IK solution, 1/s (iGibson's `kv`): each
 /// moves at `ARM_GAIN · (q_ik − q)`, within its maximum velocity. A full Δ of 5 cm per step so
 /// moves the end effector at about 0.1 m/s, as the original's.
-pub const ARM_GAIN: f32 = 2.0;
-/// The end effector's targets are kept within this distance of [`WORKSPACE_CENTRE`] (x, y in
+const ARM_GAIN: f32 = 2.0;
+/// The end effector's targets are kept within this distance of `WORKSPACE_CENTRE` (x, y in
 /// the base frame), m (iGibson's radius limit).
-pub const WORKSPACE_RADIUS: f32 = 0.5;
+const WORKSPACE_RADIUS: f32 = 0.5;
 /// The centre of the end effector's workspace disk, base frame (x, y), m.
-pub const WORKSPACE_CENTRE: [f32; 2] = [0.25, 0.0];
+const WORKSPACE_CENTRE: [f32; 2] = [0.25, 0.0];
 /// The end effector's targets are kept between these heights above the base's origin, m.
-pub const WORKSPACE_HEIGHT: [f32; 2] = [0.2, 1.5];
+const WORKSPACE_HEIGHT: [f32; 2] = [0.2, 1.5];
 /// Finger drive: at most the URDF's 60 N, stiff enough to close on a 0.2 kg apple at full
 /// force within 3 cm of travel, damped near critically for the finger's 0.08 kg.
 const FINGER_STIFFNESS: f32 = 2000.0;
@@ -112,7 +112,7 @@ impl FetchParts {
 ///   sleeps when still.
 /// - The torso, head and arm joints move toward their targets at the URDF's maximum velocities:
 ///   the head at the commanded rates, the torso and arm toward the IK solution at
-///   [`ARM_GAIN`]` · (q_ik − q)`, as the original's velocity controller.
+///   `ARM_GAIN`` · (q_ik − q)`, as the original's velocity controller.
 /// - No part is ever sent into a fixed body (walls, furniture, the floor): a step whose base
 ///   motion or joint motion would make a part newly overlap one is refused — first the base's
 ///   motion, then the arm's, then both (see `motion.rs`). Movable things are pushed, with

@@ -143,9 +143,7 @@ pub use chain::{Chain, ChainIk, ChainJoint, urdf_origin};
 pub use embodiment::{
     BaseDrive, BaseMove, Embodiment, EmbodimentSpec, HandMotion, LidarMount, Scan, TrackedPart,
 };
-pub use fetch::{
-    ARM_GAIN, Fetch, FetchParts, WORKSPACE_CENTRE, WORKSPACE_HEIGHT, WORKSPACE_RADIUS,
-};
+pub use fetch::{Fetch, FetchParts};
 pub use fetch_action::{
     EEF_STEP, EEF_TURN, FETCH_ACTION_DIM, FETCH_JOINT_ACTION_DIM, FetchAction, FetchCommand,
     FetchJointAction, HEAD_SPEED, MAX_ANGULAR_SPEED, MAX_LINEAR_SPEED,

@@ -1,12 +1,21 @@
-//! The physical primitives' settings: how far above things hands approach and let go, how long
-//! they close and wait, how hard the motion planners try, when a driven base counts as there.
-//! [`Tuning::default`] is what every result of this project was measured with (most values
-//! are the original's, each field says which); a study of the primitives themselves changes
-//! them through [`crate::run_with`] or [`crate::Solver::with_tuning`].
+//! The physical primitives' settings ([`Tuning`]).
 
 use behavior_motion::PlanParams;
 
-/// The physical primitives' settings (see the module's doc).
+/// The physical primitives' settings: how far above things hands approach and let go, how long
+/// they close and wait, how hard the motion planners try, when a driven base counts as there.
+/// [`Tuning::default`] is what every result of this project was measured with (most values are
+/// the original's, each field says which); a study of the primitives themselves changes them
+/// through [`crate::run_with`] or [`crate::Solver::with_tuning`]. Symbolic primitives do not
+/// read it.
+///
+/// ```
+/// use behavior_planning::Tuning;
+///
+/// // Hands that close for longer and let go from lower down.
+/// let tuning = Tuning { close_steps: 80, place_height: 0.05, ..Tuning::default() };
+/// assert_eq!(tuning.release_steps, Tuning::default().release_steps);
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Tuning {
     /// The random offset of a grasp's approach across the object's top, m (the original's

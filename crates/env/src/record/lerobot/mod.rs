@@ -110,21 +110,17 @@ pub enum ExportError {
     NoImage(PathBuf),
     /// A recording is not of the dataset's robot or shapes.
     #[error(
-        "{}: a {robot} robot's episode with {shapes:?}; the dataset's first episode is a \
-         {first_robot} robot's with {first_shapes:?} (one dataset, one robot and one set of shapes)",
+        "{}: {found}; the dataset's first episode is {expected} (one dataset, one robot and one \
+         set of shapes)",
         file.display()
     )]
     Mixed {
         /// The recording.
         file: PathBuf,
-        /// Its robot.
-        robot: String,
-        /// Its shapes.
-        shapes: Shapes,
-        /// The dataset's robot.
-        first_robot: String,
-        /// The dataset's shapes.
-        first_shapes: Shapes,
+        /// Its robot and shapes, in words.
+        found: String,
+        /// The dataset's robot and shapes, in words.
+        expected: String,
     },
     /// An episode's columns do not agree in length or size (a fault of this module).
     #[error("an episode's frames do not line up: {0}")]
@@ -169,19 +165,26 @@ pub fn export<E: WorldEdit>(
         return Err(ExportError::NotEmpty(dataset.to_path_buf()));
     }
     let partial = dataset.with_extension(format!("partial-{}", std::process::id()));
-    let mut summary = match write::<E>(knowledge, recordings, &partial, options) {
-        Ok(summary) => summary,
+    let written = write::<E>(knowledge, recordings, &partial, options)
+        .and_then(|summary| move_into(&partial, dataset).map(|()| summary));
+    match written {
+        Ok(mut summary) => {
+            summary.dataset = dataset.to_path_buf();
+            Ok(summary)
+        }
         Err(e) => {
             let _ = std::fs::remove_dir_all(&partial);
-            return Err(e);
+            Err(e)
         }
-    };
+    }
+}
+
+/// The whole dataset at `partial` moved to `dataset` (an empty folder there replaced).
+fn move_into(partial: &Path, dataset: &Path) -> Result<(), ExportError> {
     if dataset.exists() {
         std::fs::remove_dir(dataset).map_err(write_error(dataset))?;
     }
-    std::fs::rename(&partial, dataset).map_err(write_error(dataset))?;
-    summary.dataset = dataset.to_path_buf();
-    Ok(summary)
+    std::fs::rename(partial, dataset).map_err(write_error(dataset))
 }
 
 /// Writes every recording into `dir`.
@@ -219,12 +222,12 @@ fn write<E: WorldEdit>(
             None => dataset.insert(Dataset::create(dir, robot, shapes)?),
         };
         if dataset.shapes() != shapes || dataset.robot() != robot {
+            let described =
+                |robot: &str, shapes: Shapes| format!("a {robot} robot's with {shapes:?}");
             return Err(ExportError::Mixed {
                 file: file.clone(),
-                robot: robot.clone(),
-                shapes,
-                first_robot: dataset.robot().to_string(),
-                first_shapes: dataset.shapes(),
+                found: described(robot, shapes),
+                expected: described(dataset.robot(), dataset.shapes()),
             });
         }
         dataset.add(&episode)?;

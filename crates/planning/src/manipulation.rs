@@ -537,8 +537,10 @@ pub(crate) fn rng_seed(rng: &mut SimRng) -> u64 {
 mod tests {
     use super::*;
 
-    /// [`Tuning::grasp_inset`]'s default.
-    const GRASP_INSET: f32 = 0.05;
+    /// The grasp inset the primitives use by default.
+    fn grasp_inset() -> f32 {
+        Tuning::default().grasp_inset
+    }
     use behavior_sim::{ObjectSpec, Part, Primitive};
     use rapier3d::glamx::EulerRot;
 
@@ -561,9 +563,9 @@ mod tests {
             // From the corner of the box around the board, where a turned board leaves floor.
             let b = world.aabb(id);
             let shoulder = Vector::new(b.mins.x - 0.3, b.mins.y - 0.3, 1.0);
-            let at = grasp_point(&world, id, shoulder, GRASP_INSET);
+            let at = grasp_point(&world, id, shoulder, grasp_inset());
             let local = world.pose(id).inverse_transform_point(at);
-            let inside = |x: f32, half: f32| x.abs() <= half - GRASP_INSET + 1e-4;
+            let inside = |x: f32, half: f32| x.abs() <= half - grasp_inset() + 1e-4;
             assert!(
                 inside(local.x, 0.5) && inside(local.y, 0.4),
                 "yaw {yaw}: {local:?} off the board"
@@ -571,7 +573,7 @@ mod tests {
             assert!((at.z - b.maxs.z).abs() < 1e-5, "on top: {at:?}");
             // The near end: no point of the board (inset) lies nearer the shoulder.
             let corners = [(-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0)].map(|(sx, sy)| {
-                let c = Vector::new(sx * (0.5 - GRASP_INSET), sy * (0.4 - GRASP_INSET), 0.0);
+                let c = Vector::new(sx * (0.5 - grasp_inset()), sy * (0.4 - grasp_inset()), 0.0);
                 world.pose(id).transform_point(c)
             });
             let d = |p: Vector| (p - shoulder).truncate().length();
@@ -585,12 +587,12 @@ mod tests {
         let mut world = World::default();
         // Half as wide as the inset one way, a rounding error short of it the other.
         let eraser = Part::new(Primitive::Box {
-            half_extents: Vector::new(GRASP_INSET * (1.0 - 1e-7), 0.5 * GRASP_INSET, 0.01),
+            half_extents: Vector::new(grasp_inset() * (1.0 - 1e-7), 0.5 * grasp_inset(), 0.01),
         });
         let mut spec = ObjectSpec::new("eraser_1", "eraser.n.01", vec![eraser]);
         spec.pose = Pose::from_parts(Vector::new(1.0, 1.0, 0.5), Rotation::from_rotation_z(0.3));
         let id = world.add(spec).unwrap();
-        let at = grasp_point(&world, id, Vector::new(0.0, 3.0, 1.0), GRASP_INSET);
+        let at = grasp_point(&world, id, Vector::new(0.0, 3.0, 1.0), grasp_inset());
         let local = world.pose(id).inverse_transform_point(at);
         assert!(local.x.abs() < 1e-4 && local.y.abs() < 1e-4, "{local:?}");
     }

@@ -80,7 +80,7 @@ impl Primitives {
         let before = env.score().map_or(0.0, |s| s.q);
         let object = env
             .world()
-            .map(|w| w.object(call.object).name.clone())
+            .map(|w| w.bodies().object(call.object).name.clone())
             .unwrap_or_default();
         let outcome = run(env, call, self.mode, None)?;
         Ok(Done {

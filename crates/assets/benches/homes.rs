@@ -28,6 +28,7 @@ fn benches(c: &mut Criterion) {
                     .build(&library)
                     .unwrap()
                     .world
+                    .bodies()
                     .objects()
                     .len(),
             )
@@ -81,7 +82,14 @@ fn cluttered(c: &mut Criterion, library: &Library, scene: &Scene) {
         });
         let bytes = built.world.to_bytes();
         group.bench_function(format!("{label}_from_bytes"), |b| {
-            b.iter(|| black_box(behavior_sim::World::from_bytes(&bytes).unwrap().steps()))
+            b.iter(|| {
+                black_box(
+                    behavior_sim::World::from_bytes(&bytes)
+                        .unwrap()
+                        .bodies()
+                        .steps(),
+                )
+            })
         });
     }
     group.finish();

@@ -352,11 +352,11 @@ impl Scene {
         // against them or in them is not woken by them, and an untouched home costs nothing.
         spec.asleep = true;
         let id = world.add(spec)?;
-        let links = world.object(id).links.len();
+        let links = world.bodies().object(id).links.len();
         for (link, &q) in plan.joints.iter().enumerate().take(links) {
             // Links are built closed (at 0); moving one there anyway would only wake it.
             if q != 0.0 {
-                world.set_joint_position(id, link, q)?;
+                world.joints_mut().set_position(id, link, q)?;
             }
         }
         Ok(id)

@@ -67,31 +67,43 @@ fn clutter_rests_asleep_and_still_on_in_or_beside_furniture_once_built() {
     assert_eq!(built.clutter.len(), full.clutter.len());
     assert!(built.clutter.iter().all(|&id| built.is_clutter(id)));
     assert!(!built.objects.iter().any(|&id| built.is_clutter(id)));
-    let core = built.world.core();
+    let world = &built.world;
     let fixed: Vec<_> = built.objects.iter().chain(&built.floors).copied().collect();
     for (plan, &id) in full.clutter.iter().zip(&built.clutter) {
-        assert!(core.is_sleeping(id), "{} starts asleep", plan.name);
+        assert!(
+            world.bodies().is_sleeping(id),
+            "{} starts asleep",
+            plan.name
+        );
         let held = fixed
             .iter()
-            .any(|&f| core.ontop(id, f) || core.inside(id, f));
-        let on_a_floor = built.floors.iter().any(|&f| core.onfloor(id, f));
+            .any(|&f| world.relations().ontop(id, f) || world.relations().inside(id, f));
+        let on_a_floor = built
+            .floors
+            .iter()
+            .any(|&f| world.relations().onfloor(id, f));
         assert!(
             held || on_a_floor,
             "{} rests on, in or beside furniture",
             plan.name
         );
     }
-    let before = core.motion_bits();
+    let before = world.bodies().motion_bits();
     for _ in 0..30 {
         built.world.step();
     }
-    let core = built.world.core();
+    let world = &built.world;
     assert_eq!(
-        core.motion_bits(),
+        world.bodies().motion_bits(),
         before,
         "nothing moved a bit in 30 steps"
     );
-    assert!(built.clutter.iter().all(|&id| core.is_sleeping(id)));
+    assert!(
+        built
+            .clutter
+            .iter()
+            .all(|&id| world.bodies().is_sleeping(id))
+    );
 }
 
 #[test]
@@ -104,7 +116,10 @@ fn a_scene_file_with_clutter_round_trips_and_rebuilds_exactly() {
     assert_eq!(back, *full);
     assert_eq!(back.to_json(), text);
     let (a, b) = (full.build(&library).unwrap(), back.build(&library).unwrap());
-    assert_eq!(a.world.core().motion_bits(), b.world.core().motion_bits());
+    assert_eq!(
+        a.world.bodies().motion_bits(),
+        b.world.bodies().motion_bits()
+    );
 }
 
 #[test]

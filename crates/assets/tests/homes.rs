@@ -28,7 +28,7 @@ fn named_homes_generate_build_and_round_trip_exactly() {
         assert_eq!(built.objects.len(), scene.objects.len());
         // Every object stands in the room it is filed under.
         for (plan, &id) in scene.objects.iter().zip(&built.objects) {
-            let c = built.world.core().aabb(id).center();
+            let c = built.world.bodies().aabb(id).center();
             assert_eq!(
                 scene.room_at(c.x, c.y),
                 Some(plan.room),
@@ -64,7 +64,7 @@ fn furniture_does_not_overlap_and_settles_in_place() {
     let boxes: Vec<_> = built
         .objects
         .iter()
-        .map(|&id| built.world.core().aabb(id))
+        .map(|&id| built.world.bodies().aabb(id))
         .collect();
     for i in 0..boxes.len() {
         for j in i + 1..boxes.len() {
@@ -83,11 +83,11 @@ fn furniture_does_not_overlap_and_settles_in_place() {
     let before: Vec<_> = built
         .objects
         .iter()
-        .map(|&id| built.world.pose(id))
+        .map(|&id| built.world.bodies().pose(id))
         .collect();
     assert!(built.world.settle(300), "the home comes to rest");
     for (k, &id) in built.objects.iter().enumerate() {
-        let moved = (built.world.pose(id).translation - before[k].translation).length();
+        let moved = (built.world.bodies().pose(id).translation - before[k].translation).length();
         assert!(
             moved < 0.05,
             "{} moved {moved} m while settling",
@@ -192,7 +192,7 @@ fn a_dining_room_opens_onto_the_living_room_with_a_table_across() {
         let built = scene.build(&library).unwrap();
         let across = usize::from(!vertical);
         let across_opening = scene.objects.iter().zip(&built.objects).any(|(o, &id)| {
-            let b = built.world.core().aabb(id);
+            let b = built.world.bodies().aabb(id);
             let (lo, hi) = (b.mins.to_array(), b.maxs.to_array());
             let over = (hi[across].min(d.max[across]) - lo[across].max(d.min[across])).max(0.0);
             o.room == living && o.synset == "table.n.02" && over >= 0.3
@@ -243,9 +243,9 @@ fn a_cluttered_home_saved_to_bytes_mid_motion_continues_bit_identically() {
     built.world.step();
     // Lift a piece of clutter: it falls back onto its support, into the others' contacts.
     let dropped = *built.clutter.first().expect("the home has clutter");
-    let mut pose = built.world.pose(dropped);
+    let mut pose = built.world.bodies().pose(dropped);
     pose.translation.z += 0.2;
-    built.world.set_pose(dropped, pose).unwrap();
+    built.world.bodies_mut().set_pose(dropped, pose).unwrap();
     for _ in 0..5 {
         built.world.step();
     }
@@ -258,14 +258,21 @@ fn a_cluttered_home_saved_to_bytes_mid_motion_continues_bit_identically() {
     let read = start.elapsed();
     eprintln!(
         "{name}: {} objects, {} bytes; to_bytes {saved:?}, from_bytes {read:?}",
-        original.objects().len(),
+        original.bodies().objects().len(),
         bytes.len()
     );
     for _ in 0..60 {
         original.step();
         loaded.step();
     }
-    assert_eq!(loaded.core().motion_bits(), original.core().motion_bits());
+    assert_eq!(
+        loaded.bodies().motion_bits(),
+        original.bodies().motion_bits()
+    );
     assert_eq!(loaded.to_bytes(), original.to_bytes());
-    assert_ne!(original.pose(dropped), pose, "the dropped object fell");
+    assert_ne!(
+        original.bodies().pose(dropped),
+        pose,
+        "the dropped object fell"
+    );
 }

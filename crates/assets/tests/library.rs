@@ -100,7 +100,7 @@ fn every_archetype_builds_in_every_variant_and_openables_open() {
             let id = world
                 .add(spec)
                 .unwrap_or_else(|e| panic!("{}: {e}", a.synset));
-            if openable && !world.object(id).links.is_empty() {
+            if openable && !world.bodies().object(id).links.is_empty() {
                 world.set_state(id, Predicate::Open, true).unwrap();
                 assert!(world.state(id, Predicate::Open), "{}", a.synset);
                 world.set_state(id, Predicate::Open, false).unwrap();
@@ -189,7 +189,7 @@ fn containers_used_with_inside_hold_an_object_inside() {
         let mut spec = library.spawn(synset, "container", &mut rng).unwrap();
         spec.body = behavior_sim::BodyKind::Fixed;
         let container = world.add(spec).unwrap();
-        let size = world.core().aabb(container).maxs - world.core().aabb(container).mins;
+        let size = world.bodies().aabb(container).maxs - world.bodies().aabb(container).mins;
         let radius = (size.x.min(size.y).min(size.z) / 8.0).clamp(0.005, 0.04);
         let ball = world
             .add(
@@ -206,7 +206,7 @@ fn containers_used_with_inside_hold_an_object_inside() {
             .unwrap_or_else(|e| panic!("{synset}: {e}"));
         world.settle(200);
         assert!(
-            world.core().inside(ball, container),
+            world.relations().inside(ball, container),
             "{synset}: the ball fell out"
         );
     }
@@ -270,10 +270,10 @@ fn sliceables_split_into_their_archetype_halves() {
             assert!(spec.halves.is_some(), "{}", a.synset);
             let mut world = World::default();
             let whole = world.add(spec).unwrap();
-            let mass = world.core().mass(whole);
+            let mass = world.bodies().mass(whole);
             world.set_state(whole, Predicate::Sliced, true).unwrap();
-            let [h1, h2] = world.halves(whole).unwrap();
-            let halves = world.core().mass(h1) + world.core().mass(h2);
+            let [h1, h2] = world.bodies().object(whole).replaced_by.unwrap();
+            let halves = world.bodies().mass(h1) + world.bodies().mass(h2);
             assert!(
                 (halves - mass).abs() <= 0.1 * mass,
                 "{} v{variant}: {mass} kg into {halves} kg",
@@ -281,7 +281,7 @@ fn sliceables_split_into_their_archetype_halves() {
             );
             // Each half lies on its own side of the cut.
             assert!(
-                world.core().aabb(h1).center().x < world.core().aabb(h2).center().x,
+                world.bodies().aabb(h1).center().x < world.bodies().aabb(h2).center().x,
                 "{}",
                 a.synset
             );
@@ -321,8 +321,9 @@ fn resting_orientations_are_stable_on_a_floor() {
             spec.pose = Pose::from_parts(Vector::new(0.0, 0.0, 1.5), rotation);
             let id = world.add(spec).unwrap();
             // Lower it onto the floor, 5 mm up.
-            let bottom = world.core().aabb(id).mins.z;
+            let bottom = world.bodies().aabb(id).mins.z;
             world
+                .bodies_mut()
                 .set_pose(
                     id,
                     Pose::from_parts(Vector::new(0.0, 0.0, 1.5 - bottom + 0.005), rotation),
@@ -331,7 +332,7 @@ fn resting_orientations_are_stable_on_a_floor() {
             world.settle(300);
             // The world's up, seen in the object's frame, must still point up.
             let up_in_object = rotation.inverse() * Vector::Z;
-            let now = world.pose(id).rotation * up_in_object;
+            let now = world.bodies().pose(id).rotation * up_in_object;
             assert!(
                 now.z > 0.98,
                 "{} does not rest in orientation {rotation:?}: up is now {now:?}",
@@ -390,7 +391,7 @@ fn slicers_weigh_what_a_kitchen_knife_weighs() {
                 let spec =
                     library.instance_of(a, a.synset, "knife", Vector::from_array(size), variant);
                 let id = world.add(spec).unwrap();
-                let mass = world.core().mass(id);
+                let mass = world.bodies().mass(id);
                 assert!(
                     (0.05..=0.3).contains(&mass),
                     "{} of size {size:?}, variant {variant}: {mass} kg",

@@ -177,12 +177,12 @@ fn a_urdf_with_obj_and_stl_meshes_becomes_an_articulated_object() {
         world.step();
     }
     assert!(!world.state(id, Predicate::Open));
-    world.set_joint_position(id, 1, 0.25).unwrap();
-    assert!((world.core().joint_position(id, 1) - 0.25).abs() < 1e-4);
+    world.joints_mut().set_position(id, 1, 0.25).unwrap();
+    assert!((world.joints().position(id, 1) - 0.25).abs() < 1e-4);
     assert!(world.state(id, Predicate::Open));
     world.set_state(id, Predicate::Open, false).unwrap();
     assert!(!world.state(id, Predicate::Open));
-    let aabb = world.core().aabb(id);
+    let aabb = world.bodies().aabb(id);
     assert!(aabb.maxs.z > 0.6 && aabb.mins.x < -0.24, "{aabb:?}");
 }
 
@@ -270,7 +270,7 @@ fn visual_meshes_are_drawn_while_collision_keeps_its_own_geometry() {
 
     let mut world = World::default();
     let id = world.add(spec.fixed()).unwrap();
-    let parts = world.core().visual_parts(id);
+    let parts = world.visuals().parts(id);
     assert_eq!(parts.len(), 2, "one mesh each for the body and the door");
     let VisualShape::Mesh(body) = parts[0].shape else {
         panic!("the body is drawn from its mesh: {:?}", parts[0].shape);
@@ -288,8 +288,8 @@ fn visual_meshes_are_drawn_while_collision_keeps_its_own_geometry() {
 
     // The door's mesh swings with its link.
     let closed = parts[1].pose;
-    world.set_joint_position(id, 0, 1.2).unwrap();
-    let open = world.core().visual_parts(id)[1].pose;
+    world.joints_mut().set_position(id, 0, 1.2).unwrap();
+    let open = world.visuals().parts(id)[1].pose;
     assert!(open.rotation.angle_between(closed.rotation) > 1.0);
 
     // A block dropped on the cupboard rests on the 0.6 m collision box, not on the 0.8 m look.
@@ -305,7 +305,7 @@ fn visual_meshes_are_drawn_while_collision_keeps_its_own_geometry() {
     for _ in 0..180 {
         world.step();
     }
-    let z = world.pose(block).translation.z;
+    let z = world.bodies().pose(block).translation.z;
     assert!((z - 0.65).abs() < 0.01, "the block rests at z = {z}");
 }
 

@@ -172,7 +172,8 @@ pub fn run(args: BenchEnvArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
             memory_images = Some(memory_images.map_or(grown, |m| m.max(grown)));
         }
         let objects = sampler.world().map_or(0, |w| {
-            w.objects()
+            w.bodies()
+                .objects()
                 .filter(|(_, o)| o.category != WALL_SYNSET)
                 .count()
         });

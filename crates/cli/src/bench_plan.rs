@@ -235,7 +235,7 @@ fn attempts(env: &Env, params: &PlanParams, home_bounds: bool) -> Result<Vec<Att
     let mut out = Vec::new();
     for (k, id) in bindings.iter().enumerate() {
         let Some(id) = *id else { continue };
-        let object = world.object(id);
+        let object = world.bodies().object(id);
         if id == robot.base() || object.category == FLOOR_SYNSET {
             continue;
         }
@@ -309,7 +309,7 @@ fn drives(env: &mut Env) -> Result<Vec<Drive>> {
     for object in objects {
         let name = env
             .world()
-            .map(|w| w.object(object))
+            .map(|w| w.bodies().object(object))
             .filter(|o| o.category != FLOOR_SYNSET);
         let Some(name) = name.map(|o| o.name.clone()) else {
             continue;
@@ -363,7 +363,7 @@ fn hands(env: &mut Env) -> Result<Vec<HandPlan>> {
             out.push(HandPlan {
                 object: env
                     .world()
-                    .map(|w| w.object(object).name.clone())
+                    .map(|w| w.bodies().object(object).name.clone())
                     .unwrap_or_default(),
                 outcome: result.map_or_else(|e| e.to_string(), |_| "ok".to_string()),
                 plan_ms,

@@ -183,6 +183,7 @@ pub fn render(args: RenderArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
 /// Every object of the world by its `ins_seg` value, and the categories the picture shows.
 fn legend(world: &World, frame: &Frame, table: &CategoryTable) -> Legend {
     let instances = world
+        .bodies()
         .objects()
         .map(|(id, o)| {
             let named = Named {

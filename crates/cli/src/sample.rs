@@ -90,6 +90,7 @@ impl ObjectCount {
         let world = &instance.world;
         ObjectCount {
             total: world
+                .bodies()
                 .objects()
                 .filter(|(_, o)| o.category != WALL_SYNSET)
                 .count(),
@@ -235,7 +236,7 @@ fn write_files(args: &SampleArgs, activity: &Activity, instance: &Instance) -> R
             .iter()
             .zip(&activity.instances)
             .map(|(&id, i)| {
-                let b = instance.world.core().aabb(id);
+                let b = instance.world.bodies().aabb(id);
                 (i.name.clone(), b.mins.to_array(), b.maxs.to_array())
             })
             .collect();
@@ -254,7 +255,7 @@ fn bindings(activity: &Activity, instance: &Instance) -> Vec<Binding> {
         .zip(&activity.instances)
         .map(|(&id, i)| Binding {
             instance: i.name.clone(),
-            object: instance.world.object(id).name.clone(),
+            object: instance.world.bodies().object(id).name.clone(),
         })
         .collect()
 }
@@ -266,7 +267,7 @@ fn poses(activity: &Activity, instance: &Instance) -> BTreeMap<String, PoseRepor
         .iter()
         .zip(&activity.instances)
         .map(|(&id, i)| {
-            let pose = instance.world.pose(id);
+            let pose = instance.world.bodies().pose(id);
             let report = PoseReport {
                 position: pose.translation.to_array(),
                 orientation: pose.rotation.to_array(),

@@ -166,6 +166,7 @@ fn export(prelude: &Prelude, args: ExportArgs) -> Result<()> {
         "{}: {} objects, {:.1} MB",
         args.gltf.display(),
         world
+            .bodies()
             .objects()
             .filter(|(id, o)| o.is_present() && !hidden.contains(id))
             .count(),

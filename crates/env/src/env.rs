@@ -203,7 +203,7 @@ impl Env {
         let library = Library::new(&self.config.taxonomy);
         let loaded = start.instance.load(&self.config.activity, &library)?;
         let mut world = loaded.world;
-        world.core_mut().set_substeps(self.config.physics);
+        world.bodies_mut().set_substeps(self.config.physics);
         let (robot, agent) = embody(
             &mut world,
             &self.config.activity,

@@ -58,8 +58,8 @@ pub(crate) fn embody(
         .map(|k| bindings[k]);
     let (at, yaw) = match agent {
         Some(id) => {
-            let aabb = world.aabb(id);
-            let (yaw, _, _) = world.pose(id).rotation.to_euler(EulerRot::ZYX);
+            let aabb = world.bodies().aabb(id);
+            let (yaw, _, _) = world.bodies().pose(id).rotation.to_euler(EulerRot::ZYX);
             (
                 Vector::new(aabb.center().x, aabb.center().y, aabb.mins.z),
                 yaw,
@@ -68,7 +68,7 @@ pub(crate) fn embody(
         None => (first_floor_centre(world), 0.0),
     };
     if let Some(id) = agent {
-        world.core_mut().retire(id);
+        world.bodies_mut().retire(id);
     }
     let mut robot = Robot::add(kind, space, world, Robot::standing_pose(kind, at, yaw))?;
     clear_start(world, &mut robot, at, yaw);
@@ -117,28 +117,37 @@ fn clear_start(world: &mut World, robot: &mut Robot, at: Vector, yaw: f32) {
 /// Whether a part of the robot overlaps a fixed object other than a floor.
 fn hits_fixed(world: &World, robot: &Robot) -> bool {
     let mut ignored = robot.objects();
-    let floors = world.objects().filter(|(_, o)| o.category == FLOOR_SYNSET);
+    let floors = world
+        .bodies()
+        .objects()
+        .filter(|(_, o)| o.category == FLOOR_SYNSET);
     ignored.extend(floors.map(|(id, _)| id));
     let filter = QueryFilter {
         fixed_only: true,
         ..QueryFilter::excluding(&ignored)
     };
-    let core = world.core();
     robot.objects().into_iter().any(|id| {
-        core.collision_parts(id).into_iter().any(|(shape, pose)| {
-            core.overlaps(shape, pose, &filter)
-                .is_ok_and(|hits| !hits.is_empty())
-        })
+        world
+            .query()
+            .collision_parts(id)
+            .into_iter()
+            .any(|(shape, pose)| {
+                world
+                    .query()
+                    .overlaps(shape, pose, &filter)
+                    .is_ok_and(|hits| !hits.is_empty())
+            })
     })
 }
 
 /// For an activity without an agent: the centre of the first floor.
 fn first_floor_centre(world: &World) -> Vector {
     world
+        .bodies()
         .objects()
         .find(|(_, o)| o.category == FLOOR_SYNSET)
         .map_or(Vector::ZERO, |(id, _)| {
-            let aabb = world.aabb(id);
+            let aabb = world.bodies().aabb(id);
             Vector::new(aabb.center().x, aabb.center().y, aabb.maxs.z)
         })
 }
@@ -224,7 +233,7 @@ impl Episode {
         let saved: Saved =
             postcard::from_bytes(body).map_err(|e| CheckpointError::Decode(e.to_string()))?;
         let world = World::from_bytes(&saved.world)?;
-        let objects = world.objects().len();
+        let objects = world.bodies().objects().len();
         let known = |id: &ObjectId| (id.0 as usize) < objects;
         if !saved.robot.objects().iter().all(known) || !saved.bindings.iter().flatten().all(known) {
             return Err(CheckpointError::Decode(

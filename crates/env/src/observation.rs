@@ -98,14 +98,14 @@ pub(crate) fn task_obs(world: &World, robot: &Robot, objects: &[ObjectId], out: 
     out[0..3].copy_from_slice(&base.translation.to_array());
     out[3..6].copy_from_slice(&euler(&base));
     for (k, &id) in objects.iter().take(TASK_OBJECTS).enumerate() {
-        let shown = match world.halves(id) {
-            Some([first, _]) if !world.object(id).is_present() => first,
+        let shown = match world.bodies().object(id).replaced_by {
+            Some([first, _]) if !world.bodies().object(id).is_present() => first,
             _ => id,
         };
         let slot = &mut out[6 + k * TASK_OBJECT_DIM..6 + (k + 1) * TASK_OBJECT_DIM];
         slot[0] = 1.0;
-        slot[1..4].copy_from_slice(&world.aabb(shown).center().to_array());
-        slot[4..7].copy_from_slice(&euler(&world.pose(shown)));
+        slot[1..4].copy_from_slice(&world.bodies().aabb(shown).center().to_array());
+        slot[4..7].copy_from_slice(&euler(&world.bodies().pose(shown)));
         for hand in 0..robot.hands().min(2) {
             let held = robot.held(hand);
             slot[7 + hand] = f32::from(u8::from(held == Some(id) || held == Some(shown)));

@@ -20,9 +20,9 @@ fn a_reset_puts_the_robot_where_the_agent_stood_and_observes() {
     assert_eq!(info.steps, 0);
     assert!(!info.score.success);
     let world = env.world().unwrap();
-    let stand_in = world.object_named("agent.n.01_1").unwrap();
+    let stand_in = world.bodies().object_named("agent.n.01_1").unwrap();
     assert!(
-        !world.object(stand_in).is_present(),
+        !world.bodies().object(stand_in).is_present(),
         "the robot replaced the stand-in"
     );
 }

@@ -216,11 +216,12 @@ impl behavior_env::WorldEdit for Lift {
     type Error = NoSuchObject;
 
     fn apply(&self, edit: behavior_env::Edit<'_>) -> Result<(), NoSuchObject> {
-        let id = (edit.world.object_named(&self.object))
+        let id = (edit.world.bodies().object_named(&self.object))
             .ok_or_else(|| NoSuchObject(self.object.clone()))?;
-        let mut pose = edit.world.pose(id);
+        let mut pose = edit.world.bodies().pose(id);
         pose.translation.z += self.mm as f32 / 1000.0;
         edit.world
+            .bodies_mut()
             .set_pose(id, pose)
             .map_err(|_| NoSuchObject(self.object.clone()))
     }
@@ -234,7 +235,12 @@ fn the_episode_records_its_own_edits_and_a_replay_of_their_type_does_them_again(
     let mut env = common::env("bringing_in_wood");
     env.reset(5).unwrap();
     env.record_to(&path, "(definition text)", 10).unwrap();
-    let plank = env.world().unwrap().objects().map(|(_, o)| o.name.clone());
+    let plank = env
+        .world()
+        .unwrap()
+        .bodies()
+        .objects()
+        .map(|(_, o)| o.name.clone());
     let plank = plank
         .into_iter()
         .find(|n| n.starts_with("plywood"))
@@ -255,7 +261,7 @@ fn the_episode_records_its_own_edits_and_a_replay_of_their_type_does_them_again(
             };
             assert!(env.apply(&missing).unwrap().is_err());
             // An edit that would go unrecorded is refused.
-            let refused = env.edit(|e| e.world.objects().count());
+            let refused = env.edit(|e| e.world.bodies().objects().count());
             assert!(
                 matches!(refused, Err(EnvError::UnrecordedEdit)),
                 "{refused:?}"

@@ -58,7 +58,7 @@ fn the_eye_sees_labelled_objects_and_highlights_the_activity_s_own() {
             continue;
         }
         // Every object pixel: its category's id, at a positive depth within the home.
-        let object = world.object(behavior_sim::ObjectId(ins[k] - 1));
+        let object = world.bodies().object(behavior_sim::ObjectId(ins[k] - 1));
         assert_eq!(
             table.name(seg[k]),
             Some(object.category.as_str()),
@@ -152,7 +152,13 @@ fn fixed_cameras_stand_still_and_the_overview_takes_in_the_home() {
     let seen: std::collections::BTreeSet<u32> = ins.iter().copied().filter(|&i| i > 0).collect();
     let floors = seen
         .iter()
-        .filter(|&&i| world.object(behavior_sim::ObjectId(i - 1)).category == "floor.n.01")
+        .filter(|&&i| {
+            world
+                .bodies()
+                .object(behavior_sim::ObjectId(i - 1))
+                .category
+                == "floor.n.01"
+        })
         .count();
     assert!(
         seen.len() >= 20 && floors >= 1,

@@ -28,12 +28,12 @@ fn every_archetype_is_drawn_inside_its_colliders() {
                     }
                 };
                 objects += 1;
-                let aabb = world.core().aabb(id);
+                let aabb = world.bodies().aabb(id);
                 let (lo, hi) = (
                     aabb.mins - Vector::splat(SLACK),
                     aabb.maxs + Vector::splat(SLACK),
                 );
-                for part in world.core().visual_parts(id) {
+                for part in world.visuals().parts(id) {
                     let VisualShape::Formed { form, half_extents } = part.shape else {
                         continue;
                     };

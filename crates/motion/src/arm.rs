@@ -81,7 +81,7 @@ impl ArmBody {
         let mut all: Vec<_> = arm
             .links()
             .iter()
-            .map(|&id| crate::navigate::shapes_in(world, [id], world.pose(id).inverse()))
+            .map(|&id| crate::navigate::shapes_in(world, [id], world.bodies().pose(id).inverse()))
             .collect();
         // The robot keeps the fingers' whole travel out of fixed bodies, open or closed.
         if let Some(gripper) = all.get_mut(arm.gripper()) {
@@ -89,7 +89,10 @@ impl ArmBody {
         }
         let links = all.get(arm.moving()).unwrap_or_default().to_vec();
         let holding = robot.held(arm.hand());
-        let gripper = arm.links().get(arm.gripper()).map(|&id| world.pose(id));
+        let gripper = arm
+            .links()
+            .get(arm.gripper())
+            .map(|&id| world.bodies().pose(id));
         let gripper = gripper.unwrap_or(Pose::IDENTITY).inverse();
         let held = crate::navigate::shapes_in(world, holding, gripper);
         let mut ignored = robot.objects();
@@ -117,9 +120,10 @@ impl ArmBody {
             return false;
         }
         let poses = self.arm.link_poses(c);
-        let core = world.core();
         let free = |shape: &Primitive, pose: Pose| {
-            core.overlaps(shape, pose, &self.filter)
+            world
+                .query()
+                .overlaps(shape, pose, &self.filter)
                 .is_ok_and(|hits| hits.is_empty())
         };
         let links = self.links.iter().zip(self.arm.moving()).all(|(shapes, k)| {

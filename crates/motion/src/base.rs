@@ -145,8 +145,10 @@ pub(crate) const KEEL: f32 = 0.15;
 /// The BehaviorRobot's body floats 0.2 m up, over what is lower than that.
 pub fn stands_inside(world: &World, filter: &QueryFilter, x: f32, y: f32) -> bool {
     let from = Vector::new(x, y, KEEL);
-    match world.core().cast_ray(from, -Vector::Z, KEEL, filter) {
-        Ok(Some(hit)) => hit.body.is_some_and(|b| world.aabb(b.object).maxs.z > KEEL),
+    match world.query().cast_ray(from, -Vector::Z, KEEL, filter) {
+        Ok(Some(hit)) => hit
+            .body
+            .is_some_and(|b| world.bodies().aabb(b.object).maxs.z > KEEL),
         _ => false,
     }
 }
@@ -209,9 +211,10 @@ impl Space for BaseSpace<'_> {
             return false;
         }
         let base = c.pose();
-        let core = self.world.core();
+        let query = self.world.query();
         let clear = self.footprint.shapes.iter().all(|(shape, offset)| {
-            core.overlaps(shape, base * *offset, &self.filter)
+            query
+                .overlaps(shape, base * *offset, &self.filter)
                 .is_ok_and(|hits| hits.is_empty())
         });
         clear && !stands_inside(self.world, &self.filter, c.x, c.y)

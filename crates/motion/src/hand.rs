@@ -98,9 +98,10 @@ impl HandBody {
             return false;
         }
         let pose = c.pose();
-        let core = world.core();
         self.shapes.iter().all(|(shape, offset)| {
-            core.overlaps(shape, pose * *offset, &self.filter)
+            world
+                .query()
+                .overlaps(shape, pose * *offset, &self.filter)
                 .is_ok_and(|hits| hits.is_empty())
         })
     }

@@ -60,7 +60,10 @@ impl Standing {
         let mut ignored = robot.objects();
         ignored.extend((0..robot.hands()).filter_map(|h| robot.held(h)));
         // The base stands on the floors (Fetch's wheels touch them): they are no obstacle.
-        let floors = world.objects().filter(|(_, o)| o.category == FLOOR_SYNSET);
+        let floors = world
+            .bodies()
+            .objects()
+            .filter(|(_, o)| o.category == FLOOR_SYNSET);
         ignored.extend(floors.map(|(id, _)| id));
         Standing {
             config,
@@ -75,7 +78,7 @@ impl Standing {
         let base = c.pose();
         let mut out = Vec::new();
         for (shape, offset) in &self.footprint.shapes {
-            let hits = world.core().overlaps(shape, base * *offset, &self.filter);
+            let hits = world.query().overlaps(shape, base * *offset, &self.filter);
             out.extend(hits.unwrap_or_default());
         }
         out.sort();
@@ -89,7 +92,7 @@ impl Standing {
         let base = c.pose();
         let clear = self.footprint.shapes.iter().all(|(shape, offset)| {
             world
-                .core()
+                .query()
                 .nearest(shape, base * *offset, STAND_CLEARANCE, &self.filter)
                 .is_ok_and(|near| near.is_none())
         });
@@ -112,7 +115,7 @@ impl Standing {
                 return false;
             }
             let down = Pose::from_translation(-Vector::Z * low.z.max(0.0)) * at;
-            let hits = world.core().overlaps(shape, down, &self.filter);
+            let hits = world.query().overlaps(shape, down, &self.filter);
             hits.is_ok_and(|hits| hits.iter().any(|b| b.object == object))
         })
     }
@@ -120,14 +123,14 @@ impl Standing {
     /// Whether the eye at `c` sees `object`'s centre before anything else.
     pub fn sees(&self, world: &World, c: &BaseConfig, object: ObjectId) -> bool {
         let eye = (c.pose() * self.eye).translation;
-        let centre: Vector = world.core().aabb(object).center();
+        let centre: Vector = world.bodies().aabb(object).center();
         let to = centre - eye;
         let distance = to.length();
         if distance < 1e-4 {
             return false;
         }
         world
-            .core()
+            .query()
             .cast_ray(eye, to / distance, distance + 0.05, &self.filter)
             .ok()
             .flatten()
@@ -181,7 +184,7 @@ impl Standing {
         rng: &mut SimRng,
         fits: impl Fn(&BaseConfig) -> bool,
     ) -> Option<BaseConfig> {
-        let centre: Vector = world.core().aabb(object).center();
+        let centre: Vector = world.bodies().aabb(object).center();
         for d in STAND_DISTANCES {
             for _ in 0..STAND_HEADINGS {
                 let psi = uniform(rng, -PI, PI);
@@ -204,12 +207,12 @@ impl Standing {
 /// anywhere): a place clear beside an outer wall may lie outside the house, where no door
 /// leads.
 fn indoors(world: &World, c: &BaseConfig) -> bool {
-    world.rooms().is_empty() || world.core().room_at(c.x, c.y).is_some()
+    world.rooms().is_empty() || world.relations().room_at(c.x, c.y).is_some()
 }
 
 /// Whether a base configuration stands within `reach` of the object's box across the floor.
 fn box_within(world: &World, object: ObjectId, reach: f32) -> impl Fn(&BaseConfig) -> bool {
-    let b = world.core().aabb(object);
+    let b = world.bodies().aabb(object);
     let (min, max) = ([b.mins.x, b.mins.y], [b.maxs.x, b.maxs.y]);
     move |c| floor_gap(min, max, c.x, c.y) <= reach
 }
@@ -264,10 +267,9 @@ pub fn shapes_in(
     objects: impl IntoIterator<Item = ObjectId>,
     to_frame: Pose,
 ) -> Vec<(Primitive, Pose)> {
-    let core = world.core();
     objects
         .into_iter()
-        .flat_map(|id| core.collision_parts(id))
+        .flat_map(|id| world.query().collision_parts(id))
         .map(|(shape, pose)| (shape.clone(), to_frame * pose))
         .collect()
 }

@@ -60,7 +60,9 @@ pub enum EditError {
 impl RecordedCall {
     /// The call as a recording says it.
     pub fn of(env: &Env, call: &Call) -> RecordedCall {
-        let object = env.world().map(|w| w.object(call.object).name.clone());
+        let object = env
+            .world()
+            .map(|w| w.bodies().object(call.object).name.clone());
         RecordedCall {
             primitive: call.primitive.name().to_string(),
             object: object.unwrap_or_default(),
@@ -102,8 +104,10 @@ impl WorldEdit for RecordedCall {
             }
             _ => {}
         }
-        let object = (self.id.or_else(|| edit.world.object_named(&self.object)))
-            .ok_or_else(|| EditError::NoObject(self.object.clone()))?;
+        let object = (self
+            .id
+            .or_else(|| edit.world.bodies().object_named(&self.object)))
+        .ok_or_else(|| EditError::NoObject(self.object.clone()))?;
         if self.primitive == FORCED_GRASP {
             return Ok(edit.robot.grasp_touching(edit.world, self.hand, object)?);
         }

@@ -431,9 +431,9 @@ fn grasp_goals(
 /// long, 4 cm thick, a 12 × 15 cm box) had the fingers close along its length, wider than
 /// they open, and a finger came down on it.
 fn across_heading(world: &World, object: ObjectId) -> f32 {
-    let pose = world.pose(object);
+    let pose = world.bodies().pose(object);
     let size = {
-        let local = world.core().local_aabb(object);
+        let local = world.bodies().local_aabb(object);
         local.maxs - local.mins
     };
     let vertical = vertical_axis(pose.rotation);
@@ -471,12 +471,12 @@ pub(crate) fn held_below(
     grip: &Pose,
 ) -> Vec<Pose> {
     let base = robot.base_pose(world).translation;
-    let at = world.aabb(target).center();
+    let at = world.bodies().aabb(target).center();
     let facing = (at.y - base.y).atan2(at.x - base.x);
     let Some(gripper) = robot.hand_object(hand) else {
         return Vec::new();
     };
-    let eef = world.pose(gripper).translation;
+    let eef = world.bodies().pose(gripper).translation;
     let mut held: Vec<Pose> = std::iter::once(FRAC_PI_2)
         .chain(PITCHES)
         .chain([0.0])
@@ -1108,8 +1108,8 @@ fn touches(env: &Env, hand: usize, object: ObjectId) -> bool {
     arm_of(env, hand).is_some_and(|(world, _, arm)| {
         arm.gripper_bodies().into_iter().any(|part| {
             world
-                .core()
-                .contacts(part)
+                .contacts()
+                .of(part)
                 .unwrap_or_default()
                 .iter()
                 .any(|c| c.other.is_some_and(|b| b.object == object))
@@ -1165,7 +1165,7 @@ mod tests {
         // Held as a grasp from above takes it: its axis across the fingers, along the
         // gripper's z, the gripper pointing down.
         let down = Pose::from_rotation(pointing(0.4, FRAC_PI_2));
-        let grip = down.inverse() * world.pose(candle);
+        let grip = down.inverse() * world.bodies().pose(candle);
         let poses = held_below(&world, &fetch, 0, candle, &grip);
         let upright = |pose: &Pose| (pose.rotation * Vector::Z).z.abs() >= UPRIGHT.cos();
         // Straight down, three tilts and level: only level stands it up, and it comes first.

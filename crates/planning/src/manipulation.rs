@@ -366,8 +366,8 @@ pub(crate) fn vertical_axis(rotation: Rotation) -> usize {
 /// The point of the object's own box nearest `toward` across the floor, at least `inset` in
 /// from its sides, at the height of the top of the object.
 pub(crate) fn on_top(world: &World, object: ObjectId, toward: Vector, inset: f32) -> Vector {
-    let pose = world.pose(object);
-    let local = world.core().local_aabb(object);
+    let pose = world.bodies().pose(object);
+    let local = world.bodies().local_aabb(object);
     let mut at = pose.inverse_transform_point(toward);
     // The object's axis nearest the vertical is its height: the point sits at its middle.
     let vertical = vertical_axis(pose.rotation);
@@ -382,7 +382,8 @@ pub(crate) fn on_top(world: &World, object: ObjectId, toward: Vector, inset: f32
             at[axis].clamp(middle - room, middle + room)
         };
     }
-    pose.transform_point(at).with_z(world.aabb(object).maxs.z)
+    pose.transform_point(at)
+        .with_z(world.bodies().aabb(object).maxs.z)
 }
 
 /// The poses above places on or in `object` for what `hand` holds, as PLACE_ONTOP and
@@ -429,7 +430,7 @@ pub(crate) fn placement_goals(
     let holder = robot
         .hand_object(call.hand)
         .ok_or(Failure::NoHand(call.hand))?;
-    let grip = world.pose(holder).inverse() * world.pose(held);
+    let grip = world.bodies().pose(holder).inverse() * world.bodies().pose(held);
     let mut let_go = world.clone();
     robot.clone().release_now(&mut let_go, call.hand);
     // As the hand holds it (a palm), or turned as the hand can set it down (a gripper pointing
@@ -440,7 +441,7 @@ pub(crate) fn placement_goals(
     for turned in turns {
         if let Some(turned) = turned {
             // A finite pose turned by a finite rotation: the teleport cannot fail.
-            let _ = let_go.set_pose(held, turned);
+            let _ = let_go.bodies_mut().set_pose(held, turned);
         }
         match poses_above_places(&let_go, held, call.object, relation, tuning, rng) {
             Ok(found) => poses.extend(found.into_iter().map(|p| p * grip.inverse())),
@@ -499,7 +500,7 @@ fn poses_above_places(
 /// its side stays on its side).
 fn levelled(world: &World, object: ObjectId) -> World {
     let mut level = world.clone();
-    let pose = level.pose(object);
+    let pose = level.bodies().pose(object);
     let up = pose.rotation.inverse() * Vector::Z;
     let axis = vertical_axis(pose.rotation);
     let mut local = Vector::ZERO;
@@ -507,15 +508,15 @@ fn levelled(world: &World, object: ObjectId) -> World {
     let correction = Rotation::from_rotation_arc(pose.rotation * local, Vector::Z);
     let upright = Pose::from_parts(pose.translation, correction * pose.rotation);
     // A finite pose turned by a finite rotation: the teleport cannot fail.
-    let _ = level.set_pose(object, upright);
+    let _ = level.bodies_mut().set_pose(object, upright);
     level
 }
 
 /// `object`'s poses above where it lies in `world`: as it lies and turned half round about its
 /// centre, at `height` and each of the [`LOWER_PLACE_HEIGHTS`].
 fn above_place(world: &World, object: ObjectId, height: f32) -> impl Iterator<Item = Pose> {
-    let placed = world.pose(object);
-    let centre = world.aabb(object).center();
+    let placed = world.bodies().pose(object);
+    let centre = world.bodies().aabb(object).center();
     [0.0, PI].into_iter().flat_map(move |turn| {
         let about = Rotation::from_rotation_z(turn);
         let turned = Pose::from_parts(
@@ -561,10 +562,10 @@ mod tests {
         for yaw in [0.0, 0.37, 1.2, -2.5] {
             let (world, id) = board(yaw);
             // From the corner of the box around the board, where a turned board leaves floor.
-            let b = world.aabb(id);
+            let b = world.bodies().aabb(id);
             let shoulder = Vector::new(b.mins.x - 0.3, b.mins.y - 0.3, 1.0);
             let at = grasp_point(&world, id, shoulder, grasp_inset());
-            let local = world.pose(id).inverse_transform_point(at);
+            let local = world.bodies().pose(id).inverse_transform_point(at);
             let inside = |x: f32, half: f32| x.abs() <= half - grasp_inset() + 1e-4;
             assert!(
                 inside(local.x, 0.5) && inside(local.y, 0.4),
@@ -574,7 +575,7 @@ mod tests {
             // The near end: no point of the board (inset) lies nearer the shoulder.
             let corners = [(-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0)].map(|(sx, sy)| {
                 let c = Vector::new(sx * (0.5 - grasp_inset()), sy * (0.4 - grasp_inset()), 0.0);
-                world.pose(id).transform_point(c)
+                world.bodies().pose(id).transform_point(c)
             });
             let d = |p: Vector| (p - shoulder).truncate().length();
             let nearest = corners.iter().map(|&c| d(c)).fold(f32::MAX, f32::min);
@@ -593,7 +594,7 @@ mod tests {
         spec.pose = Pose::from_parts(Vector::new(1.0, 1.0, 0.5), Rotation::from_rotation_z(0.3));
         let id = world.add(spec).unwrap();
         let at = grasp_point(&world, id, Vector::new(0.0, 3.0, 1.0), grasp_inset());
-        let local = world.pose(id).inverse_transform_point(at);
+        let local = world.bodies().pose(id).inverse_transform_point(at);
         assert!(local.x.abs() < 1e-4 && local.y.abs() < 1e-4, "{local:?}");
     }
 

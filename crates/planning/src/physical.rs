@@ -105,6 +105,7 @@ fn open_doors(steps: &mut Stepper<'_, '_>) -> Result<(), RunError> {
 /// closed.
 pub(crate) fn open_doors_in(world: &mut World, bindings: &[Option<ObjectId>]) -> bool {
     let closed: Vec<ObjectId> = world
+        .bodies()
         .objects()
         .filter(|(id, o)| o.category == DOOR_SYNSET && !bindings.contains(&Some(*id)))
         .map(|(id, _)| id)
@@ -210,7 +211,7 @@ fn plan_base(env: &Env, call: &Call, tuning: &Tuning) -> Result<Vec<BaseConfig>,
     // What the robot already overlaps and will push aside — a door opened against it, a box
     // at its feet — is no obstacle to its plan; fixed things still are.
     let pushed = standing.overlapping(world, &standing.config);
-    let movable = |b: &BodyRef| b.link.is_some() || !world.object(b.object).is_fixed();
+    let movable = |b: &BodyRef| b.link.is_some() || !world.bodies().object(b.object).is_fixed();
     standing
         .filter
         .exclude_bodies
@@ -340,6 +341,7 @@ fn straight(a: &BaseConfig, b: &BaseConfig, resolution: f32) -> Vec<BaseConfig> 
 /// the way, and what the robot carries must pass it.
 fn hinged_parts(world: &World) -> Vec<BodyRef> {
     world
+        .bodies()
         .objects()
         .filter(|(id, o)| !(o.category == DOOR_SYNSET && world.state(*id, Predicate::Open)))
         .flat_map(|(id, o)| (0..o.links.len()).map(move |l| BodyRef::link(id, l)))

@@ -356,7 +356,7 @@ impl<'e> PosedRobot<'e> {
     fn hand_pose(&self, world: &World, side: Side) -> Pose {
         self.robot
             .hand_object(side.index())
-            .map_or(Pose::IDENTITY, |palm| world.pose(palm))
+            .map_or(Pose::IDENTITY, |palm| world.bodies().pose(palm))
     }
 
     /// Where the hand is told to be, in the body's frame.
@@ -403,7 +403,7 @@ fn target_in_world(env: &Env, side: Side) -> Pose {
 fn body_of(world: &World, robot: &PosedRobot<'_>, side: Side) -> HandBody {
     let hand = robot.hand_object(side);
     let held = robot.holding(side);
-    let frame = world.pose(hand).inverse();
+    let frame = world.bodies().pose(hand).inverse();
     let mut ignored = robot.objects();
     ignored.extend((0..robot.posed.len()).filter_map(|h| robot.robot.held(h)));
     HandBody {
@@ -455,7 +455,7 @@ fn reaches_from(
     shoulder: Vector,
     tuning: &Tuning,
 ) -> bool {
-    let b = world.aabb(object);
+    let b = world.bodies().aabb(object);
     let top = on_top(world, object, shoulder, 0.0);
     let nearest = top.with_z(shoulder.z.clamp(b.mins.z, b.maxs.z));
     let reach = robot.hand(side).reach();
@@ -540,7 +540,7 @@ fn open_to(
     let clear = |direction: Vector, length: f32| {
         length <= 0.0
             || matches!(
-                world.core().cast_ray(point, direction, length, &filter),
+                world.query().cast_ray(point, direction, length, &filter),
                 Ok(None)
             )
     };
@@ -823,7 +823,7 @@ fn descend(
 ) -> Attempt<()> {
     let above = posed(steps.env).map_or(0.0, |(world, _)| {
         let fingers = palm(steps.env, side).transform_point(GRASP_POINT).z;
-        fingers - world.aabb(object).maxs.z - steps.tuning.approach_height
+        fingers - world.bodies().aabb(object).maxs.z - steps.tuning.approach_height
     });
     let step = steps.tuning.descent_step;
     let raised = (above.max(0.0) / step).ceil() as u32;
@@ -955,8 +955,8 @@ fn touches(env: &Env, side: Side, object: ObjectId) -> bool {
     posed(env).is_some_and(|(world, robot)| {
         let hand = BodyRef::from(robot.hand_object(side));
         world
-            .core()
-            .contacts(hand)
+            .contacts()
+            .of(hand)
             .unwrap_or_default()
             .iter()
             .any(|c| c.other.is_some_and(|b| b.object == object))

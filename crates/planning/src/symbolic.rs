@@ -22,7 +22,7 @@ const ELEMENT_TRIES: usize = 10;
 /// action mask). What only doing it can tell — a place to stand, a pose for the placement — is
 /// not checked.
 pub fn check(world: &World, robot: &Robot, call: &Call) -> Result<(), Failure> {
-    let object = world.object(call.object);
+    let object = world.bodies().object(call.object);
     if !object.is_present() {
         return Err(Failure::Unable {
             what: "is gone (sliced, or taken out of the world)",
@@ -39,7 +39,7 @@ pub fn check(world: &World, robot: &Robot, call: &Call) -> Result<(), Failure> {
             Err(Failure::Unreachable)
         }
     };
-    let has = |id: ObjectId, ability| world.object(id).has(ability);
+    let has = |id: ObjectId, ability| world.bodies().object(id).has(ability);
     let tool = |ability, what| match held {
         None => Err(Failure::HandEmpty),
         Some(h) if has(h, ability) => Ok(h),
@@ -49,12 +49,14 @@ pub fn check(world: &World, robot: &Robot, call: &Call) -> Result<(), Failure> {
         Primitive::NavigateTo | Primitive::Wait => Ok(()),
         Primitive::Grasp => {
             if let Some(h) = held {
-                return Err(Failure::HandFull(world.object(h).name.clone()));
+                return Err(Failure::HandFull(world.bodies().object(h).name.clone()));
             }
             graspable(world, robot, call.object)?;
             reach()?;
             match closed_container(world, call.object) {
-                Some(c) => Err(Failure::ContainerClosed(world.object(c).name.clone())),
+                Some(c) => Err(Failure::ContainerClosed(
+                    world.bodies().object(c).name.clone(),
+                )),
                 None => Ok(()),
             }
         }
@@ -159,7 +161,7 @@ struct Switch {
 impl Switch {
     /// Whether `object` has the ability and is on: an error if it lacks the ability.
     fn has(&self, world: &World, object: ObjectId) -> Result<bool, Failure> {
-        if !world.object(object).has(self.ability) {
+        if !world.bodies().object(object).has(self.ability) {
             return Err(Failure::Unable { what: self.lacks });
         }
         Ok(world.state(object, self.predicate))
@@ -259,7 +261,7 @@ pub(crate) fn limited_links(
     object: ObjectId,
     kind: Option<JointKind>,
 ) -> Vec<(usize, [f32; 2])> {
-    let links = world.object(object).links.iter().enumerate();
+    let links = world.bodies().object(object).links.iter().enumerate();
     links
         .filter(|(_, link)| kind.is_none_or(|k| link.joint.kind == k))
         .filter_map(|(i, link)| Some((i, link.joint.limits?)))
@@ -275,7 +277,7 @@ fn hinges(world: &World, object: ObjectId) -> Vec<(usize, [f32; 2])> {
 pub(crate) fn open_all_the_way(world: &mut World, object: ObjectId, links: &[(usize, [f32; 2])]) {
     for &(link, [_, hi]) in links {
         // The link exists and the position is finite: this cannot fail.
-        let _ = world.set_joint_position(object, link, hi);
+        let _ = world.joints_mut().set_position(object, link, hi);
     }
 }
 
@@ -284,7 +286,7 @@ pub(crate) fn open_all_the_way(world: &mut World, object: ObjectId, links: &[(us
 pub(crate) fn wide_open(world: &World, object: ObjectId) -> bool {
     world.state(object, Predicate::Open)
         && hinges(world, object).iter().all(|&(link, [lo, hi])| {
-            world.core().joint_position(object, link) - lo >= WIDE_OPEN * (hi - lo)
+            world.joints().position(object, link) - lo >= WIDE_OPEN * (hi - lo)
         })
 }
 
@@ -297,13 +299,13 @@ fn resting_in(world: &World, object: ObjectId, link: usize, robot: &[ObjectId]) 
         link: Some(link),
     };
     let mut riders: Vec<ObjectId> = world
-        .core()
-        .contacts(drawer)
+        .contacts()
+        .of(drawer)
         .unwrap_or_default()
         .iter()
         .filter(|c| c.normal.z >= SUPPORT_COS)
         .filter_map(|c| c.other.map(|b| b.object))
-        .filter(|&o| o != object && !robot.contains(&o) && !world.object(o).is_fixed())
+        .filter(|&o| o != object && !robot.contains(&o) && !world.bodies().object(o).is_fixed())
         .collect();
     riders.sort();
     riders.dedup();
@@ -323,7 +325,7 @@ fn contents(world: &World, object: ObjectId, robot: &[ObjectId]) -> Vec<Contents
         .into_iter()
         .map(|(link, _)| Contents {
             link,
-            was: world.core().link_pose(object, link),
+            was: world.bodies().link_pose(object, link),
             riders: resting_in(world, object, link, robot),
         })
         .filter(|c| !c.riders.is_empty())
@@ -335,11 +337,11 @@ fn contents(world: &World, object: ObjectId, robot: &[ObjectId]) -> Vec<Contents
 /// carcass, and it fell to the cabinet's floor, out of every hand's reach.
 fn carry_contents(world: &mut World, object: ObjectId, contents: &[Contents]) {
     for c in contents {
-        let moved = world.core().link_pose(object, c.link) * c.was.inverse();
+        let moved = world.bodies().link_pose(object, c.link) * c.was.inverse();
         for &rider in &c.riders {
-            let at = moved * world.pose(rider);
+            let at = moved * world.bodies().pose(rider);
             // A finite pose moved by a finite one: the teleport cannot fail.
-            let _ = world.set_pose(rider, at);
+            let _ = world.bodies_mut().set_pose(rider, at);
         }
     }
 }
@@ -375,7 +377,7 @@ fn shut(world: &mut World, object: ObjectId, robot: &[ObjectId]) -> Result<(), F
 /// own models; ours are sized as real objects, and that check would refuse a quarter of the
 /// activities' cartons, backpacks, brooms and boards, so we leave it to the mass limit.
 fn graspable(world: &World, robot: &Robot, object: ObjectId) -> Result<(), Failure> {
-    if world.object(object).is_fixed() {
+    if world.bodies().object(object).is_fixed() {
         return Err(Failure::NotGraspable("it is fixed"));
     }
     if robot.objects().contains(&object) {
@@ -395,13 +397,13 @@ pub fn within_reach(world: &World, robot: &Robot, object: ObjectId) -> bool {
 /// Whether the object's box comes within `distance` of the robot's base, across the floor.
 pub(crate) fn within(world: &World, robot: &Robot, object: ObjectId, distance: f32) -> bool {
     let at = robot.base_pose(world).translation;
-    let b = world.aabb(object);
+    let b = world.bodies().aabb(object);
     floor_gap([b.mins.x, b.mins.y], [b.maxs.x, b.maxs.y], at.x, at.y) <= distance
 }
 
 /// Whether an openable object is closed.
 fn is_closed(world: &World, object: ObjectId) -> bool {
-    world.object(object).has(Ability::Openable) && !world.state(object, Predicate::Open)
+    world.bodies().object(object).has(Ability::Openable) && !world.state(object, Predicate::Open)
 }
 
 /// A closed openable object the object is inside, if any.
@@ -416,10 +418,11 @@ pub(crate) fn container_where(
     shut: impl Fn(ObjectId) -> bool,
 ) -> Option<ObjectId> {
     world
+        .bodies()
         .objects()
         .filter(|(id, o)| *id != object && o.is_present() && o.has(Ability::Openable))
         .map(|(id, _)| id)
-        .find(|&c| shut(c) && world.core().inside(object, c))
+        .find(|&c| shut(c) && world.relations().inside(object, c))
 }
 
 /// NAVIGATE_TO: a place to stand facing the object (§5's search), or for a floor a clear
@@ -454,7 +457,7 @@ pub(crate) fn stand_for(
     arm: Option<&dyn Fn(&BaseConfig) -> bool>,
     rng: &mut SimRng,
 ) -> Option<BaseConfig> {
-    if world.object(object).category == FLOOR_SYNSET {
+    if world.bodies().object(object).category == FLOOR_SYNSET {
         return stand_in_room(world, standing, object, rng);
     }
     let within = |accept: &dyn Fn(&BaseConfig) -> bool, rng: &mut SimRng| {
@@ -536,7 +539,7 @@ pub(crate) fn put(
 
 /// Whether a heat or cold source heats from elements (a stove), not from inside (an oven).
 fn has_elements(world: &World, object: ObjectId) -> bool {
-    let o = world.object(object);
+    let o = world.bodies().object(object);
     (o.has(Ability::HeatSource) || o.has(Ability::ColdSource))
         && o.points
             .iter()
@@ -546,7 +549,7 @@ fn has_elements(world: &World, object: ObjectId) -> bool {
 /// Whether `object`'s centre lies within the source's reach of one of its elements (or the
 /// source has none).
 fn near_element(world: &World, object: ObjectId, source: ObjectId) -> bool {
-    let s = world.object(source);
+    let s = world.bodies().object(source);
     let Some(ability) = [Ability::HeatSource, Ability::ColdSource]
         .into_iter()
         .find(|&a| s.has(a))
@@ -558,8 +561,8 @@ fn near_element(world: &World, object: ObjectId, source: ObjectId) -> bool {
         "distance_threshold",
         behavior_sim::DEFAULT_DISTANCE_THRESHOLD,
     );
-    let pose = world.pose(source);
-    let centre = world.aabb(object).center();
+    let pose = world.bodies().pose(source);
+    let centre = world.bodies().aabb(object).center();
     let mut elements = s
         .points
         .iter()

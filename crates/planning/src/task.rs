@@ -396,7 +396,7 @@ impl<'a> Solver<'a> {
         };
         let executed = Executed {
             name: primitive.name(),
-            object: self.world().object(object).name.clone(),
+            object: self.world().bodies().object(object).name.clone(),
             hand,
             ok: outcome.result.is_ok(),
             reason: outcome.result.as_ref().err().map(Failure::to_string),
@@ -413,7 +413,7 @@ impl<'a> Solver<'a> {
             format!(
                 "{} {}: {e}",
                 primitive.name(),
-                self.world().object(object).name
+                self.world().bodies().object(object).name
             )
         })
     }
@@ -471,7 +471,7 @@ impl<'a> Solver<'a> {
             }
         }
         Err(if last.is_empty() {
-            let name = &self.world().object(x).name;
+            let name = &self.world().bodies().object(x).name;
             format!(
                 "{name} not in reach after {NAVIGATE_ATTEMPTS} navigations, each of which arrived"
             )
@@ -483,9 +483,10 @@ impl<'a> Solver<'a> {
     /// What `x` is in or on, if anything.
     fn holder(&self, x: ObjectId) -> Option<ObjectId> {
         let world = self.world();
-        let core = world.core();
-        world.objects().map(|(id, _)| id).find(|&c| {
-            c != x && world.object(c).is_present() && (core.inside(x, c) || core.ontop(x, c))
+        world.bodies().objects().map(|(id, _)| id).find(|&c| {
+            c != x
+                && world.bodies().object(c).is_present()
+                && (world.relations().inside(x, c) || world.relations().ontop(x, c))
         })
     }
 
@@ -551,9 +552,9 @@ impl<'a> Solver<'a> {
     /// A placement: `x` carried to `y` and put on, in, under or next to it.
     fn place(&mut self, x: ObjectId, p: Predicate, y: ObjectId) -> Result<(), Reason> {
         // A sliced object relates as its halves do, both of them: each that does not is placed.
-        if let Some(halves) = self.world().object(x).replaced_by {
+        if let Some(halves) = self.world().bodies().object(x).replaced_by {
             for half in halves {
-                if !self.world().core().relation(p, half, y) {
+                if !self.world().relations().relation(p, half, y) {
                     self.place(half, p, y)?;
                 }
             }
@@ -569,7 +570,7 @@ impl<'a> Solver<'a> {
         };
         self.hold(x, CARRY)?;
         if primitive == Primitive::PlaceInside
-            && self.world().object(y).has(Ability::Openable)
+            && self.world().bodies().object(y).has(Ability::Openable)
             && self.to_open(y)
         {
             self.approach(y)?;
@@ -595,7 +596,7 @@ impl<'a> Solver<'a> {
             .find(ability, x)
             .ok_or_else(|| format!("no {} in the home", ability.name()))?;
         let (inside, on, closed) = {
-            let s = self.world().object(source);
+            let s = self.world().bodies().object(source);
             (
                 s.flag(ability, "requires_inside", false),
                 s.flag(ability, "requires_toggled_on", false),
@@ -646,7 +647,7 @@ impl<'a> Solver<'a> {
             .find(Ability::WaterSource, held)
             .ok_or("no water source in the home")?;
         self.approach(water)?;
-        if self.world().object(water).has(Ability::Toggleable)
+        if self.world().bodies().object(water).has(Ability::Toggleable)
             && !self.world().state(water, Predicate::ToggledOn)
         {
             self.call(Primitive::ToggleOn, water, hand)?;
@@ -689,8 +690,9 @@ impl Solver<'_> {
         let world = self.world();
         let bound = self.env.bindings().unwrap_or_default();
         let robot: Vec<ObjectId> = self.env.robot().map(|r| r.objects()).unwrap_or_default();
-        let at = world.aabb(near).center();
+        let at = world.bodies().aabb(near).center();
         world
+            .bodies()
             .objects()
             .filter(|(id, o)| {
                 *id != near
@@ -701,7 +703,7 @@ impl Solver<'_> {
                     && o.category != FLOOR_SYNSET
             })
             .map(|(id, _)| {
-                let distance = (world.aabb(id).center() - at).length();
+                let distance = (world.bodies().aabb(id).center() - at).length();
                 (!bound.contains(&Some(id)), distance, id)
             })
             .min_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)).then(a.2.cmp(&b.2)))

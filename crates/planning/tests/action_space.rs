@@ -111,7 +111,7 @@ fn the_papers_six_put_things_on_a_floor_by_place_ontop() {
     let names: Vec<String> = space
         .objects()
         .iter()
-        .map(|&o| env.world().unwrap().object(o).name.clone())
+        .map(|&o| env.world().unwrap().bodies().object(o).name.clone())
         .collect();
     let floor = (0..n)
         .find(|&o| names[o].starts_with("floor_kitchen"))

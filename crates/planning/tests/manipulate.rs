@@ -44,11 +44,11 @@ fn call(primitive: Primitive, object: ObjectId) -> Call {
 /// What `x` lies on.
 fn support(env: &Env, x: ObjectId) -> ObjectId {
     let world = env.world().unwrap();
-    let core = world.core();
     world
+        .bodies()
         .objects()
         .map(|(id, _)| id)
-        .find(|&c| c != x && core.ontop(x, c))
+        .find(|&c| c != x && world.relations().ontop(x, c))
         .expect("the book lies on something")
 }
 
@@ -108,9 +108,9 @@ fn the_hand_takes_a_book_and_puts_it_back_without_touching_anything_on_the_way()
     assert!(!holds(&env, book), "let go");
     let world = env.world().unwrap();
     assert!(
-        world.core().ontop(book, under),
+        world.relations().ontop(book, under),
         "the book settled on {}",
-        world.object(under).name
+        world.bodies().object(under).name
     );
 }
 
@@ -183,12 +183,12 @@ fn refused_physical_primitives_say_why_and_move_nothing() {
     );
     // The generic GRASP takes Fetch's arm: from where the episode starts the book is out of
     // reach; no step taken.
-    let before = fetch.world().unwrap().pose(book);
+    let before = fetch.world().unwrap().bodies().pose(book);
     let steps = fetch.steps();
     let far = grasp(&mut fetch, &gripper, &Tuning::default(), None).unwrap();
     assert!(matches!(far, Err(Failure::Unreachable)), "{far:?}");
     assert_eq!(fetch.steps(), steps);
-    assert_eq!(fetch.world().unwrap().pose(book), before);
+    assert_eq!(fetch.world().unwrap().bodies().pose(book), before);
     let second = Call { hand: 1, ..gripper };
     let one_hand = grasp(&mut fetch, &second, &Tuning::default(), None).unwrap();
     assert!(matches!(one_hand, Err(Failure::NoHand(1))), "{one_hand:?}");

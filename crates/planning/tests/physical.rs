@@ -114,8 +114,8 @@ fn put_into_furniture(env: &mut Env) -> behavior_sim::ObjectId {
         RobotKind::Fetch => behavior_robots::BASE_RADIUS,
         RobotKind::R1 => behavior_robots::R1_BASE_RADIUS,
     };
-    let found = world.objects().find_map(|(id, o)| {
-        let b = world.aabb(id);
+    let found = world.bodies().objects().find_map(|(id, o)| {
+        let b = world.bodies().aabb(id);
         let c = BaseConfig::new(b.maxs.x + radius - 0.1, 0.5 * (b.mins.y + b.maxs.y), 0.0);
         standing.config = c;
         let only_it = standing.overlapping(world, &c) == [id.into()];
@@ -204,6 +204,7 @@ fn a_drive_opens_the_homes_doors_but_not_one_the_activity_names() {
     let doors = |env: &Env| -> Vec<(behavior_sim::ObjectId, bool)> {
         let world = env.world().unwrap();
         world
+            .bodies()
             .objects()
             .filter(|(_, o)| o.category == "door.n.01")
             .map(|(id, _)| (id, world.state(id, Predicate::Open)))

@@ -34,7 +34,7 @@ fn act(env: &mut Env, primitive: Primitive, object: ObjectId, hand: usize) -> Re
 
 /// The first hinged link of an object and its open end.
 fn hinge(env: &Env, object: ObjectId) -> (usize, f32) {
-    let links = &env.world().unwrap().object(object).links;
+    let links = &env.world().unwrap().bodies().object(object).links;
     links
         .iter()
         .enumerate()
@@ -73,7 +73,7 @@ fn navigate_grasp_and_place_under_then_switch_on() {
     act(&mut env, Primitive::PlaceUnder, table, 1).unwrap();
     assert_eq!(env.robot().unwrap().held(1), None);
     assert!(
-        env.world().unwrap().core().under(modem, table),
+        env.world().unwrap().relations().under(modem, table),
         "the modem is under the table"
     );
     let err = act(&mut env, Primitive::ToggleOff, modem, 1).unwrap_err();
@@ -143,12 +143,16 @@ fn a_closed_fridge_is_opened_before_things_go_in_and_slicing_needs_a_knife() {
     assert!(matches!(err, Failure::Already("closed")), "{err}");
     // A door a little ajar reads as open; OPEN still swings it all the way, then refuses.
     let door = hinge(&env, fridge);
-    env.edit(|e| e.world.set_joint_position(fridge, door.0, 0.2 * door.1))
-        .unwrap()
-        .unwrap();
+    env.edit(|e| {
+        e.world
+            .joints_mut()
+            .set_position(fridge, door.0, 0.2 * door.1)
+    })
+    .unwrap()
+    .unwrap();
     assert!(state(&env, fridge, Predicate::Open), "ajar reads as open");
     act(&mut env, Primitive::Open, fridge, 1).unwrap();
-    let swung = env.world().unwrap().core().joint_position(fridge, door.0);
+    let swung = env.world().unwrap().joints().position(fridge, door.0);
     assert!((swung - door.1).abs() < 1e-4, "{swung} of {}", door.1);
     let err = act(&mut env, Primitive::Open, fridge, 1).unwrap_err();
     assert!(matches!(err, Failure::Already("open")), "{err}");
@@ -161,7 +165,7 @@ fn a_closed_fridge_is_opened_before_things_go_in_and_slicing_needs_a_knife() {
     );
     act(&mut env, Primitive::Open, jar, 0).unwrap();
     act(&mut env, Primitive::PlaceInside, jar, 1).unwrap();
-    assert!(env.world().unwrap().core().inside(strawberry, jar));
+    assert!(env.world().unwrap().relations().inside(strawberry, jar));
     let err = act(&mut env, Primitive::Slice, strawberry, 0).unwrap_err();
     assert!(matches!(err, Failure::HandEmpty), "{err}");
     act(&mut env, Primitive::NavigateTo, knife, 0).unwrap();
@@ -209,12 +213,12 @@ fn a_wait_lasts_a_second_and_a_refused_primitive_changes_nothing() {
 /// The drawers of `object` that `thing` rests on, by their contacts.
 fn drawers_under(env: &Env, object: ObjectId, thing: ObjectId) -> Vec<usize> {
     let world = env.world().unwrap();
-    let links = &world.object(object).links;
+    let links = &world.bodies().object(object).links;
     (0..links.len())
         .filter(|&l| links[l].joint.kind == behavior_sim::JointKind::Prismatic)
         .filter(|&l| {
             let drawer = behavior_sim::BodyRef::link(object, l);
-            let contacts = world.core().contacts(drawer).unwrap();
+            let contacts = world.contacts().of(drawer).unwrap();
             contacts
                 .iter()
                 .any(|c| c.other.is_some_and(|b| b.object == thing))
@@ -255,8 +259,8 @@ fn what_lies_in_a_drawer_comes_out_and_goes_back_in_with_it() {
         found.expect("in some named home the necklace lies in one drawer");
     let at = |env: &Env| {
         let world = env.world().unwrap();
-        let link = world.core().link_pose(cabinet, drawer).translation;
-        (link, world.pose(necklace).translation)
+        let link = world.bodies().link_pose(cabinet, drawer).translation;
+        (link, world.bodies().pose(necklace).translation)
     };
     // OPEN until the setter's random subset pulls the necklace's drawer (a few tries).
     let (shut_drawer, shut_necklace) = at(&env);
@@ -282,5 +286,5 @@ fn what_lies_in_a_drawer_comes_out_and_goes_back_in_with_it() {
         (back - (closed_drawer - open_drawer)).length() < 1e-4,
         "{back:?}"
     );
-    assert!(env.world().unwrap().core().inside(necklace, cabinet));
+    assert!(env.world().unwrap().relations().inside(necklace, cabinet));
 }

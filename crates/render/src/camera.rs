@@ -19,9 +19,10 @@ pub const FAR: f32 = 100.0;
 /// for a world without any.
 pub(crate) fn fixed_bounds(world: &World) -> Option<(Vector, Vector)> {
     let (lo, hi) = world
+        .bodies()
         .objects()
         .filter(|(_, o)| o.is_present() && o.body_kind == BodyKind::Fixed)
-        .map(|(id, _)| world.aabb(id))
+        .map(|(id, _)| world.bodies().aabb(id))
         .fold(
             (Vector::splat(f32::MAX), Vector::splat(f32::MIN)),
             |(lo, hi), b| (lo.min(b.mins), hi.max(b.maxs)),

@@ -79,7 +79,7 @@ pub(crate) fn fnv(bytes: impl IntoIterator<Item = u8>) -> u64 {
 
 /// An object's own seed, which varies its finish and its form's shape: a hash of its name.
 pub(crate) fn object_seed(world: &World, object: ObjectId) -> u32 {
-    behavior_forms::seed_of(&world.object(object).name)
+    behavior_forms::seed_of(&world.bodies().object(object).name)
 }
 
 /// The home's own seed: a hash of its rooms (types and footprints), 0 for a world without rooms.
@@ -195,7 +195,7 @@ impl Finisher {
     /// How `object`'s parts are finished in a home of seed `home`; `seed` is the object's own
     /// ([`object_seed`], which its caller has already worked out for its form).
     pub(crate) fn of(world: &World, object: ObjectId, home: u64, seed: u32) -> Finisher {
-        let o = world.object(object);
+        let o = world.bodies().object(object);
         match o.category.as_str() {
             FLOOR_SYNSET => {
                 let room = world.rooms().iter().find(|r| r.floor == Some(object));

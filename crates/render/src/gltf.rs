@@ -429,11 +429,11 @@ const REPEAT: u32 = 10497;
 /// model pieces `models` holds (robots' links) in their meshes.
 pub fn to_glb(world: &World, hidden: &[ObjectId], models: &ModelLibrary) -> Vec<u8> {
     let mut writer = GltfWriter::new(world, GltfDetail::Full);
-    for (id, object) in world.objects() {
+    for (id, object) in world.bodies().objects() {
         if !object.is_present() || hidden.contains(&id) {
             continue;
         }
-        let parts = world.core().visual_parts_with(id, models);
+        let parts = world.visuals().parts_with(id, models);
         if !parts.is_empty() {
             writer.node(&object.name, id, Pose::IDENTITY, &parts);
         }
@@ -466,7 +466,7 @@ impl<'a> GltfWriter<'a> {
     }
 
     /// Adds a top node named `name`, placed at `frame` (in the world), holding `parts` of
-    /// `object` (posed in the world, as [`behavior_sim::Core::visual_parts_with`] gives
+    /// `object` (posed in the world, as [`behavior_sim::Visuals::parts_with`] gives
     /// them), a child node per part in their order. Returns the node's index among the top
     /// nodes.
     pub fn node(
@@ -745,8 +745,8 @@ mod tests {
         let models = ModelLibrary::EMPTY;
         let triangles = |detail| {
             let mut w = GltfWriter::new(&world, detail);
-            let parts = world.core().visual_parts_with(id, &models);
-            let frame = world.core().pose(id);
+            let parts = world.visuals().parts_with(id, &models);
+            let frame = world.bodies().pose(id);
             assert_eq!(w.node("apple_1", id, frame, &parts), 0);
             let file = w.finish();
             let (_, _, json) = chunk(&file, 12);

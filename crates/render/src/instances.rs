@@ -176,7 +176,7 @@ impl<'a> Gatherer<'a> {
             occluders: Vec::with_capacity(parts / 4),
             models: Vec::with_capacity(parts),
         };
-        for (id, object) in self.scene.world.objects() {
+        for (id, object) in self.scene.world.bodies().objects() {
             if !object.is_present() || self.scene.hidden.contains(&id) {
                 continue;
             }
@@ -245,7 +245,7 @@ impl<'a> Gatherer<'a> {
 
     fn object(&mut self, id: ObjectId, planes: &[Vec4; 6], out: &mut Gathered) {
         let world = self.scene.world;
-        let ids = self.ids(id, &world.object(id).category);
+        let ids = self.ids(id, &world.bodies().object(id).category);
         let shown = Shown::of(world, id);
         let seed = object_seed(world, id);
         let finisher = (self.profile == ImageProfile::Realistic)
@@ -327,15 +327,15 @@ impl<'a> Gatherer<'a> {
     /// An object's parts to draw: a model piece's meshes where the library holds them and the
     /// object is at least [`PIECE_ABOVE_PIXELS`] in radius on the image, else its own parts.
     fn parts(&self, id: ObjectId) -> Vec<VisualPart<'a>> {
-        let core = self.scene.world.core();
-        if core.object(id).model.is_some() {
-            let b = core.local_aabb(id);
-            let centre = core.pose(id) * b.center();
+        let world = self.scene.world;
+        if world.bodies().object(id).model.is_some() {
+            let b = world.bodies().local_aabb(id);
+            let centre = world.bodies().pose(id) * b.center();
             if self.pixels(centre, (b.maxs - b.mins).length() * 0.5) >= PIECE_ABOVE_PIXELS {
-                return core.visual_parts_with(id, self.models);
+                return world.visuals().parts_with(id, self.models);
             }
         }
-        core.visual_parts(id)
+        world.visuals().parts(id)
     }
 
     /// Dust as small grey balls, stains as thin dark discs lying flat.
@@ -358,7 +358,7 @@ impl<'a> Gatherer<'a> {
                 },
             ),
         ];
-        for (id, object) in world.objects() {
+        for (id, object) in world.bodies().objects() {
             if !object.is_present() || self.scene.hidden.contains(&id) {
                 continue;
             }

@@ -1,7 +1,7 @@
 //! Sensors for BEHAVIOR: cameras drawn by an offscreen rasterizer, and lidar.
 //!
 //! A [`Renderer`] draws a [`Scene`] — the world's visual description
-//! ([`behavior_sim::Core::visual_parts`]), labelled by a [`CategoryTable`] and a highlight set —
+//! ([`behavior_sim::Visuals::parts`]), labelled by a [`CategoryTable`] and a highlight set —
 //! through a [`View`] (a [`Camera`] and its previous frame) into the [`Modality`]s asked for:
 //! colour, depth, normals, semantic and instance segmentation, the highlight mask, optical and
 //! scene flow. Only what is asked for is drawn and read back: the flow modalities take a second

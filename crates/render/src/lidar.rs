@@ -1,4 +1,4 @@
-//! Lidar: beams cast through the world's batched ray queries ([`behavior_sim::Core::cast_rays`]),
+//! Lidar: beams cast through the world's batched ray queries ([`behavior_sim::Query::cast_rays`]),
 //! as points and as a range image.
 //!
 //! A planar scan is one fan of beams (Fetch's base laser: 220 beams over 220°, its robot says
@@ -122,7 +122,7 @@ impl Lidar {
             .map(|d| (origin, self.pose.rotation * *d))
             .collect();
         let hits = world
-            .core()
+            .query()
             .cast_rays(&rays, self.max_range, filter)
             .map_err(|e| RenderError::BadCamera(e.to_string()))?;
         let mut scan = Scan {

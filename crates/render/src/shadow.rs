@@ -587,13 +587,13 @@ fn casters(
     models: &ModelLibrary,
 ) -> Casters {
     let (mut fixed, mut moving, mut walls) = (Vec::new(), Vec::new(), Vec::new());
-    for (id, object) in world.objects() {
+    for (id, object) in world.bodies().objects() {
         if !object.is_present() || hidden.contains(&id) {
             continue;
         }
         let still = object.body_kind == BodyKind::Fixed;
         let seed = object_seed(world, id);
-        for part in world.core().visual_parts_with(id, models) {
+        for part in world.visuals().parts_with(id, models) {
             if part.visual.material == Material::Glass {
                 continue;
             }

@@ -26,17 +26,18 @@ const WINDOW_GAP: f32 = 0.2;
 
 /// The walls' casters cut at the windows, and a roof over the walls' tops; none in a world
 /// without walls. `Some` only where the world has walls: each wall part (by its object's index
-/// in `world.objects()` order and the part's) is replaced by the slabs given.
+/// in `world.bodies().objects()` order and the part's) is replaced by the slabs given.
 pub(crate) fn sun_casters(world: &World) -> Option<SunCasters> {
     let walls = wall_parts(world);
     if walls.is_empty() {
         return None;
     }
     let windows: Vec<(Vector, Vector)> = world
+        .bodies()
         .objects()
         .filter(|(_, o)| o.is_present() && o.category == WINDOW_SYNSET)
         .map(|(id, _)| {
-            let b = world.aabb(id);
+            let b = world.bodies().aabb(id);
             (b.mins, b.maxs)
         })
         .collect();
@@ -69,11 +70,11 @@ pub(crate) struct SunCasters {
 /// Every box of the walls, posed in the world.
 fn wall_parts(world: &World) -> Vec<Slab> {
     let mut walls = Vec::new();
-    for (id, object) in world.objects() {
+    for (id, object) in world.bodies().objects() {
         if !object.is_present() || object.category != WALL_SYNSET {
             continue;
         }
-        for part in world.core().visual_parts(id) {
+        for part in world.visuals().parts(id) {
             let half = match part.shape {
                 VisualShape::Primitive(Primitive::Box { half_extents }) => *half_extents,
                 VisualShape::Formed { half_extents, .. } => half_extents,

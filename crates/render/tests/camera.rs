@@ -141,7 +141,7 @@ fn moving_the_box_one_pixel_width_gives_a_flow_of_one_pixel() {
     // One pixel at 2 m: the image's 2·2·tan(60°) m over 128 pixels; toward −y is rightward.
     let pixel = 2.0 * 2.0 * 60f32.to_radians().tan() / 128.0;
     let moved = Pose::from_translation(v(2.1, -pixel, 0.0));
-    world.set_pose(id, moved).unwrap();
+    world.bodies_mut().set_pose(id, moved).unwrap();
     let frame = render(
         &world,
         &mut view,
@@ -189,7 +189,7 @@ fn lidar_ranges_are_the_distances_of_the_world_rays() {
     let (_, _, directions) = lidar.directions();
     for (range, d) in scan.ranges.iter().zip(&directions) {
         let ray = world
-            .core()
+            .query()
             .cast_ray(Vector::ZERO, *d, 10.0, &QueryFilter::default())
             .unwrap();
         assert_eq!(*range, ray.map_or(0.0, |h| h.distance));
@@ -440,7 +440,7 @@ fn middle_brightness(frame: &Frame, object: ObjectId) -> f32 {
 #[test]
 fn the_sun_casts_the_shadow_of_a_post_on_the_ground() {
     let (world, eye) = post_on_ground();
-    let ground = world.object_named("ground").unwrap();
+    let ground = world.bodies().object_named("ground").unwrap();
     let brightness = |profile| ground_brightness(&in_profile(&world, eye, profile), ground);
     let (fast, real) = (
         brightness(ImageProfile::Fast),
@@ -498,7 +498,7 @@ fn a_board_overhead_dims_the_ground_under_it_beyond_its_shadow() {
     let (with, without) = (frame(true), frame(false));
     let ins = |f: &Frame| f.get(Modality::InsSeg).cloned();
     assert_eq!(ins(&with), ins(&without), "occlusion changed what is seen");
-    let ground = world.object_named("ground").unwrap();
+    let ground = world.bodies().object_named("ground").unwrap();
     let (dim, lit) = (
         middle_brightness(&with, ground),
         middle_brightness(&without, ground),

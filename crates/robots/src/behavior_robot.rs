@@ -43,9 +43,7 @@ impl RobotParts {
         // Robot parts touch neither each other (the hands start inside the body) nor water.
         let others = groups::ALL & !groups::ROBOT & !groups::WATER;
         for id in parts.all() {
-            world
-                .core_mut()
-                .set_collision_groups(id, groups::ROBOT, others);
+            world.contacts_mut().set_groups(id, groups::ROBOT, others);
         }
         Ok(parts)
     }
@@ -195,7 +193,7 @@ impl BehaviorRobot {
 
     /// The body's pose in the world.
     pub fn body_pose(&self, world: &World) -> Pose {
-        world.pose(self.parts.body)
+        world.bodies().pose(self.parts.body)
     }
 
     /// The eye's pose in the world: it looks along its +x, with +z up.
@@ -206,7 +204,7 @@ impl BehaviorRobot {
     /// A palm's pose in the world (see the hand's frame in `hand.rs`: x along the fingers, the
     /// palm facing −z).
     pub fn hand_pose(&self, world: &World, side: Side) -> Pose {
-        world.pose(self.parts.hand(side))
+        world.bodies().pose(self.parts.hand(side))
     }
 
     /// Where a hand is told to be, in the body frame: where its actions have sent it (the palm
@@ -415,7 +413,7 @@ impl StepHooks for BehaviorRobot {
         self.update_grasps(world);
         if !self.releases.is_empty() {
             // Contacts come back after the release step, once apart, and not while held again.
-            let (grasps, now) = (self.grasps, world.steps());
+            let (grasps, now) = (self.grasps, world.bodies().steps());
             let held = |body: BodyRef| grasps.iter().flatten().any(|g| g.body == body);
             self.releases
                 .retain_mut(|r| held(r.body) || r.since == now || !r.settle(world));
@@ -431,7 +429,7 @@ impl BehaviorRobot {
     /// Draws the head round the eye (the world keeps it only if it moved).
     fn follow_with_head(&self, world: &mut World) {
         let head = head_round(self.eye_pose(world));
-        world.core_mut().set_ghost(self.parts.body, Some(head));
+        world.bodies_mut().set_ghost(self.parts.body, Some(head));
     }
 
     /// Tells the world where the palms and fingertips are, for buttons.
@@ -472,9 +470,9 @@ impl BehaviorRobot {
             && self.hands[i].rests_on(&self.targets.hand_in_world(side));
         match self.parked[i] {
             Some(id) => {
-                let intact = world.core().attachment(id).is_some_and(|a| !a.broken);
+                let intact = world.attachments().get(id).is_some_and(|a| !a.broken);
                 if !(still && intact) {
-                    world.core_mut().detach(id);
+                    world.attachments_mut().detach(id);
                     self.parked[i] = None;
                 }
             }
@@ -489,16 +487,16 @@ impl BehaviorRobot {
         let spec = AttachmentSpec {
             holder: BodyRef::from(self.parts.body),
             held: palm,
-            at: world.pose(palm.object).translation,
+            at: world.bodies().pose(palm.object).translation,
             kind: AttachmentKind::Fixed,
             max_force: PARKING_FORCE,
         };
-        self.parked[side.index()] = world.core_mut().attach(spec).ok();
+        self.parked[side.index()] = world.attachments_mut().attach(spec).ok();
     }
 
     /// Moves the body and palms for one substep.
     fn move_parts(&mut self, world: &mut World, substep: u32) {
-        let n = world.core().substeps().count();
+        let n = world.bodies().substeps().count();
         let body = if substep + 1 >= n {
             self.targets.body
         } else {
@@ -510,20 +508,20 @@ impl BehaviorRobot {
             // The velocity that lands the body on this substep's pose. A velocity-driven body
             // stopped with exactly zero velocity sleeps; a position-driven one turned by any
             // angle never does (rapier derives its velocity from rounded rotations).
-            let now = world.pose(self.parts.body);
+            let now = world.bodies().pose(self.parts.body);
             let velocity = Velocity {
                 linear: (body.translation - now.translation) / dt,
                 angular: rotation_error(now.rotation, body.rotation) / dt,
             };
             // Finite poses make finite velocities: the world cannot refuse these.
             let _ = world
-                .core_mut()
+                .bodies_mut()
                 .set_velocity(self.parts.body.into(), velocity);
             self.moved = true;
             self.body_moving = true;
         } else if self.body_moving {
             let _ = world
-                .core_mut()
+                .bodies_mut()
                 .set_velocity(self.parts.body.into(), Velocity::default());
             self.body_moving = false;
         }
@@ -560,12 +558,12 @@ impl BehaviorRobot {
             let trigger = self.targets.triggers[i];
             match self.grasps[i] {
                 Some(grasp) if must_release(world, &grasp, trigger, &self.rules) => {
-                    world.core_mut().detach(grasp.attachment);
+                    world.attachments_mut().detach(grasp.attachment);
                     self.grasps[i] = None;
                     self.releases.push(Release {
                         body: grasp.body,
                         parts: self.parts.all().to_vec(),
-                        since: world.steps(),
+                        since: world.bodies().steps(),
                     });
                 }
                 None if trigger > self.rules.threshold => {
@@ -595,11 +593,11 @@ impl BehaviorRobot {
         }
         let pose = Pose::from_parts(pose.translation, pose.rotation.normalize());
         for id in self.parked.iter_mut().filter_map(Option::take) {
-            world.core_mut().detach(id);
+            world.attachments_mut().detach(id);
         }
         // Where each hand is now, to carry what it holds along.
         let before = Side::BOTH.map(|s| self.hand_pose(world, s));
-        world.set_pose(self.parts.body, pose)?;
+        world.bodies_mut().set_pose(self.parts.body, pose)?;
         self.targets.body = pose;
         self.step_from = pose;
         self.body_moving = false;
@@ -621,12 +619,12 @@ impl BehaviorRobot {
     ) -> Result<(), MagicError> {
         let i = side.index();
         let target = self.targets.hand_in_world(side);
-        world.set_pose(self.parts.hand(side), target)?;
+        world.bodies_mut().set_pose(self.parts.hand(side), target)?;
         self.hands[i] = Follower::at(target);
         if let Some(grasp) = self.grasps[i] {
             let held = grasp.body.object;
-            let relative = before.inv_mul(&world.pose(held));
-            world.set_pose(held, target * relative)?;
+            let relative = before.inv_mul(&world.bodies().pose(held));
+            world.bodies_mut().set_pose(held, target * relative)?;
         }
         self.park(world, side);
         Ok(())
@@ -637,7 +635,7 @@ impl BehaviorRobot {
     /// hand pinned behind furniture that its servo cannot pull free.
     fn reset_palm(&mut self, world: &mut World, side: Side) -> Result<(), MagicError> {
         if let Some(id) = self.parked[side.index()].take() {
-            world.core_mut().detach(id);
+            world.attachments_mut().detach(id);
         }
         let before = self.hand_pose(world, side);
         self.put_hand_at_target(world, side, before)?;
@@ -654,9 +652,9 @@ impl BehaviorRobot {
         object: ObjectId,
     ) -> Result<(), MagicError> {
         let kind = self.may_hold(world, side, object)?;
-        let palm = world.pose(self.parts.hand(side));
+        let palm = world.bodies().pose(self.parts.hand(side));
         // The palm faces its −z: the object's box goes just below it, touching.
-        let aabb = world.aabb(object);
+        let aabb = world.bodies().aabb(object);
         let half = (aabb.maxs - aabb.mins) * 0.5;
         let below = palm.rotation * rapier3d::math::Vector::NEG_Z;
         let reach = (below * half).abs().element_sum() + 0.01;
@@ -674,14 +672,17 @@ impl BehaviorRobot {
     ) -> Result<(), MagicError> {
         let kind = self.may_hold(world, side, object)?;
         let hand = self.parts.hand(side);
-        let contacts = world.core().contacts(BodyRef::from(hand))?;
+        let contacts = world.contacts().of(BodyRef::from(hand))?;
         if !contacts
             .iter()
             .any(|c| c.other.is_some_and(|b| b.object == object))
         {
             return Err(MagicError::NotTouching(object));
         }
-        let at = world.pose(hand).transform_point(crate::hand::PALM_CENTRE);
+        let at = world
+            .bodies()
+            .pose(hand)
+            .transform_point(crate::hand::PALM_CENTRE);
         self.attach(world, side, object, kind, at)
     }
 
@@ -774,6 +775,7 @@ impl PosedHand for Palm {
 
     fn shoulder(&self, world: &World) -> Vector {
         world
+            .bodies()
             .pose(self.body)
             .transform_point(crate::body::shoulder(self.side))
     }

@@ -115,7 +115,7 @@ mod tests {
         let mut world = World::default();
         let spec = body_spec("body", Pose::IDENTITY).body(BodyKind::Dynamic);
         let body = world.add(spec).unwrap();
-        assert!((world.core().mass(body) - BODY_MASS).abs() < 1e-3);
+        assert!((world.bodies().mass(body) - BODY_MASS).abs() < 1e-3);
         for side in Side::BOTH {
             let hand = hand_rest(side).translation;
             assert!((hand - shoulder(side)).length() < HAND_REACH);

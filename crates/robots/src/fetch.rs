@@ -222,7 +222,7 @@ impl Fetch {
 
     /// The base's pose in the world: its origin on the floor between the wheels, x forward.
     pub fn base_pose(&self, world: &World) -> Pose {
-        world.pose(self.parts.base())
+        world.bodies().pose(self.parts.base())
     }
 
     /// The torso, head and arm positions (where the step begun last ends).
@@ -233,7 +233,7 @@ impl Fetch {
     /// The end effector's pose in the world (`gripper_link`: x out of the gripper, the fingers
     /// along ±y).
     pub fn eef_pose(&self, world: &World) -> Pose {
-        world.pose(self.parts.gripper())
+        world.bodies().pose(self.parts.gripper())
     }
 
     /// The head camera's pose in the world: it looks along its +x, with no roll.
@@ -265,7 +265,7 @@ impl Fetch {
             },
             FetchJoint::RightFinger | FetchJoint::LeftFinger => {
                 let link = j.index() - FetchJoint::RightFinger.index();
-                let state = world.core().joint_state(self.parts.gripper(), link);
+                let state = world.joints().state(self.parts.gripper(), link);
                 state.unwrap_or(JointState {
                     position: 0.0,
                     velocity: 0.0,
@@ -627,12 +627,12 @@ impl Fetch {
     /// The static loads of the torso and the arm joints (torso first): what holds the links
     /// beyond each, and what the gripper holds, against gravity (see `fetch_proprioception.rs`).
     fn static_efforts(&self, world: &World) -> [f32; 8] {
-        let gravity = self.motion.now.base.rotation.inverse() * world.core().gravity();
+        let gravity = self.motion.now.base.rotation.inverse() * world.bodies().gravity();
         let poses = self.motion.now.joints.link_poses();
         let held = self
             .gripper
             .holding()
-            .map_or(0.0, |b| world.core().total_mass(b.object));
+            .map_or(0.0, |b| world.bodies().total_mass(b.object));
         // (mass, centre in the base frame) of each link the arm carries, gripper last.
         let mut loads: Vec<(f32, Vector)> = (4..FETCH_LINKS)
             .map(|k| {
@@ -703,13 +703,14 @@ impl Fetch {
         let (yaw, _, _) = pose.rotation.normalize().to_euler(EulerRot::ZYX);
         let base = Pose::from_parts(pose.translation, Rotation::from_rotation_z(yaw));
         let gripper = self.parts.gripper();
-        let before = world.pose(gripper);
+        let before = world.bodies().pose(gripper);
         let links = self.parts.all();
         self.motion.place::<Fetch>(world, &links, base)?;
         if let Some(body) = self.gripper.holding() {
             let held = body.object;
-            let relative = before.inv_mul(&world.pose(held));
-            world.set_pose(held, world.pose(gripper) * relative)?;
+            let relative = before.inv_mul(&world.bodies().pose(held));
+            let target = world.bodies().pose(gripper) * relative;
+            world.bodies_mut().set_pose(held, target)?;
         }
         self.wheel_rates = [0.0; 2];
         self.gripper.press(world, &GRIPPER);

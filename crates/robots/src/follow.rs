@@ -108,11 +108,10 @@ impl Follower {
 /// they move with it.
 pub(crate) fn servo(world: &mut World, hand: ObjectId, reference: &Pose, dt: f32) {
     let palm = BodyRef::from(hand);
-    let core = world.core();
     let (Ok(now), Ok(velocity), Ok(centre)) = (
-        core.body_pose(palm),
-        core.velocity(palm),
-        core.centre_of_mass(palm),
+        world.bodies().body_pose(palm),
+        world.bodies().velocity(palm),
+        world.bodies().centre_of_mass(palm),
     ) else {
         return;
     };
@@ -120,7 +119,7 @@ pub(crate) fn servo(world: &mut World, hand: ObjectId, reference: &Pose, dt: f32
     // it is sent where it is when the hand is at the reference.
     let centre_there = reference.transform_point(now.inverse_transform_point(centre));
     // What gravity takes off the velocity during the substep, given back in advance.
-    let lift = -core.gravity() * dt;
+    let lift = -world.bodies().gravity() * dt;
     let wanted = (centre_there - centre) / dt + lift;
     let limit = HAND_FORCE / HAND_MASS * dt;
     let linear = velocity.linear + (wanted - velocity.linear).clamp_length_max(limit);
@@ -131,13 +130,15 @@ pub(crate) fn servo(world: &mut World, hand: ObjectId, reference: &Pose, dt: f32
         angular: velocity.angular + spin,
     };
     // Finite: the reference and the hand's state are; the world cannot refuse it.
-    let _ = world.core_mut().set_velocity(palm, twist);
+    let _ = world.bodies_mut().set_velocity(palm, twist);
 }
 
 /// Whether a palm rests within a few millimetres of `reference`: close enough to be parked there.
 pub(crate) fn settled(world: &World, palm: BodyRef, reference: &Pose) -> bool {
-    let (Ok(now), Ok(velocity)) = (world.core().body_pose(palm), world.core().velocity(palm))
-    else {
+    let (Ok(now), Ok(velocity)) = (
+        world.bodies().body_pose(palm),
+        world.bodies().velocity(palm),
+    ) else {
         return false;
     };
     let offset = (now.translation - reference.translation).length();

@@ -79,7 +79,7 @@ impl GraspRules {
     /// furniture on a revolute or prismatic joint, whatever its mass (its hinge carries it).
     /// Fixed and kinematic bodies (furniture, walls, robots) cannot be held.
     pub fn holdable(&self, world: &World, body: BodyRef) -> Option<AttachmentKind> {
-        let object = world.object(body.object);
+        let object = world.bodies().object(body.object);
         if !object.is_present() {
             return None;
         }
@@ -90,7 +90,7 @@ impl GraspRules {
             return moves.then_some(AttachmentKind::Point);
         }
         // What the hand would lift: the object with its links (a box with its lid).
-        let light = world.core().total_mass(body.object) <= self.max_mass;
+        let light = world.bodies().total_mass(body.object) <= self.max_mass;
         let movable = object.body_kind == BodyKind::Dynamic;
         (movable && (light || self.allowed.contains(&object.category)))
             .then_some(AttachmentKind::Fixed)
@@ -173,7 +173,7 @@ impl Grasper<'_> {
             kind,
             max_force: self.rules.max_force(kind),
         };
-        let attachment = world.core_mut().attach(spec).ok()?;
+        let attachment = world.attachments_mut().attach(spec).ok()?;
         // With all of a held object's bodies (a folder's cover too, which otherwise struck
         // the palm that held the folder and broke the grasp).
         for &part in self.own {
@@ -188,7 +188,7 @@ impl Grasper<'_> {
 
     /// Every body the hand (palm or a finger) touched in the last substep, its own excepted.
     fn touched(&self, world: &World) -> Vec<BodyRef> {
-        let contacts = world.core().contacts(BodyRef::from(self.hand));
+        let contacts = world.contacts().of(BodyRef::from(self.hand));
         let others = contacts
             .unwrap_or_default()
             .into_iter()
@@ -230,7 +230,7 @@ fn first_hit(
         return None;
     }
     let hit = world
-        .core()
+        .query()
         .cast_ray(origin, direction, length, filter)
         .ok()??;
     Some((hit.body?, hit.point))
@@ -238,7 +238,7 @@ fn first_hit(
 
 /// Whether a grasp must end: its trigger let go, or its attachment broke or drifted.
 pub(crate) fn must_release(world: &World, grasp: &Grasp, trigger: f32, rules: &GraspRules) -> bool {
-    match world.core().attachment(grasp.attachment) {
+    match world.attachments().get(grasp.attachment) {
         None => true,
         Some(state) => {
             trigger <= rules.threshold || state.broken || state.violation > rules.max_violation
@@ -251,7 +251,10 @@ impl Release {
     pub(crate) fn settle(&mut self, world: &mut World) -> bool {
         let body = self.body;
         self.parts.retain(|&part| {
-            let clear = !world.aabb(body.object).intersects(&world.aabb(part));
+            let clear = !world
+                .bodies()
+                .aabb(body.object)
+                .intersects(&world.bodies().aabb(part));
             if clear {
                 ignore_between(world, part, body, false);
             }
@@ -271,12 +274,13 @@ pub(crate) fn overlooked(
     own: &[ObjectId],
     since: u64,
 ) -> Option<Release> {
-    let held = world.aabb(body.object);
+    let held = world.bodies().aabb(body.object);
     let parts: Vec<ObjectId> = world
+        .bodies()
         .objects()
         .filter(|(id, o)| *id != body.object && o.is_present() && !own.contains(id))
         .map(|(id, _)| id)
-        .filter(|&id| world.aabb(id).intersects(&held))
+        .filter(|&id| world.bodies().aabb(id).intersects(&held))
         .collect();
     for &part in &parts {
         ignore_between(world, part, body, true);
@@ -311,11 +315,11 @@ impl Hold<'_> {
             kind,
             max_force: self.rules.max_force(kind),
         };
-        let attachment = world.core_mut().attach(spec)?;
+        let attachment = world.attachments_mut().attach(spec)?;
         for &part in &self.own {
             ignore_between(world, part, body, true);
         }
-        let since = world.steps();
+        let since = world.bodies().steps();
         self.releases
             .extend(overlooked(world, body, &self.own, since));
         Ok(attachment)
@@ -324,12 +328,12 @@ impl Hold<'_> {
     /// Lets go of `body`, held by `attachment`, at once: its contacts with what it was put
     /// beside back now, with the robot's parts once it is clear of each.
     pub(crate) fn let_go(self, world: &mut World, body: BodyRef, attachment: AttachmentId) {
-        world.core_mut().detach(attachment);
+        world.attachments_mut().detach(attachment);
         restore_overlooked(world, self.releases, body, &self.own);
         self.releases.push(Release {
             body,
             parts: self.own,
-            since: world.steps(),
+            since: world.bodies().steps(),
         });
     }
 }
@@ -356,7 +360,7 @@ pub(crate) fn restore_overlooked(
 
 /// An object's body and its links' bodies.
 fn object_bodies(world: &World, id: ObjectId) -> Vec<BodyRef> {
-    let links = world.object(id).links.len();
+    let links = world.bodies().object(id).links.len();
     std::iter::once(BodyRef::from(id))
         .chain((0..links).map(|l| BodyRef::link(id, l)))
         .collect()
@@ -368,12 +372,12 @@ fn object_bodies(world: &World, id: ObjectId) -> Vec<BodyRef> {
 /// furniture (a door).
 pub(crate) fn ignore_between(world: &mut World, part: ObjectId, held: BodyRef, ignore: bool) {
     let helds = match held.link {
-        Some(_) if world.object(held.object).is_fixed() => vec![held],
+        Some(_) if world.bodies().object(held.object).is_fixed() => vec![held],
         _ => object_bodies(world, held.object),
     };
     for p in object_bodies(world, part) {
         for &h in &helds {
-            let _ = world.core_mut().ignore_contacts(p, h, ignore);
+            let _ = world.contacts_mut().ignore(p, h, ignore);
         }
     }
 }
@@ -385,9 +389,9 @@ pub(crate) fn centre_on(
     object: ObjectId,
     centre: Vector,
 ) -> Result<(), behavior_sim::WorldError> {
-    let pose = world.pose(object);
-    let shift = centre - world.aabb(object).center();
-    world.set_pose(
+    let pose = world.bodies().pose(object);
+    let shift = centre - world.bodies().aabb(object).center();
+    world.bodies_mut().set_pose(
         object,
         rapier3d::math::Pose::from_parts(pose.translation + shift, pose.rotation),
     )

@@ -67,7 +67,7 @@ pub(crate) fn bodies(palm: ObjectId, spec: &GripperSpec) -> [BodyRef; 3] {
 
 /// The finger positions of the gripper of `palm`, m: 0 closed.
 pub(crate) fn fingers(world: &World, palm: ObjectId, spec: &GripperSpec) -> [f32; 2] {
-    spec.fingers.map(|l| world.core().joint_position(palm, l))
+    spec.fingers.map(|l| world.joints().position(palm, l))
 }
 
 impl ParallelGripper {
@@ -85,7 +85,7 @@ impl ParallelGripper {
             releases: Vec::new(),
         };
         for link in spec.fingers {
-            world.set_joint_position(palm, link, spec.open)?;
+            world.joints_mut().set_position(palm, link, spec.open)?;
         }
         gripper.drive(world, spec, spec.open);
         Ok(gripper)
@@ -123,12 +123,12 @@ impl ParallelGripper {
     pub(crate) fn after_step(&mut self, world: &mut World, cx: GraspContext<'_>) {
         match self.held {
             Some(held) if self.must_release(world, &held, cx.rules) => {
-                world.core_mut().detach(held.attachment);
+                world.attachments_mut().detach(held.attachment);
                 self.held = None;
                 self.releases.push(Release {
                     body: held.body,
                     parts: vec![self.palm],
-                    since: world.steps(),
+                    since: world.bodies().steps(),
                 });
             }
             None if self.command < 0.0 => self.try_grasp(world, cx),
@@ -136,7 +136,7 @@ impl ParallelGripper {
         }
         if !self.releases.is_empty() {
             // Contacts come back after the release step, once apart, and not while held again.
-            let (held, now) = (self.holding(), world.steps());
+            let (held, now) = (self.holding(), world.bodies().steps());
             self.releases
                 .retain_mut(|r| Some(r.body) == held || r.since == now || !r.settle(world));
         }
@@ -150,9 +150,9 @@ impl ParallelGripper {
 
     /// Where the gripper's centre and pads are, in the world.
     pub(crate) fn points(&self, world: &World, spec: &GripperSpec) -> [Vector; 3] {
-        let centre = world.pose(self.palm).transform_point(spec.centre);
+        let centre = world.bodies().pose(self.palm).transform_point(spec.centre);
         let pads = [0, 1].map(|k| {
-            let pose = world.core().link_pose(self.palm, spec.fingers[k]);
+            let pose = world.bodies().link_pose(self.palm, spec.fingers[k]);
             pose.transform_point(spec.pads[k])
         });
         [centre, pads[0], pads[1]]
@@ -166,13 +166,13 @@ impl ParallelGripper {
         let drive = Drive::position(target, spec.stiffness, spec.damping, spec.effort);
         for link in spec.fingers {
             // The links exist and the drive's numbers are finite: this cannot fail.
-            let _ = world.core_mut().drive_joint(self.palm, link, drive);
+            let _ = world.joints_mut().drive(self.palm, link, drive);
         }
         self.target = target;
     }
 
     fn must_release(&self, world: &World, held: &Held, rules: &GraspRules) -> bool {
-        match world.core().attachment(held.attachment) {
+        match world.attachments().get(held.attachment) {
             None => true,
             Some(state) => {
                 self.command > 0.0 || state.broken || state.violation > rules.max_violation
@@ -209,9 +209,9 @@ impl ParallelGripper {
             kind,
             max_force: cx.rules.max_force(kind),
         };
-        let attachment = world.core_mut().attach(attach)?;
+        let attachment = world.attachments_mut().attach(attach)?;
         for part in self.bodies(cx.spec) {
-            let _ = world.core_mut().ignore_contacts(part, body, true);
+            let _ = world.contacts_mut().ignore(part, body, true);
         }
         let [first, _] = self.fingers(world, cx.spec);
         self.drive(world, cx.spec, first.clamp(0.0, cx.spec.open));
@@ -228,14 +228,14 @@ impl ParallelGripper {
         own: &[ObjectId],
     ) -> Option<(BodyRef, Vector)> {
         let contacts = spec.fingers.map(|l| {
-            let all = world.core().contacts(BodyRef::link(self.palm, l));
+            let all = world.contacts().of(BodyRef::link(self.palm, l));
             all.unwrap_or_default()
                 .into_iter()
                 .filter_map(|c| Some((c.other?, c.point)))
                 .filter(|(b, _)| !own.contains(&b.object))
                 .collect::<Vec<_>>()
         });
-        let centre = world.pose(self.palm).transform_point(spec.centre);
+        let centre = world.bodies().pose(self.palm).transform_point(spec.centre);
         let mut best: Option<(f32, BodyRef, Vector)> = None;
         for &(body, _) in &contacts[0] {
             if !contacts[1].iter().any(|(b, _)| *b == body) {
@@ -269,7 +269,10 @@ impl ParallelGripper {
         self.empty()?;
         let body = BodyRef::from(object);
         let kind = cx.rules.kind_for(world, body, cx.own, None)?;
-        let centre = world.pose(self.palm).transform_point(cx.spec.centre);
+        let centre = world
+            .bodies()
+            .pose(self.palm)
+            .transform_point(cx.spec.centre);
         centre_on(world, object, centre)?;
         let palm = self.palm;
         let attachment = self.at_once(cx).attach(world, palm, body, centre, kind)?;
@@ -291,7 +294,7 @@ impl ParallelGripper {
         let mut points = Vec::new();
         let mut body = None;
         for part in self.bodies(cx.spec) {
-            for c in world.core().contacts(part)? {
+            for c in world.contacts().of(part)? {
                 if let Some(b) = c.other.filter(|b| b.object == object) {
                     points.push(c.point);
                     body = Some(body.map_or(b, |old: BodyRef| old.min(b)));

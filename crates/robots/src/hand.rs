@@ -10,7 +10,7 @@
 //! fingers close toward −z, the thumb swings down beside the palm.
 //!
 //! Why the fingers are shapes of the hand's body, turned in place each substep
-//! ([`behavior_sim::Core::set_part_offset`]), rather than links on joints as the original's:
+//! ([`behavior_sim::Bodies::set_part_offset`]), rather than links on joints as the original's:
 //! the fingers do not hold anything — the assisted grasp does ([`crate::GraspRules`]) — so they
 //! are there to be seen and to touch, and ten jointed finger bodies were most of what a moving
 //! robot cost the solver (about 40 % of a step under random actions). The price: a finger does
@@ -265,9 +265,10 @@ impl Fingers {
             }
             *angle += (goal - *angle).clamp(-most, most);
             // A finite angle makes a finite pose of an existing part: the world cannot refuse.
-            let _ = world
-                .core_mut()
-                .set_part_offset(hand, part(f), finger_offset(side, f, *angle));
+            let _ =
+                world
+                    .bodies_mut()
+                    .set_part_offset(hand, part(f), finger_offset(side, f, *angle));
         }
         true
     }
@@ -287,8 +288,8 @@ pub(crate) struct HandPoints {
 impl HandPoints {
     /// Where the hand's fingers are in the world (read from its parts, so always as built).
     pub(crate) fn of(world: &World, hand: ObjectId) -> HandPoints {
-        let palm = world.pose(hand);
-        let parts = &world.object(hand).parts;
+        let palm = world.bodies().pose(hand);
+        let parts = &world.bodies().object(hand).parts;
         let at = |f: usize, along: f32| {
             let finger = palm * parts[part(f)].offset;
             finger.transform_point(on_finger(f, along))
@@ -323,9 +324,9 @@ mod tests {
         let hand = world
             .add(hand_spec("hand", Side::Right, Pose::IDENTITY))
             .unwrap();
-        assert!((world.core().mass(hand) - HAND_MASS).abs() < 1e-4);
-        assert_eq!(world.object(hand).parts.len(), 1 + FINGERS);
-        assert!(world.object(hand).links.is_empty());
+        assert!((world.bodies().mass(hand) - HAND_MASS).abs() < 1e-4);
+        assert_eq!(world.bodies().object(hand).parts.len(), 1 + FINGERS);
+        assert!(world.bodies().object(hand).links.is_empty());
         // The thumb of a right hand, palm down, is on its left.
         let points = HandPoints::of(&world, hand);
         assert!(points.origins[3].y > 0.0);

@@ -131,9 +131,7 @@ pub(crate) fn add_links(
     let mut links = Vec::new();
     for spec in specs {
         let id = world.add(spec)?;
-        world
-            .core_mut()
-            .set_collision_groups(id, groups::ROBOT, others);
+        world.contacts_mut().set_groups(id, groups::ROBOT, others);
         links.push(id);
     }
     Ok(links)
@@ -230,14 +228,14 @@ impl<J: Copy + PartialEq> LinkMotion<J> {
             if self.moving {
                 for &id in links {
                     let _ = world
-                        .core_mut()
+                        .bodies_mut()
                         .set_velocity(id.into(), Velocity::default());
                 }
                 self.moving = false;
             }
             return;
         }
-        let n = world.core().substeps().count();
+        let n = world.bodies().substeps().count();
         let posture = if substep + 1 >= n {
             self.now
         } else {
@@ -251,9 +249,9 @@ impl<J: Copy + PartialEq> LinkMotion<J> {
         let dt = STEP_SECONDS / n as f32;
         for (k, &id) in links.iter().enumerate() {
             let target = posture.base * poses[k];
-            let velocity = velocity_to(world.pose(id), target, M::centre(k), dt);
+            let velocity = velocity_to(world.bodies().pose(id), target, M::centre(k), dt);
             // Finite poses make finite velocities: the world cannot refuse these.
-            let _ = world.core_mut().set_velocity(id.into(), velocity);
+            let _ = world.bodies_mut().set_velocity(id.into(), velocity);
         }
         self.moving = true;
     }
@@ -268,7 +266,7 @@ impl<J: Copy + PartialEq> LinkMotion<J> {
         let posture = Posture { base, ..self.now };
         let poses = M::link_poses(&posture.joints);
         for (k, &id) in links.iter().enumerate() {
-            world.set_pose(id, base * poses[k])?;
+            world.bodies_mut().set_pose(id, base * poses[k])?;
         }
         *self = LinkMotion::at(posture);
         Ok(())

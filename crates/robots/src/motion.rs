@@ -88,11 +88,12 @@ pub(crate) struct Blocker<'a> {
 impl Blocker<'_> {
     /// The fixed bodies a shape (at `offset` in a part's frame) overlaps with the part at `pose`.
     fn fixed_overlaps(&self, shape: &(Primitive, Pose), pose: Pose) -> Vec<BodyRef> {
-        let fixed = |b: &BodyRef| b.link.is_none() && self.world.object(b.object).is_fixed();
+        let fixed =
+            |b: &BodyRef| b.link.is_none() && self.world.bodies().object(b.object).is_fixed();
         // A pose built from finite targets is finite, so the query cannot fail.
         let hits = self
             .world
-            .core()
+            .query()
             .overlaps(&shape.0, pose * shape.1, &self.filter);
         hits.unwrap_or_default().into_iter().filter(fixed).collect()
     }

@@ -325,7 +325,7 @@ impl Embodiment for R1 {
     }
 
     fn base_pose(&self, world: &World) -> Pose {
-        world.pose(self.links[0])
+        world.bodies().pose(self.links[0])
     }
 
     fn base(&self) -> ObjectId {
@@ -379,12 +379,13 @@ impl Embodiment for R1 {
             return Err(MagicError::BadPose);
         }
         let grippers = Side::BOTH.map(|s| self.gripper_object(s));
-        let before = grippers.map(|g| world.pose(g));
+        let before = grippers.map(|g| world.bodies().pose(g));
         self.motion.place::<R1>(world, &self.links, upright(pose))?;
         for (k, gripper) in self.grippers.iter().enumerate() {
             if let Some(body) = gripper.holding() {
-                let relative = before[k].inv_mul(&world.pose(body.object));
-                world.set_pose(body.object, world.pose(grippers[k]) * relative)?;
+                let relative = before[k].inv_mul(&world.bodies().pose(body.object));
+                let target = world.bodies().pose(grippers[k]) * relative;
+                world.bodies_mut().set_pose(body.object, target)?;
             }
         }
         self.press(world);

@@ -27,14 +27,14 @@ pub const EYE_FOV: f32 = 2.0 * std::f32::consts::FRAC_PI_3;
 
 /// The object, or its halves if it was sliced.
 fn pieces(world: &World, id: ObjectId) -> Vec<ObjectId> {
-    match world.halves(id) {
-        Some(halves) if !world.object(id).is_present() => halves.to_vec(),
+    match world.bodies().object(id).replaced_by {
+        Some(halves) if !world.bodies().object(id).is_present() => halves.to_vec(),
         _ => vec![id],
     }
 }
 
 fn centre(world: &World, id: ObjectId) -> Vector {
-    world.aabb(id).center()
+    world.bodies().aabb(id).center()
 }
 
 /// Whether the object is within reach of a body at `at`.
@@ -46,13 +46,14 @@ pub(crate) fn in_reach(world: &World, at: Vector, object: ObjectId) -> bool {
 
 /// Whether the object is in the room that contains `at`.
 pub(crate) fn in_same_room(world: &World, at: Vector, object: ObjectId) -> bool {
-    let core = world.core();
-    let Some(here) = core.room_at(at.x, at.y) else {
+    let Some(here) = world.relations().room_at(at.x, at.y) else {
         return false;
     };
     pieces(world, object).into_iter().any(|p| {
         let c = centre(world, p);
-        core.room_at(c.x, c.y)
+        world
+            .relations()
+            .room_at(c.x, c.y)
             .is_some_and(|r| (r.kind, r.instance) == (here.kind, here.instance))
     })
 }
@@ -73,7 +74,7 @@ pub(crate) fn in_view(world: &World, eye: Pose, object: ObjectId, own: &[ObjectI
         }
         let direction = target - eye.translation;
         let hit = world
-            .core()
+            .query()
             .cast_ray(eye.translation, direction, direction.length(), &filter);
         match hit {
             Ok(None) => true,

@@ -66,9 +66,9 @@ fn a_turned_robot_comes_to_rest_and_sleeps() {
     idle(&mut world, &mut robot, 90);
     for id in robot.parts().all() {
         assert!(
-            world.core().is_sleeping(id),
+            world.bodies().is_sleeping(id),
             "{} is awake",
-            world.object(id).name
+            world.bodies().object(id).name
         );
     }
 }
@@ -140,7 +140,7 @@ fn a_hand_stays_within_reach_of_its_shoulder() {
 
 /// The hand's finger shapes (parts 1–5 of its body) as they are in the world now.
 fn finger_shapes(world: &World, hand: ObjectId) -> Vec<Pose> {
-    world.object(hand).parts[1..]
+    world.bodies().object(hand).parts[1..]
         .iter()
         .map(|p| p.offset)
         .collect()
@@ -205,7 +205,7 @@ fn holding_an_apple(substeps: Substeps) -> (World, BehaviorRobot, ObjectId, Obje
     for _ in 0..30 {
         world.step();
     }
-    assert!(world.core().ontop(apple, table));
+    assert!(world.relations().ontop(apple, table));
     // Over the apple, then down until the palm rests on it (apple top 0.83 m; palm 1.5 cm thick).
     hand_to(&mut world, &mut robot, Side::Right, v(0.66, -0.12, 0.2));
     hand_to(&mut world, &mut robot, Side::Right, v(0.66, -0.12, 0.1455));
@@ -230,14 +230,14 @@ fn grasp_lift_and_drop(substeps: Substeps) {
     assert_eq!(robot.holding(Side::Right), Some(apple.into()));
     assert!(robot.proprioception(&world).grasping[1]);
 
-    let z0 = world.pose(apple).translation.z;
+    let z0 = world.bodies().pose(apple).translation.z;
     hand_to(&mut world, &mut robot, Side::Right, v(0.66, -0.12, 0.45));
-    let lifted = world.pose(apple).translation.z - z0;
+    let lifted = world.bodies().pose(apple).translation.z - z0;
     assert!(
         (lifted - 0.3).abs() < 0.02,
         "the apple rose {lifted} m with the hand"
     );
-    assert!(!world.core().ontop(apple, table));
+    assert!(!world.relations().ontop(apple, table));
     assert!(robot.is_holding(apple));
 
     // Let go: the trigger falls to 0.4, at or below the 0.5 threshold.
@@ -245,12 +245,12 @@ fn grasp_lift_and_drop(substeps: Substeps) {
     assert!(!robot.is_holding(apple));
     assert!(!robot.proprioception(&world).grasping[1]);
     idle(&mut world, &mut robot, 40);
-    let z = world.pose(apple).translation.z;
+    let z = world.bodies().pose(apple).translation.z;
     assert!(
         (z - z0).abs() < 0.01,
         "the apple fell back onto the table: z = {z}"
     );
-    assert!(world.core().ontop(apple, table));
+    assert!(world.relations().ontop(apple, table));
 }
 
 #[test]
@@ -259,7 +259,7 @@ fn a_grasp_ends_when_its_attachment_breaks_or_what_it_holds_is_taken_away() {
     let (mut world, mut robot, apple, table) = holding_an_apple(Substeps::default());
     assert!(robot.is_holding(apple));
     world
-        .core_mut()
+        .bodies_mut()
         .apply_force(apple.into(), v(0.0, 0.0, -1000.0))
         .unwrap();
     step(&mut world, &mut robot, Action::ZERO);
@@ -272,7 +272,7 @@ fn a_grasp_ends_when_its_attachment_breaks_or_what_it_holds_is_taken_away() {
         "though the trigger is still pressed"
     );
     idle(&mut world, &mut robot, 30);
-    assert!(world.core().ontop(apple, table));
+    assert!(world.relations().ontop(apple, table));
     assert!(
         !robot.is_holding(apple),
         "nor does it grasp again while touching it"
@@ -280,8 +280,8 @@ fn a_grasp_ends_when_its_attachment_breaks_or_what_it_holds_is_taken_away() {
 
     // Taken away (teleported 0.5 m): its anchor drifted past 0.1 m.
     let (mut world, mut robot, apple, _) = holding_an_apple(Substeps::default());
-    let away = Pose::from_translation(world.pose(apple).translation + v(0.0, 0.5, 0.0));
-    world.set_pose(apple, away).unwrap();
+    let away = Pose::from_translation(world.bodies().pose(apple).translation + v(0.0, 0.5, 0.0));
+    world.bodies_mut().set_pose(apple, away).unwrap();
     step(&mut world, &mut robot, Action::ZERO);
     assert!(!robot.is_holding(apple));
 }
@@ -324,8 +324,8 @@ fn bad_actions_are_refused_and_leave_the_world_untouched() {
             action(&[(0, 0.5), (Action::LEFT_TRIGGER, 1.0)]),
         );
     }
-    let bits = world.core().motion_bits();
-    let steps = world.steps();
+    let bits = world.bodies().motion_bits();
+    let steps = world.bodies().steps();
     let felt: Proprioception = robot.proprioception(&world);
     let mut nan = [0.0; 26];
     nan[7] = f32::NAN;
@@ -350,8 +350,8 @@ fn bad_actions_are_refused_and_leave_the_world_untouched() {
         robot.step(&mut world, &[]).unwrap_err().to_string(),
         "an action of this space has 26 values, got 0"
     );
-    assert_eq!(world.steps(), steps, "no step was taken");
-    assert_eq!(world.core().motion_bits(), bits, "nothing moved");
+    assert_eq!(world.bodies().steps(), steps, "no step was taken");
+    assert_eq!(world.bodies().motion_bits(), bits, "nothing moved");
     assert_eq!(robot.proprioception(&world), felt);
 }
 
@@ -372,7 +372,7 @@ fn a_bad_starting_pose_is_refused_and_adds_nothing() {
         BehaviorRobot::add(&mut world, skewed).unwrap_err(),
         RobotError::BadPose
     );
-    assert_eq!(world.objects().len(), 1, "no part of it was added");
+    assert_eq!(world.bodies().objects().len(), 1, "no part of it was added");
 }
 
 #[test]
@@ -426,13 +426,13 @@ fn what_a_hand_holds_passes_through_the_other_hand_until_let_go_and_clear() {
     assert!(robot.is_holding(apple));
     let ignored = |world: &World, robot: &BehaviorRobot, side: Side| {
         let part = robot.parts().hand(side);
-        world.core().contacts_ignored(part.into(), apple.into())
+        world.contacts().ignored(part.into(), apple.into())
     };
     // The whole robot lets it through while held: the hand, the body and the other hand.
     assert!(ignored(&world, &robot, Side::Right));
     assert!(ignored(&world, &robot, Side::Left));
     let body = robot.parts().body;
-    assert!(world.core().contacts_ignored(body.into(), apple.into()));
+    assert!(world.contacts().ignored(body.into(), apple.into()));
     // Let go, it falls onto the table clear of every part: contacts are back with each.
     press(&mut world, &mut robot, Side::Right, -1.0, 6);
     assert!(!robot.is_holding(apple));
@@ -440,7 +440,7 @@ fn what_a_hand_holds_passes_through_the_other_hand_until_let_go_and_clear() {
     idle(&mut world, &mut robot, 20);
     assert!(!ignored(&world, &robot, Side::Right));
     assert!(!ignored(&world, &robot, Side::Left));
-    assert!(!world.core().contacts_ignored(body.into(), apple.into()));
+    assert!(!world.contacts().ignored(body.into(), apple.into()));
 }
 
 #[test]
@@ -450,9 +450,9 @@ fn the_head_is_drawn_round_the_eye_and_follows_it_without_entering_the_physics()
     let mut robot =
         BehaviorRobot::add(&mut world, Pose::from_translation(v(0.0, 0.0, 0.7))).unwrap();
     // The floor, the body and two hands: the head is no object of its own.
-    assert_eq!(world.objects().len(), 4);
+    assert_eq!(world.bodies().objects().len(), 4);
     let head = |world: &World, robot: &BehaviorRobot| {
-        let parts = world.core().visual_parts(robot.parts().body);
+        let parts = world.visuals().parts(robot.parts().body);
         let last = parts.last().copied().expect("the body is drawn");
         match last.shape {
             behavior_sim::VisualShape::Formed { form, half_extents } => {
@@ -483,7 +483,7 @@ fn the_head_is_drawn_round_the_eye_and_follows_it_without_entering_the_physics()
     );
     assert!(inside(&world, &robot), "the eye is still inside its head");
     assert_eq!(
-        world.objects().len(),
+        world.bodies().objects().len(),
         4,
         "the head added no object to the world"
     );

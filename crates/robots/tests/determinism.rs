@@ -34,7 +34,7 @@ fn random_actions(seed: u64, n: usize) -> Vec<Action> {
 
 /// Every body's motion state and the robot's proprioception, as raw bits.
 fn fingerprint(world: &World, robot: &BehaviorRobot) -> Vec<u32> {
-    let mut bits = world.core().motion_bits();
+    let mut bits = world.bodies().motion_bits();
     bits.extend(robot.proprioception(world).to_array().map(f32::to_bits));
     bits
 }
@@ -124,7 +124,7 @@ mod fetch {
     }
 
     fn fingerprint(world: &World, robot: &Fetch) -> Vec<u32> {
-        let mut bits = world.core().motion_bits();
+        let mut bits = world.bodies().motion_bits();
         bits.extend(robot.proprioception(world).to_array().map(f32::to_bits));
         bits
     }

@@ -141,7 +141,7 @@ fn an_arm_reads_its_own_pose_back_through_ik_and_predicts_its_joint_action() {
             assert_eq!(now.len(), arm.limits().len());
             assert_eq!(arm.link_poses(&now).len(), arm.links().len());
             // The end effector where the gripper's object is.
-            let gripper = world.pose(arm.links()[arm.gripper()]);
+            let gripper = world.bodies().pose(arm.links()[arm.gripper()]);
             let eef = robot.base_pose(&world) * arm.eef(&now);
             assert!(
                 (gripper.translation - eef.translation).length() < 1e-4,

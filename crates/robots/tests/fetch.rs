@@ -227,7 +227,7 @@ fn the_gripper_grasps_an_apple_on_a_table_lifts_it_and_releases_it() {
     let mut robot = fetch_at(&mut world, 0.0, 0.0);
     let fruit = apple(&mut world, v(0.55, -0.1, 0.791));
     world.settle(60);
-    let at = world.pose(fruit).translation;
+    let at = world.bodies().pose(fruit).translation;
     assert!(robot.in_reach(&world, fruit) && robot.in_field_of_view(&world, fruit));
 
     // Above it, then around it, the gripper open.
@@ -260,7 +260,7 @@ fn the_gripper_grasps_an_apple_on_a_table_lifts_it_and_releases_it() {
 
     // Lift it 20 cm, still closing (holding on).
     eef_to(&mut world, &mut robot, at + v(0.0, 0.0, 0.2), -1.0, 0.01);
-    let lifted = world.pose(fruit).translation;
+    let lifted = world.bodies().pose(fruit).translation;
     assert!(lifted.z > at.z + 0.15, "{lifted:?}");
     assert!(robot.is_holding(fruit));
 
@@ -273,7 +273,7 @@ fn the_gripper_grasps_an_apple_on_a_table_lifts_it_and_releases_it() {
     );
     assert!(!robot.is_holding(fruit));
     go(&mut world, &mut robot, act(&[]), 45);
-    let dropped = world.pose(fruit).translation;
+    let dropped = world.bodies().pose(fruit).translation;
     assert!(dropped.z < lifted.z - 0.1, "{dropped:?}");
 }
 
@@ -283,7 +283,7 @@ fn bad_actions_are_errors_that_change_nothing() {
     floor(&mut world);
     let mut robot = fetch_at(&mut world, 0.0, 0.0);
     world.settle(30);
-    let (before, steps) = (world.core().motion_bits(), world.steps());
+    let (before, steps) = (world.bodies().motion_bits(), world.bodies().steps());
     let mut nan = [0.0; FETCH_ACTION_DIM];
     nan[5] = f32::NAN;
     let mut inf = [0.0; FETCH_ACTION_DIM];
@@ -298,12 +298,12 @@ fn bad_actions_are_errors_that_change_nothing() {
         Pose::from_translation(v(3.0, 0.0, 0.0)),
     )
     .unwrap();
-    let bits = world.core().motion_bits();
+    let bits = world.bodies().motion_bits();
     assert!(any.set_action(&[f32::NEG_INFINITY, 0.0]).is_err());
     assert!(any.set_action(&[0.0; 11]).is_err());
     world.step_with(&mut any);
-    assert_eq!(world.core().motion_bits()[..before.len()], before[..]);
-    assert_eq!(world.steps(), steps + 1);
+    assert_eq!(world.bodies().motion_bits()[..before.len()], before[..]);
+    assert_eq!(world.bodies().steps(), steps + 1);
     // The second robot stood still too (its pending action is still the zero one).
     assert_eq!(
         any.base_pose(&world).translation,
@@ -393,7 +393,7 @@ fn the_table_stops_the_gripper_pressed_down_into_it() {
     assert!(eef.z > 0.75 && eef.z < 0.85, "{eef:?}");
     let gripper = robot.parts().gripper();
     let table_top = 0.75;
-    assert!(world.aabb(gripper).mins.z > table_top - 0.01);
+    assert!(world.bodies().aabb(gripper).mins.z > table_top - 0.01);
 }
 
 #[test]

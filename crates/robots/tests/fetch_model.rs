@@ -28,12 +28,12 @@ fn every_link_has_its_meshes_within_its_colliders_box() {
     let mut total = 0;
     for link in FetchLink::ALL {
         let id = fetch.parts().link(link);
-        let piece = world.core().object(id).model;
+        let piece = world.bodies().object(id).model;
         assert_eq!(piece, Some(fetch_piece(link)), "{link:?} names its piece");
         assert_eq!(fetch_piece(link).model, Model::Fetch);
         let meshes = models.get(fetch_piece(link)).unwrap();
         assert!(!meshes.is_empty(), "{link:?} has no mesh");
-        let b = world.core().local_aabb(id);
+        let b = world.bodies().local_aabb(id);
         let (mut lo, mut hi) = (Vector::splat(f32::MAX), Vector::splat(f32::MIN));
         for m in meshes.iter().map(|h| &h.mesh) {
             assert!(

@@ -56,7 +56,7 @@ fn a_hand_holds_a_lid_by_its_edge_on_a_point_and_opens_it() {
         step(&mut world, &mut robot, action(&up_and_back));
     }
     idle(&mut world, &mut robot, 10);
-    let opened = world.core().joint_position(chest, 0);
+    let opened = world.joints().position(chest, 0);
     assert!(opened > 0.5, "the lid opened {opened} rad");
     assert!(world.state(chest, Predicate::Open));
     assert!(
@@ -77,7 +77,7 @@ fn a_hand_holds_a_lid_by_its_edge_on_a_point_and_opens_it() {
     assert!(
         !world.state(chest, Predicate::Open),
         "{}",
-        world.core().joint_position(chest, 0)
+        world.joints().position(chest, 0)
     );
 }
 
@@ -172,9 +172,9 @@ fn an_idle_robot_falls_asleep_and_wakes_when_told_to_move() {
     let parts = robot.parts();
     for id in parts.all() {
         assert!(
-            world.core().is_sleeping(id),
+            world.bodies().is_sleeping(id),
             "{} sleeps",
-            world.object(id).name
+            world.bodies().object(id).name
         );
     }
     let hand = robot.hand_pose(&world, Side::Left);
@@ -189,7 +189,7 @@ fn an_idle_robot_falls_asleep_and_wakes_when_told_to_move() {
         &mut robot,
         action(&[(Action::LEFT_HAND.start + 2, 1.0)]),
     );
-    assert!(!world.core().is_sleeping(parts.hand(Side::Left)));
+    assert!(!world.bodies().is_sleeping(parts.hand(Side::Left)));
     idle(&mut world, &mut robot, 5);
     let risen = robot.hand_pose(&world, Side::Left).translation.z - hand.translation.z;
     assert!((risen - 0.05).abs() < 1e-3, "the hand rose {risen} m");

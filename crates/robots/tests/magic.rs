@@ -61,14 +61,14 @@ fn a_grasp_made_at_once_holds_through_steps_and_a_teleport() {
             (base.truncate() - Vector::new(3.0, 2.0, 0.0).truncate()).length() < 1e-3,
             "{kind:?} at {base:?}"
         );
-        let near = (world.aabb(carton).center() - base).length();
+        let near = (world.bodies().aabb(carton).center() - base).length();
         assert!(near < 1.5, "{kind:?}: the carton is {near} m from the base");
-        let held_at = world.aabb(carton).mins.z;
+        let held_at = world.bodies().aabb(carton).mins.z;
         assert_eq!(robot.release_now(&mut world, hand), Some(carton));
         steps(&mut world, &mut robot, 60);
         assert_eq!(robot.held(hand), None);
         // To the floor, or onto the R1's base, over which its hands hang.
-        let fell = held_at - world.aabb(carton).mins.z;
+        let fell = held_at - world.bodies().aabb(carton).mins.z;
         assert!(fell > 0.1, "{kind:?}: the released carton fell {fell} m");
     }
 }
@@ -85,7 +85,7 @@ fn a_full_hand_and_a_fixed_object_are_refused() {
         robot.grasp_now(&mut world, 2, carton),
         Err(MagicError::NoHand(2))
     );
-    let floor = world.object_named("floor_0").unwrap();
+    let floor = world.bodies().object_named("floor_0").unwrap();
     assert_eq!(
         robot.grasp_now(&mut world, 0, floor),
         Err(MagicError::NotHoldable(floor))
@@ -107,18 +107,24 @@ fn a_hand_reset_puts_a_pinned_palm_back_at_its_target_with_what_it_holds() {
         bot.parts().hand(side),
         bot.body_pose(&world) * bot.hand_target(side),
     );
-    let grip = world.pose(palm).inv_mul(&world.pose(carton));
+    let grip = world
+        .bodies()
+        .pose(palm)
+        .inv_mul(&world.bodies().pose(carton));
     // Left 2 m behind with what it holds, as a doorway can leave it.
     let behind = Pose::from_translation(Vector::new(-2.0, 0.0, 1.0));
-    world.set_pose(palm, behind).unwrap();
-    world.set_pose(carton, behind * grip).unwrap();
+    world.bodies_mut().set_pose(palm, behind).unwrap();
+    world.bodies_mut().set_pose(carton, behind * grip).unwrap();
     robot.reset_hand(&mut world, 1).unwrap();
-    let now = world.pose(palm);
+    let now = world.bodies().pose(palm);
     assert!(
         (now.translation - target.translation).length() < 1e-4,
         "{now:?}"
     );
-    let carried = world.pose(palm).inv_mul(&world.pose(carton));
+    let carried = world
+        .bodies()
+        .pose(palm)
+        .inv_mul(&world.bodies().pose(carton));
     assert!((carried.translation - grip.translation).length() < 1e-4);
     steps(&mut world, &mut robot, 30);
     assert_eq!(robot.held(1), Some(carton), "still held after the reset");

@@ -77,13 +77,13 @@ fn step_and_check(
 fn lifted(home: &Home) -> World {
     let mut world = home.instance.world.clone();
     for created in &home.instance.created {
-        let id = world.object_named(&created.instance).unwrap();
-        let pose = world.pose(id);
+        let id = world.bodies().object_named(&created.instance).unwrap();
+        let pose = world.bodies().pose(id);
         let up = Pose::from_parts(
             pose.translation + Vector::new(0.0, 0.0, 0.02),
             pose.rotation,
         );
-        world.set_pose(id, up).unwrap();
+        world.bodies_mut().set_pose(id, up).unwrap();
     }
     world
 }
@@ -107,7 +107,7 @@ fn bench_homes(c: &mut Criterion) {
         let allocations = counting::allocations() - before;
         eprintln!(
             "{name}: {} objects ({} created), {} goal atoms; {allocations} heap allocations in 100 steps at rest",
-            world.objects().len(),
+            world.bodies().objects().len(),
             home.instance.created.len(),
             home.goal.atoms.len(),
         );

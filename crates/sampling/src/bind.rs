@@ -310,7 +310,7 @@ impl Attempt<'_> {
             let options = probing.options(&literals, (i, candidate));
             let placed = try_options(&mut probing.world, probe, &options, &mut self.rng);
             // Back to its parking spot, out of the next probe's way.
-            let _ = probing.world.set_pose(probe, parked);
+            let _ = probing.world.bodies_mut().set_pose(probe, parked);
             if let Err(cause) = placed {
                 return Ok(Some(Rejection { literals, cause }));
             }

@@ -143,7 +143,7 @@ impl Attempt<'_> {
             let Some(host) = self.bindings[o.0 as usize] else {
                 continue;
             };
-            let b = self.world.core().local_aabb(host);
+            let b = self.world.bodies().local_aabb(host);
             let room = b.maxs - b.mins;
             let share = 1.0 / (demands.holds(o) as f32).sqrt().ceil().max(1.0);
             match l.atom.predicate {

@@ -68,7 +68,7 @@ impl Instance {
                     });
                 }
             }
-            if let Some(room) = self.world.core().room_of(self.bindings[i as usize]) {
+            if let Some(room) = self.world.relations().room_of(self.bindings[i as usize]) {
                 facts.push(Fact {
                     predicate: Predicate::InRoom,
                     args: vec![name(i), room.name().to_string()],

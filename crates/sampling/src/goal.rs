@@ -87,6 +87,7 @@ impl GoalCheck<'_> {
         let b = self
             .instance
             .world
+            .bodies()
             .aabb(self.instance.bindings[i.0 as usize]);
         let mut d = (b.maxs - b.mins).to_array();
         d.sort_by(f32::total_cmp);
@@ -159,8 +160,12 @@ impl GoalCheck<'_> {
         let moved = |i: InstanceId| option.iter().any(|l| l.positive && l.atom.subject == i);
         let world = &self.instance.world;
         let (t, o) = (
-            world.core().aabb(self.instance.bindings[target.0 as usize]),
-            world.core().aabb(self.instance.bindings[other.0 as usize]),
+            world
+                .bodies()
+                .aabb(self.instance.bindings[target.0 as usize]),
+            world
+                .bodies()
+                .aabb(self.instance.bindings[other.0 as usize]),
         );
         let gap = (t.mins - o.maxs).max(o.mins - t.maxs).max(Vector::ZERO);
         !moved(target) && !moved(other) && gap.x.hypot(gap.y) > self.dims(subject)[2]
@@ -189,12 +194,15 @@ impl GoalCheck<'_> {
             let id = bindings[step.subject.0 as usize];
             let parked = Pose::from_parts(
                 Vector::new(-2000.0 - 5.0 * k as f32, -2000.0, 0.0),
-                world.pose(id).rotation,
+                world.bodies().pose(id).rotation,
             );
-            world.set_pose(id, parked).map_err(|e| Failure {
-                literals: step.written().copied().collect(),
-                why: Unreachable::Lift(e),
-            })?;
+            world
+                .bodies_mut()
+                .set_pose(id, parked)
+                .map_err(|e| Failure {
+                    literals: step.written().copied().collect(),
+                    why: Unreachable::Lift(e),
+                })?;
         }
         for step in steps.iter().filter(|s| !s.literals.is_empty()) {
             place_by(&mut world, bindings, step, self.rng).map_err(|e| Failure {

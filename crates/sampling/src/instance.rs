@@ -142,16 +142,17 @@ impl Instance {
     pub fn save(&self) -> SavedInstance {
         let w = &self.world;
         let objects = w
+            .bodies()
             .objects()
             .filter(|(_, o)| o.category != WALL_SYNSET)
             .map(|(id, o)| {
-                let pose = w.pose(id);
+                let pose = w.bodies().pose(id);
                 SavedObject {
                     name: o.name.clone(),
                     position: pose.translation.to_array(),
                     rotation: pose.rotation.to_array(),
                     joints: (0..o.links.len())
-                        .map(|k| w.core().joint_position(id, k))
+                        .map(|k| w.joints().position(id, k))
                         .collect(),
                     states: Predicate::UNARY_STATES
                         .iter()
@@ -170,7 +171,7 @@ impl Instance {
             bindings: self
                 .bindings
                 .iter()
-                .map(|&b| w.object(b).name.clone())
+                .map(|&b| w.bodies().object(b).name.clone())
                 .collect(),
             objects,
         }
@@ -243,6 +244,7 @@ impl SavedInstance {
             .zip(&activity.instances)
             .map(|(name, instance)| {
                 world
+                    .bodies()
                     .object_named(name)
                     .ok_or_else(|| LoadError::UnknownBinding {
                         instance: instance.name.clone(),
@@ -270,6 +272,7 @@ fn rebuild(world: &mut World, library: &Library, c: &Created) -> Result<(), Load
 /// predicates the file lists are exactly those that hold.
 fn restore(world: &mut World, saved: &SavedObject) -> Result<(), LoadError> {
     let id = world
+        .bodies()
         .object_named(&saved.name)
         .ok_or_else(|| LoadError::UnknownObject {
             name: saved.name.clone(),
@@ -290,11 +293,14 @@ fn restore(world: &mut World, saved: &SavedObject) -> Result<(), LoadError> {
         rotation.normalize()
     };
     let pose = Pose::from_parts(Vector::from_array(saved.position), rotation);
-    world.set_pose(id, pose).map_err(pose_error)?;
-    let links = world.object(id).links.len();
+    world.bodies_mut().set_pose(id, pose).map_err(pose_error)?;
+    let links = world.bodies().object(id).links.len();
     for (k, &q) in saved.joints.iter().enumerate().take(links) {
         // A non-finite joint position in the file is as bad as a non-finite pose.
-        world.set_joint_position(id, k, q).map_err(pose_error)?;
+        world
+            .joints_mut()
+            .set_position(id, k, q)
+            .map_err(pose_error)?;
     }
     let sliced = saved.states.iter().any(|s| s == Predicate::Sliced.name());
     if sliced && !world.state(id, Predicate::Sliced) {
@@ -311,7 +317,7 @@ fn restore(world: &mut World, saved: &SavedObject) -> Result<(), LoadError> {
 /// object is back (a sliced object's states are its halves', restored after it).
 fn check_states(world: &World, objects: &[SavedObject]) -> Result<(), LoadError> {
     for saved in objects {
-        let Some(id) = world.object_named(&saved.name) else {
+        let Some(id) = world.bodies().object_named(&saved.name) else {
             continue;
         };
         for p in Predicate::UNARY_STATES {

@@ -51,7 +51,7 @@ pub const SETTLE_STEPS: usize = 150;
 /// assert!(instance.check_init(&activity).all_hold());
 /// // ...and the same seed gives the same instance.
 /// let again = instantiate(&activity, home, 7, &library, &knowledge.taxonomy).unwrap();
-/// assert_eq!(instance.world.core().motion_bits(), again.world.core().motion_bits());
+/// assert_eq!(instance.world.bodies().motion_bits(), again.world.bodies().motion_bits());
 /// ```
 pub fn instantiate(
     activity: &Activity,

@@ -90,7 +90,7 @@ pub(crate) fn order_relations(world: &World, relations: &mut [(Relation, ObjectI
         Relation::OnFloor => 2,
     };
     let volume = |t: ObjectId| {
-        let b = world.core().aabb(t);
+        let b = world.bodies().aabb(t);
         let d = b.maxs - b.mins;
         d.x * d.y * d.z
     };

@@ -12,7 +12,7 @@ use crate::place::placement;
 use behavior_assets::Scene;
 use behavior_bddl::activity::{Activity, InstanceId, Literal};
 use behavior_bddl::{GroundGoal, ground::Node};
-use behavior_sim::{Core, ObjectId};
+use behavior_sim::{ObjectId, Relations};
 use std::collections::BTreeSet;
 
 impl Attempt<'_> {
@@ -25,11 +25,11 @@ impl Attempt<'_> {
             .filter(|i| self.home_bound[i.0 as usize])
             .filter_map(|i| self.bindings[i.0 as usize])
             .collect();
-        let core = self.world.core();
+        let relations = self.world.relations();
         let kept: Vec<bool> = self
             .clutter
             .iter()
-            .map(|&c| !supports.iter().any(|&s| around(core, c, s)))
+            .map(|&c| !supports.iter().any(|&s| around(relations, c, s)))
             .collect();
         if kept.iter().all(|&k| k) {
             return Ok(());
@@ -53,11 +53,11 @@ impl Attempt<'_> {
 }
 
 /// Whether a thing is on, in, under, beside or against an object.
-fn around(core: &Core, thing: ObjectId, support: ObjectId) -> bool {
-    core.touching(thing, support)
-        || core.inside(thing, support)
-        || core.under(thing, support)
-        || core.nextto(thing, support)
+fn around(relations: Relations, thing: ObjectId, support: ObjectId) -> bool {
+    relations.touching(thing, support)
+        || relations.inside(thing, support)
+        || relations.under(thing, support)
+        || relations.nextto(thing, support)
 }
 
 /// The instances some placement of the activity's initial state (`kinematic`) or of its goal

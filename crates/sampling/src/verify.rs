@@ -103,7 +103,10 @@ fn unmet(oracle: &BoundWorld<'_>, bindings: &[ObjectId], literal: &InitLiteral) 
             room,
             positive,
         } => {
-            let here = oracle.world.core().room_of(bindings[instance.0 as usize]);
+            let here = oracle
+                .world
+                .relations()
+                .room_of(bindings[instance.0 as usize]);
             ((here == Some(*room)) != *positive).then_some(Unmet::Room { room: here })
         }
     }

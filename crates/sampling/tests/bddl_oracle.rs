@@ -61,6 +61,7 @@ fn a_goal_is_evaluated_on_the_physical_scene() {
 
     // Put the second apple on the plate and slice it.
     world
+        .bodies_mut()
         .set_pose(
             second,
             rapier3d::math::Pose::from_translation(v(-0.93, 0.0, 0.85)),

@@ -68,6 +68,7 @@ fn sample(name: &str, home: &Scene) -> Result<Instance, SampleError> {
 fn objects(instance: &Instance) -> usize {
     instance
         .world
+        .bodies()
         .objects()
         .filter(|(_, o)| o.category != "wall.n.01")
         .count()
@@ -95,11 +96,11 @@ fn cluttered_homes_hold_as_many_objects_as_the_originals_scenes_after_sampling()
 
 /// The names of the instance's objects bound to the activity.
 fn bound_names(instance: &Instance) -> BTreeSet<String> {
-    let world = &instance.world;
+    let bodies = instance.world.bodies();
     instance
         .bindings
         .iter()
-        .map(|&b| world.object(b).name.clone())
+        .map(|&b| bodies.object(b).name.clone())
         .collect()
 }
 
@@ -118,18 +119,18 @@ fn no_instance_is_bound_to_clutter_and_clutter_around_its_furniture_is_put_away(
     let kept = &instance.scene.clutter;
     assert!(kept.len() < home.clutter.len() && kept.len() > home.clutter.len() / 2);
     assert!(kept.iter().all(|c| home.clutter.contains(c)));
-    let core = instance.world.core();
+    let world = &instance.world;
     let shelf = activity(name)
         .instances
         .iter()
         .position(|i| i.name == "shelf.n.01_1")
         .map(|i| instance.bindings[i])
         .unwrap();
-    assert_eq!(core.object(shelf).category, "shelf.n.01");
+    assert_eq!(world.bodies().object(shelf).category, "shelf.n.01");
     for c in kept {
-        let id = core.object_named(&c.name).unwrap();
+        let id = world.bodies().object_named(&c.name).unwrap();
         assert!(
-            !core.ontop(id, shelf) && !core.touching(id, shelf),
+            !world.relations().ontop(id, shelf) && !world.relations().touching(id, shelf),
             "{}",
             c.name
         );
@@ -186,7 +187,11 @@ fn a_cluttered_instance_saves_and_loads_with_its_clutter() {
     assert_eq!(objects(&loaded), objects(&instance));
     for c in &loaded.scene.clutter {
         let (a, b) = (&loaded.world, &instance.world);
-        let pose = |w: &behavior_sim::World| w.pose(w.object_named(&c.name).unwrap()).translation;
+        let pose = |w: &behavior_sim::World| {
+            w.bodies()
+                .pose(w.bodies().object_named(&c.name).unwrap())
+                .translation
+        };
         assert!(
             pose(a).distance(pose(b)) < 1e-6,
             "{} is where it was",

@@ -68,7 +68,7 @@ fn all_init_literals_hold(activity: &Activity, instance: &behavior_sampling::Ins
         } => {
             (instance
                 .world
-                .core()
+                .relations()
                 .room_of(instance.bindings[i.0 as usize])
                 == Some(*room))
                 == *positive
@@ -95,7 +95,10 @@ fn packing_lunches_is_sampled_with_every_init_literal_true_and_saves_and_loads()
         .unwrap_or_else(|e| panic!("{e}"));
     assert!(all_init_literals_hold(&activity, &loaded));
     for (&a, &b) in instance.bindings.iter().zip(&loaded.bindings) {
-        let (pa, pb) = (instance.world.pose(a), loaded.world.pose(b));
+        let (pa, pb) = (
+            instance.world.bodies().pose(a),
+            loaded.world.bodies().pose(b),
+        );
         assert!((pa.translation - pb.translation).length() < 1e-5);
     }
 }
@@ -108,7 +111,10 @@ fn the_same_seed_gives_the_same_instance_and_another_seed_another() {
     let home = covering_home(&activity, &library, &knowledge);
     let sample = |seed| instantiate(&activity, &home, seed, &library, &knowledge.taxonomy).unwrap();
     let (a, b, c) = (sample(7), sample(7), sample(8));
-    assert_eq!(a.world.core().motion_bits(), b.world.core().motion_bits());
+    assert_eq!(
+        a.world.bodies().motion_bits(),
+        b.world.bodies().motion_bits()
+    );
     assert_eq!(a.created, b.created);
     // Another seed puts the created objects elsewhere...
     let position = |s: &behavior_sampling::Instance, name: &str| {
@@ -117,7 +123,7 @@ fn the_same_seed_gives_the_same_instance_and_another_seed_another() {
             .iter()
             .position(|i| i.name == name)
             .unwrap();
-        s.world.pose(s.bindings[i]).translation
+        s.world.bodies().pose(s.bindings[i]).translation
     };
     let moved = a
         .created
@@ -296,10 +302,10 @@ fn a_saved_instance_holds_the_whole_state_of_every_object() {
             .load(&activity, &library)
             .unwrap_or_else(|e| panic!("{name}: {e}"));
         let (a, b) = (&instance.world, &loaded.world);
-        assert_eq!(a.objects().len(), b.objects().len());
+        assert_eq!(a.bodies().objects().len(), b.bodies().objects().len());
         let mut particles = 0;
-        for (id, object) in a.objects() {
-            let other = b.object_named(&object.name).unwrap();
+        for (id, object) in a.bodies().objects() {
+            let other = b.bodies().object_named(&object.name).unwrap();
             assert_eq!(
                 a.object_state(id),
                 b.object_state(other),
@@ -307,7 +313,7 @@ fn a_saved_instance_holds_the_whole_state_of_every_object() {
                 object.name
             );
             let bits = |w: &behavior_sim::World, id| {
-                let p = w.pose(id);
+                let p = w.bodies().pose(id);
                 (
                     p.translation.to_array().map(f32::to_bits),
                     p.rotation.to_array().map(f32::to_bits),
@@ -317,10 +323,7 @@ fn a_saved_instance_holds_the_whole_state_of_every_object() {
                 assert_eq!(bits(a, id), bits(b, other), "{name}: {} pose", object.name);
             }
             for k in 0..object.links.len() {
-                let (qa, qb) = (
-                    a.core().joint_position(id, k),
-                    b.core().joint_position(other, k),
-                );
+                let (qa, qb) = (a.joints().position(id, k), b.joints().position(other, k));
                 assert!(
                     (qa - qb).abs() < 1e-4,
                     "{name}: {} joint {k}: {qa} vs {qb}",
@@ -331,6 +334,7 @@ fn a_saved_instance_holds_the_whole_state_of_every_object() {
                 a.object_state(id).dust.particles.len() + a.object_state(id).stain.particles.len();
         }
         let warmed = a
+            .bodies()
             .objects()
             .filter(|(id, _)| {
                 let t = a.object_state(*id).temperature;
@@ -422,7 +426,11 @@ fn collect_misplaced_items_puts_the_shoe_under_the_living_room_table_on_the_dini
                 .unwrap_or_else(|e| panic!("{} seed {seed}: {e}", home.name));
             assert_eq!(instance.attempt, 0, "{} seed {seed}", home.name);
             assert_eq!(
-                instance.world.object(instance.bindings[table]).name,
+                instance
+                    .world
+                    .bodies()
+                    .object(instance.bindings[table])
+                    .name,
                 across,
                 "{} seed {seed}",
                 home.name
@@ -586,7 +594,7 @@ fn the_init_check_reports_each_literal_and_which_fail() {
     let id = instance.bindings[apple.0 as usize];
     let far =
         rapier3d::math::Pose::from_translation(rapier3d::math::Vector::new(500.0, 500.0, 3.0));
-    instance.world.set_pose(id, far).unwrap();
+    instance.world.bodies_mut().set_pose(id, far).unwrap();
     let check = instance.check_init(&activity);
     let failing: Vec<String> = check.failing().map(|l| l.literal.to_string()).collect();
     assert_eq!(failing, ["(ontop apple.n.01_1 countertop.n.01_1)"]);
@@ -686,7 +694,8 @@ fn orientations_and_openings_differ_over_seeds() {
     let samples: Vec<_> = (0..4)
         .map(|seed| instantiate(&activity, &home, seed, &library, &knowledge.taxonomy).unwrap())
         .collect();
-    let rotation = |s: &behavior_sampling::Instance, k: usize| s.world.pose(s.bindings[k]).rotation;
+    let rotation =
+        |s: &behavior_sampling::Instance, k: usize| s.world.bodies().pose(s.bindings[k]).rotation;
     for k in 0..3 {
         let name = &activity.instances[k].name;
         let angles: Vec<f32> = samples
@@ -703,8 +712,8 @@ fn orientations_and_openings_differ_over_seeds() {
         .iter()
         .map(|s| {
             let id = s.bindings[cabinet];
-            (0..s.world.object(id).links.len())
-                .map(|l| s.world.core().joint_position(id, l))
+            (0..s.world.bodies().object(id).links.len())
+                .map(|l| s.world.joints().position(id, l))
                 .collect()
         })
         .collect();

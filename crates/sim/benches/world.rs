@@ -32,12 +32,12 @@ fn all_predicates(world: &World, objects: &[ObjectId]) -> usize {
             true_count += usize::from(world.state(a, p));
         }
         for &b in objects {
-            true_count += usize::from(world.core().ontop(a, b))
-                + usize::from(world.core().inside(a, b))
-                + usize::from(world.core().under(a, b))
-                + usize::from(world.core().nextto(a, b))
-                + usize::from(world.core().touching(a, b))
-                + usize::from(world.core().onfloor(a, b));
+            true_count += usize::from(world.relations().ontop(a, b))
+                + usize::from(world.relations().inside(a, b))
+                + usize::from(world.relations().under(a, b))
+                + usize::from(world.relations().nextto(a, b))
+                + usize::from(world.relations().touching(a, b))
+                + usize::from(world.relations().onfloor(a, b));
         }
     }
     true_count
@@ -87,25 +87,25 @@ fn benches(c: &mut Criterion) {
         })
         .collect();
     c.bench_function("ray_first_hit", |b| {
-        b.iter(|| black_box(world.core().cast_ray(origin, Vector::X, 30.0, &none)))
+        b.iter(|| black_box(world.query().cast_ray(origin, Vector::X, 30.0, &none)))
     });
     c.bench_function("lidar_360_rays", |b| {
-        b.iter(|| black_box(world.core().cast_rays(&sweep, 30.0, &none)))
+        b.iter(|| black_box(world.query().cast_rays(&sweep, 30.0, &none)))
     });
     let probe = Primitive::Sphere { radius: 0.3 };
     let at = Pose::from_translation(Vector::new(-8.0, -4.0, 1.0));
     c.bench_function("sphere_overlap_query", |b| {
-        b.iter(|| black_box(world.core().overlaps(&probe, at, &none)))
+        b.iter(|| black_box(world.query().overlaps(&probe, at, &none)))
     });
     // After a teleport the index is rebuilt on the next query: the cost a planner pays per
     // configuration it moves an object to.
     let mut moving = world.clone();
     let thing = ObjectId(200);
-    let home = moving.pose(thing);
+    let home = moving.bodies().pose(thing);
     c.bench_function("teleport_then_ray", |b| {
         b.iter(|| {
-            moving.set_pose(thing, home).unwrap();
-            black_box(moving.core().cast_ray(origin, Vector::X, 30.0, &none))
+            moving.bodies_mut().set_pose(thing, home).unwrap();
+            black_box(moving.query().cast_ray(origin, Vector::X, 30.0, &none))
         })
     });
 }

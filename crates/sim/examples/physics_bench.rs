@@ -20,7 +20,7 @@ fn build(substeps: Substeps, sleeping: bool) -> World {
     for spec in scene() {
         world.add(spec).expect("the benchmark scene is valid");
     }
-    world.core_mut().set_sleeping_allowed(sleeping);
+    world.bodies_mut().set_sleeping_allowed(sleeping);
     world
 }
 
@@ -31,8 +31,9 @@ fn time(substeps: Substeps, sleeping: bool, steps: usize, repeats: usize) -> (f6
         world.step();
     }
     let asleep = world
+        .bodies()
         .objects()
-        .filter(|(id, o)| !o.is_fixed() && world.core().is_sleeping(*id))
+        .filter(|(id, o)| !o.is_fixed() && world.bodies().is_sleeping(*id))
         .count();
     let mut samples: Vec<f64> = (0..repeats)
         .map(|_| {

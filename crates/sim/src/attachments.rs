@@ -13,6 +13,7 @@
 //! hand does not push what it holds). Its violation — how far apart its two anchor points have
 //! drifted — is the caller's to watch: a robot releases past its own threshold.
 
+use crate::bodies::Bodies;
 use crate::core::{Core, WorldError};
 use crate::object::BodyRef;
 use rapier3d::dynamics::{
@@ -81,12 +82,12 @@ struct Record {
 
 /// The attachments of a world.
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
-pub(crate) struct Attachments {
+pub(crate) struct AttachmentSet {
     records: BTreeMap<AttachmentId, Record>,
     next: u64,
 }
 
-impl Attachments {
+impl AttachmentSet {
     /// Whether every attachment names known bodies and, unless broken, a joint in the physics.
     pub(crate) fn check_consistency(
         &self,
@@ -108,10 +109,32 @@ impl Attachments {
     }
 }
 
-impl Core {
+/// The attachments, for reading. Reached through [`crate::World::attachments`].
+#[derive(Clone, Copy)]
+pub struct Attachments<'w> {
+    pub(crate) bodies: &'w Bodies,
+    pub(crate) set: &'w AttachmentSet,
+}
+
+/// The attachments, for making and removing them. Reached through
+/// [`crate::World::attachments_mut`].
+pub struct AttachmentsMut<'w> {
+    pub(crate) bodies: &'w mut Bodies,
+    pub(crate) set: &'w mut AttachmentSet,
+}
+
+impl<'w> AttachmentsMut<'w> {
+    pub(crate) fn new(core: &'w mut Core) -> AttachmentsMut<'w> {
+        AttachmentsMut {
+            bodies: &mut core.bodies,
+            set: &mut core.attachments,
+        }
+    }
+
     /// Joins two bodies at a point (see the module docs); contacts between them are off until
-    /// [`Core::detach`] or until it breaks.
+    /// [`AttachmentsMut::detach`] or until it breaks.
     pub fn attach(&mut self, spec: AttachmentSpec) -> Result<AttachmentId, WorldError> {
+        let bodies = &mut *self.bodies;
         if !(spec.at.is_finite() && spec.max_force.is_finite() && spec.max_force > 0.0) {
             return Err(WorldError::NotFinite {
                 what: "an attachment's point and positive maximum force",
@@ -120,12 +143,12 @@ impl Core {
         }
         if spec.holder == spec.held {
             return Err(WorldError::BadObject {
-                name: self.object(spec.holder.object).name.clone(),
+                name: bodies.object(spec.holder.object).name.clone(),
                 reason: "a body cannot be attached to itself".into(),
             });
         }
-        let (h1, h2) = (self.handle(spec.holder)?, self.handle(spec.held)?);
-        let (p1, p2) = (self.body_pose(spec.holder)?, self.body_pose(spec.held)?);
+        let (h1, h2) = (bodies.handle(spec.holder)?, bodies.handle(spec.held)?);
+        let (p1, p2) = (bodies.body_pose(spec.holder)?, bodies.body_pose(spec.held)?);
         let local = [
             p1.inverse_transform_point(spec.at),
             p2.inverse_transform_point(spec.at),
@@ -149,10 +172,10 @@ impl Core {
                 .build()
                 .into(),
         };
-        let handle = self.physics.insert_impulse_joint(h1, h2, joint);
-        let id = AttachmentId(self.attachments.next);
-        self.attachments.next += 1;
-        self.attachments.records.insert(
+        let handle = bodies.physics.insert_impulse_joint(h1, h2, joint);
+        let id = AttachmentId(self.set.next);
+        self.set.next += 1;
+        self.set.records.insert(
             id,
             Record {
                 spec,
@@ -163,38 +186,50 @@ impl Core {
                 drift: 0.0,
             },
         );
-        self.wake(h1);
-        self.wake(h2);
+        bodies.wake(h1);
+        bodies.wake(h2);
         Ok(id)
     }
 
     /// Removes an attachment (broken or not); `false` if there was none by that id.
     pub fn detach(&mut self, id: AttachmentId) -> bool {
-        let Some(record) = self.attachments.records.remove(&id) else {
+        let Some(record) = self.set.records.remove(&id) else {
             return false;
         };
         if let Some(joint) = record.joint {
-            self.physics.impulse_joints.remove(joint, true);
+            self.bodies.physics.impulse_joints.remove(joint, true);
         }
-        self.quiet = false;
+        self.bodies.quiet = false;
         true
+    }
+}
+
+impl<'w> Attachments<'w> {
+    pub(crate) fn new(core: &'w Core) -> Attachments<'w> {
+        Attachments {
+            bodies: &core.bodies,
+            set: &core.attachments,
+        }
     }
 
     /// An attachment's condition, or `None` if it was detached.
-    pub fn attachment(&self, id: AttachmentId) -> Option<AttachmentState> {
-        let record = self.attachments.records.get(&id)?;
+    pub fn get(&self, id: AttachmentId) -> Option<AttachmentState> {
+        let record = self.set.records.get(&id)?;
         Some(AttachmentState {
             spec: record.spec,
             force: record.force,
-            violation: self.gap(record).max(record.drift),
+            violation: record.gap(self.bodies).max(record.drift),
             broken: record.joint.is_none(),
         })
     }
+}
 
-    /// How far apart an attachment's two anchor points are now.
-    fn gap(&self, record: &Record) -> f32 {
+impl Record {
+    /// How far apart the attachment's two anchor points are now.
+    fn gap(&self, bodies: &Bodies) -> f32 {
+        let record = self;
         let at =
-            |body: BodyRef, local: Vector| self.body_pose(body).map(|p| p.transform_point(local));
+            |body: BodyRef, local: Vector| bodies.body_pose(body).map(|p| p.transform_point(local));
         match (
             at(record.spec.holder, record.local[0]),
             at(record.spec.held, record.local[1]),
@@ -203,37 +238,36 @@ impl Core {
             _ => f32::INFINITY,
         }
     }
+}
 
+impl AttachmentSet {
     /// Before a substep's solve: notes how far apart each attachment's anchors are, from the
     /// step's first substep on. A force-limited constraint would leave a held object taken
     /// 0.5 m away that far and let go; ours pulls it back within the substep, so the drift is
     /// read before the solve.
-    pub(crate) fn note_drift(&mut self, substep: u32) {
-        // Out of the world while measured against it: no allocation in the step loop.
-        let mut records = std::mem::take(&mut self.attachments.records);
-        for record in records.values_mut() {
-            let gap = self.gap(record);
+    pub(crate) fn note_drift(&mut self, bodies: &Bodies, substep: u32) {
+        for record in self.records.values_mut() {
+            let gap = record.gap(bodies);
             record.drift = if substep == 0 {
                 gap
             } else {
                 record.drift.max(gap)
             };
         }
-        self.attachments.records = records;
     }
 
     /// After a substep: records each attachment's force and breaks those that needed too much
     /// in half the substeps of the last action step's length (see the module docs).
-    pub(crate) fn watch_attachments(&mut self) {
-        let substeps = self.substeps.count();
+    pub(crate) fn watch(&mut self, bodies: &mut Bodies) {
+        let substeps = bodies.substeps.count();
         let window = (1u32 << substeps) - 1;
         // Joint impulses are those of the solver's last internal iteration, which spans
         // dt / iterations.
-        let params = &self.physics.integration_parameters;
+        let params = &bodies.physics.integration_parameters;
         let dt = params.dt / params.num_solver_iterations.max(1) as f32;
-        for record in self.attachments.records.values_mut() {
+        for record in self.records.values_mut() {
             let Some(handle) = record.joint else { continue };
-            let Some(joint) = self.physics.impulse_joints.get(handle) else {
+            let Some(joint) = bodies.physics.impulse_joints.get(handle) else {
                 record.joint = None;
                 continue;
             };
@@ -242,7 +276,7 @@ impl Core {
             let over = u32::from(record.force > record.spec.max_force);
             record.overloaded = (record.overloaded << 1) | over;
             if 2 * (record.overloaded & window).count_ones() >= substeps {
-                self.physics.impulse_joints.remove(handle, true);
+                bodies.physics.impulse_joints.remove(handle, true);
                 record.joint = None;
             }
         }

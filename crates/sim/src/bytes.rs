@@ -114,7 +114,7 @@ impl World {
     /// let mut resumed = World::from_bytes(&bytes).unwrap();
     /// world.step();
     /// resumed.step();
-    /// assert_eq!(world.core().motion_bits(), resumed.core().motion_bits());
+    /// assert_eq!(world.bodies().motion_bits(), resumed.bodies().motion_bits());
     /// ```
     pub fn to_bytes(&self) -> Vec<u8> {
         let saved = SavedRef {
@@ -157,7 +157,7 @@ impl World {
     /// The checks that keep a decoded world from panicking later: every per-object table has an
     /// entry per object, and every handle an object or a system names is in the physics.
     fn check_consistency(&self) -> Result<(), WorldBytesError> {
-        let n = self.core.objects.len();
+        let n = self.core.bodies.objects.len();
         self.core
             .check_consistency()
             .and_then(|()| self.systems.check_consistency(n, &self.core))

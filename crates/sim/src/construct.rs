@@ -1,7 +1,8 @@
 //! Building an object from its spec: checking every number first (a bad spec leaves no trace in
 //! the world), then its body, colliders, links and joints.
 
-use crate::core::{Core, WorldError, pose_is_finite, tag};
+use crate::bodies::Bodies;
+use crate::core::{WorldError, pose_is_finite, tag};
 use crate::object::{
     BodyKind, BodyRef, JointHandle, JointKind, JointModel, JointSpec, Link, LinkSpec, Object,
     ObjectId, ObjectSpec, Part, Primitive,
@@ -16,7 +17,7 @@ use rapier3d::math::{Pose, Rotation};
 /// Mass given to a link without parts (a camera mount), so the solver can move it (kg).
 const FRAME_MASS: f32 = 1e-3;
 
-impl Core {
+impl Bodies {
     /// Adds an object; its bodies and colliders carry tags so queries can map hits back to it.
     /// Every part is checked before anything is inserted, so a bad spec leaves no trace.
     pub(crate) fn add(&mut self, spec: ObjectSpec) -> Result<ObjectId, WorldError> {

@@ -2,6 +2,7 @@
 //! collision groups (a robot ignores water drops), and pairs of bodies whose contacts are ignored
 //! (a hand and the object it holds).
 
+use crate::bodies::Bodies;
 use crate::core::{Core, DROP_TAG, WorldError, untag};
 use crate::object::{BodyRef, ObjectId};
 use rapier3d::dynamics::RigidBodySet;
@@ -46,24 +47,72 @@ pub struct Contact {
 /// distance, as resting bodies settle about 1 mm apart in rapier.
 const CONTACT_DISTANCE: f32 = crate::kinematics::TOUCH_DISTANCE;
 
-impl Core {
+/// Pairs of bodies whose contacts are ignored (a hand and what it holds), each pair in order.
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
+#[serde(transparent)]
+pub(crate) struct IgnoredPairs(BTreeSet<(BodyRef, BodyRef)>);
+
+impl IgnoredPairs {
+    fn contains(&self, a: BodyRef, b: BodyRef) -> bool {
+        self.0.contains(&ordered(a, b))
+    }
+
+    /// Every pair, for checking a decoded world.
+    pub(crate) fn iter(&self) -> impl Iterator<Item = &(BodyRef, BodyRef)> {
+        self.0.iter()
+    }
+}
+
+fn ordered(a: BodyRef, b: BodyRef) -> (BodyRef, BodyRef) {
+    if a <= b { (a, b) } else { (b, a) }
+}
+
+/// The contacts of bodies as the last physics substep found them, and which pairs are ignored.
+/// Reached through [`crate::World::contacts`].
+#[derive(Clone, Copy)]
+pub struct Contacts<'w> {
+    pub(crate) bodies: &'w Bodies,
+    pub(crate) ignored: &'w IgnoredPairs,
+}
+
+/// Who may touch whom: collision groups and ignored pairs. Reached through
+/// [`crate::World::contacts_mut`].
+pub struct ContactsMut<'w> {
+    pub(crate) bodies: &'w mut Bodies,
+    pub(crate) ignored: &'w mut IgnoredPairs,
+}
+
+impl<'w> Contacts<'w> {
+    pub(crate) fn new(core: &'w Core) -> Contacts<'w> {
+        Contacts {
+            bodies: &core.bodies,
+            ignored: &core.ignored,
+        }
+    }
+
     /// The contacts of a body (or of an object's body and all its links, with `link: None` in
-    /// [`Core::object_contacts`]) found by the last physics substep, sorted by the other body.
-    pub fn contacts(&self, body: BodyRef) -> Result<Vec<Contact>, WorldError> {
-        let handle = self.handle(body)?;
-        let colliders = self.physics.bodies[handle].colliders().to_vec();
-        Ok(self.contacts_of(&colliders))
+    /// [`Contacts::of_object`]) found by the last physics substep, sorted by the other body.
+    pub fn of(&self, body: BodyRef) -> Result<Vec<Contact>, WorldError> {
+        let handle = self.bodies.handle(body)?;
+        let colliders = self.bodies.physics.bodies[handle].colliders().to_vec();
+        Ok(self.of_colliders(&colliders))
     }
 
     /// The contacts of an object's body and all its links.
-    pub fn object_contacts(&self, id: ObjectId) -> Vec<Contact> {
-        self.contacts_of(&self.object(id).colliders)
+    pub fn of_object(&self, id: ObjectId) -> Vec<Contact> {
+        self.of_colliders(&self.bodies.object(id).colliders)
     }
 
-    fn contacts_of(&self, colliders: &[rapier3d::geometry::ColliderHandle]) -> Vec<Contact> {
+    /// Whether contacts between two bodies are ignored.
+    pub fn ignored(&self, a: BodyRef, b: BodyRef) -> bool {
+        self.ignored.contains(a, b)
+    }
+
+    fn of_colliders(&self, colliders: &[rapier3d::geometry::ColliderHandle]) -> Vec<Contact> {
+        let physics = &self.bodies.physics;
         let mut out = Vec::new();
         for &c in colliders {
-            for pair in self.physics.narrow_phase.contact_pairs_with(c) {
+            for pair in physics.narrow_phase.contact_pairs_with(c) {
                 let (mine_first, other) = if pair.collider1 == c {
                     (true, pair.collider2)
                 } else {
@@ -72,10 +121,10 @@ impl Core {
                 if colliders.contains(&other) && other != c {
                     continue; // within the same body or object
                 }
-                let Some(other_collider) = self.physics.colliders.get(other) else {
+                let Some(other_collider) = physics.colliders.get(other) else {
                     continue;
                 };
-                let mine = &self.physics.colliders[c];
+                let mine = &physics.colliders[c];
                 for manifold in pair.manifolds() {
                     let local_normal = if mine_first {
                         manifold.local_n1
@@ -103,57 +152,59 @@ impl Core {
         out.sort_by_key(|c| c.other);
         out
     }
+}
+
+impl<'w> ContactsMut<'w> {
+    pub(crate) fn new(core: &'w mut Core) -> ContactsMut<'w> {
+        ContactsMut {
+            bodies: &mut core.bodies,
+            ignored: &mut core.ignored,
+        }
+    }
 
     /// Sets what an object's bodies (all its links too) are and collide with; see [`groups`].
-    pub fn set_collision_groups(&mut self, id: ObjectId, memberships: u32, filter: u32) {
+    pub fn set_groups(&mut self, id: ObjectId, memberships: u32, filter: u32) {
         let groups = InteractionGroups::new(
             Group::from_bits_retain(memberships),
             Group::from_bits_retain(filter),
             InteractionTestMode::And,
         );
-        for &c in &self.objects[id.0 as usize].colliders.clone() {
-            self.physics.colliders[c].set_collision_groups(groups);
+        let bodies = &mut *self.bodies;
+        let object = &bodies.objects[id.0 as usize];
+        for &c in &object.colliders {
+            bodies.physics.colliders[c].set_collision_groups(groups);
         }
-        self.wake(self.object(id).body);
+        let body = object.body;
+        bodies.wake(body);
     }
 
     /// Ignores (or again allows) contacts between two bodies.
-    pub fn ignore_contacts(
-        &mut self,
-        a: BodyRef,
-        b: BodyRef,
-        ignore: bool,
-    ) -> Result<(), WorldError> {
-        let (ha, hb) = (self.handle(a)?, self.handle(b)?);
-        let pair = if a <= b { (a, b) } else { (b, a) };
+    pub fn ignore(&mut self, a: BodyRef, b: BodyRef, ignore: bool) -> Result<(), WorldError> {
+        let bodies = &mut *self.bodies;
+        let (ha, hb) = (bodies.handle(a)?, bodies.handle(b)?);
+        let pair = ordered(a, b);
         if ignore {
-            self.ignored.insert(pair);
+            self.ignored.0.insert(pair);
             for h in [ha, hb] {
-                for c in self.physics.bodies[h].colliders().to_vec() {
-                    let collider = &mut self.physics.colliders[c];
+                for c in bodies.physics.bodies[h].colliders().to_vec() {
+                    let collider = &mut bodies.physics.colliders[c];
                     let hooks = collider.active_hooks() | ActiveHooks::FILTER_CONTACT_PAIRS;
                     collider.set_active_hooks(hooks);
                 }
             }
         } else {
-            self.ignored.remove(&pair);
+            self.ignored.0.remove(&pair);
         }
-        self.wake(ha);
-        self.wake(hb);
+        bodies.wake(ha);
+        bodies.wake(hb);
         Ok(())
-    }
-
-    /// Whether contacts between two bodies are ignored.
-    pub fn contacts_ignored(&self, a: BodyRef, b: BodyRef) -> bool {
-        let pair = if a <= b { (a, b) } else { (b, a) };
-        self.ignored.contains(&pair)
     }
 }
 
 /// The physics hooks of one step: drops ignored pairs and otherwise behaves as rapier's default
 /// filter (no contacts between two bodies that never move).
 pub(crate) struct ContactFilter<'a> {
-    pub(crate) ignored: &'a BTreeSet<(BodyRef, BodyRef)>,
+    pub(crate) ignored: &'a IgnoredPairs,
 }
 
 impl PhysicsHooks for ContactFilter<'_> {
@@ -170,11 +221,10 @@ impl PhysicsHooks for ContactFilter<'_> {
             let data = context.colliders[c].user_data;
             (data != DROP_TAG).then(|| untag(data)).flatten()
         };
-        if let (Some(a), Some(b)) = (body(context.collider1), body(context.collider2)) {
-            let pair = if a <= b { (a, b) } else { (b, a) };
-            if self.ignored.contains(&pair) {
-                return None;
-            }
+        if let (Some(a), Some(b)) = (body(context.collider1), body(context.collider2))
+            && self.ignored.contains(a, b)
+        {
+            return None;
         }
         Some(SolverFlags::COMPUTE_RIGID_IMPULSES)
     }

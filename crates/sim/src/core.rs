@@ -1,23 +1,24 @@
-//! The world's core: objects, their bodies and joints, rooms, and the physics engine (rapier3d),
-//! with the bookkeeping every other module reads — how often each object has moved (which keeps
-//! memoized relations valid), the step count, and whether the scene is at rest.
+//! The world's core: the aggregate of its geometric parts (bodies, rooms, relations' memo,
+//! attachments, ignored contacts, drives), its checkpoint form, and what they share — the step's
+//! length, substeps, errors, and the tags that map rapier's bodies and colliders to objects.
 //!
 //! The state systems ([`crate::states`]) own everything beyond this; the core knows nothing of
 //! temperature, water, dirt or toggling.
 
-use crate::attachments::Attachments;
+use crate::attachments::AttachmentSet;
+use crate::bodies::Bodies;
+use crate::contacts::IgnoredPairs;
+use crate::dynamics::Velocity;
+use crate::joints::Drives;
 use crate::kinematics::RelationMemo;
 use crate::object::{BodyRef, JointHandle, Object, ObjectId};
 use crate::query::QueryIndex;
 use crate::room::Room;
-use rapier3d::dynamics::{CCDSolver, RigidBodyActivation, RigidBodyHandle};
-use rapier3d::math::{Pose, Vector};
-use rapier3d::parry::bounding_volume::BoundingVolume;
-use rapier3d::pipeline::{CollisionPipeline, PhysicsPipeline, PhysicsWorld};
-use rapier3d::prelude::Aabb;
+use rapier3d::dynamics::RigidBodyHandle;
+use rapier3d::math::Pose;
+use rapier3d::pipeline::PhysicsWorld;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
-use std::sync::OnceLock;
 
 /// One action step, in seconds.
 pub const STEP_SECONDS: f32 = 1.0 / 30.0;
@@ -76,77 +77,105 @@ pub enum WorldError {
     },
 }
 
-/// Objects, bodies, joints, rooms and the physics engine. Its serde form is the core's part of
-/// [`crate::World::to_bytes`]: everything but the query index, which is rebuilt on first use.
-#[derive(Serialize, Deserialize)]
-pub struct Core {
-    pub(crate) physics: PhysicsWorld,
-    pub(crate) objects: Vec<Object>,
+/// The world's parts, each a type that owns its state: the bodies (objects, rapier's sets and
+/// the bookkeeping of their motion), the rooms, the memoized relations, the attachments, the
+/// ignored contact pairs and the joints' drives. A plain aggregate: the parts' own modules say
+/// what they do, and [`crate::World`] lends them out by concept.
+#[derive(Clone)]
+pub(crate) struct Core {
+    pub(crate) bodies: Bodies,
     pub(crate) rooms: Vec<Room>,
-    /// Per object: how many times it has moved (see [`Core::motion`]).
-    motion: Vec<u64>,
     pub(crate) memo: RelationMemo,
-    /// A ray and shape query structure over every collider, rebuilt on first use after a change.
-    #[serde(skip)]
-    pub(crate) index: OnceLock<QueryIndex>,
-    /// The same over fixed bodies only: unchanged by steps, rebuilt after a change of objects.
-    #[serde(skip)]
-    pub(crate) fixed_index: OnceLock<QueryIndex>,
-    pub(crate) attachments: Attachments,
-    /// Bodies whose contacts with each other are ignored (a hand and what it holds).
-    pub(crate) ignored: std::collections::BTreeSet<(BodyRef, BodyRef)>,
-    /// Bodies given a force or torque for the current step, cleared after it.
-    pub(crate) pushed: Vec<RigidBodyHandle>,
-    /// The last physics step left every body asleep and nothing has changed since, so further
-    /// substeps would change nothing: they are skipped until something wakes.
-    pub(crate) quiet: bool,
-    /// Bodies added asleep that have not yet been through a physics substep, with the time at
-    /// rest they need to fall asleep (see [`Core::fall_asleep_at_once`]).
-    pub(crate) waking_to_sleep: Vec<(RigidBodyHandle, f32)>,
-    pub(crate) steps: u64,
-    pub(crate) substeps: Substeps,
-    pub(crate) drives: BTreeMap<(ObjectId, usize), crate::joints::Drive>,
-    /// Velocities of velocity-driven bodies at the root of a multibody chain, which the chain
-    /// would otherwise overwrite (see [`Core::lead_kinematic_chains`]).
-    pub(crate) carried: BTreeMap<ObjectId, crate::dynamics::Velocity>,
+    pub(crate) attachments: AttachmentSet,
+    pub(crate) ignored: IgnoredPairs,
+    pub(crate) drives: Drives,
 }
 
-impl Clone for Core {
-    fn clone(&self) -> Self {
-        let p = &self.physics;
-        Core {
-            // The pipelines and CCD solver are scratch space, rebuilt on demand.
-            physics: PhysicsWorld {
-                gravity: p.gravity,
-                integration_parameters: p.integration_parameters,
-                physics_pipeline: PhysicsPipeline::new(),
-                collision_pipeline: CollisionPipeline::new(),
-                islands: p.islands.clone(),
-                broad_phase: p.broad_phase.clone(),
-                narrow_phase: p.narrow_phase.clone(),
-                bodies: p.bodies.clone(),
-                colliders: p.colliders.clone(),
-                impulse_joints: p.impulse_joints.clone(),
-                multibody_joints: p.multibody_joints.clone(),
-                soft_bodies: p.soft_bodies.clone(),
-                ccd_solver: CCDSolver::new(),
-            },
-            objects: self.objects.clone(),
-            rooms: self.rooms.clone(),
-            motion: self.motion.clone(),
-            memo: self.memo.clone(),
-            index: self.index.clone(),
-            fixed_index: self.fixed_index.clone(),
-            attachments: self.attachments.clone(),
-            ignored: self.ignored.clone(),
-            pushed: self.pushed.clone(),
-            quiet: self.quiet,
-            waking_to_sleep: self.waking_to_sleep.clone(),
-            steps: self.steps,
-            substeps: self.substeps,
-            drives: self.drives.clone(),
-            carried: self.carried.clone(),
+/// The serde form of a [`Core`], the core's part of [`crate::World::to_bytes`]: its fields in the
+/// order that format version 1 laid them out (postcard has no framing, so the order is the
+/// format). Everything but the query index, which is rebuilt on first use.
+#[derive(Serialize)]
+struct CoreOut<'a> {
+    physics: &'a PhysicsWorld,
+    objects: &'a Vec<Object>,
+    rooms: &'a Vec<Room>,
+    motion: &'a Vec<u64>,
+    memo: &'a RelationMemo,
+    attachments: &'a AttachmentSet,
+    ignored: &'a IgnoredPairs,
+    pushed: &'a Vec<RigidBodyHandle>,
+    quiet: bool,
+    waking_to_sleep: &'a Vec<(RigidBodyHandle, f32)>,
+    steps: u64,
+    substeps: Substeps,
+    drives: &'a Drives,
+    carried: &'a BTreeMap<ObjectId, Velocity>,
+}
+
+/// [`CoreOut`], read back.
+#[derive(Deserialize)]
+struct CoreIn {
+    physics: PhysicsWorld,
+    objects: Vec<Object>,
+    rooms: Vec<Room>,
+    motion: Vec<u64>,
+    memo: RelationMemo,
+    attachments: AttachmentSet,
+    ignored: IgnoredPairs,
+    pushed: Vec<RigidBodyHandle>,
+    quiet: bool,
+    waking_to_sleep: Vec<(RigidBodyHandle, f32)>,
+    steps: u64,
+    substeps: Substeps,
+    drives: Drives,
+    carried: BTreeMap<ObjectId, Velocity>,
+}
+
+impl Serialize for Core {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let b = &self.bodies;
+        CoreOut {
+            physics: &b.physics,
+            objects: &b.objects,
+            rooms: &self.rooms,
+            motion: &b.motion,
+            memo: &self.memo,
+            attachments: &self.attachments,
+            ignored: &self.ignored,
+            pushed: &b.pushed,
+            quiet: b.quiet,
+            waking_to_sleep: &b.waking_to_sleep,
+            steps: b.steps,
+            substeps: b.substeps,
+            drives: &self.drives,
+            carried: &b.carried,
         }
+        .serialize(s)
+    }
+}
+
+impl<'de> Deserialize<'de> for Core {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let c = CoreIn::deserialize(d)?;
+        Ok(Core {
+            bodies: Bodies {
+                physics: c.physics,
+                objects: c.objects,
+                motion: c.motion,
+                pushed: c.pushed,
+                quiet: c.quiet,
+                waking_to_sleep: c.waking_to_sleep,
+                steps: c.steps,
+                substeps: c.substeps,
+                carried: c.carried,
+                index: QueryIndex::default(),
+            },
+            rooms: c.rooms,
+            memo: c.memo,
+            attachments: c.attachments,
+            ignored: c.ignored,
+            drives: c.drives,
+        })
     }
 }
 
@@ -167,367 +196,28 @@ pub(crate) fn untag(data: u128) -> Option<BodyRef> {
 
 impl Core {
     pub(crate) fn new(substeps: Substeps) -> Core {
-        let mut physics = PhysicsWorld::new();
-        physics.gravity = Vector::new(0.0, 0.0, -9.81);
-        physics.integration_parameters.dt = STEP_SECONDS / substeps.count() as f32;
         Core {
-            physics,
-            objects: Vec::new(),
+            bodies: Bodies::new(substeps),
             rooms: Vec::new(),
-            motion: Vec::new(),
             memo: RelationMemo::default(),
-            index: OnceLock::new(),
-            fixed_index: OnceLock::new(),
-            attachments: Attachments::default(),
-            ignored: Default::default(),
-            pushed: Vec::new(),
-            quiet: false,
-            waking_to_sleep: Vec::new(),
-            steps: 0,
-            substeps,
-            drives: BTreeMap::new(),
-            carried: BTreeMap::new(),
+            attachments: AttachmentSet::default(),
+            ignored: IgnoredPairs::default(),
+            drives: Drives::default(),
         }
     }
 
-    /// Every object with its id, in the order they were added.
-    pub fn objects(&self) -> impl ExactSizeIterator<Item = (ObjectId, &Object)> {
-        self.objects
-            .iter()
-            .enumerate()
-            .map(|(i, o)| (ObjectId(i as u32), o))
-    }
-
-    /// An object. Ids come from this world, so an unknown one is a programming error and panics,
-    /// like an index out of range.
-    pub fn object(&self, id: ObjectId) -> &Object {
-        &self.objects[id.0 as usize]
-    }
-
-    /// The first object of that name.
-    pub fn object_named(&self, name: &str) -> Option<ObjectId> {
-        self.objects
-            .iter()
-            .position(|o| o.name == name)
-            .map(|i| ObjectId(i as u32))
-    }
-
-    /// Every room.
-    pub fn rooms(&self) -> &[Room] {
-        &self.rooms
-    }
-
-    /// The room whose footprint contains (x, y); the first one added wins on shared walls.
-    pub fn room_at(&self, x: f32, y: f32) -> Option<&Room> {
-        self.rooms.iter().find(|r| r.contains(x, y))
-    }
-
-    /// Action steps taken so far.
-    pub fn steps(&self) -> u64 {
-        self.steps
-    }
-
-    /// How finely each action step is integrated.
-    pub fn substeps(&self) -> Substeps {
-        self.substeps
-    }
-
-    /// The pose of an object's body.
-    pub fn pose(&self, id: ObjectId) -> Pose {
-        *self.physics.bodies[self.object(id).body].position()
-    }
-
-    /// The pose of a link's body. Its parts are given in the object's frame at zero joint
-    /// position, so this pose maps them to the world.
-    pub fn link_pose(&self, id: ObjectId, link: usize) -> Pose {
-        *self.physics.bodies[self.object(id).links[link].body].position()
-    }
-
-    /// The rapier handle of a body, after checking that the link exists.
-    pub(crate) fn handle(&self, body: BodyRef) -> Result<RigidBodyHandle, WorldError> {
-        let object = self.object(body.object);
-        match body.link {
-            None => Ok(object.body),
-            Some(l) => object
-                .links
-                .get(l)
-                .map(|l| l.body)
-                .ok_or(WorldError::NoLink {
-                    name: object.name.clone(),
-                    link: l,
-                    count: object.links.len(),
-                }),
-        }
-    }
-
-    /// The pose of any body.
-    pub fn body_pose(&self, body: BodyRef) -> Result<Pose, WorldError> {
-        Ok(*self.physics.bodies[self.handle(body)?].position())
-    }
-
-    /// The mass of an object's body (its links excluded), kg.
-    pub fn mass(&self, id: ObjectId) -> f32 {
-        self.physics.bodies[self.object(id).body].mass()
-    }
-
-    /// The mass of one body, the object's or a link's, kg.
-    pub fn body_mass(&self, body: BodyRef) -> Result<f32, WorldError> {
-        Ok(self.physics.bodies[self.handle(body)?].mass())
-    }
-
-    /// The mass of an object with all its links (a box with its lid), kg: what a hand lifts.
-    pub fn total_mass(&self, id: ObjectId) -> f32 {
-        let object = self.object(id);
-        let links: f32 = object
-            .links
-            .iter()
-            .map(|l| self.physics.bodies[l.body].mass())
-            .sum();
-        self.mass(id) + links
-    }
-
-    /// The world's gravity (m/s²), −9.81 along z unless changed.
-    pub fn gravity(&self) -> Vector {
-        self.physics.gravity
-    }
-
-    /// Whether the object's body is asleep.
-    pub fn is_sleeping(&self, id: ObjectId) -> bool {
-        self.physics.bodies[self.object(id).body].is_sleeping()
-    }
-
-    /// The axis-aligned box around all of an object's colliders.
-    pub fn aabb(&self, id: ObjectId) -> Aabb {
-        let colliders = &self.object(id).colliders;
-        let mut aabb = self.physics.colliders[colliders[0]].compute_aabb();
-        for &c in &colliders[1..] {
-            aabb.merge(&self.physics.colliders[c].compute_aabb());
-        }
-        aabb
-    }
-
-    /// The box around an object's body colliders (its links' excluded) in its own frame: its
-    /// size as built, whatever way it is turned.
-    pub fn local_aabb(&self, id: ObjectId) -> Aabb {
-        let object = self.object(id);
-        let mut boxes = object
-            .colliders
-            .iter()
-            .map(|&c| &self.physics.colliders[c])
-            .filter(|c| c.parent() == Some(object.body))
-            .map(|c| {
-                let at = c.position_wrt_parent().copied().unwrap_or(Pose::IDENTITY);
-                c.shape().compute_aabb(&at)
-            });
-        let first = boxes
-            .next()
-            .unwrap_or_else(|| Aabb::new(Vector::ZERO, Vector::ZERO));
-        boxes.fold(first, |mut all, b| {
-            all.merge(&b);
-            all
-        })
-    }
-
-    /// How many times an object has moved: a step in which its body or a link was awake, or a
-    /// teleport. Memoized relations are valid while the counts of their objects are unchanged.
-    pub fn motion(&self, id: ObjectId) -> u64 {
-        self.motion[id.0 as usize]
-    }
-
-    /// Moves an object (teleport) with its links, at rest, waking it. A sliced object's halves
-    /// move with it, as one rigid piece, so that it can be placed like a whole.
-    pub fn set_pose(&mut self, id: ObjectId, pose: Pose) -> Result<(), WorldError> {
-        if !pose_is_finite(&pose) {
-            return Err(WorldError::BadObject {
-                name: self.object(id).name.clone(),
-                reason: "the requested pose is not finite".into(),
-            });
-        }
-        // Links move with the body, keeping their joint positions.
-        let object = &self.objects[id.0 as usize];
-        let old = *self.physics.bodies[object.body].position();
-        if let Some(halves) = object.replaced_by {
-            for half in halves {
-                let relative = old.inv_mul(&self.pose(half));
-                self.set_pose(half, pose * relative)?;
-            }
-        }
-        let object = &self.objects[id.0 as usize];
-        let moves: Vec<(RigidBodyHandle, Pose)> = std::iter::once((object.body, pose))
-            .chain(object.links.iter().map(|l| {
-                let relative = old.inv_mul(self.physics.bodies[l.body].position());
-                (l.body, pose * relative)
-            }))
-            .collect();
-        for (handle, target) in moves {
-            let body = &mut self.physics.bodies[handle];
-            body.set_position(target, true);
-            body.set_linvel(Vector::ZERO, true);
-            body.set_angvel(Vector::ZERO, true);
-        }
-        self.sync_multibody(id);
-        self.moved(id);
-        self.refresh();
-        Ok(())
-    }
-
-    /// After a teleport, tells a multibody whose root moved where its links now are.
-    pub(crate) fn sync_multibody(&mut self, id: ObjectId) {
-        let object = &self.objects[id.0 as usize];
-        let Some(first) = object.links.iter().find_map(|l| match l.handle {
-            JointHandle::Multibody(h) => Some(h),
-            JointHandle::Impulse(_) => None,
-        }) else {
-            return;
-        };
-        let physics = &mut self.physics;
-        if let Some((multibody, _)) = physics.multibody_joints.get_mut(first) {
-            // The root takes the body's new pose; joint coordinates are kept.
-            multibody.forward_kinematics(&physics.bodies, true);
-            multibody.update_rigid_bodies(&mut physics.bodies, false);
-        }
-    }
-
-    /// Takes an object out of the simulation for good: its bodies stop colliding and moving, and
-    /// it is no longer [`Object::is_present`], so no predicate, placement or query sees it. For a
-    /// stand-in that something else replaces (an activity's `agent.n.01` capsule, by a robot).
-    pub fn retire(&mut self, id: ObjectId) {
-        let object = &mut self.objects[id.0 as usize];
-        object.retired = true;
-        let bodies: Vec<RigidBodyHandle> = std::iter::once(object.body)
-            .chain(object.links.iter().map(|l| l.body))
-            .collect();
-        for body in bodies {
-            if let Some(b) = self.physics.bodies.get_mut(body) {
-                b.set_enabled(false);
-            }
-        }
-        self.moved(id);
-        self.refresh();
-    }
-
-    /// Sets the physics substeps per action step (an instance sampled at 1/300 s may be run at
-    /// 1/120 s). Takes effect from the next step.
-    pub fn set_substeps(&mut self, substeps: Substeps) {
-        self.substeps = substeps;
-        self.physics.integration_parameters.dt = STEP_SECONDS / substeps.count() as f32;
-    }
-
-    /// Lets resting bodies sleep (the default) or keeps every body simulated, for benchmarks of
-    /// an awake scene.
-    pub fn set_sleeping_allowed(&mut self, allowed: bool) {
-        for (_, body) in self.physics.bodies.iter_mut() {
-            if body.is_dynamic() {
-                *body.activation_mut() = if allowed {
-                    RigidBodyActivation::active()
-                } else {
-                    RigidBodyActivation::cannot_sleep()
-                };
-                body.wake_up(true);
-            }
-        }
-        self.quiet = false;
-    }
-
-    /// Lets a body added asleep go back to sleep within its first substep. Rapier wakes every
-    /// body whose contact begins, and the first substep after a body is added finds all its
-    /// resting contacts, so a body added asleep on a shelf wakes at once and would then need its
-    /// full time at rest (half a second) to sleep again, simulated all the while. With that time
-    /// at zero for its first substep it is asleep again at the end of it, unmoved (every bit of
-    /// its pose: `tests/asleep.rs`); from then on it needs the usual time, like any body.
-    pub(crate) fn fall_asleep_at_once(&mut self, handle: RigidBodyHandle) {
-        let activation = self.physics.bodies[handle].activation_mut();
-        self.waking_to_sleep
-            .push((handle, activation.time_until_sleep));
-        activation.time_until_sleep = 0.0;
-    }
-
-    /// After a physics substep: bodies added asleep need their usual time at rest again.
-    pub(crate) fn restore_sleep_times(&mut self) {
-        for (handle, time) in self.waking_to_sleep.drain(..) {
-            if let Some(body) = self.physics.bodies.get_mut(handle) {
-                body.activation_mut().time_until_sleep = time;
-            }
-        }
-    }
-
-    /// Positions, orientations and velocities of every object's body and links as raw bits:
-    /// equal digests mean bit-identical motion state.
-    pub fn motion_bits(&self) -> Vec<u32> {
-        let mut bits = Vec::with_capacity(self.objects.len() * 13);
-        for object in &self.objects {
-            let handles = std::iter::once(object.body).chain(object.links.iter().map(|l| l.body));
-            for handle in handles {
-                let body = &self.physics.bodies[handle];
-                let p = body.position();
-                let (t, r) = (p.translation, p.rotation);
-                let (v, w) = (body.linvel(), body.angvel());
-                for x in [
-                    t.x, t.y, t.z, r.x, r.y, r.z, r.w, v.x, v.y, v.z, w.x, w.y, w.z,
-                ] {
-                    bits.push(x.to_bits());
-                }
-            }
-        }
-        bits
-    }
-
-    /// Moves colliders with their teleported bodies now rather than at the next step, so that
-    /// relations see the change at once, and drops the query structure. (Running rapier's
-    /// collision pipeline here instead would consume its record of changed bodies and keep new
-    /// bodies from ever waking.)
-    pub(crate) fn refresh(&mut self) {
-        self.quiet = false;
-        self.index = OnceLock::new();
-        self.fixed_index = OnceLock::new();
-        let physics = &mut self.physics;
-        physics
-            .bodies
-            .propagate_modified_body_positions_to_colliders(&mut physics.colliders);
-    }
-
-    /// Marks an object as moved: its memoized relations are stale.
-    pub(crate) fn moved(&mut self, id: ObjectId) {
-        self.motion[id.0 as usize] += 1;
-    }
-
-    /// A new object's bookkeeping.
-    pub(crate) fn push_object(&mut self, object: Object) -> ObjectId {
-        let id = ObjectId(self.objects.len() as u32);
-        self.objects.push(object);
-        self.motion.push(0);
-        id
-    }
-
-    /// Marks every object whose body or a link was awake during the last substeps as moved.
-    pub(crate) fn note_motion(&mut self) {
-        for (i, object) in self.objects.iter().enumerate() {
-            let awake = |b: RigidBodyHandle| {
-                let body = &self.physics.bodies[b];
-                body.is_enabled() && !body.is_fixed() && !body.is_sleeping()
-            };
-            if awake(object.body) || object.links.iter().any(|l| awake(l.body)) {
-                self.motion[i] += 1;
-            }
-        }
-    }
-}
-
-impl Core {
     /// Whether a decoded core holds together: a table entry per object, and every handle an
     /// object, a room, a drive or an attachment names is in the physics (see
     /// [`crate::World::from_bytes`]).
     pub(crate) fn check_consistency(&self) -> Result<(), String> {
-        let n = self.objects.len();
-        let p = &self.physics;
-        if self.motion.len() != n {
-            return Err(format!(
-                "{} motion counts for {n} objects",
-                self.motion.len()
-            ));
+        let b = &self.bodies;
+        let n = b.objects.len();
+        let p = &b.physics;
+        if b.motion.len() != n {
+            return Err(format!("{} motion counts for {n} objects", b.motion.len()));
         }
         let known = |id: ObjectId| (id.0 as usize) < n;
-        for (i, object) in self.objects.iter().enumerate() {
+        for (i, object) in b.objects.iter().enumerate() {
             let bad = |what: &str| Err(format!("object {i} (`{}`): {what}", object.name));
             if object.colliders.is_empty() {
                 return bad("no collider");
@@ -559,10 +249,10 @@ impl Core {
                 return bad("halves that are not objects");
             }
         }
-        let body_known = |b: &BodyRef| {
-            known(b.object)
-                && b.link
-                    .is_none_or(|l| l < self.objects[b.object.0 as usize].links.len())
+        let body_known = |r: &BodyRef| {
+            known(r.object)
+                && r.link
+                    .is_none_or(|l| l < b.objects[r.object.0 as usize].links.len())
         };
         if self
             .rooms
@@ -574,13 +264,13 @@ impl Core {
                 .any(|(a, b)| !body_known(a) || !body_known(b))
             || self
                 .drives
-                .keys()
-                .any(|&(id, link)| !known(id) || link >= self.objects[id.0 as usize].links.len())
-            || self.carried.keys().any(|&id| !known(id))
+                .links()
+                .any(|&(id, link)| !known(id) || link >= b.objects[id.0 as usize].links.len())
+            || b.carried.keys().any(|&id| !known(id))
         {
             return Err("a room, ignored pair or drive names an unknown object or link".into());
         }
-        if self.pushed.iter().any(|&h| p.bodies.get(h).is_none()) {
+        if b.pushed.iter().any(|&h| p.bodies.get(h).is_none()) {
             return Err("a pushed body missing from the physics".into());
         }
         self.attachments

@@ -4,7 +4,8 @@
 //! Forces and torques act for the rest of the current action step (every remaining substep) and
 //! are then cleared, so a controller states each step what it pushes with. Impulses act at once.
 
-use crate::core::{Core, WorldError, pose_is_finite};
+use crate::bodies::Bodies;
+use crate::core::{WorldError, pose_is_finite};
 use crate::object::{BodyKind, BodyRef, JointHandle, Object, ObjectId};
 use rapier3d::dynamics::{MultibodyJointHandle, RigidBody};
 use rapier3d::math::{Pose, Rotation, Vector};
@@ -30,7 +31,7 @@ fn finite(what: &'static str, v: Vector) -> Result<(), WorldError> {
     }
 }
 
-impl Core {
+impl Bodies {
     /// A body's velocity.
     pub fn velocity(&self, body: BodyRef) -> Result<Velocity, WorldError> {
         let handle = self.handle(body)?;
@@ -100,7 +101,7 @@ impl Core {
         if let Some(c) = self.physics.colliders.get_mut(collider) {
             c.set_position_wrt_parent(offset);
         }
-        self.index = std::sync::OnceLock::new();
+        self.index.clear_moving();
         self.wake(body);
         Ok(())
     }

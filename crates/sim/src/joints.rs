@@ -19,6 +19,7 @@
 //! every scene), and 3.0× at the shoulder of the same arm bent to (0.5, −0.3, 0.4) rad. Choosing
 //! the solver settings for robots belongs with the robots and their benchmark.
 
+use crate::bodies::Bodies;
 use crate::core::{Core, WorldError};
 use crate::object::{BodyRef, JointHandle, JointKind, JointSpec, ObjectId};
 use crate::states::StateError;
@@ -27,6 +28,7 @@ use rand_chacha::rand_core::Rng;
 use rapier3d::dynamics::{GenericJoint, JointAxis, MotorModel};
 use rapier3d::math::{Pose, Rotation, Vector};
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 
 /// Fraction of a joint's range beyond which it counts as open.
 pub const OPEN_FRACTION: f32 = 0.05;
@@ -109,44 +111,54 @@ pub(crate) fn free_axis(kind: JointKind) -> Option<JointAxis> {
     }
 }
 
-impl Core {
-    fn check_link(&self, id: ObjectId, link: usize) -> Result<(), WorldError> {
-        self.handle(BodyRef::link(id, link)).map(|_| ())
-    }
+/// The drives set on joints, by object and link: what [`Joints::state`] reports the effort of.
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
+#[serde(transparent)]
+pub(crate) struct Drives(BTreeMap<(ObjectId, usize), Drive>);
 
-    /// The pose of a link's parent body.
-    fn parent_pose(&self, id: ObjectId, link: usize) -> Pose {
-        match self.object(id).links[link].parent {
-            None => self.pose(id),
-            Some(p) => self.link_pose(id, p),
+impl Drives {
+    /// The driven links, for checking a decoded world.
+    pub(crate) fn links(&self) -> impl Iterator<Item = &(ObjectId, usize)> {
+        self.0.keys()
+    }
+}
+
+/// The joints, for reading: positions, velocities, efforts, and `open`. Reached through
+/// [`crate::World::joints`].
+#[derive(Clone, Copy)]
+pub struct Joints<'w> {
+    pub(crate) bodies: &'w Bodies,
+    pub(crate) drives: &'w Drives,
+}
+
+/// The joints, for acting on them: teleporting a joint to a position, drives. Reached through
+/// [`crate::World::joints_mut`].
+pub struct JointsMut<'w> {
+    pub(crate) bodies: &'w mut Bodies,
+    pub(crate) drives: &'w mut Drives,
+}
+
+impl<'w> Joints<'w> {
+    pub(crate) fn new(core: &'w Core) -> Joints<'w> {
+        Joints {
+            bodies: &core.bodies,
+            drives: &core.drives,
         }
     }
 
     /// The position of a link's joint: 0 where the spec put it, the upper limit fully open.
-    /// Panics if the link does not exist; see [`Core::joint_state`] for a checked reading.
-    pub fn joint_position(&self, id: ObjectId, link: usize) -> f32 {
-        let l = &self.object(id).links[link];
-        let relative = self
-            .parent_pose(id, link)
-            .inv_mul(&self.link_pose(id, link));
-        match l.joint.kind {
-            JointKind::Revolute => {
-                let q = relative.rotation;
-                let along = Vector::new(q.x, q.y, q.z).dot(l.joint.axis);
-                2.0 * along.atan2(q.w)
-            }
-            JointKind::Prismatic => relative.translation.dot(l.joint.axis),
-            JointKind::Fixed => 0.0,
-        }
+    /// Panics if the link does not exist; see [`Joints::state`] for a checked reading.
+    pub fn position(&self, id: ObjectId, link: usize) -> f32 {
+        position(self.bodies, id, link)
     }
 
     /// Position, velocity and effort of a link's joint.
-    pub fn joint_state(&self, id: ObjectId, link: usize) -> Result<JointState, WorldError> {
-        self.check_link(id, link)?;
-        let l = &self.object(id).links[link];
-        let position = self.joint_position(id, link);
-        let velocity = self.joint_velocity(id, link);
-        let effort = match self.drives.get(&(id, link)) {
+    pub fn state(&self, id: ObjectId, link: usize) -> Result<JointState, WorldError> {
+        check_link(self.bodies, id, link)?;
+        let l = &self.bodies.object(id).links[link];
+        let position = position(self.bodies, id, link);
+        let velocity = velocity(self.bodies, id, link);
+        let effort = match self.drives.0.get(&(id, link)) {
             Some(drive) => drive.effort(position, velocity),
             None => -l.joint.damping * velocity,
         };
@@ -157,83 +169,72 @@ impl Core {
         })
     }
 
-    fn joint_velocity(&self, id: ObjectId, link: usize) -> f32 {
-        let l = &self.object(id).links[link];
-        let parent = match l.parent {
-            None => self.object(id).body,
-            Some(p) => self.object(id).links[p].body,
-        };
-        let (pb, cb) = (&self.physics.bodies[parent], &self.physics.bodies[l.body]);
-        let axis = pb.position().rotation * l.joint.axis;
-        match l.joint.kind {
-            JointKind::Revolute => (cb.angvel() - pb.angvel()).dot(axis),
-            JointKind::Prismatic => {
-                let at = cb.center_of_mass();
-                (cb.linvel() - pb.velocity_at_point(at)).dot(axis)
-            }
-            JointKind::Fixed => 0.0,
+    /// Whether any joint with limits is beyond [`OPEN_FRACTION`] of its range.
+    pub fn is_open(&self, id: ObjectId) -> bool {
+        let links = &self.bodies.object(id).links;
+        links.iter().enumerate().any(|(i, l)| {
+            l.joint.limits.is_some_and(|[lo, hi]| {
+                position(self.bodies, id, i) - lo > OPEN_FRACTION * (hi - lo)
+            })
+        })
+    }
+}
+
+impl<'w> JointsMut<'w> {
+    pub(crate) fn new(core: &'w mut Core) -> JointsMut<'w> {
+        JointsMut {
+            bodies: &mut core.bodies,
+            drives: &mut core.drives,
         }
     }
 
     /// Moves a link to a joint position (clamped to its limits), at rest, keeping its children
     /// where they are relative to it.
-    pub fn set_joint_position(
+    pub fn set_position(
         &mut self,
         id: ObjectId,
         link: usize,
         position: f32,
     ) -> Result<(), WorldError> {
-        self.check_link(id, link)?;
+        check_link(self.bodies, id, link)?;
         if !position.is_finite() {
             return Err(WorldError::NotFinite {
                 what: "a joint position",
                 value: position,
             });
         }
-        let joint = &self.object(id).links[link].joint;
+        let joint = &self.bodies.object(id).links[link].joint;
         let q = joint
             .limits
             .map_or(position, |[lo, hi]| position.clamp(lo, hi));
-        let old = self.link_pose(id, link);
-        let new = self.parent_pose(id, link) * displacement(joint, q);
+        let old = self.bodies.link_pose(id, link);
+        let new = parent_pose(self.bodies, id, link) * displacement(joint, q);
         // The link's descendants keep their pose relative to it.
         let mut moves = vec![(link, new)];
-        for i in
-            (link + 1..self.object(id).links.len()).filter(|&i| self.descends_from(id, i, link))
+        for i in (link + 1..self.bodies.object(id).links.len())
+            .filter(|&i| descends_from(self.bodies, id, i, link))
         {
-            moves.push((i, new * old.inv_mul(&self.link_pose(id, i))));
+            moves.push((i, new * old.inv_mul(&self.bodies.link_pose(id, i))));
         }
         for (i, pose) in moves {
-            let handle = self.object(id).links[i].body;
-            let body = &mut self.physics.bodies[handle];
+            let handle = self.bodies.object(id).links[i].body;
+            let body = &mut self.bodies.physics.bodies[handle];
             body.set_position(pose, true);
             body.set_linvel(Vector::ZERO, true);
             body.set_angvel(Vector::ZERO, true);
         }
         self.set_multibody_coordinate(id, link, q);
-        self.moved(id);
-        self.refresh();
+        self.bodies.moved(id);
+        self.bodies.refresh();
         Ok(())
-    }
-
-    fn descends_from(&self, id: ObjectId, link: usize, ancestor: usize) -> bool {
-        let links = &self.object(id).links;
-        let mut at = links[link].parent;
-        while let Some(p) = at {
-            if p == ancestor {
-                return true;
-            }
-            at = links[p].parent;
-        }
-        false
     }
 
     /// A multibody keeps its own joint coordinates: a teleported joint must be told.
     fn set_multibody_coordinate(&mut self, id: ObjectId, link: usize, q: f32) {
-        let JointHandle::Multibody(handle) = self.object(id).links[link].handle else {
+        let JointHandle::Multibody(handle) = self.bodies.object(id).links[link].handle else {
             return;
         };
-        let physics = &mut self.physics;
+        let physics = &mut self.bodies.physics;
         if let Some((multibody, index)) = physics.multibody_joints.get_mut(handle) {
             let current = self::coordinate(multibody.link(index).map(|l| &l.joint));
             if let Some(current) = current {
@@ -251,26 +252,21 @@ impl Core {
         }
     }
 
-    /// Sets a drive on a link's joint (replacing any earlier one) until [`Core::release_joint`].
-    pub fn drive_joint(
-        &mut self,
-        id: ObjectId,
-        link: usize,
-        drive: Drive,
-    ) -> Result<(), WorldError> {
-        self.check_link(id, link)?;
+    /// Sets a drive on a link's joint (replacing any earlier one) until [`JointsMut::release`].
+    pub fn drive(&mut self, id: ObjectId, link: usize, drive: Drive) -> Result<(), WorldError> {
+        check_link(self.bodies, id, link)?;
         if !drive.is_valid() {
             return Err(WorldError::BadObject {
-                name: self.object(id).name.clone(),
+                name: self.bodies.object(id).name.clone(),
                 reason: format!(
                     "the drive of link {link} has a non-finite or negative value: {drive:?}"
                 ),
             });
         }
-        let l = &self.object(id).links[link];
+        let l = &self.bodies.object(id).links[link];
         let Some(axis) = free_axis(l.joint.kind) else {
             return Err(WorldError::BadObject {
-                name: self.object(id).name.clone(),
+                name: self.bodies.object(id).name.clone(),
                 reason: format!("link {link} is on a fixed joint and cannot be driven"),
             });
         };
@@ -286,56 +282,39 @@ impl Core {
             );
             joint.set_motor_max_force(axis, drive.max_force);
         });
-        self.drives.insert((id, link), drive);
-        self.wake(body);
+        self.drives.0.insert((id, link), drive);
+        self.bodies.wake(body);
         Ok(())
     }
 
     /// Takes a joint's drive off: it goes back to its passive damping.
-    pub fn release_joint(&mut self, id: ObjectId, link: usize) -> Result<(), WorldError> {
-        self.check_link(id, link)?;
-        let l = &self.object(id).links[link];
+    pub fn release(&mut self, id: ObjectId, link: usize) -> Result<(), WorldError> {
+        check_link(self.bodies, id, link)?;
+        let l = &self.bodies.object(id).links[link];
         let (handle, body, damping) = (l.handle, l.body, l.joint.damping);
         if let Some(axis) = free_axis(l.joint.kind) {
             self.with_joint(handle, |joint| passive(joint, axis, damping));
         }
-        self.drives.remove(&(id, link));
-        self.wake(body);
+        self.drives.0.remove(&(id, link));
+        self.bodies.wake(body);
         Ok(())
     }
 
     fn with_joint(&mut self, handle: JointHandle, change: impl FnOnce(&mut GenericJoint)) {
         match handle {
             JointHandle::Impulse(h) => {
-                if let Some(joint) = self.physics.impulse_joints.get_mut(h, true) {
+                if let Some(joint) = self.bodies.physics.impulse_joints.get_mut(h, true) {
                     change(&mut joint.data);
                 }
             }
             JointHandle::Multibody(h) => {
-                if let Some((multibody, index)) = self.physics.multibody_joints.get_mut(h)
+                if let Some((multibody, index)) = self.bodies.physics.multibody_joints.get_mut(h)
                     && let Some(link) = multibody.link_mut(index)
                 {
                     change(&mut link.joint.data);
                 }
             }
         }
-    }
-
-    pub(crate) fn wake(&mut self, body: rapier3d::dynamics::RigidBodyHandle) {
-        // Through the physics world, so that the island manager hears of it (a sleeping
-        // multibody wakes as a whole).
-        self.physics.wake_up(body, true);
-        self.quiet = false;
-    }
-
-    /// Whether any joint with limits is beyond [`OPEN_FRACTION`] of its range.
-    pub fn is_open(&self, id: ObjectId) -> bool {
-        let links = &self.object(id).links;
-        links.iter().enumerate().any(|(i, l)| {
-            l.joint
-                .limits
-                .is_some_and(|[lo, hi]| self.joint_position(id, i) - lo > OPEN_FRACTION * (hi - lo))
-        })
     }
 
     /// Opens a random non-empty set of the joints with limits, each to a random position between
@@ -349,6 +328,7 @@ impl Core {
         rng: &mut SimRng,
     ) -> Result<(), StateError> {
         let limited: Vec<(usize, [f32; 2], bool)> = self
+            .bodies
             .object(id)
             .links
             .iter()
@@ -357,7 +337,7 @@ impl Core {
             .collect();
         if limited.is_empty() {
             return Err(StateError::NoJoints {
-                object: self.object(id).name.clone(),
+                object: self.bodies.object(id).name.clone(),
             });
         }
         let chosen = if open {
@@ -375,14 +355,73 @@ impl Core {
                 (true, true) => lo + (hi - lo) * uniform(rng, OPEN_FRACTION + 0.01, 1.0),
             };
             // The link exists and the target is finite: this cannot fail.
-            let _ = self.set_joint_position(id, i, target);
+            let _ = self.set_position(id, i, target);
         }
         Ok(())
     }
 }
 
-/// Whether gravity works on a joint: a hinge about a horizontal axis (a lid, an oven door) or a
-/// slide with a vertical component (in the object's frame, which stands upright).
+fn check_link(bodies: &Bodies, id: ObjectId, link: usize) -> Result<(), WorldError> {
+    bodies.handle(BodyRef::link(id, link)).map(|_| ())
+}
+
+/// The pose of a link's parent body.
+fn parent_pose(bodies: &Bodies, id: ObjectId, link: usize) -> Pose {
+    match bodies.object(id).links[link].parent {
+        None => bodies.pose(id),
+        Some(p) => bodies.link_pose(id, p),
+    }
+}
+
+/// The position of a link's joint: 0 where the spec put it, the upper limit fully open.
+/// Panics if the link does not exist; see [`Joints::state`] for a checked reading.
+fn position(bodies: &Bodies, id: ObjectId, link: usize) -> f32 {
+    let l = &bodies.object(id).links[link];
+    let relative = parent_pose(bodies, id, link).inv_mul(&bodies.link_pose(id, link));
+    match l.joint.kind {
+        JointKind::Revolute => {
+            let q = relative.rotation;
+            let along = Vector::new(q.x, q.y, q.z).dot(l.joint.axis);
+            2.0 * along.atan2(q.w)
+        }
+        JointKind::Prismatic => relative.translation.dot(l.joint.axis),
+        JointKind::Fixed => 0.0,
+    }
+}
+
+fn velocity(bodies: &Bodies, id: ObjectId, link: usize) -> f32 {
+    let l = &bodies.object(id).links[link];
+    let parent = match l.parent {
+        None => bodies.object(id).body,
+        Some(p) => bodies.object(id).links[p].body,
+    };
+    let (pb, cb) = (
+        &bodies.physics.bodies[parent],
+        &bodies.physics.bodies[l.body],
+    );
+    let axis = pb.position().rotation * l.joint.axis;
+    match l.joint.kind {
+        JointKind::Revolute => (cb.angvel() - pb.angvel()).dot(axis),
+        JointKind::Prismatic => {
+            let at = cb.center_of_mass();
+            (cb.linvel() - pb.velocity_at_point(at)).dot(axis)
+        }
+        JointKind::Fixed => 0.0,
+    }
+}
+
+fn descends_from(bodies: &Bodies, id: ObjectId, link: usize, ancestor: usize) -> bool {
+    let links = &bodies.object(id).links;
+    let mut at = links[link].parent;
+    while let Some(p) = at {
+        if p == ancestor {
+            return true;
+        }
+        at = links[p].parent;
+    }
+    false
+}
+
 fn lifts(joint: &JointSpec) -> bool {
     match joint.kind {
         JointKind::Revolute => joint.axis.z.abs() < 0.9,

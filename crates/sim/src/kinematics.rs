@@ -37,8 +37,10 @@
 //! whose body (or a link's) is awake counts as moved, and so does one that is teleported. A
 //! settled scene therefore answers every predicate from the cache.
 
+use crate::bodies::Bodies;
 use crate::core::Core;
 use crate::object::ObjectId;
+use crate::room::Room;
 use behavior_core::{Predicate, RoomType};
 use rapier3d::math::Vector;
 use rapier3d::parry::bounding_volume::BoundingVolume;
@@ -106,9 +108,45 @@ impl RelationMemo {
     pub(crate) fn clear(&self) {
         self.lock().clear();
     }
+
+    /// The value memoized for `key` if it was computed when its objects' motion counts were
+    /// `stamp`, else `compute`'s, memoized.
+    fn get_or_compute(
+        &self,
+        key: (Predicate, ObjectId, ObjectId),
+        stamp: (u64, u64),
+        compute: impl FnOnce() -> bool,
+    ) -> bool {
+        if let Some(&(value, seen)) = self.lock().get(&key)
+            && seen == stamp
+        {
+            return value;
+        }
+        // Computed without the lock: relations of sliced objects recurse into this.
+        let value = compute();
+        self.lock().insert(key, (value, stamp));
+        value
+    }
 }
 
-impl Core {
+/// The kinematic relations between objects (see the module docs), memoized. Reached through
+/// [`crate::World::relations`].
+#[derive(Clone, Copy)]
+pub struct Relations<'w> {
+    pub(crate) bodies: &'w Bodies,
+    pub(crate) memo: &'w RelationMemo,
+    pub(crate) rooms: &'w [Room],
+}
+
+impl<'w> Relations<'w> {
+    pub(crate) fn new(core: &'w Core) -> Relations<'w> {
+        Relations {
+            bodies: &core.bodies,
+            memo: &core.memo,
+            rooms: &core.rooms,
+        }
+    }
+
     /// Whether `a` stands in the binary relation `predicate` to `b` (`ontop`, `inside`,
     /// `under`, `nextto`, `touching` or `onfloor`); false for any other predicate.
     pub fn relation(&self, predicate: Predicate, a: ObjectId, b: ObjectId) -> bool {
@@ -168,10 +206,10 @@ impl Core {
 
     /// The halves that replaced a sliced object.
     fn replaced_by(&self, id: ObjectId) -> Option<[ObjectId; 2]> {
-        self.object(id).replaced_by
+        self.bodies.object(id).replaced_by
     }
 
-    /// A memoized predicate: valid while neither object has moved (see [`World::motion`]).
+    /// A memoized predicate: valid while neither object has moved (see [`Bodies::motion`]).
     fn cached(
         &self,
         predicate: Predicate,
@@ -179,17 +217,8 @@ impl Core {
         b: ObjectId,
         compute: impl FnOnce() -> bool,
     ) -> bool {
-        let stamp = (self.motion(a), self.motion(b));
-        let key = (predicate, a, b);
-        if let Some(&(value, seen)) = self.memo.lock().get(&key)
-            && seen == stamp
-        {
-            return value;
-        }
-        // Computed without the lock: relations of sliced objects recurse into this.
-        let value = compute();
-        self.memo.lock().insert(key, (value, stamp));
-        value
+        let stamp = (self.bodies.motion(a), self.bodies.motion(b));
+        self.memo.get_or_compute((predicate, a, b), stamp, compute)
     }
 
     /// The collider pairs of two objects whose boxes come within `margin`.
@@ -198,9 +227,15 @@ impl Core {
         a: ObjectId,
         b: ObjectId,
         margin: f32,
-    ) -> impl Iterator<Item = (&rapier3d::geometry::Collider, &rapier3d::geometry::Collider)> {
-        let colliders = &self.physics.colliders;
-        let (ca, cb) = (&self.object(a).colliders, &self.object(b).colliders);
+    ) -> impl Iterator<
+        Item = (
+            &'w rapier3d::geometry::Collider,
+            &'w rapier3d::geometry::Collider,
+        ),
+    > + use<'w> {
+        let bodies = self.bodies;
+        let colliders = &bodies.physics.colliders;
+        let (ca, cb) = (&bodies.object(a).colliders, &bodies.object(b).colliders);
         ca.iter().flat_map(move |&x| {
             cb.iter().filter_map(move |&y| {
                 let (x, y) = (&colliders[x], &colliders[y]);
@@ -214,7 +249,11 @@ impl Core {
     /// with that margin rather than a distance: parry's cuboid–cuboid distance overestimates the
     /// gap between two slightly turned boxes (by centimetres, for faces 0.5 mm apart), while its
     /// contact query is exact there.
-    fn near_contacts(&self, a: ObjectId, b: ObjectId) -> impl Iterator<Item = query::Contact> {
+    fn near_contacts(
+        &self,
+        a: ObjectId,
+        b: ObjectId,
+    ) -> impl Iterator<Item = query::Contact> + use<'w> {
         self.near_pairs(a, b, TOUCH_DISTANCE).filter_map(|(x, y)| {
             let (px, py) = (x.position(), y.position());
             query::contact(px, x.shape(), py, y.shape(), TOUCH_DISTANCE)
@@ -232,7 +271,7 @@ impl Core {
     fn compute_ontop(&self, a: ObjectId, b: ObjectId) -> bool {
         a != b
             && self.supports(a, b)
-            && !self.ray_hits(b, self.aabb(a).center(), Vector::Z, VERTICAL_RANGE)
+            && !self.ray_hits(b, self.bodies.aabb(a).center(), Vector::Z, VERTICAL_RANGE)
     }
 
     /// Whether `a` and `b` touch where `b`'s surface faces up: `normal2` is `b`'s outward normal
@@ -245,7 +284,7 @@ impl Core {
         if a == b {
             return false;
         }
-        let aabb = self.aabb(a);
+        let aabb = self.bodies.aabb(a);
         let c = aabb.center();
         let top = Vector::new(c.x, c.y, aabb.maxs.z);
         let bottom = Vector::new(c.x, c.y, aabb.mins.z);
@@ -257,9 +296,9 @@ impl Core {
         if a == b {
             return false;
         }
-        let own = self.aabb(a);
+        let own = self.bodies.aabb(a);
         let center = own.center();
-        let container = self.aabb(b);
+        let container = self.bodies.aabb(b);
         if !container.contains_local_point(center) || !mostly_within(&own, &container) {
             return false;
         }
@@ -277,7 +316,7 @@ impl Core {
         if a == b {
             return false;
         }
-        let (ba, bb) = (self.aabb(a), self.aabb(b));
+        let (ba, bb) = (self.bodies.aabb(a), self.bodies.aabb(b));
         let gap = (ba.mins - bb.maxs)
             .max(bb.mins - ba.maxs)
             .max(Vector::ZERO)
@@ -288,7 +327,7 @@ impl Core {
     }
 
     fn sees_horizontally(&self, from: ObjectId, target: ObjectId) -> bool {
-        let center = self.aabb(from).center();
+        let center = self.bodies.aabb(from).center();
         (0..HORIZONTAL_DIRECTIONS).any(|k| {
             let angle = k as f32 * std::f32::consts::TAU / HORIZONTAL_DIRECTIONS as f32;
             let dir = Vector::new(angle.cos(), angle.sin(), 0.0);
@@ -304,7 +343,7 @@ impl Core {
         if a == floor {
             return false;
         }
-        let own = self.aabb(a);
+        let own = self.bodies.aabb(a);
         let c = own.center();
         let room_floor = self.room_at(c.x, c.y).and_then(|r| r.floor);
         if room_floor != Some(floor) {
@@ -316,11 +355,11 @@ impl Core {
         // Lying on something flat on the floor (a mat, a towel), not in a basket, a bottom drawer
         // or on a shelf's lowest board: low enough, and resting on the floor or on a flat thing
         // that lies on it.
-        let low = own.mins.z - self.aabb(floor).maxs.z <= ONFLOOR_HEIGHT;
+        let low = own.mins.z - self.bodies.aabb(floor).maxs.z <= ONFLOOR_HEIGHT;
         low && match self.first_below(a, Vector::new(c.x, c.y, own.mins.z + 0.001)) {
             Some(below) if below == floor => true,
             Some(below) => {
-                let b = self.aabb(below);
+                let b = self.bodies.aabb(below);
                 b.maxs.z - b.mins.z <= FLAT_HEIGHT && self.touching(below, floor)
             }
             None => false,
@@ -331,12 +370,12 @@ impl Core {
     fn first_below(&self, except: ObjectId, from: Vector) -> Option<ObjectId> {
         let ray = Ray::new(from, -Vector::Z);
         let mut best: Option<(f32, ObjectId)> = None;
-        for (id, object) in self.objects() {
-            if id == except || !self.present(id) {
+        for (id, object) in self.bodies.objects() {
+            if id == except || !self.bodies.present(id) {
                 continue;
             }
             for &c in &object.colliders {
-                let c = &self.physics.colliders[c];
+                let c = &self.bodies.physics.colliders[c];
                 if let Some(t) = c.shape().cast_ray(c.position(), &ray, 10.0, true)
                     && best.is_none_or(|(bt, _)| t < bt)
                 {
@@ -347,14 +386,14 @@ impl Core {
         best.map(|(_, id)| id)
     }
 
-    /// Whether an object is in the world: not replaced by its halves.
-    pub fn present(&self, id: ObjectId) -> bool {
-        self.object(id).is_present()
+    /// The room whose footprint contains (x, y); the first one added wins on shared walls.
+    pub fn room_at(&self, x: f32, y: f32) -> Option<&'w Room> {
+        self.rooms.iter().find(|r| r.contains(x, y))
     }
 
     /// The type of the room at the centre of the object's box.
     pub fn room_of(&self, a: ObjectId) -> Option<RoomType> {
-        let c = self.aabb(a).center();
+        let c = self.bodies.aabb(a).center();
         self.room_at(c.x, c.y).map(|r| r.kind)
     }
 
@@ -362,12 +401,12 @@ impl Core {
     /// colliders, so what lies between does not matter and the result needs no query structure
     /// (it is right even just after a teleport).
     pub fn ray_hits(&self, target: ObjectId, origin: Vector, dir: Vector, range: f32) -> bool {
-        if !self.present(target) {
+        if !self.bodies.present(target) {
             return false;
         }
         let ray = Ray::new(origin, dir);
-        self.object(target).colliders.iter().any(|&c| {
-            let c = &self.physics.colliders[c];
+        self.bodies.object(target).colliders.iter().any(|&c| {
+            let c = &self.bodies.physics.colliders[c];
             c.is_enabled() && c.shape().intersects_ray(c.position(), &ray, range)
         })
     }

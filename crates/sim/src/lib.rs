@@ -6,7 +6,9 @@
 //!
 //! It answers the language's predicates through [`BoundWorld`], a [`behavior_core::PredicateOracle`];
 //! it knows nothing of BDDL text, activities, homes, assets, robots or rendering — those crates
-//! read the world through [`World::core`] and act on it through the API below.
+//! read and act on the world through the concepts it lends out: [`World::bodies`],
+//! [`World::relations`], [`World::query`], [`World::joints`], [`World::attachments`],
+//! [`World::contacts`], [`World::visuals`] and [`World::rooms`] (with `_mut` twins for acting).
 //!
 //! ```
 //! use behavior_sim::{ObjectSpec, Part, Primitive, World};
@@ -20,15 +22,20 @@
 //! for _ in 0..60 {
 //!     world.step();
 //! }
-//! assert!(world.core().ontop(apple, table));
+//! assert!(world.relations().ontop(apple, table));
 //! ```
 //!
-//! Layout: [`World`] (`world.rs`) holds a [`Core`] (`core.rs`: objects, bodies, rooms, physics)
-//! and the state systems (`states/`); `object.rs` says what an object is made of,
-//! `construct.rs` builds one, `step.rs` runs a step and its hooks, `kinematics.rs` computes the
-//! relations, `joints.rs`, `dynamics.rs`, `attachments.rs`, `contacts.rs` and `query.rs` are what
-//! robots, cameras and planners use, `visual.rs` is what renderers draw, `placement.rs` is what
-//! the sampler places with, `oracle.rs` the bridge to the language, `bytes.rs` the checkpoints.
+//! Layout: [`World`] (`world.rs`) holds the core (`core.rs`: a plain aggregate of the parts below,
+//! and their checkpoint form) and the state systems (`states/`). Each part is a type that owns
+//! its data, in its own file: the bodies (`bodies.rs`; what controllers do to them in
+//! `dynamics.rs`, how an object is built in `construct.rs`, what it is made of in `object.rs`),
+//! the relations and their memo (`kinematics.rs`), the query index and queries (`query.rs`), the
+//! joints' drives (`joints.rs`), the attachments (`attachments.rs`), the ignored contact pairs
+//! (`contacts.rs`) and the rooms (`room.rs`). A part that reads the bodies is lent out as a view
+//! pairing it with them ([`Relations`], [`Joints`], [`Attachments`], [`Contacts`], [`Query`],
+//! [`Visuals`], and `Mut` twins), so each concept is reached one way. `step.rs` runs a step and
+//! its hooks, `visual.rs` is what renderers draw, `placement.rs` is what the sampler places
+//! with, `oracle.rs` the bridge to the language, `bytes.rs` the checkpoints.
 //!
 //! Checkpoints: [`World::to_bytes`] saves everything a [`Snapshot`] keeps, so a world read back
 //! with [`World::from_bytes`] continues bit-identically (`tests/world_bytes.rs`, and a cluttered
@@ -46,6 +53,7 @@
 //! loads in about 4.5 ms.
 
 mod attachments;
+mod bodies;
 mod bytes;
 mod construct;
 mod contacts;
@@ -63,14 +71,17 @@ mod step;
 mod visual;
 mod world;
 
-pub use attachments::{AttachmentId, AttachmentKind, AttachmentSpec, AttachmentState};
+pub use attachments::{
+    AttachmentId, AttachmentKind, AttachmentSpec, AttachmentState, Attachments, AttachmentsMut,
+};
+pub use bodies::Bodies;
 pub use bytes::{WORLD_FORMAT_VERSION, WORLD_MAGIC, WorldBytesError};
-pub use contacts::{Contact, groups};
-pub use core::{Core, STEP_SECONDS, Substeps, WorldError};
+pub use contacts::{Contact, Contacts, ContactsMut, groups};
+pub use core::{STEP_SECONDS, Substeps, WorldError};
 pub use dynamics::Velocity;
-pub use joints::{Drive, JointState, OPEN_FRACTION};
+pub use joints::{Drive, JointState, Joints, JointsMut, OPEN_FRACTION};
 pub use kinematics::{
-    FLAT_HEIGHT, HORIZONTAL_DIRECTIONS, HORIZONTAL_RANGE, ONFLOOR_HEIGHT, SUPPORT_COS,
+    FLAT_HEIGHT, HORIZONTAL_DIRECTIONS, HORIZONTAL_RANGE, ONFLOOR_HEIGHT, Relations, SUPPORT_COS,
     TOUCH_DISTANCE, VERTICAL_RANGE,
 };
 pub use object::{
@@ -79,10 +90,10 @@ pub use object::{
 };
 pub use oracle::BoundWorld;
 pub use placement::{
-    DROP_GAP, Heading, LEVEL_SPACING, NEXTTO_GAP, PLACEMENT_ATTEMPTS, PlacementError,
-    PlacementFailure, Relation, SUPPORT_NORMAL_Z, TOUCH_GAP,
+    DROP_GAP, LEVEL_SPACING, NEXTTO_GAP, PLACEMENT_ATTEMPTS, PlacementError, PlacementFailure,
+    Relation, SUPPORT_NORMAL_Z, TOUCH_GAP,
 };
-pub use query::{Proximity, QueryFilter, RayHit, Solid};
+pub use query::{Proximity, Query, QueryFilter, RayHit, Solid};
 pub use room::{FloorRect, Room};
 pub use states::StateError;
 pub use states::dirt::{
@@ -103,6 +114,6 @@ pub use states::water::{
 pub use step::StepHooks;
 pub use visual::{
     Form, Ghost, HeldMesh, Material, Model, ModelLibrary, ModelPiece, Visual, VisualMesh,
-    VisualPart, VisualShape,
+    VisualPart, VisualShape, Visuals,
 };
 pub use world::{Snapshot, World};

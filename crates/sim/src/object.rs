@@ -169,13 +169,13 @@ pub enum BodyKind {
     /// Moved by forces and contacts.
     #[default]
     Dynamic,
-    /// Moved only by the caller, toward a pose set with [`crate::Core::set_kinematic_target`];
+    /// Moved only by the caller, toward a pose set with [`crate::Bodies::set_kinematic_target`];
     /// it pushes dynamic bodies and nothing pushes it (a robot's base driven to a pose).
     /// Beware: once turned away from the identity rotation it never sleeps, even untouched
     /// (rapier derives its velocity from rounded rotations, about 1e-4 rad/s); a body that must
     /// rest cheaply (the robots' parts) is better `KinematicVelocity`, stopped at exactly zero.
     KinematicPosition,
-    /// Moved only by the caller, at a velocity set with [`crate::Core::set_velocity`]
+    /// Moved only by the caller, at a velocity set with [`crate::Bodies::set_velocity`]
     /// (a differential-drive base).
     KinematicVelocity,
 }
@@ -440,10 +440,10 @@ pub struct Object {
     pub model: Option<ModelPiece>,
     /// The two objects that replaced it when it was sliced: it has left the simulation.
     pub replaced_by: Option<[ObjectId; 2]>,
-    /// Taken out of the simulation by [`crate::Core::retire`] (a stand-in a robot replaced).
+    /// Taken out of the simulation by [`crate::Bodies::retire`] (a stand-in a robot replaced).
     pub retired: bool,
     /// A shape drawn with the object but outside the physics, placed by its owner
-    /// ([`crate::Core::set_ghost`]): the BehaviorRobot's head round its eye.
+    /// ([`crate::Bodies::set_ghost`]): the BehaviorRobot's head round its eye.
     pub ghost: Option<Ghost>,
 }
 

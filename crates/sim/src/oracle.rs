@@ -27,7 +27,7 @@ impl PredicateOracle for BoundWorld<'_> {
         };
         let b = atom.object.and_then(|o| self.object(o));
         match (atom.predicate, b) {
-            (p, Some(b)) => self.world.core().relation(p, a, b),
+            (p, Some(b)) => self.world.relations().relation(p, a, b),
             (p, None) if p.arity() == 1 => self.world.state(a, p),
             _ => false,
         }

@@ -20,8 +20,11 @@
 //! several objects first ([`World::settle`]).
 
 use crate::World;
+use crate::bodies::Bodies;
 use crate::core::Core;
+use crate::kinematics::{RelationMemo, Relations};
 use crate::object::ObjectId;
+use crate::room::Room;
 use behavior_core::rng::{SimRng, uniform};
 use rand_chacha::rand_core::Rng;
 use rapier3d::math::{Pose, Rotation, Vector};
@@ -164,7 +167,7 @@ impl World {
     /// let ball = Part::new(Primitive::Sphere { radius: 0.04 });
     /// let apple = world.add(ObjectSpec::new("apple_1", "apple.n.01", vec![ball])).unwrap();
     /// world.place(apple, Relation::OnTop, table, &mut seeded(1)).unwrap();
-    /// assert!(world.core().ontop(apple, table));
+    /// assert!(world.relations().ontop(apple, table));
     /// ```
     pub fn place(
         &mut self,
@@ -173,57 +176,82 @@ impl World {
         target: ObjectId,
         rng: &mut SimRng,
     ) -> Result<Pose, PlacementError> {
-        self.core
-            .place_with(object, &[(relation, target)], Heading::Keep, rng)
+        Placer::of(&mut self.core).place_with(object, &[(relation, target)], Heading::Keep, rng)
     }
 
-    /// Places `object`, as it is turned, so that every one of `relations` holds at once (see
-    /// [`Core::place_with`]).
+    /// Places `object`, as it is turned, so that every one of `relations` holds at once: the
+    /// first picks the surface it rests on, the others narrow where its centre may go (to their
+    /// target's footprint, or the floor's room) and must hold too — a shoe under a table and on
+    /// the floor of the room that part of the table stands in. On failure the object is back
+    /// where it was.
     pub fn place_jointly(
         &mut self,
         object: ObjectId,
         relations: &[(Relation, ObjectId)],
         rng: &mut SimRng,
     ) -> Result<Pose, PlacementError> {
-        self.core.place_with(object, relations, Heading::Keep, rng)
+        Placer::of(&mut self.core).place_with(object, relations, Heading::Keep, rng)
     }
 
     /// Places `object` so that every one of `relations` holds at once, each attempt at a random
-    /// heading (see [`Core::place_with`]): how the activity sampler places, as iGibson's does.
+    /// heading (see [`World::place_jointly`]): how the activity sampler places, as iGibson's does.
     pub fn place_turning(
         &mut self,
         object: ObjectId,
         relations: &[(Relation, ObjectId)],
         rng: &mut SimRng,
     ) -> Result<Pose, PlacementError> {
-        self.core
-            .place_with(object, relations, Heading::Random, rng)
+        Placer::of(&mut self.core).place_with(object, relations, Heading::Random, rng)
     }
 }
 
 /// Which way a placed object faces.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Heading {
+enum Heading {
     /// As it is turned now.
     Keep,
     /// Each attempt turns it about the vertical by a random yaw, keeping its tilt.
     Random,
 }
 
-impl Core {
+/// One placement's access to the world: the bodies it moves and reads, and the relations it
+/// checks.
+struct Placer<'a> {
+    bodies: &'a mut Bodies,
+    memo: &'a RelationMemo,
+    rooms: &'a [Room],
+}
+
+impl<'a> Placer<'a> {
+    fn of(core: &'a mut Core) -> Placer<'a> {
+        Placer {
+            bodies: &mut core.bodies,
+            memo: &core.memo,
+            rooms: &core.rooms,
+        }
+    }
+
+    fn relations(&self) -> Relations<'_> {
+        Relations {
+            bodies: self.bodies,
+            memo: self.memo,
+            rooms: self.rooms,
+        }
+    }
+
     /// Places `object` so that every one of `relations` holds at once: the first picks the
     /// surface it rests on, the others narrow where its centre may go (to their target's
     /// footprint, or the floor's room) and must hold too — a shoe under a table and on the floor of
     /// the room that part of the table stands in. `heading` says whether it keeps its orientation.
     /// On failure the object is back where it was.
-    pub fn place_with(
+    fn place_with(
         &mut self,
         object: ObjectId,
         relations: &[(Relation, ObjectId)],
         heading: Heading,
         rng: &mut SimRng,
     ) -> Result<Pose, PlacementError> {
-        let original = self.pose(object);
+        let original = self.bodies.pose(object);
         let mut reason = PlacementFailure::NothingAsked;
         if !relations.is_empty() {
             for _ in 0..PLACEMENT_ATTEMPTS {
@@ -231,7 +259,7 @@ impl Core {
                     let yaw = Rotation::from_rotation_z(uniform(rng, 0.0, std::f32::consts::TAU));
                     let turned = Pose::from_parts(original.translation, yaw * original.rotation);
                     // A finite pose turned by a finite angle: the teleport cannot fail.
-                    let _ = self.set_pose(object, turned);
+                    let _ = self.bodies.set_pose(object, turned);
                 }
                 match self.try_place(object, relations, rng) {
                     Ok(pose) => return Ok(pose),
@@ -240,12 +268,12 @@ impl Core {
             }
         }
         // A pose that was valid before stays valid; restoring it cannot fail.
-        let _ = self.set_pose(object, original);
+        let _ = self.bodies.set_pose(object, original);
         Err(PlacementError {
-            object: self.object(object).name.clone(),
+            object: self.bodies.object(object).name.clone(),
             relations: relations
                 .iter()
-                .map(|&(r, t)| (r, self.object(t).name.clone()))
+                .map(|&(r, t)| (r, self.bodies.object(t).name.clone()))
                 .collect(),
             attempts: PLACEMENT_ATTEMPTS,
             reason,
@@ -258,7 +286,7 @@ impl Core {
         relations: &[(Relation, ObjectId)],
         rng: &mut SimRng,
     ) -> Result<Pose, PlacementFailure> {
-        let request = Request::new(self, object, relations);
+        let request = Request::new(self.bodies, object, relations);
         if relations
             .iter()
             .any(|&(_, t)| t == object || request.members.contains(&t))
@@ -282,11 +310,11 @@ impl Core {
         }
         if let Some(other) = self.overlap_at(&request, candidate) {
             return Err(PlacementFailure::Overlaps {
-                other: self.object(other).name.clone(),
+                other: self.bodies.object(other).name.clone(),
             });
         }
         // The candidate is built from finite values, so the teleport cannot fail.
-        let _ = self.set_pose(object, candidate);
+        let _ = self.bodies.set_pose(object, candidate);
         match relations.iter().find(|&&(r, t)| !self.holds(object, r, t)) {
             Some(&(relation, _)) => Err(PlacementFailure::DoesNotHold { relation }),
             None => Ok(candidate),
@@ -295,12 +323,12 @@ impl Core {
 
     fn holds(&self, object: ObjectId, relation: Relation, target: ObjectId) -> bool {
         match relation {
-            Relation::OnTop => self.ontop(object, target),
-            Relation::Inside => self.inside(object, target),
-            Relation::Under => self.under(object, target),
-            Relation::OnFloor => self.onfloor(object, target),
-            Relation::NextTo => self.nextto(object, target),
-            Relation::Touching => self.touching(object, target),
+            Relation::OnTop => self.relations().ontop(object, target),
+            Relation::Inside => self.relations().inside(object, target),
+            Relation::Under => self.relations().under(object, target),
+            Relation::OnFloor => self.relations().onfloor(object, target),
+            Relation::NextTo => self.relations().nextto(object, target),
+            Relation::Touching => self.relations().touching(object, target),
         }
     }
 
@@ -310,9 +338,10 @@ impl Core {
         match relation {
             Relation::OnFloor => self.floor_area(target),
             Relation::NextTo | Relation::Touching => self
+                .bodies
                 .aabb(target)
                 .loosened(request.half.max_element() + NEXTTO_GAP),
-            _ => self.aabb(target),
+            _ => self.bodies.aabb(target),
         }
     }
 
@@ -333,7 +362,7 @@ impl Core {
             (y0, y1) = (y0.max(other.mins.y), y1.min(other.maxs.y));
         }
         let (x, y) = if relation.is_symmetric() {
-            beside(&self.aabb(target), half, relation, rng)
+            beside(&self.bodies.aabb(target), half, relation, rng)
         } else {
             let area = self.area_of(request, relation, target);
             let span = |lo: f32, hi: f32, h: f32| {
@@ -365,7 +394,7 @@ impl Core {
         rng: &mut SimRng,
     ) -> Result<f32, PlacementFailure> {
         let (relation, target) = request.relations[0];
-        let area = self.aabb(target);
+        let area = self.bodies.aabb(target);
         Ok(match relation {
             Relation::OnTop => {
                 let levels = self.support_levels(target);
@@ -395,6 +424,7 @@ impl Core {
             Relation::OnTop | Relation::OnFloor => self.surface_below(&[target], x, y, start_z),
             Relation::Under | Relation::NextTo | Relation::Touching | Relation::Inside => {
                 let others: Vec<ObjectId> = self
+                    .bodies
                     .objects()
                     .map(|(id, _)| id)
                     .filter(|&id| {
@@ -412,15 +442,15 @@ impl Core {
     /// apart counting as one. Closed furniture offers its top only, so nothing sampled `ontop` a
     /// cabinet ends up shut inside it.
     fn support_levels(&self, target: ObjectId) -> Vec<f32> {
-        let object = self.object(target);
-        let top = self.aabb(target).maxs.z;
+        let object = self.bodies.object(target);
+        let top = self.bodies.aabb(target).maxs.z;
         if !object.links.is_empty() {
             return vec![top];
         }
         let mut tops: Vec<f32> = object
             .colliders
             .iter()
-            .map(|&c| self.physics.colliders[c].compute_aabb().maxs.z)
+            .map(|&c| self.bodies.physics.colliders[c].compute_aabb().maxs.z)
             .collect();
         tops.sort_by(|a, b| b.total_cmp(a));
         let mut levels = vec![top];
@@ -434,8 +464,8 @@ impl Core {
 
     /// The footprint of the room whose floor `floor` is (at the floor's top), or the floor's box.
     fn floor_area(&self, floor: ObjectId) -> Aabb {
-        let aabb = self.aabb(floor);
-        match self.rooms().iter().find(|r| r.floor == Some(floor)) {
+        let aabb = self.bodies.aabb(floor);
+        match self.rooms.iter().find(|r| r.floor == Some(floor)) {
             // An L-shaped room's box: a point drawn in its notch finds no floor below and is
             // drawn again.
             Some(room) => {
@@ -454,11 +484,11 @@ impl Core {
         let ray = Ray::new(Vector::new(x, y, z), -Vector::Z);
         let mut best: Option<(f32, f32)> = None;
         for &id in among {
-            if !self.present(id) {
+            if !self.bodies.present(id) {
                 continue;
             }
-            for &c in &self.object(id).colliders {
-                let c = &self.physics.colliders[c];
+            for &c in &self.bodies.object(id).colliders {
+                let c = &self.bodies.physics.colliders[c];
                 if !c.is_enabled() {
                     continue;
                 }
@@ -478,10 +508,11 @@ impl Core {
     /// The height of the target's lowest surface above (x, y, z), seen from below.
     fn underside(&self, target: ObjectId, x: f32, y: f32, z: f32) -> Option<f32> {
         let ray = Ray::new(Vector::new(x, y, z), Vector::Z);
-        self.object(target)
+        self.bodies
+            .object(target)
             .colliders
             .iter()
-            .map(|&c| &self.physics.colliders[c])
+            .map(|&c| &self.bodies.physics.colliders[c])
             .filter(|c| c.is_enabled())
             .filter_map(|c| c.shape().cast_ray(c.position(), &ray, 100.0, true))
             .min_by(f32::total_cmp)
@@ -515,13 +546,13 @@ impl Core {
         pose: Pose,
         target: ObjectId,
     ) -> Option<(f32, Vector, Vector)> {
-        let shift = pose * self.pose(request.object).inverse();
+        let shift = pose * self.bodies.pose(request.object).inverse();
         let mut best: Option<(f32, Vector, Vector)> = None;
-        let colliders = &self.physics.colliders;
+        let colliders = &self.bodies.physics.colliders;
         for &m in &request.members {
-            for &c in &self.object(m).colliders {
+            for &c in &self.bodies.object(m).colliders {
                 let (c, at) = (&colliders[c], shift * colliders[c].position());
-                for &t in &self.object(target).colliders {
+                for &t in &self.bodies.object(target).colliders {
                     let t = &colliders[t];
                     let found = query::closest_points(&at, c.shape(), t.position(), t.shape(), 0.5);
                     if let Ok(query::ClosestPoints::WithinMargin(p, q)) = found {
@@ -540,22 +571,22 @@ impl Core {
     /// it stood at `pose`.
     fn overlap_at(&self, request: &Request, pose: Pose) -> Option<ObjectId> {
         // The rigid move from where the object stands to `pose`, applied to every collider.
-        let shift = pose * self.pose(request.object).inverse();
+        let shift = pose * self.bodies.pose(request.object).inverse();
         let moved: Vec<(Pose, &rapier3d::geometry::Collider)> = request
             .members
             .iter()
-            .flat_map(|&m| &self.object(m).colliders)
+            .flat_map(|&m| &self.bodies.object(m).colliders)
             .map(|&c| {
-                let c = &self.physics.colliders[c];
+                let c = &self.bodies.physics.colliders[c];
                 (shift * c.position(), c)
             })
             .collect();
-        for (id, other) in self.objects() {
-            if request.is_moved(id) || !self.present(id) {
+        for (id, other) in self.bodies.objects() {
+            if request.is_moved(id) || !self.bodies.present(id) {
                 continue;
             }
             for &oc in &other.colliders {
-                let oc = &self.physics.colliders[oc];
+                let oc = &self.bodies.physics.colliders[oc];
                 if !oc.is_enabled() {
                     continue;
                 }
@@ -591,7 +622,7 @@ struct Request<'r> {
 }
 
 impl<'r> Request<'r> {
-    fn new(core: &Core, object: ObjectId, relations: &'r [(Relation, ObjectId)]) -> Request<'r> {
+    fn new(core: &Bodies, object: ObjectId, relations: &'r [(Relation, ObjectId)]) -> Request<'r> {
         let pose = core.pose(object);
         let members = match core.object(object).replaced_by {
             Some(halves) => halves.to_vec(),

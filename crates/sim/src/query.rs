@@ -5,18 +5,22 @@
 //! Queries run against a bounding-volume hierarchy over every collider (parry's `Bvh`), built on
 //! the first query after anything moved and kept until the next change, so a planner that asks a
 //! thousand questions of one configuration pays for one build. It never uses rapier's broad phase,
-//! which lags teleports until the next physics step.
+//! which lags teleports until the next physics step. The index (`QueryIndex`) is kept with the
+//! bodies, whose moves invalidate it; [`Query`] is the view that asks it.
 
+use crate::bodies::Bodies;
 use crate::construct::colliders_of;
-use crate::core::{Core, WorldError, pose_is_finite, untag};
+use crate::core::{WorldError, pose_is_finite, untag};
 use crate::object::{BodyRef, ObjectId, Part, Primitive};
 use rapier3d::geometry::{Collider, ColliderHandle};
 use rapier3d::math::{Pose, Vector};
 use rapier3d::parry::bounding_volume::{Aabb, BoundingVolume};
 use rapier3d::parry::partitioning::{Bvh, BvhBuildStrategy};
 use rapier3d::parry::query;
+use rapier3d::pipeline::PhysicsWorld;
 use rapier3d::prelude::Ray;
 use serde::{Deserialize, Serialize};
+use std::sync::OnceLock;
 
 /// What a query ignores.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -79,37 +83,65 @@ pub struct Proximity {
     pub distance: f32,
 }
 
-/// Every enabled collider in a bounding-volume hierarchy.
+/// Every enabled collider (or every fixed one) in a bounding-volume hierarchy.
 #[derive(Clone)]
-pub(crate) struct QueryIndex {
+struct Tree {
     bvh: Bvh,
     colliders: Vec<ColliderHandle>,
 }
 
-impl QueryIndex {
+impl Tree {
     /// Over every enabled collider, or only over those of fixed bodies.
-    fn build(core: &Core, fixed_only: bool) -> QueryIndex {
-        let bodies = &core.physics.bodies;
+    fn build(physics: &PhysicsWorld, fixed_only: bool) -> Tree {
+        let bodies = &physics.bodies;
         let fixed = |c: &Collider| c.parent().is_some_and(|b| bodies[b].is_fixed());
-        let (colliders, boxes): (Vec<ColliderHandle>, Vec<Aabb>) = core
-            .physics
+        let (colliders, boxes): (Vec<ColliderHandle>, Vec<Aabb>) = physics
             .colliders
             .iter()
             .filter(|(_, c)| c.is_enabled() && (!fixed_only || fixed(c)))
             .map(|(h, c)| (h, c.compute_aabb()))
             .unzip();
-        QueryIndex {
+        Tree {
             bvh: Bvh::from_leaves(BvhBuildStrategy::Binned, &boxes),
             colliders,
         }
     }
 }
 
-impl Core {
-    fn index(&self) -> &QueryIndex {
-        self.index.get_or_init(|| QueryIndex::build(self, false))
+/// The query structures: one over every collider, dropped whenever a collider may have moved
+/// (each physics substep, a teleport, a part moved on its body), and one over fixed bodies only,
+/// dropped only when objects are added, retired or teleported. Each is built on first use.
+#[derive(Clone, Default)]
+pub(crate) struct QueryIndex {
+    all: OnceLock<Tree>,
+    fixed: OnceLock<Tree>,
+}
+
+impl QueryIndex {
+    /// Drops both structures: objects were added, retired or teleported.
+    pub(crate) fn clear(&mut self) {
+        *self = QueryIndex::default();
     }
 
+    /// Drops the structure over every collider: something may have moved.
+    pub(crate) fn clear_moving(&mut self) {
+        self.all = OnceLock::new();
+    }
+
+    fn tree(&self, physics: &PhysicsWorld, fixed_only: bool) -> &Tree {
+        let cell = if fixed_only { &self.fixed } else { &self.all };
+        cell.get_or_init(|| Tree::build(physics, fixed_only))
+    }
+}
+
+/// Questions about space: rays, overlaps, nearest bodies, and an object's collision shapes.
+/// Reached through [`crate::World::query`].
+#[derive(Clone, Copy)]
+pub struct Query<'w> {
+    pub(crate) bodies: &'w Bodies,
+}
+
+impl<'w> Query<'w> {
     /// The first thing a ray from `origin` along `direction` hits within `max_distance`.
     pub fn cast_ray(
         &self,
@@ -140,8 +172,9 @@ impl Core {
     }
 
     fn first_hit(&self, ray: &Ray, max_distance: f32, filter: &QueryFilter) -> Option<RayHit> {
-        let index = self.index();
-        let colliders = &self.physics.colliders;
+        let physics = &self.bodies.physics;
+        let index = self.bodies.index.tree(physics, false);
+        let colliders = &physics.colliders;
         let (leaf, distance) = index.bvh.cast_ray(ray, max_distance, |leaf, best| {
             let c = &colliders[index.colliders[leaf as usize]];
             if !filter.admits(c) {
@@ -163,18 +196,20 @@ impl Core {
     }
 
     /// An object's collision shapes (its body's and its links'), each posed in the world as it
-    /// is now: what moves with it, for checking it at other poses with [`Core::overlaps`]. Unlike
-    /// [`Core::visual_parts`], never visual meshes. Nothing for an object no longer present.
-    pub fn collision_parts(&self, id: ObjectId) -> Vec<(&Primitive, Pose)> {
-        let object = self.object(id);
+    /// is now: what moves with it, for checking it at other poses with [`Query::overlaps`].
+    /// Unlike [`crate::Visuals::parts`], never visual meshes. Nothing for an object no longer
+    /// present.
+    pub fn collision_parts(&self, id: ObjectId) -> Vec<(&'w Primitive, Pose)> {
+        let bodies = self.bodies;
+        let object = bodies.object(id);
         if !object.is_present() {
             return Vec::new();
         }
-        let body = object.parts.iter().map(|p| (p, self.pose(id)));
+        let body = object.parts.iter().map(|p| (p, bodies.pose(id)));
         // A link's parts are given in the object's frame at zero joint position; its body
         // started at the object's pose, so its current pose maps them.
         let links = object.links.iter().enumerate().flat_map(|(l, link)| {
-            let frame = self.link_pose(id, l);
+            let frame = bodies.link_pose(id, l);
             link.parts.iter().map(move |p| (p, frame))
         });
         body.chain(links)
@@ -246,22 +281,21 @@ impl Core {
 
     /// Admitted colliders whose boxes come within `margin` of the probe's.
     fn near<'a>(
-        &'a self,
+        &self,
         probe: &Collider,
         margin: f32,
         filter: &'a QueryFilter,
-    ) -> impl Iterator<Item = &'a Collider> + 'a {
-        let index = if filter.fixed_only {
-            self.fixed_index
-                .get_or_init(|| QueryIndex::build(self, true))
-        } else {
-            self.index()
-        };
+    ) -> impl Iterator<Item = &'w Collider> + 'a
+    where
+        'w: 'a,
+    {
+        let physics = &self.bodies.physics;
+        let index = self.bodies.index.tree(physics, filter.fixed_only);
         let area = probe.compute_aabb().loosened(margin);
         let leaves: Vec<u32> = index.bvh.intersect_aabb(&area).collect();
         leaves
             .into_iter()
-            .map(move |leaf| &self.physics.colliders[index.colliders[leaf as usize]])
+            .map(move |leaf| &physics.colliders[index.colliders[leaf as usize]])
             .filter(move |c| filter.admits(c))
     }
 }

@@ -24,8 +24,7 @@ use crate::World;
 use crate::contacts::ContactFilter;
 use crate::core::STEP_SECONDS;
 use crate::object::ObjectId;
-use crate::states::slicing::SlicerPush;
-use std::sync::OnceLock;
+use crate::states::slicing::{SlicerPush, slicer_impulses};
 
 /// Code run inside [`World::step_with`]; see the module docs for when. Both methods do nothing by
 /// default, and `()` implements the trait for a step without hooks.
@@ -64,8 +63,8 @@ impl World {
     /// for _ in 0..60 {
     ///     world.step();
     /// }
-    /// assert!(world.core().ontop(apple, table));
-    /// assert_eq!(world.steps(), 60);
+    /// assert!(world.relations().ontop(apple, table));
+    /// assert_eq!(world.bodies().steps(), 60);
     /// ```
     pub fn step(&mut self) {
         self.step_with(&mut ());
@@ -75,38 +74,40 @@ impl World {
     pub fn step_with(&mut self, hooks: &mut dyn StepHooks) {
         let pressed = self.substeps(hooks);
         hooks.after_physics(self);
-        self.core.note_motion();
+        self.core.bodies.note_motion();
         self.systems.update(&mut self.core, STEP_SECONDS);
         for id in pressed {
             // A sliceable object always accepts slicing; an error here would be a bug in add().
             let _ = self.set_sliced(id, true);
         }
-        self.core.clear_forces();
-        self.core.steps += 1;
+        self.core.bodies.clear_forces();
+        self.core.bodies.steps += 1;
         hooks.after_step(self);
     }
 
     /// The physics substeps; returns the objects slicers pressed hard enough, in id order.
     fn substeps(&mut self, hooks: &mut dyn StepHooks) -> Vec<ObjectId> {
         let mut push = SlicerPush::default();
-        for substep in 0..self.core.substeps.count() {
+        for substep in 0..self.core.bodies.substeps.count() {
             hooks.before_substep(self, substep);
-            if substep == 0 && self.core.quiet {
+            if substep == 0 && self.core.bodies.quiet {
                 return Vec::new();
             }
             let core = &mut self.core;
-            core.note_drift(substep);
-            core.lead_kinematic_chains();
+            core.attachments.note_drift(&core.bodies, substep);
+            let bodies = &mut core.bodies;
+            bodies.lead_kinematic_chains();
             let filter = ContactFilter {
                 ignored: &core.ignored,
             };
-            core.physics.step_with_events(&filter, &());
-            core.restore_sleep_times();
-            core.index = OnceLock::new();
-            core.watch_attachments();
-            push.add(core.slicer_impulses());
+            bodies.physics.step_with_events(&filter, &());
+            bodies.restore_sleep_times();
+            bodies.index.clear_moving();
+            core.attachments.watch(bodies);
+            push.add(slicer_impulses(bodies));
         }
-        self.core.quiet = self.core.physics.islands.num_active_bodies() == 0;
+        let bodies = &mut self.core.bodies;
+        bodies.quiet = bodies.physics.islands.num_active_bodies() == 0;
         push.pressed(STEP_SECONDS)
     }
 
@@ -114,7 +115,7 @@ impl World {
     pub fn settle(&mut self, max_steps: usize) -> bool {
         for _ in 0..max_steps {
             self.step();
-            if self.core.quiet {
+            if self.core.bodies.quiet {
                 return true;
             }
         }

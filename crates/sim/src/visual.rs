@@ -4,7 +4,7 @@
 //! Appearance is data the world carries and never reads: the physics ignores it, except that a
 //! [`Material`] also names a typical friction for callers that build specs from it.
 
-use crate::core::Core;
+use crate::bodies::Bodies;
 use crate::object::{ObjectId, Part, Primitive};
 use rapier3d::math::{Pose, Vector};
 use serde::{Deserialize, Serialize};
@@ -418,7 +418,7 @@ impl Form {
 }
 
 /// A shape drawn with an object but outside the physics: it touches nothing, no query finds
-/// it, and its owner puts it where it belongs ([`crate::Core::set_ghost`]) — the BehaviorRobot's
+/// it, and its owner puts it where it belongs ([`crate::Bodies::set_ghost`]) — the BehaviorRobot's
 /// head, round an eye that the world does not simulate. Kept out of rapier altogether, so that
 /// it cannot change how anything else moves.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -564,34 +564,41 @@ pub struct VisualPart<'a> {
     pub visual: Visual,
 }
 
-impl Core {
+/// What the objects look like now: the parts a renderer draws. Reached through
+/// [`crate::World::visuals`].
+#[derive(Clone, Copy)]
+pub struct Visuals<'w> {
+    pub(crate) bodies: &'w Bodies,
+}
+
+impl<'w> Visuals<'w> {
     /// What to draw for an object, posed as it is now: its collision parts, each in its form (or,
     /// for a body or link that has visual meshes, those instead; for a body with a form of its
     /// own, that form filling the box around its parts), and its [`Ghost`], if it has one, last.
     /// Nothing for an object replaced by its halves. A model piece is drawn from the parts: see
-    /// [`Core::visual_parts_with`].
-    pub fn visual_parts(&self, id: ObjectId) -> Vec<VisualPart<'_>> {
+    /// [`Visuals::parts_with`].
+    pub fn parts(&self, id: ObjectId) -> Vec<VisualPart<'w>> {
         static NO_MODELS: ModelLibrary = ModelLibrary::EMPTY;
-        self.visual_parts_with(id, &NO_MODELS)
+        self.parts_with(id, &NO_MODELS)
     }
 
-    /// [`Core::visual_parts`], but a body naming a model piece that `models` holds is drawn
+    /// [`Visuals::parts`], but a body naming a model piece that `models` holds is drawn
     /// from the piece's meshes instead of its parts.
-    pub fn visual_parts_with<'a>(
-        &'a self,
-        id: ObjectId,
-        models: &'a ModelLibrary,
-    ) -> Vec<VisualPart<'a>> {
-        let object = self.object(id);
+    pub fn parts_with<'a>(&self, id: ObjectId, models: &'a ModelLibrary) -> Vec<VisualPart<'a>>
+    where
+        'w: 'a,
+    {
+        let all: &'a Bodies = self.bodies;
+        let object = all.object(id);
         if !object.is_present() {
             return Vec::new();
         }
-        let body_pose = self.pose(id);
+        let body_pose = all.pose(id);
         // A link's parts and meshes are given in the object's frame at zero joint position; its
         // body started at the object's pose, so its current pose maps them.
         let frame = |link: Option<usize>| match link {
             None => body_pose,
-            Some(l) => self.link_pose(id, l),
+            Some(l) => all.link_pose(id, l),
         };
         let mut out = Vec::new();
         let bodies = std::iter::once((None, &object.parts)).chain(
@@ -621,7 +628,7 @@ impl Core {
                     visual: held.mesh.visual,
                 }));
             } else if link.is_none() && meshes.is_empty() && object.form != Form::Primitive {
-                let b = self.local_aabb(id);
+                let b = all.local_aabb(id);
                 out.push(VisualPart {
                     shape: VisualShape::Formed {
                         form: object.form,
@@ -657,16 +664,6 @@ impl Core {
             });
         }
         out
-    }
-
-    /// Puts a drawn-only shape with an object, or takes it away ([`Ghost`]). The physics never
-    /// sees it; the object counts as moved (what is drawn of it changed).
-    pub fn set_ghost(&mut self, id: ObjectId, ghost: Option<Ghost>) {
-        let object = &mut self.objects[id.0 as usize];
-        if object.ghost != ghost {
-            object.ghost = ghost;
-            self.moved(id);
-        }
     }
 }
 

@@ -1,17 +1,25 @@
-//! The world: a [`Core`] (objects, bodies, joints, rooms, physics) and the state systems, stepped
-//! together ([`crate::step`]).
+//! The world: its geometric parts (the core: bodies, rooms, relations, attachments, contacts,
+//! joints) and the state systems, stepped together ([`crate::step`]).
 //!
-//! Everything geometric is read through [`World::core`] (poses, boxes, joints, contacts,
-//! relations, queries); the world adds what spans the core and the systems: adding objects,
-//! unary states, teleports and joint moves that must invalidate what depends on them, stepping,
+//! The world lends out each part by concept — [`World::bodies`], [`World::relations`],
+//! [`World::query`], [`World::joints`], [`World::attachments`], [`World::contacts`],
+//! [`World::visuals`], [`World::rooms`], with a `_mut` twin where the part can be acted on — and
+//! adds what spans the core and the systems: adding objects, unary states, stepping, placement
 //! and snapshots.
 
+use crate::attachments::{Attachments, AttachmentsMut};
+use crate::bodies::Bodies;
+use crate::contacts::{Contacts, ContactsMut};
 use crate::core::{Core, Substeps, WorldError};
+use crate::joints::{Joints, JointsMut};
+use crate::kinematics::Relations;
 use crate::object::{ObjectId, ObjectSpec};
+use crate::query::Query;
 use crate::room::Room;
 use crate::states::Systems;
+use crate::visual::Visuals;
 use behavior_core::Predicate;
-use rapier3d::math::{Pose, Vector};
+use rapier3d::math::Vector;
 
 /// The simulated world. It is `Send + Sync`: environments step in threads, and a renderer may read
 /// a world while another one steps. Cloning it (or taking a [`Snapshot`]) copies every piece of
@@ -41,22 +49,75 @@ impl World {
         }
     }
 
-    /// Objects, bodies, joints, rooms and physics, for reading: poses, boxes, relations,
-    /// contacts, joint states, ray and shape queries.
-    pub fn core(&self) -> &Core {
-        &self.core
+    /// Every object's bodies, colliders and joints, for reading: objects, poses, masses, boxes,
+    /// velocities, sleeping, motion counts, steps.
+    pub fn bodies(&self) -> &Bodies {
+        &self.core.bodies
     }
 
-    /// The core, for acting on bodies: velocities, forces, kinematic targets, drives,
-    /// attachments, collision groups. Teleports go through [`World::set_pose`] and
-    /// [`World::set_joint_position`], which the core also offers.
-    pub fn core_mut(&mut self) -> &mut Core {
-        &mut self.core
+    /// The bodies, for acting on them: teleports, velocities, forces, kinematic targets,
+    /// substeps, sleeping, ghosts.
+    pub fn bodies_mut(&mut self) -> &mut Bodies {
+        &mut self.core.bodies
+    }
+
+    /// The kinematic relations between objects (`ontop`, `inside`, …) and the rooms they are in.
+    pub fn relations(&self) -> Relations<'_> {
+        Relations::new(&self.core)
+    }
+
+    /// Ray and shape queries.
+    pub fn query(&self) -> Query<'_> {
+        Query {
+            bodies: &self.core.bodies,
+        }
+    }
+
+    /// Joint positions, velocities, efforts and `open`.
+    pub fn joints(&self) -> Joints<'_> {
+        Joints::new(&self.core)
+    }
+
+    /// The joints, for moving them and setting their drives.
+    pub fn joints_mut(&mut self) -> JointsMut<'_> {
+        JointsMut::new(&mut self.core)
+    }
+
+    /// The attachments' conditions.
+    pub fn attachments(&self) -> Attachments<'_> {
+        Attachments::new(&self.core)
+    }
+
+    /// The attachments, for making and removing them.
+    pub fn attachments_mut(&mut self) -> AttachmentsMut<'_> {
+        AttachmentsMut::new(&mut self.core)
+    }
+
+    /// Contacts as the last substep found them, and which pairs are ignored.
+    pub fn contacts(&self) -> Contacts<'_> {
+        Contacts::new(&self.core)
+    }
+
+    /// Collision groups and ignored pairs.
+    pub fn contacts_mut(&mut self) -> ContactsMut<'_> {
+        ContactsMut::new(&mut self.core)
+    }
+
+    /// What to draw of each object.
+    pub fn visuals(&self) -> Visuals<'_> {
+        Visuals {
+            bodies: &self.core.bodies,
+        }
+    }
+
+    /// Every room.
+    pub fn rooms(&self) -> &[Room] {
+        &self.core.rooms
     }
 
     /// Adds an object; a bad spec is an error and leaves the world unchanged.
     pub fn add(&mut self, spec: ObjectSpec) -> Result<ObjectId, WorldError> {
-        let id = self.core.add(spec)?;
+        let id = self.core.bodies.add(spec)?;
         self.systems.add_object(&mut self.core, id);
         Ok(id)
     }
@@ -81,11 +142,6 @@ impl World {
         self.systems.dirt.positions(&self.core, id, kind)
     }
 
-    /// The two halves made when an object was sliced.
-    pub fn halves(&self, id: ObjectId) -> Option<[ObjectId; 2]> {
-        self.core.object(id).replaced_by
-    }
-
     /// Drops every memoized relation (for benchmarks of the uncached computation).
     pub fn forget_relations(&self) {
         self.core.memo.clear();
@@ -100,58 +156,6 @@ impl World {
     /// from when it was taken.
     pub fn restore(&mut self, snapshot: &Snapshot) {
         *self = snapshot.0.clone();
-    }
-
-    // Shorthands for the reads nearly every caller needs.
-
-    /// Every object with its id. See [`Core::objects`].
-    pub fn objects(&self) -> impl ExactSizeIterator<Item = (ObjectId, &crate::Object)> {
-        self.core.objects()
-    }
-
-    /// An object. See [`Core::object`].
-    pub fn object(&self, id: ObjectId) -> &crate::Object {
-        self.core.object(id)
-    }
-
-    /// The first object of that name.
-    pub fn object_named(&self, name: &str) -> Option<ObjectId> {
-        self.core.object_named(name)
-    }
-
-    /// Every room.
-    pub fn rooms(&self) -> &[Room] {
-        self.core.rooms()
-    }
-
-    /// The pose of an object's body.
-    pub fn pose(&self, id: ObjectId) -> Pose {
-        self.core.pose(id)
-    }
-
-    /// The axis-aligned box around all of an object's colliders.
-    pub fn aabb(&self, id: ObjectId) -> rapier3d::prelude::Aabb {
-        self.core.aabb(id)
-    }
-
-    /// Moves an object (teleport) with its links, at rest, waking it.
-    pub fn set_pose(&mut self, id: ObjectId, pose: Pose) -> Result<(), WorldError> {
-        self.core.set_pose(id, pose)
-    }
-
-    /// Moves a link to a joint position (clamped to its limits), at rest.
-    pub fn set_joint_position(
-        &mut self,
-        id: ObjectId,
-        link: usize,
-        position: f32,
-    ) -> Result<(), WorldError> {
-        self.core.set_joint_position(id, link, position)
-    }
-
-    /// Action steps taken so far.
-    pub fn steps(&self) -> u64 {
-        self.core.steps()
     }
 }
 

@@ -63,26 +63,26 @@ fn a_kinematic_paddle_driven_by_velocity_pushes_a_box() {
     let cube = cube(&mut world, "cube", 0.0, 0.0, 0.1);
     let paddle = paddle(&mut world, BodyKind::KinematicVelocity, v(-0.5, 0.0, 0.12));
     steps(&mut world, 15);
-    let start = world.pose(cube).translation;
+    let start = world.bodies().pose(cube).translation;
     let forward = Velocity {
         linear: v(0.5, 0.0, 0.0),
         angular: Vector::ZERO,
     };
     world
-        .core_mut()
+        .bodies_mut()
         .set_velocity(paddle.into(), forward)
         .unwrap();
     steps(&mut world, 60); // 2 s at 0.5 m/s: the paddle travels 1 m, through where the box was
-    let paddle_x = world.pose(paddle).translation.x;
+    let paddle_x = world.bodies().pose(paddle).translation.x;
     assert!((paddle_x - 0.5).abs() < 0.01, "paddle at x = {paddle_x}");
-    let pushed = world.pose(cube).translation.x - start.x;
+    let pushed = world.bodies().pose(cube).translation.x - start.x;
     assert!(pushed > 0.35, "the box moved only {pushed} m");
     assert!(
-        world.pose(cube).translation.x > paddle_x,
+        world.bodies().pose(cube).translation.x > paddle_x,
         "the box stays ahead of the paddle"
     );
     // Nothing pushes a kinematic body back.
-    let velocity = world.core().velocity(paddle.into()).unwrap();
+    let velocity = world.bodies().velocity(paddle.into()).unwrap();
     assert_eq!(velocity.linear, v(0.5, 0.0, 0.0));
 }
 
@@ -97,7 +97,7 @@ impl StepHooks for Sweep {
         self.y += 0.5 / 300.0;
         let target = Pose::from_translation(v(0.0, self.y, 0.12));
         world
-            .core_mut()
+            .bodies_mut()
             .set_kinematic_target(BodyRef::from(self.paddle), target)
             .unwrap();
     }
@@ -124,15 +124,15 @@ fn a_kinematic_paddle_driven_by_pose_targets_in_a_hook_pushes_a_box() {
     for _ in 0..60 {
         world.step_with(&mut sweep);
     }
-    let paddle_y = world.pose(paddle).translation.y;
+    let paddle_y = world.bodies().pose(paddle).translation.y;
     assert!((paddle_y - 0.5).abs() < 0.01, "paddle at y = {paddle_y}");
     assert!(
-        world.pose(cube).translation.y > 0.35,
+        world.bodies().pose(cube).translation.y > 0.35,
         "the box was not pushed"
     );
     // Pose targets are for position-driven bodies only.
     let err = world
-        .core_mut()
+        .bodies_mut()
         .set_kinematic_target(cube.into(), Pose::IDENTITY)
         .unwrap_err();
     assert!(err.to_string().contains("KinematicPosition"), "{err}");
@@ -141,7 +141,7 @@ fn a_kinematic_paddle_driven_by_pose_targets_in_a_hook_pushes_a_box() {
 #[test]
 fn velocities_forces_torques_and_impulses_act_as_newton_says() {
     let mut world = World::default();
-    world.core_mut().set_sleeping_allowed(false);
+    world.bodies_mut().set_sleeping_allowed(false);
     let ball = world
         .add(
             ObjectSpec::new(
@@ -152,47 +152,47 @@ fn velocities_forces_torques_and_impulses_act_as_newton_says() {
             .at(v(0.0, 0.0, 10.0)),
         )
         .unwrap();
-    let mass = world.core().mass(ball);
+    let mass = world.bodies().mass(ball);
     world
-        .core_mut()
+        .bodies_mut()
         .apply_impulse(ball.into(), v(mass, 0.0, 0.0))
         .unwrap();
-    let after_impulse = world.core().velocity(ball.into()).unwrap().linear;
+    let after_impulse = world.bodies().velocity(ball.into()).unwrap().linear;
     assert!(
         (after_impulse.x - 1.0).abs() < 1e-5,
         "impulse m·1 m/s gave {after_impulse}"
     );
     // A force of 2 m along y for one step (1/30 s) adds 2/30 m/s, then it is cleared.
     world
-        .core_mut()
+        .bodies_mut()
         .apply_force(ball.into(), v(0.0, 2.0 * mass, 0.0))
         .unwrap();
     world.step();
-    let vy = world.core().velocity(ball.into()).unwrap().linear.y;
+    let vy = world.bodies().velocity(ball.into()).unwrap().linear.y;
     assert!((vy - 2.0 / 30.0).abs() < 1e-3, "vy = {vy}");
     world.step();
-    let vy2 = world.core().velocity(ball.into()).unwrap().linear.y;
+    let vy2 = world.bodies().velocity(ball.into()).unwrap().linear.y;
     assert!(
         (vy2 - vy).abs() < 1e-5,
         "the force was cleared after its step"
     );
     // Gravity pulled for two steps meanwhile.
-    let vz = world.core().velocity(ball.into()).unwrap().linear.z;
+    let vz = world.bodies().velocity(ball.into()).unwrap().linear.z;
     assert!((vz + 9.81 * 2.0 / 30.0).abs() < 0.01, "vz = {vz}");
     world
-        .core_mut()
+        .bodies_mut()
         .apply_torque(ball.into(), v(0.0, 0.0, 0.01))
         .unwrap();
     world.step();
-    assert!(world.core().velocity(ball.into()).unwrap().angular.z > 0.0);
+    assert!(world.bodies().velocity(ball.into()).unwrap().angular.z > 0.0);
     let set = Velocity {
         linear: v(0.0, 0.0, 3.0),
         angular: v(1.0, 0.0, 0.0),
     };
-    world.core_mut().set_velocity(ball.into(), set).unwrap();
-    assert_eq!(world.core().velocity(ball.into()).unwrap(), set);
+    world.bodies_mut().set_velocity(ball.into(), set).unwrap();
+    assert_eq!(world.bodies().velocity(ball.into()).unwrap(), set);
     let nan = world
-        .core_mut()
+        .bodies_mut()
         .apply_force(ball.into(), v(f32::NAN, 0.0, 0.0));
     assert!(nan.is_err(), "a NaN force is refused");
 }
@@ -204,13 +204,13 @@ fn a_three_link_multibody_arm_reaches_its_joint_targets_and_reports_its_state() 
     let targets = [0.5, -0.3, 0.4];
     for (k, &target) in targets.iter().enumerate() {
         world
-            .core_mut()
-            .drive_joint(arm, k, Drive::position(target, 2000.0, 100.0, 500.0))
+            .joints_mut()
+            .drive(arm, k, Drive::position(target, 2000.0, 100.0, 500.0))
             .unwrap();
     }
     steps(&mut world, 90);
     for (k, &target) in targets.iter().enumerate() {
-        let state = world.core().joint_state(arm, k).unwrap();
+        let state = world.joints().state(arm, k).unwrap();
         assert!(
             (state.position - target).abs() < 0.01,
             "joint {k} at {} for {target}",
@@ -226,7 +226,7 @@ fn a_three_link_multibody_arm_reaches_its_joint_targets_and_reports_its_state() 
     // tip down (x × y = z), so gravity pushes the angle up and the drive pulls back: a negative
     // effort of the weight's moment's order (a chain's efforts are approximate: 3.0× here, see
     // `joints.rs`).
-    let shoulder = world.core().joint_state(arm, 0).unwrap();
+    let shoulder = world.joints().state(arm, 0).unwrap();
     let bar = 0.3 * 0.04 * 0.04 * 500.0; // kg
     let (a0, a1, a2) = (0.5f32, 0.2f32, 0.6f32); // each bar's angle from the horizontal
     let lever = 0.15 * a0.cos()
@@ -239,18 +239,18 @@ fn a_three_link_multibody_arm_reaches_its_joint_targets_and_reports_its_state() 
         shoulder.effort
     );
     // Forward kinematics: the last link's frame turned by the sum of the angles about y.
-    let last = world.core().link_pose(arm, 2);
+    let last = world.bodies().link_pose(arm, 2);
     let (_, angle) = last.rotation.to_axis_angle();
     assert!(
         (angle - 0.6).abs() < 0.02,
         "the last link turned {angle} rad in all"
     );
     // Teleporting a joint is read back at once, and the chain follows.
-    world.set_joint_position(arm, 1, 0.0).unwrap();
-    assert!(world.core().joint_state(arm, 1).unwrap().position.abs() < 1e-4);
+    world.joints_mut().set_position(arm, 1, 0.0).unwrap();
+    assert!(world.joints().state(arm, 1).unwrap().position.abs() < 1e-4);
     let bad = world
-        .core_mut()
-        .drive_joint(arm, 7, Drive::velocity(1.0, 1.0, 1.0));
+        .joints_mut()
+        .drive(arm, 7, Drive::velocity(1.0, 1.0, 1.0));
     assert!(bad.unwrap_err().to_string().contains("no link 7"));
 }
 
@@ -278,11 +278,11 @@ fn a_single_driven_joint_reports_the_torque_that_holds_its_load() {
     );
     let post = world.add(post.fixed().link(bar)).unwrap();
     world
-        .core_mut()
-        .drive_joint(post, 0, Drive::position(0.0, 2000.0, 10.0, 100.0))
+        .joints_mut()
+        .drive(post, 0, Drive::position(0.0, 2000.0, 10.0, 100.0))
         .unwrap();
     steps(&mut world, 150);
-    let state = world.core().joint_state(post, 0).unwrap();
+    let state = world.joints().state(post, 0).unwrap();
     let moment = 0.3 * 0.04 * 0.04 * 500.0 * 9.81 * 0.15;
     assert!(
         (state.effort + moment).abs() < 0.01 * moment,
@@ -290,9 +290,9 @@ fn a_single_driven_joint_reports_the_torque_that_holds_its_load() {
         state.effort
     );
     // Released, the bar swings down; passive joints report their damping torque.
-    world.core_mut().release_joint(post, 0).unwrap();
+    world.joints_mut().release(post, 0).unwrap();
     steps(&mut world, 10);
-    let falling = world.core().joint_state(post, 0).unwrap();
+    let falling = world.joints().state(post, 0).unwrap();
     assert!(
         falling.position > 0.1 && falling.velocity > 0.0,
         "{falling:?}"
@@ -310,8 +310,8 @@ fn an_attachment_holds_a_box_and_breaks_past_its_force() {
     let held = world.add(spec).unwrap();
     let grasp = hold_at_50_n(&mut world, hand, held);
     steps(&mut world, 30);
-    let state = world.core().attachment(grasp).unwrap();
-    let z = world.pose(held).translation.z;
+    let state = world.attachments().get(grasp).unwrap();
+    let z = world.bodies().pose(held).translation.z;
     assert!((z - 0.85).abs() < 0.01, "the held box hangs at {z}");
     assert!(!state.broken && state.violation < 0.01, "{state:?}");
     assert!(
@@ -321,28 +321,28 @@ fn an_attachment_holds_a_box_and_breaks_past_its_force() {
     );
     // Pulling down with 200 N needs more than 50 N: it breaks and the box falls.
     world
-        .core_mut()
+        .bodies_mut()
         .apply_force(held.into(), v(0.0, 0.0, -200.0))
         .unwrap();
     world.step();
-    assert!(world.core().attachment(grasp).unwrap().broken);
+    assert!(world.attachments().get(grasp).unwrap().broken);
     steps(&mut world, 30);
     assert!(
-        world.pose(held).translation.z < 0.1,
+        world.bodies().pose(held).translation.z < 0.1,
         "the released box fell"
     );
-    assert!(world.core_mut().detach(grasp));
-    assert!(world.core().attachment(grasp).is_none());
+    assert!(world.attachments_mut().detach(grasp));
+    assert!(world.attachments().get(grasp).is_none());
     // Pulled down with 200 N for a third of a step (as a lid meeting its hinge's limit pulls
     // on a carried carton), it holds: it breaks only when overloaded in half a step's
     // substeps, as PyBullet's force-limited constraint lets go only once it has drifted 0.1 m.
     world
-        .core_mut()
+        .bodies_mut()
         .set_pose(held, Pose::from_translation(v(0.0, 0.0, 0.85)))
         .unwrap();
     let pulled = hold_at_50_n(&mut world, hand, held);
     steps(&mut world, 10);
-    let substeps = world.core().substeps().count();
+    let substeps = world.bodies().substeps().count();
     let mut pull = PullFor {
         body: held,
         substeps: (substeps - 1) / 3,
@@ -355,17 +355,17 @@ fn an_attachment_holds_a_box_and_breaks_past_its_force() {
         "overloaded in some substeps: {} N",
         pull.most
     );
-    let state = world.core().attachment(pulled).unwrap();
+    let state = world.attachments().get(pulled).unwrap();
     assert!(!state.broken && state.violation < 0.01, "{state:?}");
     // Pulled for the whole step, it breaks.
     pull.substeps = substeps;
     world.step_with(&mut pull);
-    assert!(world.core().attachment(pulled).unwrap().broken);
-    assert!(world.core_mut().detach(pulled));
+    assert!(world.attachments().get(pulled).unwrap().broken);
+    assert!(world.attachments_mut().detach(pulled));
     // A point attachment lets the held box swing about the point.
-    let point = world.pose(held).translation + v(0.0, 0.0, 0.05);
+    let point = world.bodies().pose(held).translation + v(0.0, 0.0, 0.05);
     let swing = world
-        .core_mut()
+        .attachments_mut()
         .attach(AttachmentSpec {
             holder: hand.into(),
             held: held.into(),
@@ -375,8 +375,8 @@ fn an_attachment_holds_a_box_and_breaks_past_its_force() {
         })
         .unwrap();
     world.step();
-    assert!(!world.core().attachment(swing).unwrap().broken);
-    let bad = world.core_mut().attach(AttachmentSpec {
+    assert!(!world.attachments().get(swing).unwrap().broken);
+    let bad = world.attachments_mut().attach(AttachmentSpec {
         holder: hand.into(),
         held: hand.into(),
         at: Vector::ZERO,
@@ -392,14 +392,14 @@ fn contacts_name_the_other_body_with_points_normals_and_impulses() {
     let floor = floor(&mut world);
     let cube = cube(&mut world, "cube", 0.0, 0.0, 0.1);
     steps(&mut world, 10);
-    world.core_mut().set_sleeping_allowed(false);
+    world.bodies_mut().set_sleeping_allowed(false);
     world.step();
-    let contacts = world.core().contacts(cube.into()).unwrap();
+    let contacts = world.contacts().of(cube.into()).unwrap();
     assert!(
         contacts.len() >= 3,
         "a box rests on its corners: {contacts:?}"
     );
-    let mass = world.core().mass(cube);
+    let mass = world.bodies().mass(cube);
     let substep = 1.0 / 300.0;
     let mut impulse = 0.0;
     for c in &contacts {
@@ -417,7 +417,7 @@ fn contacts_name_the_other_body_with_points_normals_and_impulses() {
         "the floor carries the box's weight: {} N",
         impulse / substep
     );
-    let floor_side = world.core().object_contacts(floor);
+    let floor_side = world.contacts().of_object(floor);
     assert!(
         floor_side
             .iter()
@@ -432,18 +432,19 @@ fn ignored_pairs_pass_through_each_other_and_collision_groups_let_water_through(
     let bottom = cube(&mut world, "bottom", 0.0, 0.0, 0.1);
     let top = cube(&mut world, "top", 0.0, 0.0, 0.1);
     world
+        .bodies_mut()
         .set_pose(top, Pose::from_translation(v(0.0, 0.0, 0.31)))
         .unwrap();
     steps(&mut world, 20);
-    assert!(world.core().ontop(top, bottom));
+    assert!(world.relations().ontop(top, bottom));
     world
-        .core_mut()
-        .ignore_contacts(top.into(), bottom.into(), true)
+        .contacts_mut()
+        .ignore(top.into(), bottom.into(), true)
         .unwrap();
-    assert!(world.core().contacts_ignored(bottom.into(), top.into()));
+    assert!(world.contacts().ignored(bottom.into(), top.into()));
     steps(&mut world, 30);
     assert!(
-        world.pose(top).translation.z < 0.15,
+        world.bodies().pose(top).translation.z < 0.15,
         "the top cube fell through the bottom one"
     );
 
@@ -471,11 +472,9 @@ fn ignored_pairs_pass_through_each_other_and_collision_groups_let_water_through(
         .ability(Ability::Soakable, &[]);
         let plate = world.add(plate).unwrap();
         if filtered {
-            world.core_mut().set_collision_groups(
-                plate,
-                groups::ROBOT,
-                groups::ALL & !groups::WATER,
-            );
+            world
+                .contacts_mut()
+                .set_groups(plate, groups::ROBOT, groups::ALL & !groups::WATER);
         }
         steps(&mut world, 25);
         let below = world.drops().iter().filter(|d| d.z < 0.75).count();
@@ -501,7 +500,7 @@ fn a_ray_finds_the_first_object_and_batched_rays_see_teleports_without_a_step() 
     let far = cube(&mut world, "far", 2.0, 0.0, 0.1);
     let (origin, along_x) = (v(0.0, 0.0, 0.1), v(1.0, 0.0, 0.0));
     let hit = world
-        .core()
+        .query()
         .cast_ray(origin, along_x, 10.0, &QueryFilter::default())
         .unwrap()
         .unwrap();
@@ -513,7 +512,7 @@ fn a_ray_finds_the_first_object_and_batched_rays_see_teleports_without_a_step() 
     );
     let past_near = QueryFilter::excluding(&[near]);
     let hit = world
-        .core()
+        .query()
         .cast_ray(origin, along_x, 10.0, &past_near)
         .unwrap()
         .unwrap();
@@ -524,7 +523,7 @@ fn a_ray_finds_the_first_object_and_batched_rays_see_teleports_without_a_step() 
         (v(0.0, 0.0, 1.0), v(0.0, 0.0, -1.0)),
     ];
     let hits = world
-        .core()
+        .query()
         .cast_rays(&lidar, 3.0, &QueryFilter::default())
         .unwrap();
     assert_eq!(hits[0].and_then(|h| h.body), Some(near.into()));
@@ -535,16 +534,17 @@ fn a_ray_finds_the_first_object_and_batched_rays_see_teleports_without_a_step() 
     );
     // Moved without a step, the near cube is out of the way at once.
     world
+        .bodies_mut()
         .set_pose(near, Pose::from_translation(v(1.0, 3.0, 0.1)))
         .unwrap();
     let hit = world
-        .core()
+        .query()
         .cast_ray(origin, along_x, 10.0, &QueryFilter::default())
         .unwrap()
         .unwrap();
     assert_eq!(hit.body, Some(BodyRef::from(far)));
     let bad = world
-        .core()
+        .query()
         .cast_ray(origin, v(0.0, 0.0, 0.0), 1.0, &QueryFilter::default());
     assert!(bad.is_err(), "a zero direction is an error");
 }
@@ -558,19 +558,19 @@ fn a_shape_query_reports_a_collision_and_a_distance_without_a_step() {
     let none = QueryFilter::default();
     let above_top = Pose::from_translation(v(0.0, 0.0, 0.8));
     assert_eq!(
-        world.core().overlaps(&probe, above_top, &none).unwrap(),
+        world.query().overlaps(&probe, above_top, &none).unwrap(),
         vec![BodyRef::from(table)]
     );
     let clear = Pose::from_translation(v(3.0, 3.0, 1.0));
     assert!(
         world
-            .core()
+            .query()
             .overlaps(&probe, clear, &none)
             .unwrap()
             .is_empty()
     );
     let nearest = world
-        .core()
+        .query()
         .nearest(&probe, clear, 5.0, &none)
         .unwrap()
         .unwrap();
@@ -583,26 +583,26 @@ fn a_shape_query_reports_a_collision_and_a_distance_without_a_step() {
     };
     let standing = Pose::from_translation(v(2.0, 0.0, 0.199));
     assert_eq!(
-        world.core().overlaps(&base, standing, &none).unwrap(),
+        world.query().overlaps(&base, standing, &none).unwrap(),
         vec![BodyRef::from(floor)]
     );
     let lifted = Pose::from_translation(v(2.0, 0.0, 0.21));
     assert!(
         world
-            .core()
+            .query()
             .overlaps(&base, lifted, &QueryFilter::default())
             .unwrap()
             .is_empty()
     );
     assert!(
         world
-            .core()
+            .query()
             .nearest(&base, lifted, 0.005, &none)
             .unwrap()
             .is_none()
     );
     let bad = Primitive::Sphere { radius: -1.0 };
-    assert!(world.core().overlaps(&bad, lifted, &none).is_err());
+    assert!(world.query().overlaps(&bad, lifted, &none).is_err());
 }
 
 #[test]
@@ -637,7 +637,7 @@ fn every_part_is_described_with_colour_material_and_pose_and_links_follow_their_
     .looks([120, 90, 60], Material::Wood)
     .link(door);
     let cabinet = world.add(spec).unwrap();
-    let parts = world.core().visual_parts(cabinet);
+    let parts = world.visuals().parts(cabinet);
     assert_eq!(parts.len(), 3);
     assert_eq!(parts[0].visual.color, [120, 90, 60]);
     assert_eq!(parts[1].visual, red, "a part's own appearance wins");
@@ -648,8 +648,8 @@ fn every_part_is_described_with_colour_material_and_pose_and_links_follow_their_
     ));
     let closed = parts[2].pose.translation;
     let body = parts[0].pose.translation;
-    world.set_joint_position(cabinet, 0, 1.5).unwrap();
-    let open = world.core().visual_parts(cabinet)[2].pose.translation;
+    world.joints_mut().set_position(cabinet, 0, 1.5).unwrap();
+    let open = world.visuals().parts(cabinet)[2].pose.translation;
     assert!(
         (open - closed).length() > 0.2,
         "the door part swung: {closed} → {open}"
@@ -662,7 +662,7 @@ fn every_part_is_described_with_colour_material_and_pose_and_links_follow_their_
         model: Model::Fetch,
         piece: 7,
     };
-    let parts = world.core().object(cabinet).parts.clone();
+    let parts = world.bodies().object(cabinet).parts.clone();
     let mut named = ObjectSpec::new("cabinet_2", "cabinet.n.01", parts).fixed();
     named.model = Some(piece);
     let named = world.add(named).unwrap();
@@ -673,9 +673,9 @@ fn every_part_is_described_with_colour_material_and_pose_and_links_follow_their_
         triangles: vec![[0, 1, 2]],
         visual: red,
     };
-    assert_eq!(world.core().visual_parts_with(named, &library).len(), 2);
+    assert_eq!(world.visuals().parts_with(named, &library).len(), 2);
     library.insert(piece, vec![square.clone(), square]);
-    let held = world.core().visual_parts_with(named, &library);
+    let held = world.visuals().parts_with(named, &library);
     assert_eq!(held.len(), 2);
     assert!(
         matches!(held[1].shape, VisualShape::Piece { piece: p, index: 1, held } if p == piece && held.reach == 1.0 && held.bounds[1] == v(1.0, 1.0, 0.0)),
@@ -684,12 +684,12 @@ fn every_part_is_described_with_colour_material_and_pose_and_links_follow_their_
     );
     assert_eq!(held[0].visual, red);
     assert_eq!(
-        world.core().visual_parts(named).len(),
+        world.visuals().parts(named).len(),
         2,
         "no library, its parts"
     );
     let loaded = World::from_bytes(&world.to_bytes()).unwrap();
-    assert_eq!(loaded.core().object(named).model, Some(piece));
+    assert_eq!(loaded.bodies().object(named).model, Some(piece));
 }
 
 /// Counts hook calls and, as a controller would, drives a ball sideways every substep.
@@ -708,14 +708,14 @@ impl StepHooks for Counter {
             angular: Vector::ZERO,
         };
         world
-            .core_mut()
+            .bodies_mut()
             .set_velocity(self.ball.into(), push)
             .unwrap();
     }
 
     fn after_step(&mut self, world: &mut World) {
         self.after += 1;
-        assert_eq!(world.steps(), u64::from(self.after));
+        assert_eq!(world.bodies().steps(), u64::from(self.after));
     }
 }
 
@@ -742,7 +742,7 @@ fn hooks_run_before_every_substep_and_after_each_step() {
         world.step_with(&mut hooks);
     }
     assert_eq!((hooks.before, hooks.after), (300, 30));
-    let x = world.pose(ball).translation.x;
+    let x = world.bodies().pose(ball).translation.x;
     assert!(
         (x - 1.0).abs() < 0.05,
         "driven at 1 m/s for 1 s, it went {x} m"
@@ -757,17 +757,17 @@ fn worlds_step_in_threads_and_a_reader_shares_one_while_another_steps() {
     let apple = apple(&mut template, "apple", v(0.0, 0.0, 1.2));
     let mut sequential = template.clone();
     steps(&mut sequential, 60);
-    let expected = sequential.core().motion_bits();
+    let expected = sequential.bodies().motion_bits();
     let (mut a, mut b) = (template.clone(), template.clone());
     let reader = &sequential;
     std::thread::scope(|s| {
         s.spawn(|| steps(&mut a, 60));
         s.spawn(|| steps(&mut b, 60));
         // A renderer reads a settled world while the others step.
-        s.spawn(move || assert!(reader.core().ontop(apple, t)));
+        s.spawn(move || assert!(reader.relations().ontop(apple, t)));
     });
-    assert_eq!(a.core().motion_bits(), expected);
-    assert_eq!(b.core().motion_bits(), expected);
+    assert_eq!(a.bodies().motion_bits(), expected);
+    assert_eq!(b.bodies().motion_bits(), expected);
 }
 
 #[test]
@@ -777,13 +777,14 @@ fn snapshots_of_an_arm_holding_a_box_restore_bit_identically() {
     let arm = multibody_arm(&mut world, 0.0, 0.0);
     let held = cube(&mut world, "held", 0.9, 0.0, 0.03);
     world
+        .bodies_mut()
         .set_pose(
             held,
             Pose::from_parts(v(0.92, 0.0, 0.95), Rotation::IDENTITY),
         )
         .unwrap();
     world
-        .core_mut()
+        .attachments_mut()
         .attach(AttachmentSpec {
             holder: BodyRef::link(arm, 2),
             held: held.into(),
@@ -794,22 +795,22 @@ fn snapshots_of_an_arm_holding_a_box_restore_bit_identically() {
         .unwrap();
     for (k, target) in [0.3f32, 0.2, -0.4].into_iter().enumerate() {
         world
-            .core_mut()
-            .drive_joint(arm, k, Drive::position(target, 1000.0, 50.0, 300.0))
+            .joints_mut()
+            .drive(arm, k, Drive::position(target, 1000.0, 50.0, 300.0))
             .unwrap();
     }
     steps(&mut world, 20);
     let snapshot = world.snapshot();
     steps(&mut world, 40);
-    let end = world.core().motion_bits();
+    let end = world.bodies().motion_bits();
     world.restore(&snapshot);
     steps(&mut world, 40);
-    assert_eq!(world.core().motion_bits(), end, "rewound and replayed");
+    assert_eq!(world.bodies().motion_bits(), end, "rewound and replayed");
     let mut fresh = World::default();
     fresh.restore(&snapshot);
     steps(&mut fresh, 40);
     assert_eq!(
-        fresh.core().motion_bits(),
+        fresh.bodies().motion_bits(),
         end,
         "restored into another world"
     );
@@ -846,25 +847,28 @@ fn a_velocity_driven_base_carries_its_multibody_arm_and_the_arm_keeps_its_target
     let robot = world.add(base).unwrap();
     for (k, target) in [0.3f32, -0.4].into_iter().enumerate() {
         world
-            .core_mut()
-            .drive_joint(robot, k, Drive::position(target, 500.0, 20.0, 100.0))
+            .joints_mut()
+            .drive(robot, k, Drive::position(target, 500.0, 20.0, 100.0))
             .unwrap();
     }
     let drive = Velocity {
         linear: v(0.5, 0.0, 0.0),
         angular: Vector::ZERO,
     };
-    world.core_mut().set_velocity(robot.into(), drive).unwrap();
+    world
+        .bodies_mut()
+        .set_velocity(robot.into(), drive)
+        .unwrap();
     steps(&mut world, 60);
-    let x = world.pose(robot).translation.x;
+    let x = world.bodies().pose(robot).translation.x;
     assert!((x - 1.0).abs() < 0.01, "the base drove to x = {x}");
-    let elbow = world.core().link_pose(robot, 1).translation.x;
+    let elbow = world.bodies().link_pose(robot, 1).translation.x;
     assert!(
         elbow > 0.9,
         "the arm came along: its last segment is at x = {elbow}"
     );
     for (k, target) in [0.3f32, -0.4].into_iter().enumerate() {
-        let q = world.core().joint_state(robot, k).unwrap().position;
+        let q = world.joints().state(robot, k).unwrap().position;
         assert!((q - target).abs() < 0.02, "joint {k} at {q} for {target}");
     }
 }
@@ -894,9 +898,9 @@ fn masses_of_bodies_links_and_whole_objects_and_the_gravity_they_feel() {
         density: 500.0,
     };
     let id = world.add(spec.link(lid)).unwrap();
-    let body = world.core().body_mass(BodyRef::from(id)).unwrap();
+    let body = world.bodies().body_mass(BodyRef::from(id)).unwrap();
     let link = world
-        .core()
+        .bodies()
         .body_mass(BodyRef {
             object: id,
             link: Some(0),
@@ -906,18 +910,18 @@ fn masses_of_bodies_links_and_whole_objects_and_the_gravity_they_feel() {
         (body - 4.0).abs() < 1e-3 && (link - 0.2).abs() < 1e-4,
         "{body} {link}"
     );
-    assert!((world.core().total_mass(id) - 4.2).abs() < 1e-3);
-    assert_eq!(world.core().mass(id), body);
+    assert!((world.bodies().total_mass(id) - 4.2).abs() < 1e-3);
+    assert_eq!(world.bodies().mass(id), body);
     assert!(
         world
-            .core()
+            .bodies()
             .body_mass(BodyRef {
                 object: id,
                 link: Some(3)
             })
             .is_err()
     );
-    assert_eq!(world.core().gravity(), v(0.0, 0.0, -9.81));
+    assert_eq!(world.bodies().gravity(), v(0.0, 0.0, -9.81));
 }
 
 #[test]
@@ -941,7 +945,7 @@ fn a_part_moved_within_its_body_is_where_queries_drawing_and_mass_find_it() {
     let id = world.add(spec).unwrap();
     steps(&mut world, 5);
     let body = BodyRef::from(id);
-    let before = world.core().centre_of_mass(body).unwrap();
+    let before = world.bodies().centre_of_mass(body).unwrap();
     assert!(
         before.x > 0.01,
         "the cube weighs on the +x side: {before:?}"
@@ -949,13 +953,13 @@ fn a_part_moved_within_its_body_is_where_queries_drawing_and_mass_find_it() {
 
     // Over to the −x edge.
     let moved = Pose::from_translation(v(-0.15, 0.0, 0.07));
-    world.core_mut().set_part_offset(id, 1, moved).unwrap();
-    assert_eq!(world.object(id).parts[1].offset, moved);
+    world.bodies_mut().set_part_offset(id, 1, moved).unwrap();
+    assert_eq!(world.bodies().object(id).parts[1].offset, moved);
     steps(&mut world, 1);
-    let after = world.core().centre_of_mass(body).unwrap();
+    let after = world.bodies().centre_of_mass(body).unwrap();
     assert!((after.x + before.x).abs() < 0.01, "{before:?} → {after:?}");
     let down = |x: f32| {
-        let hit = world.core().cast_ray(
+        let hit = world.query().cast_ray(
             v(x, 0.0, 1.0),
             v(0.0, 0.0, -1.0),
             2.0,
@@ -963,7 +967,7 @@ fn a_part_moved_within_its_body_is_where_queries_drawing_and_mass_find_it() {
         );
         hit.unwrap().unwrap().point.z
     };
-    let top = world.pose(id).translation.z;
+    let top = world.bodies().pose(id).translation.z;
     assert!(
         (down(-0.15) - (top + 0.12)).abs() < 0.01,
         "the cube is at −x now"
@@ -972,14 +976,14 @@ fn a_part_moved_within_its_body_is_where_queries_drawing_and_mass_find_it() {
         (down(0.15) - (top + 0.02)).abs() < 0.01,
         "and no longer at +x"
     );
-    let drawn = world.core().visual_parts(id)[1].pose.translation;
-    assert!((drawn - world.pose(id).transform_point(moved.translation)).length() < 1e-5);
+    let drawn = world.visuals().parts(id)[1].pose.translation;
+    assert!((drawn - world.bodies().pose(id).transform_point(moved.translation)).length() < 1e-5);
 
     // A part it does not have, or a pose that is not finite: refused, nothing changed.
-    assert!(world.core_mut().set_part_offset(id, 2, moved).is_err());
+    assert!(world.bodies_mut().set_part_offset(id, 2, moved).is_err());
     let nan = Pose::from_translation(v(f32::NAN, 0.0, 0.0));
-    assert!(world.core_mut().set_part_offset(id, 1, nan).is_err());
-    assert_eq!(world.object(id).parts[1].offset, moved);
+    assert!(world.bodies_mut().set_part_offset(id, 1, nan).is_err());
+    assert_eq!(world.bodies().object(id).parts[1].offset, moved);
 }
 
 /// Pulls `body` down with 200 N for the first `substeps` substeps of a step, noting the most
@@ -993,7 +997,7 @@ struct PullFor {
 
 impl StepHooks for PullFor {
     fn before_substep(&mut self, world: &mut World, substep: u32) {
-        if let Some(state) = world.core().attachment(self.attachment) {
+        if let Some(state) = world.attachments().get(self.attachment) {
             self.most = self.most.max(state.force);
         }
         // The force lasts the rest of the step: pushed, then cancelled.
@@ -1003,7 +1007,7 @@ impl StepHooks for PullFor {
             _ => return,
         };
         world
-            .core_mut()
+            .bodies_mut()
             .apply_force(self.body.into(), v(0.0, 0.0, force))
             .unwrap();
     }
@@ -1018,5 +1022,5 @@ fn hold_at_50_n(world: &mut World, hand: ObjectId, held: ObjectId) -> behavior_s
         kind: AttachmentKind::Fixed,
         max_force: 50.0,
     };
-    world.core_mut().attach(spec).unwrap()
+    world.attachments_mut().attach(spec).unwrap()
 }

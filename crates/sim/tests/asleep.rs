@@ -30,14 +30,14 @@ fn stack() -> (World, [ObjectId; 2]) {
 #[test]
 fn objects_added_asleep_at_rest_stay_asleep_and_exactly_in_place() {
     let (mut world, ids) = stack();
-    let before = world.core().motion_bits();
-    assert!(ids.iter().all(|&id| world.core().is_sleeping(id)));
+    let before = world.bodies().motion_bits();
+    assert!(ids.iter().all(|&id| world.bodies().is_sleeping(id)));
     for _ in 0..30 {
         world.step();
-        assert!(ids.iter().all(|&id| world.core().is_sleeping(id)));
+        assert!(ids.iter().all(|&id| world.bodies().is_sleeping(id)));
     }
-    assert_eq!(world.core().motion_bits(), before, "nothing moved a bit");
-    assert_eq!(world.core().motion(ids[0]), 0, "never marked as moved");
+    assert_eq!(world.bodies().motion_bits(), before, "nothing moved a bit");
+    assert_eq!(world.bodies().motion(ids[0]), 0, "never marked as moved");
 }
 
 #[test]
@@ -55,21 +55,21 @@ fn an_object_added_asleep_wakes_when_hit_and_sleeps_again_once_at_rest() {
     let mut woke = false;
     for _ in 0..60 {
         world.step();
-        woke |= !world.core().is_sleeping(high);
+        woke |= !world.bodies().is_sleeping(high);
     }
     assert!(woke, "the falling ball woke the box it landed on");
-    assert!(world.core().is_sleeping(high), "and it slept again");
+    assert!(world.bodies().is_sleeping(high), "and it slept again");
     // Pushed hard, the upper box slides off and falls to the table like any box.
     let push = Velocity {
         linear: Vector::new(2.0, 0.0, 0.0),
         angular: Vector::ZERO,
     };
-    world.core_mut().set_velocity(high.into(), push).unwrap();
+    world.bodies_mut().set_velocity(high.into(), push).unwrap();
     for _ in 0..60 {
         world.step();
     }
-    let z = world.pose(high).translation.z;
+    let z = world.bodies().pose(high).translation.z;
     assert!((z - 0.1).abs() < 0.01, "it fell one box lower, to {z}");
-    assert!(world.pose(high).translation.x > 0.2);
-    assert!(world.core().is_sleeping(low));
+    assert!(world.bodies().pose(high).translation.x > 0.2);
+    assert!(world.bodies().is_sleeping(low));
 }

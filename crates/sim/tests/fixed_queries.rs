@@ -27,15 +27,18 @@ fn fixed_only_queries_see_fixed_bodies_and_follow_their_changes() {
         ..QueryFilter::default()
     };
     let probe = cube(1.0);
-    let core = world.core();
-    let all = core
+    let all = world
+        .query()
         .overlaps(&probe, Pose::IDENTITY, &QueryFilter::default())
         .unwrap();
     assert_eq!(
         all.iter().map(|b| b.object).collect::<Vec<_>>(),
         vec![wall, ball]
     );
-    let only = core.overlaps(&probe, Pose::IDENTITY, &fixed).unwrap();
+    let only = world
+        .query()
+        .overlaps(&probe, Pose::IDENTITY, &fixed)
+        .unwrap();
     assert_eq!(
         only.iter().map(|b| b.object).collect::<Vec<_>>(),
         vec![wall]
@@ -45,6 +48,7 @@ fn fixed_only_queries_see_fixed_bodies_and_follow_their_changes() {
         world.step();
     }
     world
+        .bodies_mut()
         .set_pose(wall, Pose::from_translation(Vector::new(5.0, 0.0, 0.0)))
         .unwrap();
     let table = world
@@ -56,7 +60,7 @@ fn fixed_only_queries_see_fixed_bodies_and_follow_their_changes() {
         .unwrap();
     let at = |x: f32, y: f32| Pose::from_translation(Vector::new(x, y, 0.0));
     let hits = |world: &World, pose| -> Vec<_> {
-        let found = world.core().overlaps(&cube(0.2), pose, &fixed).unwrap();
+        let found = world.query().overlaps(&cube(0.2), pose, &fixed).unwrap();
         found.into_iter().map(|b| b.object).collect()
     };
     assert_eq!(hits(&world, at(0.0, 0.0)), vec![]);

@@ -20,23 +20,23 @@ fn apple_on_plate_on_table() -> (World, ObjectId, ObjectId, ObjectId) {
 #[test]
 fn ontop_an_apple_dropped_on_a_plate_on_a_table() {
     let (world, table, plate, apple) = apple_on_plate_on_table();
-    assert!(world.core().ontop(apple, plate));
+    assert!(world.relations().ontop(apple, plate));
     assert!(
-        !world.core().ontop(apple, table),
+        !world.relations().ontop(apple, table),
         "the apple rests on the plate, not the table"
     );
-    assert!(world.core().ontop(plate, table));
-    assert!(!world.core().ontop(plate, apple) && !world.core().ontop(table, plate));
-    assert!(world.core().is_sleeping(apple), "a settled scene sleeps");
+    assert!(world.relations().ontop(plate, table));
+    assert!(!world.relations().ontop(plate, apple) && !world.relations().ontop(table, plate));
+    assert!(world.bodies().is_sleeping(apple), "a settled scene sleeps");
 }
 
 #[test]
 fn touching_only_what_is_in_contact() {
     let (world, table, plate, apple) = apple_on_plate_on_table();
-    assert!(world.core().touching(apple, plate) && world.core().touching(plate, apple));
-    assert!(world.core().touching(plate, table));
-    assert!(!world.core().touching(apple, table));
-    assert!(!world.core().touching(apple, apple));
+    assert!(world.relations().touching(apple, plate) && world.relations().touching(plate, apple));
+    assert!(world.relations().touching(plate, table));
+    assert!(!world.relations().touching(apple, table));
+    assert!(!world.relations().touching(apple, apple));
 }
 
 #[test]
@@ -47,11 +47,11 @@ fn inside_an_apple_dropped_into_a_bin_and_not_one_beside_it() {
     let inner = apple(&mut world, "apple_1", v(1.0, 1.0, 0.6));
     let outer = apple(&mut world, "apple_2", v(1.6, 1.0, 0.3));
     settle(&mut world, 2.0);
-    assert!(world.core().inside(inner, bin));
-    assert!(!world.core().inside(outer, bin));
-    assert!(!world.core().inside(bin, inner));
+    assert!(world.relations().inside(inner, bin));
+    assert!(!world.relations().inside(outer, bin));
+    assert!(!world.relations().inside(bin, inner));
     assert!(
-        world.core().ontop(inner, bin),
+        world.relations().ontop(inner, bin),
         "it rests on the bin's bottom"
     );
 }
@@ -64,11 +64,11 @@ fn under_a_ball_below_a_table_top() {
     let below = apple(&mut world, "apple_1", v(-1.0, 0.1, 0.1));
     let beside = apple(&mut world, "apple_2", v(-3.0, 0.0, 0.1));
     settle(&mut world, 1.0);
-    assert!(world.core().under(below, table));
-    assert!(!world.core().under(beside, table));
-    assert!(!world.core().under(table, below));
+    assert!(world.relations().under(below, table));
+    assert!(!world.relations().under(beside, table));
+    assert!(!world.relations().under(table, below));
     assert!(
-        !world.core().under(below, kitchen_floor),
+        !world.relations().under(below, kitchen_floor),
         "the floor is below, not above"
     );
 }
@@ -81,8 +81,8 @@ fn nextto_two_apples_close_together_and_not_far_apart() {
     let b = apple(&mut world, "apple_2", v(-1.0, 2.1, 0.05));
     let far = apple(&mut world, "apple_3", v(-1.0, 3.5, 0.05));
     settle(&mut world, 1.0);
-    assert!(world.core().nextto(a, b) && world.core().nextto(b, a));
-    assert!(!world.core().nextto(a, far));
+    assert!(world.relations().nextto(a, b) && world.relations().nextto(b, a));
+    assert!(!world.relations().nextto(a, far));
 }
 
 #[test]
@@ -93,18 +93,18 @@ fn onfloor_in_the_room_where_the_object_lies() {
     let dropped = apple(&mut world, "apple_1", v(-2.0, -2.0, 0.3));
     let on_table = apple(&mut world, "apple_2", v(-1.0, 0.0, 1.0));
     settle(&mut world, 2.0);
-    assert!(world.core().onfloor(dropped, kitchen));
-    assert!(!world.core().onfloor(dropped, living));
+    assert!(world.relations().onfloor(dropped, kitchen));
+    assert!(!world.relations().onfloor(dropped, living));
     assert!(
-        !world.core().onfloor(on_table, kitchen),
+        !world.relations().onfloor(on_table, kitchen),
         "resting on the table, not the floor"
     );
     assert_eq!(
-        world.core().room_of(dropped),
+        world.relations().room_of(dropped),
         Some(behavior_core::RoomType::Kitchen)
     );
     assert_eq!(
-        world.core().room_of(table),
+        world.relations().room_of(table),
         Some(behavior_core::RoomType::Kitchen)
     );
 }
@@ -131,7 +131,7 @@ fn bad_object_specs_are_errors_not_panics() {
     )
     .at(v(f32::INFINITY, 0.0, 0.0));
     assert!(world.add(far).is_err());
-    assert_eq!(world.objects().len(), 0);
+    assert_eq!(world.bodies().objects().len(), 0);
 }
 
 #[test]
@@ -141,29 +141,30 @@ fn ontop_memo_survives_sleep_and_is_invalidated_by_motion() {
     let table = table(&mut world, -1.0, 0.0);
     let apple = apple(&mut world, "apple_1", v(-1.0, 0.0, 0.9));
     settle(&mut world, 3.0);
-    assert!(world.core().ontop(apple, table));
-    let count = world.core().motion(apple);
+    assert!(world.relations().ontop(apple, table));
+    let count = world.bodies().motion(apple);
     settle(&mut world, 1.0);
     assert_eq!(
-        world.core().motion(apple),
+        world.bodies().motion(apple),
         count,
         "a sleeping apple does not count as moving"
     );
-    assert!(world.core().ontop(apple, table));
+    assert!(world.relations().ontop(apple, table));
     world
+        .bodies_mut()
         .set_pose(
             apple,
             rapier3d::math::Pose::from_translation(v(-3.0, 0.0, 0.04)),
         )
         .unwrap();
     assert!(
-        !world.core().ontop(apple, table),
+        !world.relations().ontop(apple, table),
         "a teleport invalidates the memo"
     );
     assert!(
         world
-            .core()
-            .touching(apple, world.object_named("floor_kitchen").unwrap())
+            .relations()
+            .touching(apple, world.bodies().object_named("floor_kitchen").unwrap())
     );
 }
 
@@ -185,14 +186,14 @@ fn onfloor_includes_lying_on_a_mat_but_not_sitting_in_a_low_bin() {
     let bin = open_box(&mut world, -1.0, -2.0);
     let in_bin = apple(&mut world, "apple_2", v(-1.0, -2.0, 0.3));
     settle(&mut world, 2.0);
-    assert!(world.core().ontop(on_mat, mat) && !world.core().touching(on_mat, kitchen));
+    assert!(world.relations().ontop(on_mat, mat) && !world.relations().touching(on_mat, kitchen));
     assert!(
-        world.core().onfloor(on_mat, kitchen),
+        world.relations().onfloor(on_mat, kitchen),
         "lying on a mat on the floor"
     );
-    assert!(world.core().inside(in_bin, bin));
+    assert!(world.relations().inside(in_bin, bin));
     assert!(
-        !world.core().onfloor(in_bin, kitchen),
+        !world.relations().onfloor(in_bin, kitchen),
         "in a bin on the floor is not on the floor"
     );
 }
@@ -237,22 +238,22 @@ fn onfloor_not_for_an_apple_in_a_basket_standing_on_the_floor() {
         .unwrap();
     settle(&mut world, 2.0);
     assert!(
-        world.core().onfloor(basket, kitchen),
+        world.relations().onfloor(basket, kitchen),
         "the basket stands on the floor"
     );
-    assert!(world.core().inside(in_basket, basket));
-    let bottom = world.aabb(in_basket).mins.z;
+    assert!(world.relations().inside(in_basket, basket));
+    let bottom = world.bodies().aabb(in_basket).mins.z;
     assert!(
         bottom < 0.1,
         "the apple is low ({bottom} m) but in the basket"
     );
     assert!(
-        !world.core().onfloor(in_basket, kitchen),
+        !world.relations().onfloor(in_basket, kitchen),
         "in a basket is not on the floor"
     );
-    assert!(world.core().ontop(soap, towel) && !world.core().touching(soap, kitchen));
+    assert!(world.relations().ontop(soap, towel) && !world.relations().touching(soap, kitchen));
     assert!(
-        world.core().onfloor(soap, kitchen),
+        world.relations().onfloor(soap, kitchen),
         "on a towel lying on the floor"
     );
 }
@@ -266,16 +267,16 @@ fn ontop_not_for_an_apple_on_the_shelf_of_a_closed_fridge() {
     let on_top = apple(&mut world, "apple_2", v(-2.0, 0.0, 1.4));
     settle(&mut world, 2.0);
     assert!(!world.state(fridge, behavior_core::Predicate::Open));
-    assert!(world.core().inside(shelved, fridge));
+    assert!(world.relations().inside(shelved, fridge));
     assert!(
-        world.core().touching(shelved, fridge),
+        world.relations().touching(shelved, fridge),
         "it rests on the fridge's floor"
     );
     assert!(
-        !world.core().ontop(shelved, fridge),
+        !world.relations().ontop(shelved, fridge),
         "inside the fridge, not on top of it: the fridge is above it"
     );
-    assert!(world.core().ontop(on_top, fridge) && !world.core().inside(on_top, fridge));
+    assert!(world.relations().ontop(on_top, fridge) && !world.relations().inside(on_top, fridge));
 }
 
 #[test]
@@ -304,13 +305,14 @@ fn touching_a_pad_half_a_millimetre_above_a_slightly_turned_slab() {
             .fixed(),
         )
         .unwrap();
-    assert!(world.core().touching(pad, slab) && world.core().touching(slab, pad));
+    assert!(world.relations().touching(pad, slab) && world.relations().touching(slab, pad));
     // 6 mm apart is not touching.
     world
+        .bodies_mut()
         .set_pose(
             pad,
             Pose::from_translation(v(-0.2, 0.0, 0.02 + 0.006 + 0.005)),
         )
         .unwrap();
-    assert!(!world.core().touching(pad, slab));
+    assert!(!world.relations().touching(pad, slab));
 }

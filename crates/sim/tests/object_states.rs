@@ -13,7 +13,7 @@ fn cooked_then_burnt_on_a_lit_stove_at_the_thresholds_and_cooling_afterwards() {
     let stove = stove(&mut world, -1.0, 0.0);
     let apple = sliceable_apple(&mut world, "apple_1", v(-1.0, 0.0, 1.0));
     settle(&mut world, 1.0);
-    assert!(world.core().ontop(apple, stove));
+    assert!(world.relations().ontop(apple, stove));
     // Off, nothing happens.
     settle(&mut world, 5.0);
     assert!(!world.state(apple, Predicate::Cooked));
@@ -69,7 +69,7 @@ fn frozen_and_inside_in_a_closed_fridge_but_not_with_the_door_open() {
     let fridge = fridge(&mut world, -2.0, 0.0);
     let apple = sliceable_apple(&mut world, "apple_1", v(-2.0, 0.0, 0.3));
     settle(&mut world, 1.0);
-    assert!(world.core().inside(apple, fridge));
+    assert!(world.relations().inside(apple, fridge));
     assert!(!world.state(fridge, Predicate::Open));
     // −18 °C at 0.02 /s from 23 °C crosses 0 °C after ln(41/18)/0.02 ≈ 41 s.
     settle(&mut world, 40.0);
@@ -101,26 +101,32 @@ fn open_when_the_door_is_beyond_five_percent_of_its_range() {
     two_room_floor(&mut world);
     let fridge = fridge(&mut world, -2.0, 0.0);
     settle(&mut world, 0.5);
-    assert!(world.core().joint_position(fridge, 0).abs() < 1e-3);
-    world.set_joint_position(fridge, 0, 0.04 * 2.0).unwrap();
+    assert!(world.joints().position(fridge, 0).abs() < 1e-3);
+    world
+        .joints_mut()
+        .set_position(fridge, 0, 0.04 * 2.0)
+        .unwrap();
     settle(&mut world, 0.5);
     assert!(
         !world.state(fridge, Predicate::Open),
         "{}",
-        world.core().joint_position(fridge, 0)
+        world.joints().position(fridge, 0)
     );
-    world.set_joint_position(fridge, 0, 0.06 * 2.0).unwrap();
+    world
+        .joints_mut()
+        .set_position(fridge, 0, 0.06 * 2.0)
+        .unwrap();
     settle(&mut world, 0.5);
     assert!(
         world.state(fridge, Predicate::Open),
         "{}",
-        world.core().joint_position(fridge, 0)
+        world.joints().position(fridge, 0)
     );
     world.set_state(fridge, Predicate::Open, false).unwrap();
     assert!(!world.state(fridge, Predicate::Open));
     // The setter opens to a random point between the threshold and the limit, and it stays.
     world.set_state(fridge, Predicate::Open, true).unwrap();
-    let opened = world.core().joint_position(fridge, 0);
+    let opened = world.joints().position(fridge, 0);
     assert!((0.06 * 2.0..=2.0).contains(&opened), "{opened}");
     settle(&mut world, 1.0);
     assert!(world.state(fridge, Predicate::Open));
@@ -168,7 +174,7 @@ fn soaked_a_rag_under_a_running_faucet() {
     let rag = rag(&mut world, v(-1.0, 0.15, 0.7));
     let dry = common::rag(&mut world, v(-2.5, 0.0, 0.1));
     settle(&mut world, 1.0);
-    assert!(world.core().inside(rag, sink) || world.core().ontop(rag, sink));
+    assert!(world.relations().inside(rag, sink) || world.relations().ontop(rag, sink));
     settle(&mut world, 2.0);
     assert!(!world.state(rag, Predicate::Soaked), "the tap is off");
     world.set_state(sink, Predicate::ToggledOn, true).unwrap();
@@ -210,7 +216,7 @@ fn stained_only_a_soaked_rag_cleans_and_dusty_any_rag_does() {
     let table = table(&mut world, -1.0, 0.0);
     let plate = dirty_plate(&mut world, v(-1.0, 0.0, 0.8));
     settle(&mut world, 1.0);
-    assert!(world.core().ontop(plate, table));
+    assert!(world.relations().ontop(plate, table));
     world.set_state(plate, Predicate::Stained, true).unwrap();
     world.set_state(plate, Predicate::Dusty, true).unwrap();
     assert!(world.state(plate, Predicate::Stained) && world.state(plate, Predicate::Dusty));
@@ -218,7 +224,7 @@ fn stained_only_a_soaked_rag_cleans_and_dusty_any_rag_does() {
     // A dry rag laid over the plate takes the dust but not the stains.
     let rag = rag(&mut world, v(-1.0, 0.0, 0.8));
     settle(&mut world, 1.0);
-    assert!(world.core().touching(rag, plate));
+    assert!(world.relations().touching(rag, plate));
     assert!(!world.state(plate, Predicate::Dusty));
     assert!(world.state(plate, Predicate::Stained));
     // Soaked, it takes the stains too.
@@ -235,14 +241,14 @@ fn stained_only_a_soaked_rag_cleans_and_dusty_any_rag_does() {
 fn press(world: &mut World, object: behavior_sim::ObjectId, newtons: f32, steps: usize) {
     for _ in 0..steps {
         let down = v(0.0, 0.0, -newtons);
-        world.core_mut().apply_force(object.into(), down).unwrap();
+        world.bodies_mut().apply_force(object.into(), down).unwrap();
         world.step();
     }
 }
 
 /// A knife's centre height when it lies on `object`, 1 mm above its top.
 fn laid_on(world: &World, object: behavior_sim::ObjectId) -> f32 {
-    world.aabb(object).maxs.z + 0.021
+    world.bodies().aabb(object).maxs.z + 0.021
 }
 
 #[test]
@@ -259,14 +265,14 @@ fn sliced_a_knife_pushed_into_a_tomato_and_the_halves_inherit_its_states() {
     let knife = knife(&mut world, v(-1.0, 0.0, z));
     press(&mut world, knife, 15.0, 30);
     assert!(world.state(tomato, Predicate::Sliced));
-    let [a, b] = world.halves(tomato).unwrap();
+    let [a, b] = world.bodies().object(tomato).replaced_by.unwrap();
     assert!(
         world.state(a, Predicate::Cooked) && world.state(b, Predicate::Cooked),
         "halves inherit states"
     );
     assert!(!world.state(knife, Predicate::Sliced));
     settle(&mut world, 1.0);
-    assert!(world.core().ontop(a, table) || world.core().ontop(b, table));
+    assert!(world.relations().ontop(a, table) || world.relations().ontop(b, table));
     assert!(world.set_state(tomato, Predicate::Sliced, false).is_err());
 }
 
@@ -280,7 +286,7 @@ fn knife_laid_on_a_tomato_and_pushed(push: f32) -> bool {
     settle(&mut world, 1.0);
     let z = laid_on(&world, tomato);
     let knife = knife(&mut world, v(-1.0, 0.0, z));
-    let mass = world.core().mass(knife);
+    let mass = world.bodies().mass(knife);
     assert!((0.05..=0.3).contains(&mass), "a knife of {mass} kg");
     settle(&mut world, 2.0);
     assert!(
@@ -312,9 +318,9 @@ fn cooked_strawberry_when_its_halves_are_cooked_on_the_stove() {
     let berry = sliceable_apple(&mut world, "strawberry_1", v(-1.0, 0.0, 1.0));
     settle(&mut world, 1.0);
     world.set_state(berry, Predicate::Sliced, true).unwrap();
-    let [a, b] = world.halves(berry).unwrap();
+    let [a, b] = world.bodies().object(berry).replaced_by.unwrap();
     settle(&mut world, 1.0);
-    assert!(world.core().ontop(a, stove) && world.core().ontop(b, stove));
+    assert!(world.relations().ontop(a, stove) && world.relations().ontop(b, stove));
     assert!(!world.state(berry, Predicate::Cooked));
     world.set_state(stove, Predicate::ToggledOn, true).unwrap();
     // The rule heats the halves, which stand on the burner; the whole is gone.
@@ -337,22 +343,22 @@ fn open_by_a_motor_driving_the_door() {
     let fridge = fridge(&mut world, -2.0, 0.0);
     settle(&mut world, 0.5);
     world
-        .core_mut()
-        .drive_joint(fridge, 0, Drive::velocity(1.0, 100.0, 1000.0))
+        .joints_mut()
+        .drive(fridge, 0, Drive::velocity(1.0, 100.0, 1000.0))
         .unwrap();
     settle(&mut world, 1.0);
     assert!(
         world.state(fridge, Predicate::Open),
         "{}",
-        world.core().joint_position(fridge, 0)
+        world.joints().position(fridge, 0)
     );
     // Released, the damped door coasts on but does not swing shut: nothing pulls it closed.
-    world.core_mut().release_joint(fridge, 0).unwrap();
-    let opened = world.core().joint_position(fridge, 0);
+    world.joints_mut().release(fridge, 0).unwrap();
+    let opened = world.joints().position(fridge, 0);
     settle(&mut world, 2.0);
-    assert!(world.core().joint_position(fridge, 0) >= opened - 0.01);
+    assert!(world.joints().position(fridge, 0) >= opened - 0.01);
     assert!(
-        world.core().joint_position(fridge, 0) <= 2.0 + 0.05,
+        world.joints().position(fridge, 0) <= 2.0 + 0.05,
         "the joint limit holds"
     );
 }
@@ -397,7 +403,10 @@ fn cooked_in_a_microwave_only_when_on_closed_and_inside() {
     let inside = sliceable_apple(&mut world, "apple_1", v(-2.0, 0.0, 1.0));
     let outside = sliceable_apple(&mut world, "apple_2", v(-2.0, -0.5, 0.05));
     settle(&mut world, 1.0);
-    assert!(world.core().inside(inside, microwave) && !world.core().inside(outside, microwave));
+    assert!(
+        world.relations().inside(inside, microwave)
+            && !world.relations().inside(outside, microwave)
+    );
     // Off: nothing.
     settle(&mut world, 3.0);
     assert!(world.temperature(inside) < 24.0);
@@ -424,13 +433,13 @@ fn open_state_survives_teleporting_the_object_with_its_door() {
     let mut world = World::default();
     two_room_floor(&mut world);
     let fridge_id = fridge(&mut world, -2.0, 0.0);
-    world.set_joint_position(fridge_id, 0, 0.8).unwrap();
-    let before = world.core().joint_position(fridge_id, 0);
-    let mut pose = world.pose(fridge_id);
+    world.joints_mut().set_position(fridge_id, 0, 0.8).unwrap();
+    let before = world.joints().position(fridge_id, 0);
+    let mut pose = world.bodies().pose(fridge_id);
     pose.translation.x += 1.0;
-    world.set_pose(fridge_id, pose).unwrap();
+    world.bodies_mut().set_pose(fridge_id, pose).unwrap();
     assert!(
-        (world.core().joint_position(fridge_id, 0) - before).abs() < 1e-4,
+        (world.joints().position(fridge_id, 0) - before).abs() < 1e-4,
         "the door moved with the body"
     );
     settle(&mut world, 1.0);
@@ -502,12 +511,12 @@ fn dusty_lid_keeps_its_dust_when_opened() {
     let chest = chest(&mut world);
     world.set_state(chest, Predicate::Dusty, true).unwrap();
     let closed = world.particle_positions(chest, Predicate::Dusty);
-    let lid_top = world.aabb(chest).maxs.z;
+    let lid_top = world.bodies().aabb(chest).maxs.z;
     assert!(
         closed.iter().all(|p| (p.z - lid_top).abs() < 1e-3),
         "on the lid"
     );
-    world.set_joint_position(chest, 0, 1.5).unwrap();
+    world.joints_mut().set_position(chest, 0, 1.5).unwrap();
     assert!(world.state(chest, Predicate::Open));
     let opened = world.particle_positions(chest, Predicate::Dusty);
     assert_eq!(opened.len(), closed.len());
@@ -550,8 +559,8 @@ fn sliced_halves_keep_the_whole_s_look_and_friction() {
     let red = world.add(spec).unwrap();
     world.set_state(red, Predicate::Sliced, true).unwrap();
     world.set_state(tomato, Predicate::Sliced, true).unwrap();
-    for half in world.halves(red).unwrap() {
-        let o = world.object(half);
+    for half in world.bodies().object(red).replaced_by.unwrap() {
+        let o = world.bodies().object(half);
         assert_eq!(o.visual, look);
         assert_eq!((o.friction, o.angular_damping), (1.1, 0.3));
     }
@@ -575,10 +584,10 @@ fn object_state_round_trips_every_state_into_a_fresh_world() {
     world.set_state(plate, Predicate::Perished, true).ok();
     settle(&mut world, 1.0);
     let (mut copy, ..) = build();
-    for (id, _) in world.objects() {
+    for (id, _) in world.bodies().objects() {
         copy.set_object_state(id, &world.object_state(id)).unwrap();
     }
-    for (id, _) in world.objects() {
+    for (id, _) in world.bodies().objects() {
         assert_eq!(copy.object_state(id), world.object_state(id));
         assert_eq!(
             copy.temperature(id).to_bits(),

@@ -32,16 +32,16 @@ fn ontop_inside_under_and_onfloor_placements_hold_after_settling() {
         .place(floor, Relation::OnFloor, living, &mut rng)
         .unwrap();
     assert!(
-        world.core().ontop(on, table)
-            && world.core().inside(inside, bin)
-            && world.core().under(under, table)
+        world.relations().ontop(on, table)
+            && world.relations().inside(inside, bin)
+            && world.relations().under(under, table)
     );
-    assert!(world.core().onfloor(floor, living) && !world.core().onfloor(floor, kitchen));
+    assert!(world.relations().onfloor(floor, living) && !world.relations().onfloor(floor, kitchen));
     assert!(world.settle(300), "the world comes to rest");
-    assert!(world.core().ontop(on, table));
-    assert!(world.core().inside(inside, bin));
-    assert!(world.core().under(under, table));
-    assert!(world.core().onfloor(floor, living));
+    assert!(world.relations().ontop(on, table));
+    assert!(world.relations().inside(inside, bin));
+    assert!(world.relations().under(under, table));
+    assert!(world.relations().onfloor(floor, living));
 }
 
 #[test]
@@ -71,7 +71,7 @@ fn an_impossible_placement_is_a_clear_error_and_the_object_stays() {
     two_room_floor(&mut world);
     let bin = open_box(&mut world, 1.5, 1.5);
     let table = table(&mut world, -1.0, 0.0);
-    let before = world.pose(table);
+    let before = world.bodies().pose(table);
     let mut rng = ChaCha8Rng::seed_from_u64(3);
     // A table cannot go inside a 0.5 m bin.
     let err = world
@@ -79,7 +79,7 @@ fn an_impossible_placement_is_a_clear_error_and_the_object_stays() {
         .unwrap_err();
     let expected = format!("could not place table_1 inside bin_1 in {PLACEMENT_ATTEMPTS} attempts");
     assert!(err.to_string().starts_with(&expected), "{err}");
-    assert_eq!(world.pose(table), before);
+    assert_eq!(world.bodies().pose(table), before);
 }
 
 #[test]
@@ -98,14 +98,14 @@ fn a_joint_placement_satisfies_every_relation_or_fails_naming_them_all() {
             &mut rng,
         )
         .unwrap();
-    assert!(world.core().under(shoe, table) && world.core().onfloor(shoe, living));
+    assert!(world.relations().under(shoe, table) && world.relations().onfloor(shoe, living));
     assert!(world.settle(300));
-    assert!(world.core().under(shoe, table) && world.core().onfloor(shoe, living));
-    assert!(!world.core().onfloor(shoe, kitchen));
+    assert!(world.relations().under(shoe, table) && world.relations().onfloor(shoe, living));
+    assert!(!world.relations().onfloor(shoe, kitchen));
 
     // Under a table wholly in the kitchen and on the living room's floor cannot both hold.
     let far = common::table(&mut world, -2.0, 2.0);
-    let before = world.pose(shoe);
+    let before = world.bodies().pose(shoe);
     let err = world
         .place_jointly(
             shoe,
@@ -118,7 +118,7 @@ fn a_joint_placement_satisfies_every_relation_or_fails_naming_them_all() {
             .starts_with("could not place apple_1 under table_1 and onfloor floor_living"),
         "{err}"
     );
-    assert_eq!(world.pose(shoe), before);
+    assert_eq!(world.bodies().pose(shoe), before);
 }
 
 #[test]
@@ -137,13 +137,13 @@ fn nextto_places_beside_the_target_on_the_same_surface() {
             &mut rng,
         )
         .unwrap();
-    assert!(world.core().nextto(b, a) && world.core().ontop(b, table));
+    assert!(world.relations().nextto(b, a) && world.relations().ontop(b, table));
     // Beside the table, on the floor.
     let c = apple(&mut world, "apple_3", v(1.0, 4.0, 0.1));
     world.place(c, Relation::NextTo, table, &mut rng).unwrap();
-    assert!(world.core().nextto(c, table) && !world.core().ontop(c, table));
+    assert!(world.relations().nextto(c, table) && !world.relations().ontop(c, table));
     assert!(world.settle(300));
-    assert!(world.core().nextto(b, a) && world.core().nextto(c, table));
+    assert!(world.relations().nextto(b, a) && world.relations().nextto(c, table));
 }
 
 #[test]
@@ -156,20 +156,20 @@ fn a_sliced_apple_is_placed_inside_a_bin_as_one_piece() {
     settle(&mut world, 1.0);
     world.set_state(apple, Predicate::Sliced, true).unwrap();
     settle(&mut world, 1.0);
-    let [a, b] = world.halves(apple).unwrap();
-    let apart = world.pose(a).translation - world.pose(b).translation;
+    let [a, b] = world.bodies().object(apple).replaced_by.unwrap();
+    let apart = world.bodies().pose(a).translation - world.bodies().pose(b).translation;
     world
         .place(apple, Relation::Inside, bin, &mut seeded(3))
         .unwrap();
     assert!(
-        world.core().inside(a, bin) && world.core().inside(b, bin),
+        world.relations().inside(a, bin) && world.relations().inside(b, bin),
         "both halves moved"
     );
-    assert!(world.core().inside(apple, bin));
-    let moved = world.pose(a).translation - world.pose(b).translation;
+    assert!(world.relations().inside(apple, bin));
+    let moved = world.bodies().pose(a).translation - world.bodies().pose(b).translation;
     assert!(
         (moved.length() - apart.length()).abs() < 1e-4,
         "the halves keep their distance"
     );
-    assert!(!world.core().ontop(a, table) && !world.core().ontop(b, table));
+    assert!(!world.relations().ontop(a, table) && !world.relations().ontop(b, table));
 }

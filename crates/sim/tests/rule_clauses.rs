@@ -26,13 +26,13 @@ fn fraction_within(inner: &Aabb, outer: &Aabb) -> f32 {
 
 /// On how many of the three axes rays from the centre of `a`'s box hit `b` in both directions.
 fn axes_surrounded(world: &World, a: ObjectId, b: ObjectId) -> usize {
-    let center = world.aabb(a).center();
+    let center = world.bodies().aabb(a).center();
     let reach = 10.0;
     [Vector::X, Vector::Y, Vector::Z]
         .into_iter()
         .filter(|&axis| {
-            world.core().ray_hits(b, center, axis, reach)
-                && world.core().ray_hits(b, center, -axis, reach)
+            world.relations().ray_hits(b, center, axis, reach)
+                && world.relations().ray_hits(b, center, -axis, reach)
         })
         .count()
 }
@@ -96,7 +96,7 @@ fn wiper(world: &mut World, length: f32, width: f32, skirt: f32, at: Vector) -> 
 /// Moves a kinematic body to `at` (unrotated) during the next step, and takes the step.
 fn drive_to(world: &mut World, body: ObjectId, at: Vector) {
     world
-        .core_mut()
+        .bodies_mut()
         .set_kinematic_target(BodyRef::from(body), Pose::from_translation(at))
         .unwrap();
     world.step();
@@ -131,7 +131,7 @@ fn inside_needs_half_of_the_box_within_a_stick_leaning_out_of_a_bin_is_not_insid
     let apple = apple(&mut world, "apple_1", v(1.0, 1.15, 0.1));
     settle(&mut world, 2.0);
 
-    let (own, container) = (world.aabb(stick), world.aabb(bin));
+    let (own, container) = (world.bodies().aabb(stick), world.bodies().aabb(bin));
     assert!(
         own.maxs.z > 0.6 && own.maxs.x > 1.45,
         "the stick still leans out of the bin: {own:?}"
@@ -146,10 +146,13 @@ fn inside_needs_half_of_the_box_within_a_stick_leaning_out_of_a_bin_is_not_insid
     );
     let within = fraction_within(&own, &container);
     assert!(within < 0.45, "{within} of the stick's box is in the bin's");
-    assert!(!world.core().inside(stick, bin));
+    assert!(!world.relations().inside(stick, bin));
 
-    assert!(fraction_within(&world.aabb(apple), &container) > 0.99);
-    assert!(world.core().inside(apple, bin), "the control is inside");
+    assert!(fraction_within(&world.bodies().aabb(apple), &container) > 0.99);
+    assert!(
+        world.relations().inside(apple, bin),
+        "the control is inside"
+    );
 }
 
 /// A trough: a bottom and two walls at ±x, open at both ends and on top. An apple lying in it has
@@ -176,8 +179,8 @@ fn inside_needs_rays_to_hit_on_two_axes_an_apple_in_an_open_ended_trough_is_not_
     let in_bin = apple(&mut world, "apple_2", v(2.0, 1.0, 0.1));
     settle(&mut world, 2.0);
 
-    let own = world.aabb(in_trough);
-    let container = world.aabb(trough);
+    let own = world.bodies().aabb(in_trough);
+    let container = world.bodies().aabb(trough);
     assert!(container.contains_local_point(own.center()));
     assert!(fraction_within(&own, &container) > 0.99, "wholly within");
     assert_eq!(
@@ -185,10 +188,13 @@ fn inside_needs_rays_to_hit_on_two_axes_an_apple_in_an_open_ended_trough_is_not_
         1,
         "the walls surround it along x only"
     );
-    assert!(!world.core().inside(in_trough, trough));
+    assert!(!world.relations().inside(in_trough, trough));
 
     assert!(axes_surrounded(&world, in_bin, bin) >= 2);
-    assert!(world.core().inside(in_bin, bin), "the control is inside");
+    assert!(
+        world.relations().inside(in_bin, bin),
+        "the control is inside"
+    );
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -220,23 +226,23 @@ fn under_is_false_when_the_ray_down_also_hits_a_book_between_two_shelf_boards() 
     let ball = apple(&mut world, "apple_1", v(-1.0, 0.1, 0.1));
     settle(&mut world, 2.0);
 
-    let b = world.aabb(book);
+    let b = world.bodies().aabb(book);
     let (top, bottom) = (
         v(b.center().x, b.center().y, b.maxs.z),
         v(b.center().x, b.center().y, b.mins.z),
     );
     assert!(
-        world.core().touching(book, shelf) && (b.mins.z - 0.31).abs() < 0.005,
+        world.relations().touching(book, shelf) && (b.mins.z - 0.31).abs() < 0.005,
         "the book stands on the lower board: {b:?}"
     );
     assert!(
-        world.core().ray_hits(shelf, top, Vector::Z, 5.0),
+        world.relations().ray_hits(shelf, top, Vector::Z, 5.0),
         "the upper board is above the book"
     );
-    assert!(world.core().ray_hits(shelf, bottom, -Vector::Z, 5.0));
-    assert!(!world.core().under(book, shelf));
+    assert!(world.relations().ray_hits(shelf, bottom, -Vector::Z, 5.0));
+    assert!(!world.relations().under(book, shelf));
 
-    assert!(world.core().under(ball, table), "the control is under");
+    assert!(world.relations().under(ball, table), "the control is under");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -264,7 +270,7 @@ fn nextto_needs_a_horizontal_ray_a_cube_on_a_step_beside_another_is_not_nextto()
     let level = block(&mut world, "cube_3", half, v(0.89, -2.0, 0.051));
     settle(&mut world, 1.0);
 
-    let (a, b) = (world.aabb(low), world.aabb(high));
+    let (a, b) = (world.bodies().aabb(low), world.bodies().aabb(high));
     let gap = (a.mins - b.maxs)
         .max(b.mins - a.maxs)
         .max(Vector::ZERO)
@@ -279,9 +285,12 @@ fn nextto_needs_a_horizontal_ray_a_cube_on_a_step_beside_another_is_not_nextto()
         a.center().z < b.mins.z && b.center().z > a.maxs.z,
         "each centre is level with nothing of the other"
     );
-    assert!(!world.core().nextto(low, high) && !world.core().nextto(high, low));
+    assert!(!world.relations().nextto(low, high) && !world.relations().nextto(high, low));
 
-    assert!(world.core().nextto(low, level), "the control is next to");
+    assert!(
+        world.relations().nextto(low, level),
+        "the control is next to"
+    );
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -300,7 +309,7 @@ fn wipe_down(category: &str, threshold_num: usize, threshold_den: usize) {
         .ability(Ability::Dustyable, &[]);
     spec.pose = Pose::from_parts(v(0.0, 0.0, 0.5), Rotation::from_rotation_z(turn));
     let slab = world.add(spec).unwrap();
-    let bounds = world.aabb(slab);
+    let bounds = world.bodies().aabb(slab);
     let (top, y) = (bounds.maxs.z, bounds.center().y);
     // The skirts hang 1 cm clear of the slab's sides, down past its bottom, so the wiper's
     // box covers every particle on the top and sides at the x it has reached.
@@ -334,7 +343,7 @@ fn wipe_down(category: &str, threshold_num: usize, threshold_den: usize) {
             continue; // the pad would not yet lie on the slab
         }
         drive_to(&mut world, wiper, v(edge, y, pad_z));
-        assert!(world.core().touching(wiper, slab));
+        assert!(world.relations().touching(wiper, slab));
         let remaining = world.particle_positions(slab, Predicate::Dusty).len();
         assert_eq!(remaining, n - k, "wiped up to x = {cut}");
         let dirty = remaining * threshold_den > threshold_num * n;
@@ -377,12 +386,12 @@ fn dusty_cleaning_needs_the_tool_to_touch_not_just_to_be_near() {
     world.set_state(plate, Predicate::Dusty, true).unwrap();
     let n = world.particle_positions(plate, Predicate::Dusty).len();
     assert!(n >= 5);
-    let top = world.aabb(plate).maxs.z;
+    let top = world.bodies().aabb(plate).maxs.z;
     let above = |gap: f32| v(-1.0 + 0.15, 0.0, top + gap);
     let wiper = wiper(&mut world, 0.3, 0.3, 0.02, above(0.007));
     drive_to(&mut world, wiper, above(0.007));
 
-    let reach = world.aabb(wiper).loosened(WIPE_MARGIN);
+    let reach = world.bodies().aabb(wiper).loosened(WIPE_MARGIN);
     assert!(
         world
             .particle_positions(plate, Predicate::Dusty)
@@ -390,8 +399,8 @@ fn dusty_cleaning_needs_the_tool_to_touch_not_just_to_be_near() {
             .all(|&p| reach.contains_local_point(p)),
         "every particle is within the wiper's reach"
     );
-    assert!(!world.core().touching(wiper, plate));
-    assert!(world.pose(wiper).translation.z - top > TOUCH_DISTANCE + 0.001);
+    assert!(!world.relations().touching(wiper, plate));
+    assert!(world.bodies().pose(wiper).translation.z - top > TOUCH_DISTANCE + 0.001);
     for _ in 0..30 {
         drive_to(&mut world, wiper, above(0.007));
     }
@@ -399,7 +408,7 @@ fn dusty_cleaning_needs_the_tool_to_touch_not_just_to_be_near() {
     assert!(world.state(plate, Predicate::Dusty));
 
     drive_to(&mut world, wiper, above(0.001));
-    assert!(world.core().touching(wiper, plate));
+    assert!(world.relations().touching(wiper, plate));
     assert_eq!(world.particle_positions(plate, Predicate::Dusty).len(), 0);
     assert!(!world.state(plate, Predicate::Dusty));
 }
@@ -420,7 +429,10 @@ fn soaked_only_by_drops_a_rag_in_a_sink_stays_dry_while_the_tap_is_off() {
     world.set_state(sink, Predicate::ToggledOn, true).unwrap();
     world.set_state(sink, Predicate::ToggledOn, false).unwrap();
     settle(&mut world, 1.0);
-    assert!(world.core().touching(wet, sink), "the rag lies in the sink");
+    assert!(
+        world.relations().touching(wet, sink),
+        "the rag lies in the sink"
+    );
     for _ in 0..150 {
         world.step();
         assert!(world.drops().is_empty(), "a tap that is off emits nothing");
@@ -458,10 +470,10 @@ struct ForceProbe {
 
 impl ForceProbe {
     fn read(&mut self, world: &World) {
-        let dt = STEP_SECONDS / world.core().substeps().count() as f32;
+        let dt = STEP_SECONDS / world.bodies().substeps().count() as f32;
         let force: f32 = world
-            .core()
-            .object_contacts(self.knife)
+            .contacts()
+            .of_object(self.knife)
             .iter()
             .filter(|c| c.other.map(|b| b.object) == Some(self.tomato))
             .map(|c| c.impulse / dt)
@@ -475,10 +487,12 @@ impl StepHooks for ForceProbe {
         if substep > 0 {
             self.read(world);
         }
-        if substep == 0 && self.push != Vector::ZERO && world.core().object(self.knife).is_present()
+        if substep == 0
+            && self.push != Vector::ZERO
+            && world.bodies().object(self.knife).is_present()
         {
             world
-                .core_mut()
+                .bodies_mut()
                 .apply_force(BodyRef::from(self.knife), self.push)
                 .unwrap();
         }
@@ -509,7 +523,7 @@ fn sliced_only_above_ten_newtons_a_resting_knife_does_not_slice_a_pushed_one_doe
     spec.density = 900.0;
     let tomato = world.add(spec).unwrap();
     settle(&mut world, 1.0);
-    let top = world.aabb(tomato).maxs.z;
+    let top = world.bodies().aabb(tomato).maxs.z;
     // A blade 20 × 3 cm, 4 mm thick, of steel, lying flat a hair above the tomato.
     let mut spec = ObjectSpec::new(
         "knife_1",
@@ -520,7 +534,7 @@ fn sliced_only_above_ten_newtons_a_resting_knife_does_not_slice_a_pushed_one_doe
     .ability(Ability::Slicer, &[]);
     spec.density = 7800.0;
     let knife = world.add(spec).unwrap();
-    let mass = world.core().mass(knife);
+    let mass = world.bodies().mass(knife);
     assert!((0.05..=0.3).contains(&mass), "{mass} kg");
     // Well below iGibson's 10 N (not read from the world's constant, which a break could move).
     let weight = mass * 9.81;
@@ -536,7 +550,7 @@ fn sliced_only_above_ten_newtons_a_resting_knife_does_not_slice_a_pushed_one_doe
         world.step_with(&mut probe);
     }
     assert!(
-        world.core().ontop(knife, tomato),
+        world.relations().ontop(knife, tomato),
         "the knife rests on the tomato"
     );
     assert!(
@@ -624,23 +638,23 @@ fn busy_kitchen() -> Kitchen {
 /// turned on at its step.
 fn kitchen_step(kitchen: &mut Kitchen) {
     let world = &mut kitchen.world;
-    if world.steps() == LATE_TAP_STEP {
+    if world.bodies().steps() == LATE_TAP_STEP {
         world
             .set_state(kitchen.late_sink, Predicate::ToggledOn, true)
             .unwrap();
     }
     let sponge = BodyRef::from(kitchen.sponge);
-    let t = world.steps() as f32 * STEP_SECONDS;
+    let t = world.bodies().steps() as f32 * STEP_SECONDS;
     let target = v(0.85 + 0.08 * t, 0.02 * (3.0 * t).sin(), 0.0);
-    let at = world.pose(kitchen.sponge).translation;
-    let vel = world.core().velocity(sponge).unwrap().linear;
+    let at = world.bodies().pose(kitchen.sponge).translation;
+    let vel = world.bodies().velocity(sponge).unwrap().linear;
     let (k, c) = (8.0, 0.6);
     let force = v(
         k * (target.x - at.x) - c * vel.x,
         k * (target.y - at.y) - c * vel.y,
         0.0,
     );
-    world.core_mut().apply_force(sponge, force).unwrap();
+    world.bodies_mut().apply_force(sponge, force).unwrap();
     world.step();
 }
 
@@ -653,8 +667,8 @@ fn digest(world: &World) -> u64 {
             x.to_bits().hash(h);
         }
     };
-    for (id, _) in world.objects() {
-        let pose = world.pose(id);
+    for (id, _) in world.bodies().objects() {
+        let pose = world.bodies().pose(id);
         bits(&mut h, pose.translation);
         for q in pose.rotation.to_array() {
             q.to_bits().hash(&mut h);
@@ -675,7 +689,7 @@ fn digest(world: &World) -> u64 {
     for d in drops {
         bits(&mut h, d);
     }
-    world.steps().hash(&mut h);
+    world.bodies().steps().hash(&mut h);
     h.finish()
 }
 
@@ -725,6 +739,6 @@ fn snapshot_determinism_with_drops_soaking_and_wiping_in_the_digest() {
         first.world.state(first.late_rag, Predicate::Soaked),
         "the late rag got soaked after the snapshot"
     );
-    let moved = first.world.pose(first.sponge).translation.x - 0.85;
+    let moved = first.world.bodies().pose(first.sponge).translation.x - 0.85;
     assert!(moved > 0.05, "the sponge moved {moved} m");
 }

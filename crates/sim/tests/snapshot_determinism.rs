@@ -31,39 +31,47 @@ fn snapshot_determinism_two_runs_and_a_resumed_run_are_bit_identical() {
     run(&mut first, 500);
     run(&mut second, 500);
     assert_eq!(
-        first.core().motion_bits(),
-        second.core().motion_bits(),
+        first.bodies().motion_bits(),
+        second.bodies().motion_bits(),
         "same steps, same state"
     );
     let midway = first.snapshot();
 
     run(&mut first, 500);
     run(&mut second, 500);
-    assert_eq!(first.core().motion_bits(), second.core().motion_bits());
+    assert_eq!(first.bodies().motion_bits(), second.bodies().motion_bits());
 
     // Resume from the midway snapshot in a fresh world, and by rewinding the first one.
     let mut resumed = falling_pile();
     resumed.restore(&midway);
     run(&mut resumed, 500);
     assert_eq!(
-        resumed.core().motion_bits(),
-        first.core().motion_bits(),
+        resumed.bodies().motion_bits(),
+        first.bodies().motion_bits(),
         "resumed from a snapshot"
     );
-    let end = first.core().motion_bits();
+    let end = first.bodies().motion_bits();
     first.restore(&midway);
-    assert_eq!(first.steps(), 500);
+    assert_eq!(first.bodies().steps(), 500);
     run(&mut first, 500);
-    assert_eq!(first.core().motion_bits(), end, "rewound and replayed");
+    assert_eq!(first.bodies().motion_bits(), end, "rewound and replayed");
 
     // The pile really moved and came to rest.
-    let moved = (0..first.objects().len())
-        .filter(|&i| first.pose(behavior_sim::ObjectId(i as u32)).translation.z < 0.5)
+    let moved = (0..first.bodies().objects().len())
+        .filter(|&i| {
+            first
+                .bodies()
+                .pose(behavior_sim::ObjectId(i as u32))
+                .translation
+                .z
+                < 0.5
+        })
         .count();
     assert!(moved > 40, "only {moved} objects fell");
     let asleep = first
+        .bodies()
         .objects()
-        .filter(|(id, o)| !o.is_fixed() && first.core().is_sleeping(*id))
+        .filter(|(id, o)| !o.is_fixed() && first.bodies().is_sleeping(*id))
         .count();
     assert!(
         asleep > 40,
@@ -96,7 +104,7 @@ fn snapshot_determinism_covers_temperatures_water_and_particles() {
             .flat_map(|d| [d.x.to_bits(), d.y.to_bits(), d.z.to_bits()])
             .collect();
         (
-            world.core().motion_bits(),
+            world.bodies().motion_bits(),
             world.temperature(apple).to_bits(),
             world.state(rag, Predicate::Soaked),
             drops,

@@ -24,9 +24,9 @@ fn busy_scene() -> World {
     for i in 0..30 {
         things.push(world.add(column_thing(i, 0.5, 0.07)).unwrap());
     }
-    let glued_at = world.pose(things[0]).translation;
+    let glued_at = world.bodies().pose(things[0]).translation;
     world
-        .core_mut()
+        .attachments_mut()
         .attach(AttachmentSpec {
             holder: things[0].into(),
             held: things[4].into(),
@@ -38,14 +38,14 @@ fn busy_scene() -> World {
     let arm = multibody_arm(&mut world, -2.0, 2.0);
     for (k, target) in [0.5, -0.3, 0.4].into_iter().enumerate() {
         world
-            .core_mut()
-            .drive_joint(arm, k, Drive::position(target, 2000.0, 100.0, 500.0))
+            .joints_mut()
+            .drive(arm, k, Drive::position(target, 2000.0, 100.0, 500.0))
             .unwrap();
     }
     let fridge = fridge(&mut world, -3.0, -2.0);
     world
-        .core_mut()
-        .drive_joint(fridge, 0, Drive::velocity(0.8, 50.0, 50.0))
+        .joints_mut()
+        .drive(fridge, 0, Drive::velocity(0.8, 50.0, 50.0))
         .unwrap();
     let stove = stove(&mut world, -1.0, 0.0);
     sliceable_apple(&mut world, "apple_1", v(-1.0, 0.0, 1.0));
@@ -73,10 +73,11 @@ fn digest(world: &World) -> (Vec<u32>, Vec<u32>, String) {
         .flat_map(|d| [d.x.to_bits(), d.y.to_bits(), d.z.to_bits()])
         .collect();
     let states = world
+        .bodies()
         .objects()
         .map(|(id, _)| format!("{:?}", world.object_state(id)))
         .collect();
-    (world.core().motion_bits(), drops, states)
+    (world.bodies().motion_bits(), drops, states)
 }
 
 #[test]
@@ -85,11 +86,12 @@ fn world_bytes_a_world_loaded_mid_motion_continues_bit_identically() {
     run(&mut original, 25);
     // Mid-motion: bodies fall and collide, the arm swings, the door opens, drops fly.
     let moving = original
+        .bodies()
         .objects()
         .filter(|(id, o)| {
             !o.is_fixed()
                 && original
-                    .core()
+                    .bodies()
                     .velocity((*id).into())
                     .unwrap()
                     .linear
@@ -100,8 +102,8 @@ fn world_bytes_a_world_loaded_mid_motion_continues_bit_identically() {
     assert!(moving >= 10, "only {moving} objects move");
     assert!(!original.drops().is_empty());
     let door = original
-        .core()
-        .joint_state(original.object_named("fridge_1").unwrap(), 0);
+        .joints()
+        .state(original.bodies().object_named("fridge_1").unwrap(), 0);
     assert!(door.unwrap().velocity.abs() > 0.01);
 
     let bytes = original.to_bytes();
@@ -114,8 +116,8 @@ fn world_bytes_a_world_loaded_mid_motion_continues_bit_identically() {
         loaded.step();
         cloned.step();
         assert_eq!(
-            loaded.core().motion_bits(),
-            original.core().motion_bits(),
+            loaded.bodies().motion_bits(),
+            original.bodies().motion_bits(),
             "step {step} after loading"
         );
     }
@@ -123,15 +125,15 @@ fn world_bytes_a_world_loaded_mid_motion_continues_bit_identically() {
     assert_eq!(digest(&cloned), digest(&original));
     // The full states agree, not only the digests.
     assert_eq!(loaded.to_bytes(), original.to_bytes());
-    assert!(original.temperature(original.object_named("apple_1").unwrap()) > 30.0);
+    assert!(original.temperature(original.bodies().object_named("apple_1").unwrap()) > 30.0);
 
     // Rebuilt caches answer as the original's: rays see the same thing.
     let ray = (v(0.5, 0.5, 3.0), v(0.0, 0.0, -1.0));
     let filter = QueryFilter::default();
     assert_eq!(
-        loaded.core().cast_ray(ray.0, ray.1, 5.0, &filter).unwrap(),
+        loaded.query().cast_ray(ray.0, ray.1, 5.0, &filter).unwrap(),
         original
-            .core()
+            .query()
             .cast_ray(ray.0, ray.1, 5.0, &filter)
             .unwrap()
     );
@@ -146,9 +148,9 @@ fn world_bytes_a_loaded_world_saves_to_the_same_bytes() {
     let mut world = busy_scene();
     run(&mut world, 25);
     // Relations asked before saving are memoized; they are saved too, in a fixed order.
-    let apple = world.object_named("apple_1").unwrap();
-    let stove = world.object_named("stove_1").unwrap();
-    let _ = world.core().ontop(apple, stove);
+    let apple = world.bodies().object_named("apple_1").unwrap();
+    let stove = world.bodies().object_named("stove_1").unwrap();
+    let _ = world.relations().ontop(apple, stove);
     let bytes = world.to_bytes();
     assert_eq!(world.to_bytes(), bytes, "saving twice");
     let loaded = World::from_bytes(&bytes).unwrap();
@@ -271,11 +273,11 @@ fn world_bytes_public_ids_serialize() {
 fn world_bytes_changes_made_between_steps_are_saved_too() {
     let mut original = busy_scene();
     run(&mut original, 40);
-    let a = original.object_named("thing_10").unwrap();
-    let b = original.object_named("thing_11").unwrap();
-    let at = original.pose(a).translation;
+    let a = original.bodies().object_named("thing_10").unwrap();
+    let b = original.bodies().object_named("thing_11").unwrap();
+    let at = original.bodies().pose(a).translation;
     original
-        .core_mut()
+        .attachments_mut()
         .attach(AttachmentSpec {
             holder: a.into(),
             held: b.into(),
@@ -284,22 +286,22 @@ fn world_bytes_changes_made_between_steps_are_saved_too() {
             max_force: 1000.0,
         })
         .unwrap();
-    let c = original.object_named("thing_20").unwrap();
-    let mut pose = original.pose(c);
+    let c = original.bodies().object_named("thing_20").unwrap();
+    let mut pose = original.bodies().pose(c);
     pose.translation.z += 0.3;
-    original.set_pose(c, pose).unwrap();
-    let fridge = original.object_named("fridge_1").unwrap();
+    original.bodies_mut().set_pose(c, pose).unwrap();
+    let fridge = original.bodies().object_named("fridge_1").unwrap();
     original
-        .core_mut()
-        .drive_joint(fridge, 0, Drive::position(0.2, 200.0, 20.0, 50.0))
+        .joints_mut()
+        .drive(fridge, 0, Drive::position(0.2, 200.0, 20.0, 50.0))
         .unwrap();
     let mut loaded = World::from_bytes(&original.to_bytes()).unwrap();
     for step in 0..60 {
         original.step();
         loaded.step();
         assert_eq!(
-            loaded.core().motion_bits(),
-            original.core().motion_bits(),
+            loaded.bodies().motion_bits(),
+            original.bodies().motion_bits(),
             "step {step} after loading"
         );
     }

@@ -87,7 +87,7 @@ impl Particles {
     /// The world's particles now.
     pub(crate) fn of(world: &World) -> Particles {
         let mut particles = Particles::default();
-        for (id, object) in world.core().objects() {
+        for (id, object) in world.bodies().objects() {
             if !object.is_present() {
                 continue;
             }
@@ -136,14 +136,13 @@ pub(crate) struct SceneView {
 
 /// The world's current parts, grouped into nodes, and the nodes' glTF file.
 pub(crate) fn describe(world: &World, models: &ModelLibrary) -> (SceneView, Vec<Node>, Vec<u8>) {
-    let core = world.core();
     let mut bodies = Vec::new();
     let mut looks = Vec::new();
     let mut nodes = Vec::new();
     let mut file = GltfWriter::new(world, GltfDetail::Viewer);
     let finishes = Finishes::of(world);
-    for (id, object) in core.objects() {
-        let parts = core.visual_parts_with(id, models);
+    for (id, object) in world.bodies().objects() {
+        let parts = world.visuals().parts_with(id, models);
         // The ghost is drawn last (if the object is drawn at all); it is a node of its own,
         // since it moves apart from the body.
         let ghosted = object.ghost.is_some() && !parts.is_empty();
@@ -201,19 +200,23 @@ pub(crate) fn describe(world: &World, models: &ModelLibrary) -> (SceneView, Vec<
 }
 
 fn present(world: &World) -> Vec<ObjectId> {
-    let core = world.core();
-    core.objects()
+    world
+        .bodies()
+        .objects()
         .filter(|(_, o)| o.is_present())
         .map(|(id, _)| id)
         .collect()
 }
 
 fn node_pose(world: &World, id: ObjectId, carrier: Carrier) -> Pose {
-    let core = world.core();
     match carrier {
-        Carrier::Link(None) => core.pose(id),
-        Carrier::Link(Some(l)) => core.link_pose(id, l),
-        Carrier::Ghost => core.object(id).ghost.map_or(core.pose(id), |g| g.pose),
+        Carrier::Link(None) => world.bodies().pose(id),
+        Carrier::Link(Some(l)) => world.bodies().link_pose(id, l),
+        Carrier::Ghost => world
+            .bodies()
+            .object(id)
+            .ghost
+            .map_or(world.bodies().pose(id), |g| g.pose),
     }
 }
 
@@ -245,7 +248,7 @@ impl SceneView {
         out.extend_from_slice(&step.to_le_bytes());
         for &(id, carrier) in &self.bodies {
             let mut values = pose_values(node_pose(world, id, carrier));
-            if !world.core().object(id).is_present() {
+            if !world.bodies().object(id).is_present() {
                 values[..3].fill(f32::NAN);
             }
             for v in values {
@@ -313,11 +316,11 @@ impl<'a> Describe<'a> {
     pub(crate) fn build(self, files: &SceneFiles, kept: usize) -> (SceneView, SceneDescription) {
         // Robots in their makers' meshes where this process has them.
         let (view, nodes, file) = describe(self.world, &behavior_robots::shared_models());
-        let core = self.world.core();
+        let bodies = self.world.bodies();
         let robot = self
             .robot
             .iter()
-            .map(|&id| core.object(id).name.clone())
+            .map(|&id| bodies.object(id).name.clone())
             .collect();
         let description = SceneDescription {
             activity: self.activity,

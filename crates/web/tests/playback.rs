@@ -22,7 +22,7 @@ fn record(path: &std::path::Path) -> Vec<[f32; 3]> {
     env.record_to(path, "", 10).unwrap();
     let body = env.robot().unwrap().objects()[0];
     let position = |env: &behavior_env::Env| {
-        let t = env.world().unwrap().core().pose(body).translation;
+        let t = env.world().unwrap().bodies().pose(body).translation;
         [t.x, t.y, t.z]
     };
     let mut positions = vec![position(&env)];

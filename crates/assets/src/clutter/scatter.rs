@@ -163,6 +163,6 @@ impl Scatter<'_, '_> {
 
 /// The area of an object's box seen from above, m².
 fn area(world: &World, id: ObjectId) -> f32 {
-    let b = world.aabb(id);
+    let b = world.bodies().aabb(id);
     (b.maxs.x - b.mins.x) * (b.maxs.y - b.mins.y)
 }

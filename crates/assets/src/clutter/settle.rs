@@ -57,7 +57,7 @@ fn rest(home: &Scene, library: &Library, placed: &mut [Placed]) -> Result<Vec<bo
     built.world.settle(SETTLE_STEPS);
     let mut kept = Vec::with_capacity(placed.len());
     for (item, &id) in placed.iter_mut().zip(&built.clutter) {
-        let pose = built.world.pose(id);
+        let pose = built.world.bodies().pose(id);
         item.plan.position = pose.translation.to_array();
         item.plan.rotation = pose.rotation.to_array();
         kept.push(at_rest(&built.world, id) && still_there(&built, item, id));
@@ -68,21 +68,23 @@ fn rest(home: &Scene, library: &Library, placed: &mut [Placed]) -> Result<Vec<bo
 /// Asleep, or so slow that only a neighbour still moving keeps it awake (a pile sleeps as a
 /// whole): it is kept, and the next round settles it again without what kept it awake.
 fn at_rest(world: &World, id: ObjectId) -> bool {
-    let core = world.core();
-    core.is_sleeping(id)
-        || core
+    world.bodies().is_sleeping(id)
+        || world
+            .bodies()
             .velocity(id.into())
             .is_ok_and(|v| v.linear.length() < RESTING_SPEED && v.angular.length() < RESTING_SPIN)
 }
 
 /// Whether a thing is still on, in or beside its furniture.
 fn still_there(built: &BuiltScene, item: &Placed, id: ObjectId) -> bool {
-    let core = built.world.core();
+    let relations = built.world.relations();
     let furniture = built.objects[item.furniture];
     match item.spot {
-        Spot::On => core.ontop(id, furniture),
-        Spot::In => core.inside(id, furniture),
-        Spot::Beside => core.nextto(id, furniture) && core.onfloor(id, built.floors[item.room]),
+        Spot::On => relations.ontop(id, furniture),
+        Spot::In => relations.inside(id, furniture),
+        Spot::Beside => {
+            relations.nextto(id, furniture) && relations.onfloor(id, built.floors[item.room])
+        }
     }
 }
 
@@ -103,8 +105,8 @@ fn watch(home: &Scene, library: &Library, placed: &[Placed]) -> Result<Vec<bool>
 
 /// Asleep, at exactly the recorded pose.
 fn unmoved(world: &World, item: &Placed, id: ObjectId) -> bool {
-    let pose = world.pose(id);
-    world.core().is_sleeping(id)
+    let pose = world.bodies().pose(id);
+    world.bodies().is_sleeping(id)
         && pose.translation.to_array() == item.plan.position
         && pose.rotation.to_array() == item.plan.rotation
 }

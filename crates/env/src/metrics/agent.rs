@@ -84,11 +84,11 @@ impl AgentMetrics {
 
 fn last_of(world: &World, part: &TrackedPart) -> Last {
     let velocity = world
-        .core()
+        .bodies()
         .velocity(BodyRef::from(part.object))
         .map_or(Vector::ZERO, |v| v.linear);
     Last {
-        position: world.pose(part.object).translation,
+        position: world.bodies().pose(part.object).translation,
         velocity,
     }
 }
@@ -97,21 +97,20 @@ fn last_of(world: &World, part: &TrackedPart) -> Last {
 fn touches(world: &World, robot: &Robot, part: &TrackedPart) -> bool {
     let own = robot.objects();
     world
-        .core()
-        .object_contacts(part.object)
+        .contacts()
+        .of_object(part.object)
         .iter()
         .any(|c| c.other.is_some_and(|b| !own.contains(&b.object)))
 }
 
 /// The force the part's actuator supplied over the step, N (see the module docs).
 fn force(world: &World, robot: &Robot, part: &TrackedPart, before: &Last, now: &Last) -> f32 {
-    let core = world.core();
     let held = (0..robot.hands())
         .filter_map(|h| robot.held(h))
         .filter(|_| part.holding)
-        .map(|id| core.total_mass(id))
+        .map(|id| world.bodies().total_mass(id))
         .sum::<f32>();
-    let mass = core.total_mass(part.object) + held;
+    let mass = world.bodies().total_mass(part.object) + held;
     let acceleration = (now.velocity - before.velocity) / STEP_SECONDS;
-    mass * (acceleration - core.gravity()).length()
+    mass * (acceleration - world.bodies().gravity()).length()
 }

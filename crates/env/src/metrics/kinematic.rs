@@ -33,21 +33,22 @@ impl Kinematic {
     /// Starts following every movable object of `world` but `ignored`.
     pub(crate) fn start(world: &World, ignored: &[ObjectId]) -> Kinematic {
         let followed = world
+            .bodies()
             .objects()
             .filter(|(id, o)| !o.is_fixed() && o.is_present() && !ignored.contains(id))
             .map(|(id, _)| {
-                let at = world.pose(id).translation;
+                let at = world.bodies().pose(id).translation;
                 Followed {
                     id,
                     start: at,
                     last: at,
-                    motion: world.core().motion(id),
+                    motion: world.bodies().motion(id),
                 }
             })
             .collect();
         Kinematic {
             followed,
-            seen: world.objects().len(),
+            seen: world.bodies().objects().len(),
             integrated: 0.0,
         }
     }
@@ -56,14 +57,13 @@ impl Kinematic {
     pub(crate) fn step(&mut self, world: &World) -> f64 {
         self.adopt_halves(world);
         let mut moved = 0.0;
-        let core = world.core();
         for f in &mut self.followed {
-            let motion = core.motion(f.id);
+            let motion = world.bodies().motion(f.id);
             if motion == f.motion {
                 continue;
             }
             f.motion = motion;
-            let now = world.pose(f.id).translation;
+            let now = world.bodies().pose(f.id).translation;
             moved += f64::from((now - f.last).length());
             f.last = now;
         }
@@ -81,15 +81,15 @@ impl Kinematic {
 
     /// Objects added since the last look that are halves of a followed whole replace it.
     fn adopt_halves(&mut self, world: &World) {
-        let count = world.objects().len();
+        let count = world.bodies().objects().len();
         if count == self.seen {
             return;
         }
         self.seen = count;
         let mut followed = Vec::with_capacity(self.followed.len() + 2);
         for f in self.followed.drain(..) {
-            match world.halves(f.id) {
-                Some(halves) if !world.object(f.id).is_present() => {
+            match world.bodies().object(f.id).replaced_by {
+                Some(halves) if !world.bodies().object(f.id).is_present() => {
                     followed.extend(halves.map(|id| Followed { id, ..f }));
                 }
                 _ => followed.push(f),
@@ -117,16 +117,16 @@ mod tests {
     #[test]
     fn moves_are_summed_per_step_integrated_and_measured_from_the_start() {
         let mut world = World::default();
-        world.core_mut().set_sleeping_allowed(false);
+        world.bodies_mut().set_sleeping_allowed(false);
         let a = block(&mut world, "a", 0.0);
         let ignored = block(&mut world, "robot", 5.0);
         let mut k = Kinematic::start(&world, &[ignored]);
         // Teleported 3-4-5 away and back halfway, with gravity off by holding it in place.
         let at = |x: f32, y: f32| Pose::from_translation(Vector::new(x, y, 2.0));
-        world.set_pose(a, at(0.3, 0.4)).unwrap();
-        world.set_pose(ignored, at(9.0, 0.0)).unwrap();
+        world.bodies_mut().set_pose(a, at(0.3, 0.4)).unwrap();
+        world.bodies_mut().set_pose(ignored, at(9.0, 0.0)).unwrap();
         let first = k.step(&world);
-        world.set_pose(a, at(0.0, 0.4)).unwrap();
+        world.bodies_mut().set_pose(a, at(0.0, 0.4)).unwrap();
         let second = k.step(&world);
         assert!((first - 0.5).abs() < 1e-6, "{first}");
         assert!((second - 0.3).abs() < 1e-6, "{second}");

@@ -86,12 +86,13 @@ impl Logical {
 }
 
 fn is_structure(world: &World, id: ObjectId) -> bool {
-    let category = &world.object(id).category;
+    let category = &world.bodies().object(id).category;
     category == WALL_SYNSET || category == FLOOR_SYNSET
 }
 
 fn floors(world: &World) -> Vec<ObjectId> {
     world
+        .bodies()
         .objects()
         .filter(|(_, o)| o.category == FLOOR_SYNSET)
         .map(|(id, _)| id)
@@ -101,6 +102,7 @@ fn floors(world: &World) -> Vec<ObjectId> {
 /// The objects pictured: present, not structure, not ignored.
 fn subjects_of(world: &World, ignored: &[ObjectId]) -> Vec<ObjectId> {
     world
+        .bodies()
         .objects()
         .filter(|(id, o)| o.is_present() && !ignored.contains(id) && !is_structure(world, *id))
         .map(|(id, _)| id)
@@ -118,7 +120,7 @@ fn picture(world: &World, ignored: &[ObjectId]) -> Vec<Picture> {
 
 /// Whether two objects' boxes overlap in plan, within the margin.
 fn overlap_in_plan(world: &World, a: ObjectId, b: ObjectId) -> bool {
-    let (a, b) = (world.aabb(a), world.aabb(b));
+    let (a, b) = (world.bodies().aabb(a), world.bodies().aabb(b));
     a.mins.x <= b.maxs.x + PLAN_MARGIN
         && b.mins.x <= a.maxs.x + PLAN_MARGIN
         && a.mins.y <= b.maxs.y + PLAN_MARGIN
@@ -126,8 +128,8 @@ fn overlap_in_plan(world: &World, a: ObjectId, b: ObjectId) -> bool {
 }
 
 fn picture_of(world: &World, id: ObjectId, others: &[ObjectId], floors: &[ObjectId]) -> Picture {
-    let core = world.core();
     let states = Predicate::UNARY_STATES.map(|p| world.state(id, p));
+    let kinematic = world.relations();
     let mut relations = Vec::new();
     for &other in others {
         if other == id || !overlap_in_plan(world, id, other) {
@@ -135,10 +137,10 @@ fn picture_of(world: &World, id: ObjectId, others: &[ObjectId], floors: &[Object
         }
         for p in RELATIONS {
             let holds = match p {
-                Predicate::OnTop => core.ontop(id, other),
-                Predicate::Inside => core.inside(id, other),
-                Predicate::Under => core.under(id, other),
-                _ => core.touching(id, other),
+                Predicate::OnTop => kinematic.ontop(id, other),
+                Predicate::Inside => kinematic.inside(id, other),
+                Predicate::Under => kinematic.under(id, other),
+                _ => kinematic.touching(id, other),
             };
             if holds {
                 relations.push((p, other));
@@ -146,7 +148,7 @@ fn picture_of(world: &World, id: ObjectId, others: &[ObjectId], floors: &[Object
         }
     }
     for &floor in floors {
-        if core.onfloor(id, floor) {
+        if kinematic.onfloor(id, floor) {
             relations.push((Predicate::OnFloor, floor));
         }
     }
@@ -214,9 +216,10 @@ mod tests {
         // Two apples go from the table to the floor; the robot walks up to the third one's side.
         for (k, &apple) in apples[..2].iter().enumerate() {
             let to = Pose::from_translation(Vector::new(1.0, -0.5 + k as f32, 0.04));
-            world.set_pose(apple, to).unwrap();
+            world.bodies_mut().set_pose(apple, to).unwrap();
         }
         world
+            .bodies_mut()
             .set_pose(robot, Pose::from_translation(Vector::new(0.8, 0.0, 0.2)))
             .unwrap();
         world.settle(200);

@@ -13,23 +13,23 @@ use sha2::{Digest, Sha256};
 /// The digest of the episode's state, as 64 hex digits.
 pub fn state_digest(world: &World, robot: &Robot, steps: u32) -> String {
     let mut hash = Sha256::new();
-    let core = world.core();
-    for (id, object) in world.objects() {
+    let all = world.bodies();
+    for (id, object) in all.objects() {
         hash.update([u8::from(object.is_present())]);
         let bodies = std::iter::once(BodyRef::from(id))
             .chain((0..object.links.len()).map(|l| BodyRef::link(id, l)));
         for body in bodies {
-            if let Ok(pose) = core.body_pose(body) {
+            if let Ok(pose) = all.body_pose(body) {
                 put(&mut hash, &pose.translation.to_array());
                 put(&mut hash, &pose.rotation.to_array());
             }
-            if let Ok(v) = core.velocity(body) {
+            if let Ok(v) = all.velocity(body) {
                 put(&mut hash, &v.linear.to_array());
                 put(&mut hash, &v.angular.to_array());
             }
         }
         let joints: Vec<f32> = (0..object.links.len())
-            .map(|l| core.joint_position(id, l))
+            .map(|l| world.joints().position(id, l))
             .collect();
         put(&mut hash, &joints);
         let state = format!("{:?}", world.object_state(id));

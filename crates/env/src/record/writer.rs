@@ -114,7 +114,11 @@ impl Recorder {
             max_steps: config.max_steps,
             checkpoint_every: checkpoint_every.max(1),
             instance: start.instance.clone(),
-            objects: world.objects().map(|(_, o)| o.name.clone()).collect(),
+            objects: world
+                .bodies()
+                .objects()
+                .map(|(_, o)| o.name.clone())
+                .collect(),
         };
         let mut recorder = Recorder {
             writer,
@@ -176,9 +180,10 @@ impl Recorder {
         };
         let step = env.steps();
         let poses: Vec<[f32; 7]> = world
+            .bodies()
             .objects()
             .map(|(id, _)| {
-                let p = world.pose(id);
+                let p = world.bodies().pose(id);
                 let (t, r) = (p.translation, p.rotation);
                 [t.x, t.y, t.z, r.x, r.y, r.z, r.w]
             })

@@ -14,6 +14,7 @@
 //! off when the tool is soaked.
 
 use crate::core::{Core, untag};
+use crate::kinematics::Relations;
 use crate::object::{Object, ObjectId, PointKind};
 use crate::states::StateError;
 use crate::states::water::Water;
@@ -70,9 +71,9 @@ impl Dirt {
     /// Two particle sets per object, each particle on a link the object has; the tools and
     /// dirtyable objects are objects.
     pub(crate) fn check_consistency(&self, core: &Core) -> Result<(), String> {
-        let n = core.objects.len();
+        let n = core.bodies.objects.len();
         let on_links = |sets: &[ParticleSet]| {
-            sets.iter().zip(&core.objects).all(|(set, object)| {
+            sets.iter().zip(&core.bodies.objects).all(|(set, object)| {
                 set.points
                     .iter()
                     .all(|p| p.link.is_none_or(|l| l < object.links.len()))
@@ -155,7 +156,7 @@ impl Dirt {
 
     pub(crate) fn is_dirty(&self, core: &Core, id: ObjectId, kind: Predicate) -> bool {
         let set = self.set(id, kind);
-        let threshold = if core.object(id).category == FLOOR_SYNSET {
+        let threshold = if core.bodies.object(id).category == FLOOR_SYNSET {
             FLOOR_CLEAN_THRESHOLD
         } else {
             CLEAN_THRESHOLD
@@ -177,7 +178,7 @@ impl Dirt {
         let points = sample_top_surface(core, id, rng);
         if points.len() < MIN_PARTICLES {
             return Err(StateError::Unsupported {
-                object: core.object(id).name.clone(),
+                object: core.bodies.object(id).name.clone(),
                 predicate: kind,
                 value: true,
                 reason: format!(
@@ -196,11 +197,12 @@ impl Dirt {
         // By index: the loop wipes this system's particles while reading its lists.
         for t in 0..self.tools.len() {
             let tool = self.tools[t];
-            let area = core.aabb(tool).loosened(WIPE_MARGIN);
+            let area = core.bodies.aabb(tool).loosened(WIPE_MARGIN);
             let face = core
+                .bodies
                 .object(tool)
                 .point(PointKind::CleaningArea)
-                .map(|p| core.pose(tool).transform_point(p));
+                .map(|p| core.bodies.pose(tool).transform_point(p));
             let wipes = |p: Vector| {
                 area.contains_local_point(p)
                     && face.is_none_or(|f| (p - f).length() <= CLEANING_REACH)
@@ -214,7 +216,7 @@ impl Dirt {
                 let dirty = self.dirtyable[d];
                 let clean = self.dust[dirty.0 as usize].points.is_empty()
                     && self.stain[dirty.0 as usize].points.is_empty();
-                if dirty == tool || clean || !core.touching(tool, dirty) {
+                if dirty == tool || clean || !Relations::new(core).touching(tool, dirty) {
                     continue;
                 }
                 let frames = Frames::of(core, dirty);
@@ -236,11 +238,11 @@ struct Frames {
 
 impl Frames {
     fn of(core: &Core, id: ObjectId) -> Frames {
-        let links = (0..core.object(id).links.len())
-            .map(|l| core.link_pose(id, l))
+        let links = (0..core.bodies.object(id).links.len())
+            .map(|l| core.bodies.link_pose(id, l))
             .collect();
         Frames {
-            body: core.pose(id),
+            body: core.bodies.pose(id),
             links,
         }
     }
@@ -278,17 +280,18 @@ fn sample_top_surface(core: &Core, id: ObjectId, rng: &mut SimRng) -> Vec<Partic
 /// Where a particle dropped at the fraction (fx, fy) of the object's footprint lands on one of
 /// its upward-facing surfaces, if it does.
 fn land(core: &Core, id: ObjectId, fx: f32, fy: f32) -> Option<Particle> {
-    let aabb = core.aabb(id);
+    let aabb = core.bodies.aabb(id);
     let x = aabb.mins.x + fx * (aabb.maxs.x - aabb.mins.x);
     let y = aabb.mins.y + fy * (aabb.maxs.y - aabb.mins.y);
     let top = Vector::new(x, y, aabb.maxs.z + 0.01);
     let ray = rapier3d::prelude::Ray::new(top, -Vector::Z);
     let range = aabb.maxs.z - aabb.mins.z + 0.02;
     let (t, link) = core
+        .bodies
         .object(id)
         .colliders
         .iter()
-        .map(|&c| &core.physics.colliders[c])
+        .map(|&c| &core.bodies.physics.colliders[c])
         .filter_map(|c| {
             c.shape()
                 .cast_ray_and_get_normal(c.position(), &ray, range, true)
@@ -296,7 +299,7 @@ fn land(core: &Core, id: ObjectId, fx: f32, fy: f32) -> Option<Particle> {
                 .map(|hit| (hit.time_of_impact, untag(c.user_data).and_then(|b| b.link)))
         })
         .min_by(|a, b| a.0.total_cmp(&b.0))?;
-    let frame = link.map_or_else(|| core.pose(id), |l| core.link_pose(id, l));
+    let frame = link.map_or_else(|| core.bodies.pose(id), |l| core.bodies.link_pose(id, l));
     let local = frame.inverse_transform_point(top - Vector::Z * t);
     Some(Particle { link, local })
 }

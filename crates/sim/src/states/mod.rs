@@ -37,6 +37,7 @@ pub(crate) mod water;
 
 use crate::World;
 use crate::core::Core;
+use crate::joints::{Joints, JointsMut};
 use crate::object::ObjectId;
 use behavior_core::rng::{SimRng, seeded};
 use behavior_core::{Ability, Predicate};
@@ -155,7 +156,7 @@ impl Systems {
     /// Makes room for a new object in every system.
     pub(crate) fn add_object(&mut self, core: &mut Core, id: ObjectId) {
         self.water.add_object(core, id);
-        let object = core.object(id);
+        let object = core.bodies.object(id);
         self.toggles.add_object(id, object);
         self.temperatures.add_object(id, object);
         self.dirt.add_object(id, object);
@@ -212,7 +213,7 @@ impl World {
     /// object's states (but `sliced`) are its halves': true when true of both, as iGibson's
     /// grouper of the two halves answers, so cooking the halves cooks the strawberry.
     pub fn state(&self, id: ObjectId, predicate: Predicate) -> bool {
-        let object = self.core.object(id);
+        let object = self.core.bodies.object(id);
         if let (Some(halves), false) = (object.replaced_by, predicate == Predicate::Sliced) {
             return halves.iter().all(|&h| self.state(h, predicate));
         }
@@ -230,7 +231,7 @@ impl World {
                 object.has(Ability::Freezable)
                     && s.temperatures.now(id) <= DEFAULT_FREEZE_TEMPERATURE
             }
-            Predicate::Open => self.core.is_open(id),
+            Predicate::Open => Joints::new(&self.core).is_open(id),
             Predicate::Soaked => s.water.is_soaked(id),
             Predicate::ToggledOn => s.toggles.is_on(id),
             Predicate::Sliced => object.replaced_by.is_some(),
@@ -242,7 +243,7 @@ impl World {
 
     /// The cook or burn temperature of an object's synset.
     fn threshold(&self, id: ObjectId, predicate: Predicate) -> f32 {
-        let object = self.core.object(id);
+        let object = self.core.bodies.object(id);
         if predicate == Predicate::Cooked {
             object.param(
                 Ability::Cookable,
@@ -285,7 +286,7 @@ impl World {
         let Some(ability) = predicate.required_ability() else {
             return Err(StateError::NotUnary { predicate });
         };
-        let object = self.core.object(id);
+        let object = self.core.bodies.object(id);
         if let (Some(halves), false) = (object.replaced_by, predicate == Predicate::Sliced) {
             // The whole is gone; its halves carry its states.
             for half in halves {
@@ -324,7 +325,9 @@ impl World {
                 let max = systems.temperatures.max(id).max(now);
                 systems.temperatures.set(id, now, max);
             }
-            Predicate::Open => self.core.set_open(id, value, &mut systems.rng)?,
+            Predicate::Open => {
+                JointsMut::new(&mut self.core).set_open(id, value, &mut systems.rng)?
+            }
             Predicate::Soaked => systems.water.set_soaked(id, value),
             Predicate::ToggledOn => systems.toggles.set(id, value),
             Predicate::Sliced => self.set_sliced(id, value)?,

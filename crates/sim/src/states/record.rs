@@ -118,7 +118,7 @@ impl World {
     }
 
     fn check_record(&self, id: ObjectId, state: &ObjectState) -> Result<(), StateError> {
-        let object = self.core.object(id);
+        let object = self.core.bodies.object(id);
         let bad = |reason: String| StateError::BadRecord {
             object: object.name.clone(),
             reason,

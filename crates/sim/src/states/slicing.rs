@@ -12,7 +12,8 @@
 //! longer horizontal side. Slicing cannot be undone.
 
 use crate::World;
-use crate::core::{Core, DROP_TAG};
+use crate::bodies::Bodies;
+use crate::core::DROP_TAG;
 use crate::object::{ObjectId, ObjectSpec, Part, PointKind, Primitive};
 use crate::states::StateError;
 use behavior_core::{Ability, Predicate};
@@ -23,64 +24,62 @@ pub const SLICE_FORCE: f32 = 10.0;
 /// How close to a slicer's [`PointKind::SlicingEdge`] a contact must be to cut (m).
 pub const EDGE_REACH: f32 = 0.05;
 
-impl Core {
-    /// The impulse (N·s) slicers applied in the last substep to each sliceable object they
-    /// touched (at their edge, if they name one), in id order.
-    pub(crate) fn slicer_impulses(&self) -> Vec<(ObjectId, f32)> {
-        let mut impulses: Vec<(ObjectId, f32)> = Vec::new();
-        for (slicer, object) in self.objects() {
-            if !object.has(Ability::Slicer) {
-                continue;
-            }
-            let edge = object
-                .point(PointKind::SlicingEdge)
-                .map(|p| self.pose(slicer).transform_point(p));
-            for &c in &object.colliders {
-                for pair in self.physics.narrow_phase.contact_pairs_with(c) {
-                    let Some(target) = self.sliceable_other(pair, c, slicer) else {
-                        continue;
-                    };
-                    if edge.is_some_and(|edge| !self.touches_near(pair, edge)) {
-                        continue;
-                    }
-                    add_impulse(&mut impulses, target, pair.total_impulse_magnitude());
+/// The impulse (N·s) slicers applied in the last substep to each sliceable object they
+/// touched (at their edge, if they name one), in id order.
+pub(crate) fn slicer_impulses(bodies: &Bodies) -> Vec<(ObjectId, f32)> {
+    let mut impulses: Vec<(ObjectId, f32)> = Vec::new();
+    for (slicer, object) in bodies.objects() {
+        if !object.has(Ability::Slicer) {
+            continue;
+        }
+        let edge = object
+            .point(PointKind::SlicingEdge)
+            .map(|p| bodies.pose(slicer).transform_point(p));
+        for &c in &object.colliders {
+            for pair in bodies.physics.narrow_phase.contact_pairs_with(c) {
+                let Some(target) = sliceable_other(bodies, pair, c, slicer) else {
+                    continue;
+                };
+                if edge.is_some_and(|edge| !touches_near(bodies, pair, edge)) {
+                    continue;
                 }
+                add_impulse(&mut impulses, target, pair.total_impulse_magnitude());
             }
         }
-        impulses.sort_by_key(|&(id, _)| id);
-        impulses
     }
+    impulses.sort_by_key(|&(id, _)| id);
+    impulses
+}
 
-    /// The other side of a slicer's contact pair, if it is a sliceable object still whole.
-    fn sliceable_other(
-        &self,
-        pair: &rapier3d::geometry::ContactPair,
-        own: rapier3d::geometry::ColliderHandle,
-        slicer: ObjectId,
-    ) -> Option<ObjectId> {
-        let other = if pair.collider1 == own {
-            pair.collider2
-        } else {
-            pair.collider1
-        };
-        let other = self.physics.colliders.get(other)?;
-        let id = ObjectId(other.user_data as u32);
-        let valid = other.user_data != DROP_TAG
-            && id != slicer
-            && (id.0 as usize) < self.objects.len()
-            && self.object(id).has(Ability::Sliceable)
-            && self.object(id).is_present();
-        valid.then_some(id)
-    }
+/// The other side of a slicer's contact pair, if it is a sliceable object still whole.
+fn sliceable_other(
+    bodies: &Bodies,
+    pair: &rapier3d::geometry::ContactPair,
+    own: rapier3d::geometry::ColliderHandle,
+    slicer: ObjectId,
+) -> Option<ObjectId> {
+    let other = if pair.collider1 == own {
+        pair.collider2
+    } else {
+        pair.collider1
+    };
+    let other = bodies.physics.colliders.get(other)?;
+    let id = ObjectId(other.user_data as u32);
+    let valid = other.user_data != DROP_TAG
+        && id != slicer
+        && (id.0 as usize) < bodies.objects.len()
+        && bodies.object(id).has(Ability::Sliceable)
+        && bodies.object(id).is_present();
+    valid.then_some(id)
+}
 
-    /// Whether a contact pair touches within [`EDGE_REACH`] of a slicing edge.
-    fn touches_near(&self, pair: &rapier3d::geometry::ContactPair, edge: Vector) -> bool {
-        let c1 = &self.physics.colliders[pair.collider1];
-        pair.manifolds()
-            .iter()
-            .flat_map(|m| &m.points)
-            .any(|p| (c1.position().transform_point(p.local_p1) - edge).length() <= EDGE_REACH)
-    }
+/// Whether a contact pair touches within [`EDGE_REACH`] of a slicing edge.
+fn touches_near(bodies: &Bodies, pair: &rapier3d::geometry::ContactPair, edge: Vector) -> bool {
+    let c1 = &bodies.physics.colliders[pair.collider1];
+    pair.manifolds()
+        .iter()
+        .flat_map(|m| &m.points)
+        .any(|p| (c1.position().transform_point(p.local_p1) - edge).length() <= EDGE_REACH)
 }
 
 /// Adds an impulse to an object's running total.
@@ -96,7 +95,7 @@ fn add_impulse(impulses: &mut Vec<(ObjectId, f32)>, id: ObjectId, impulse: f32) 
 pub(crate) struct SlicerPush(Vec<(ObjectId, f32)>);
 
 impl SlicerPush {
-    /// Adds one substep's impulses ([`Core::slicer_impulses`]).
+    /// Adds one substep's impulses ([`slicer_impulses`]).
     pub(crate) fn add(&mut self, substep: Vec<(ObjectId, f32)>) {
         for (id, impulse) in substep {
             add_impulse(&mut self.0, id, impulse);
@@ -118,22 +117,22 @@ impl SlicerPush {
 impl World {
     /// Replaces a sliceable object by its two halves (see the module docs).
     pub(crate) fn set_sliced(&mut self, id: ObjectId, sliced: bool) -> Result<(), StateError> {
-        if self.core.object(id).replaced_by.is_some() == sliced {
+        if self.core.bodies.object(id).replaced_by.is_some() == sliced {
             return Ok(());
         }
         if !sliced {
             return Err(StateError::Unsupported {
-                object: self.core.object(id).name.clone(),
+                object: self.core.bodies.object(id).name.clone(),
                 predicate: Predicate::Sliced,
                 value: false,
                 reason: "slicing cannot be undone".into(),
             });
         }
-        let object = self.core.object(id);
+        let object = self.core.bodies.object(id);
         let mut specs = Vec::new();
         if let Some(halves) = &object.halves {
             // The archetype's halves, where the whole object stands.
-            let pose = self.core.pose(id);
+            let pose = self.core.bodies.pose(id);
             for (k, parts) in halves.iter().enumerate() {
                 let mut spec = ObjectSpec::new(
                     &format!("{}_half_{}", object.name, k + 1),
@@ -145,10 +144,10 @@ impl World {
                 specs.push(spec);
             }
         } else {
-            let aabb = self.core.aabb(id);
+            let aabb = self.core.bodies.aabb(id);
             let half = (aabb.maxs - aabb.mins) * 0.5;
             let center = aabb.center();
-            let mass = self.core.physics.bodies[object.body].mass();
+            let mass = self.core.bodies.physics.bodies[object.body].mass();
             // Split across the longer horizontal side.
             let along = if half.x >= half.y {
                 Vector::X
@@ -181,7 +180,7 @@ impl World {
         let mut halves = [id; 2];
         for (k, spec) in specs.into_iter().enumerate() {
             let half = self.add(spec).map_err(|e| StateError::Unsupported {
-                object: self.core.object(id).name.clone(),
+                object: self.core.bodies.object(id).name.clone(),
                 predicate: Predicate::Sliced,
                 value: true,
                 reason: e.to_string(),
@@ -190,11 +189,11 @@ impl World {
             halves[k] = half;
         }
         let core = &mut self.core;
-        let body = core.objects[id.0 as usize].body;
-        core.physics.bodies[body].set_enabled(false);
-        core.objects[id.0 as usize].replaced_by = Some(halves);
-        core.moved(id);
-        core.refresh();
+        let body = core.bodies.objects[id.0 as usize].body;
+        core.bodies.physics.bodies[body].set_enabled(false);
+        core.bodies.objects[id.0 as usize].replaced_by = Some(halves);
+        core.bodies.moved(id);
+        core.bodies.refresh();
         Ok(())
     }
 }

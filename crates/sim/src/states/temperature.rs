@@ -11,6 +11,8 @@
 //! abilities.
 
 use crate::core::Core;
+use crate::joints::Joints;
+use crate::kinematics::Relations;
 use crate::object::{Object, ObjectId, PointKind};
 use crate::states::toggling::Toggles;
 use behavior_core::Ability;
@@ -125,7 +127,7 @@ impl Temperatures {
         let sources = &mut self.sources;
         sources.clear();
         for &id in &self.source_ids {
-            let object = core.object(id);
+            let object = core.bodies.object(id);
             let Some(ability) = [Ability::HeatSource, Ability::ColdSource]
                 .into_iter()
                 .find(|&a| object.has(a))
@@ -135,7 +137,7 @@ impl Temperatures {
             let needs_on = object.flag(ability, "requires_toggled_on", false);
             let needs_closed = object.flag(ability, "requires_closed", false);
             let needs_inside = object.flag(ability, "requires_inside", false);
-            if (needs_on && !toggles.is_on(id)) || (needs_closed && core.is_open(id)) {
+            if (needs_on && !toggles.is_on(id)) || (needs_closed && Joints::new(core).is_open(id)) {
                 continue;
             }
             let has_element = object
@@ -159,8 +161,9 @@ impl Temperatures {
 
     /// Whether a point lies within `reach` of one of the source's heating elements.
     fn near_element(core: &Core, source: ObjectId, at: Vector, reach: f32) -> bool {
-        let pose = core.pose(source);
-        core.object(source)
+        let pose = core.bodies.pose(source);
+        core.bodies
+            .object(source)
             .points
             .iter()
             .filter(|(kind, _)| *kind == PointKind::HeatingElement)
@@ -173,13 +176,13 @@ impl Temperatures {
         for &id in &self.thermal {
             let i = id.0 as usize;
             let old = self.now[i];
-            let center = core.aabb(id).center();
+            let center = core.bodies.aabb(id).center();
             let mut new = old;
             let mut reached = false;
             for source in self.sources.iter().filter(|s| s.id != id) {
                 let reaches = match source.reach {
                     Some(reach) => Self::near_element(core, source.id, center, reach),
-                    None => core.inside(id, source.id),
+                    None => Relations::new(core).inside(id, source.id),
                 };
                 if reaches {
                     new += (source.temperature - old) * source.rate * dt;

@@ -78,14 +78,14 @@ impl Toggles {
 
     pub(crate) fn update(&mut self, core: &Core) {
         for &id in &self.toggleable {
-            let object = core.object(id);
+            let object = core.bodies.object(id);
             if !object.is_present() {
                 continue;
             }
             let Some(button) = object.point(PointKind::ToggleButton) else {
                 continue;
             };
-            let button = core.pose(id).transform_point(button);
+            let button = core.bodies.pose(id).transform_point(button);
             let near = self
                 .hands
                 .iter()

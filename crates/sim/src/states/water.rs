@@ -59,7 +59,7 @@ impl Water {
             (s.source.0 as usize) < n
                 && s.drops
                     .iter()
-                    .all(|d| core.physics.bodies.get(d.body).is_some())
+                    .all(|d| core.bodies.physics.bodies.get(d.body).is_some())
         });
         if self.soaked.len() != n || !drops_known {
             return Err("water: tables disagree with the objects or the physics".into());
@@ -72,7 +72,7 @@ impl Water {
     /// A new object: a water source gets its pool of drops (disabled bodies in the physics).
     pub(crate) fn add_object(&mut self, core: &mut Core, id: ObjectId) {
         self.soaked.push(false);
-        if !core.object(id).has(Ability::WaterSource) {
+        if !core.bodies.object(id).has(Ability::WaterSource) {
             return;
         }
         let drops = (0..DROPS_PER_SOURCE)
@@ -82,7 +82,7 @@ impl Water {
                     .user_data(DROP_TAG)
                     .build();
                 body.set_enabled(false);
-                let body = core.physics.insert_body(body);
+                let body = core.bodies.physics.insert_body(body);
                 let radius = DROP_RADII[k % DROP_RADII.len()];
                 let collider = ColliderBuilder::ball(radius)
                     .mass(DROP_MASS)
@@ -93,7 +93,7 @@ impl Water {
                         rapier3d::geometry::InteractionTestMode::And,
                     ))
                     .build();
-                core.physics.insert_collider(collider, Some(body));
+                core.bodies.physics.insert_collider(collider, Some(body));
                 Drop { body, age: None }
             })
             .collect();
@@ -122,7 +122,7 @@ impl Water {
         let mut out = Vec::new();
         for stream in &self.streams {
             for d in stream.drops.iter().filter(|d| d.age.is_some()) {
-                out.push(core.physics.bodies[d.body].translation());
+                out.push(core.bodies.physics.bodies[d.body].translation());
             }
         }
         out
@@ -132,11 +132,11 @@ impl Water {
     pub(crate) fn update(&mut self, core: &mut Core, toggles: &Toggles) {
         for s in 0..self.streams.len() {
             let source = self.streams[s].source;
-            let object = core.object(source);
+            let object = core.bodies.object(source);
             let running = !object.has(Ability::Toggleable) || toggles.is_on(source);
             let outlet = object
                 .point(PointKind::WaterOutlet)
-                .map(|p| core.pose(source).transform_point(p) - Vector::Z * OUTLET_OFFSET);
+                .map(|p| core.bodies.pose(source).transform_point(p) - Vector::Z * OUTLET_OFFSET);
             self.age_drops(core, s);
             let stream = &mut self.streams[s];
             stream.steps_since_drop = stream.steps_since_drop.saturating_add(1);
@@ -149,8 +149,8 @@ impl Water {
             if let Some(d) = stream.drops.iter().position(|d| d.age.is_none()) {
                 stream.steps_since_drop = 0;
                 stream.drops[d].age = Some(0);
-                core.quiet = false;
-                let body = &mut core.physics.bodies[stream.drops[d].body];
+                core.bodies.quiet = false;
+                let body = &mut core.bodies.physics.bodies[stream.drops[d].body];
                 body.set_enabled(true);
                 body.set_position(Pose::from_translation(outlet), true);
                 body.set_linvel(Vector::ZERO, true);
@@ -167,13 +167,13 @@ impl Water {
             let Some(age) = drop.age else { continue };
             let touched = touched_by_drop(core, drop.body);
             for &id in &touched {
-                if id != source && core.object(id).has(Ability::Soakable) {
+                if id != source && core.bodies.object(id).has(Ability::Soakable) {
                     self.soaked[id.0 as usize] = true;
                 }
             }
             let done = touched.contains(&source) || age + 1 >= DROP_LIFETIME_STEPS;
             if done {
-                core.physics.bodies[drop.body].set_enabled(false);
+                core.bodies.physics.bodies[drop.body].set_enabled(false);
                 self.streams[s].drops[d].age = None;
             } else {
                 self.streams[s].drops[d].age = Some(age + 1);
@@ -184,12 +184,12 @@ impl Water {
 
 /// The objects within touching distance of a drop.
 fn touched_by_drop(core: &Core, drop: RigidBodyHandle) -> Vec<ObjectId> {
-    let body = &core.physics.bodies[drop];
+    let body = &core.bodies.physics.bodies[drop];
     let radius = body
         .colliders()
         .first()
         .and_then(|&c| {
-            core.physics.colliders[c]
+            core.bodies.physics.colliders[c]
                 .shape()
                 .as_ball()
                 .map(|b| b.radius)
@@ -201,7 +201,7 @@ fn touched_by_drop(core: &Core, drop: RigidBodyHandle) -> Vec<ObjectId> {
     let groups = body
         .colliders()
         .first()
-        .map(|&c| core.physics.colliders[c].collision_groups())
+        .map(|&c| core.bodies.physics.colliders[c].collision_groups())
         .unwrap_or_default();
     let filter = QueryFilter::default()
         .exclude_rigid_body(drop)
@@ -209,6 +209,7 @@ fn touched_by_drop(core: &Core, drop: RigidBodyHandle) -> Vec<ObjectId> {
         .predicate(&not_a_drop);
     // Drops move only by physics, so rapier's broad phase is current for them.
     let mut hit: Vec<ObjectId> = core
+        .bodies
         .physics
         .intersect_shape(Pose::from_translation(body.translation()), &probe, filter)
         .filter_map(|(_, c)| untag(c.user_data).map(|b| b.object))

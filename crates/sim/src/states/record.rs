@@ -1,7 +1,7 @@
 //! An object's whole non-geometric state as plain data, to save an instance and load it back:
 //! temperatures and their maximum, soaked, the switch and its counter, dust and stain particles,
-//! the stored flags. Poses and joint positions are the core's ([`crate::World::set_pose`],
-//! [`crate::World::set_joint_position`]); drops in flight are not kept (a loaded world starts
+//! the stored flags. Poses and joint positions are the bodies' and joints' ([`crate::Bodies::set_pose`],
+//! [`crate::JointsMut::set_position`]); drops in flight are not kept (a loaded world starts
 //! with every stream's pool full).
 
 use crate::World;

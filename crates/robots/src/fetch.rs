@@ -702,16 +702,10 @@ impl Fetch {
         }
         let (yaw, _, _) = pose.rotation.normalize().to_euler(EulerRot::ZYX);
         let base = Pose::from_parts(pose.translation, Rotation::from_rotation_z(yaw));
-        let gripper = self.parts.gripper();
-        let before = world.bodies().pose(gripper);
+        let before = self.gripper.palm_pose(world);
         let links = self.parts.all();
         self.motion.place::<Fetch>(world, &links, base)?;
-        if let Some(body) = self.gripper.holding() {
-            let held = body.object;
-            let relative = before.inv_mul(&world.bodies().pose(held));
-            let target = world.bodies().pose(gripper) * relative;
-            world.bodies_mut().set_pose(held, target)?;
-        }
+        self.gripper.carry_held(world, before)?;
         self.wheel_rates = [0.0; 2];
         self.gripper.press(world, &GRIPPER);
         Ok(())

@@ -10,7 +10,7 @@ use behavior_sim::{
     AttachmentId, AttachmentKind, AttachmentSpec, BodyRef, Drive, ObjectId, STEP_SECONDS, World,
     WorldError,
 };
-use rapier3d::math::Vector;
+use rapier3d::math::{Pose, Vector};
 
 /// A gripper's facts, as its robot's URDF states them.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -99,6 +99,22 @@ impl ParallelGripper {
     /// The body it holds.
     pub(crate) fn holding(&self) -> Option<BodyRef> {
         self.held.map(|g| g.body)
+    }
+
+    /// Where the palm was before a teleport of the robot.
+    pub(crate) fn palm_pose(&self, world: &World) -> Pose {
+        world.bodies().pose(self.palm)
+    }
+
+    /// After a teleport of the robot that took the palm from `before`: what it holds follows,
+    /// keeping its pose relative to the palm.
+    pub(crate) fn carry_held(&self, world: &mut World, before: Pose) -> Result<(), WorldError> {
+        let Some(body) = self.holding() else {
+            return Ok(());
+        };
+        let relative = before.inv_mul(&world.bodies().pose(body.object));
+        let target = world.bodies().pose(self.palm) * relative;
+        world.bodies_mut().set_pose(body.object, target)
     }
 
     /// The fingers' positions, m: 0 closed.

@@ -378,15 +378,10 @@ impl Embodiment for R1 {
         if !pose_ok(&pose) {
             return Err(MagicError::BadPose);
         }
-        let grippers = Side::BOTH.map(|s| self.gripper_object(s));
-        let before = grippers.map(|g| world.bodies().pose(g));
+        let before = self.grippers.each_ref().map(|g| g.palm_pose(world));
         self.motion.place::<R1>(world, &self.links, upright(pose))?;
-        for (k, gripper) in self.grippers.iter().enumerate() {
-            if let Some(body) = gripper.holding() {
-                let relative = before[k].inv_mul(&world.bodies().pose(body.object));
-                let target = world.bodies().pose(grippers[k]) * relative;
-                world.bodies_mut().set_pose(body.object, target)?;
-            }
+        for (gripper, before) in self.grippers.iter().zip(before) {
+            gripper.carry_held(world, before)?;
         }
         self.press(world);
         Ok(())

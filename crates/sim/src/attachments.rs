@@ -227,12 +227,11 @@ impl<'w> Attachments<'w> {
 impl Record {
     /// How far apart the attachment's two anchor points are now.
     fn gap(&self, bodies: &Bodies) -> f32 {
-        let record = self;
         let at =
             |body: BodyRef, local: Vector| bodies.body_pose(body).map(|p| p.transform_point(local));
         match (
-            at(record.spec.holder, record.local[0]),
-            at(record.spec.held, record.local[1]),
+            at(self.spec.holder, self.local[0]),
+            at(self.spec.held, self.local[1]),
         ) {
             (Ok(a), Ok(b)) => (a - b).length(),
             _ => f32::INFINITY,

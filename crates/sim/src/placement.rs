@@ -176,7 +176,7 @@ impl World {
         target: ObjectId,
         rng: &mut SimRng,
     ) -> Result<Pose, PlacementError> {
-        Placer::of(&mut self.core).place_with(object, &[(relation, target)], Heading::Keep, rng)
+        Placer::new(&mut self.core).place_with(object, &[(relation, target)], Heading::Keep, rng)
     }
 
     /// Places `object`, as it is turned, so that every one of `relations` holds at once: the
@@ -190,7 +190,7 @@ impl World {
         relations: &[(Relation, ObjectId)],
         rng: &mut SimRng,
     ) -> Result<Pose, PlacementError> {
-        Placer::of(&mut self.core).place_with(object, relations, Heading::Keep, rng)
+        Placer::new(&mut self.core).place_with(object, relations, Heading::Keep, rng)
     }
 
     /// Places `object` so that every one of `relations` holds at once, each attempt at a random
@@ -201,7 +201,7 @@ impl World {
         relations: &[(Relation, ObjectId)],
         rng: &mut SimRng,
     ) -> Result<Pose, PlacementError> {
-        Placer::of(&mut self.core).place_with(object, relations, Heading::Random, rng)
+        Placer::new(&mut self.core).place_with(object, relations, Heading::Random, rng)
     }
 }
 
@@ -223,7 +223,7 @@ struct Placer<'a> {
 }
 
 impl<'a> Placer<'a> {
-    fn of(core: &'a mut Core) -> Placer<'a> {
+    fn new(core: &'a mut Core) -> Placer<'a> {
         Placer {
             bodies: &mut core.bodies,
             memo: &core.memo,
@@ -622,15 +622,19 @@ struct Request<'r> {
 }
 
 impl<'r> Request<'r> {
-    fn new(core: &Bodies, object: ObjectId, relations: &'r [(Relation, ObjectId)]) -> Request<'r> {
-        let pose = core.pose(object);
-        let members = match core.object(object).replaced_by {
+    fn new(
+        bodies: &Bodies,
+        object: ObjectId,
+        relations: &'r [(Relation, ObjectId)],
+    ) -> Request<'r> {
+        let pose = bodies.pose(object);
+        let members = match bodies.object(object).replaced_by {
             Some(halves) => halves.to_vec(),
             None => vec![object],
         };
-        let mut own = core.aabb(members[0]);
+        let mut own = bodies.aabb(members[0]);
         for &m in &members[1..] {
-            own.merge(&core.aabb(m));
+            own.merge(&bodies.aabb(m));
         }
         Request {
             object,

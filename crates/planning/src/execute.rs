@@ -143,11 +143,12 @@ pub fn run_with(
         (Mode::Physical, Primitive::Grasp) => {
             manipulation::grasp(env, &call, tuning, again(&mut watcher))?
         }
+        (Mode::Physical, Primitive::Soak | Primitive::Wipe) => {
+            manipulation::use_tool(env, &call, tuning, again(&mut watcher))?
+        }
         (Mode::Physical, p) => match p.relation() {
             Some(r) => manipulation::place(env, &call, r, tuning, again(&mut watcher))?,
-            None => Err(Failure::Unavailable(
-                "physical slice, wipe and soak are not built yet",
-            )),
+            None => Err(Failure::Unavailable("physical slice is not built yet")),
         },
     };
     let seconds = began.elapsed().as_secs_f64();

@@ -335,6 +335,27 @@ impl Manipulator for JointedArm {
         )
     }
 
+    fn slide(
+        &self,
+        steps: &mut Stepper<'_, '_>,
+        hand: usize,
+        offset: Vector,
+        reached: &mut ArmReached,
+        done: &dyn Fn(&Env) -> bool,
+    ) -> Attempt<()> {
+        slide(steps, hand, offset, &mut reached.path.after, done)
+    }
+
+    fn hold_still(
+        &self,
+        steps: &mut Stepper<'_, '_>,
+        hand: usize,
+        n: u32,
+        done: &dyn Fn(&Env) -> bool,
+    ) -> Attempt<()> {
+        hold(steps, hand, n, CLOSED, done)
+    }
+
     /// Held, an arm that finds no way back carries it where it is.
     const CARRIES_WHEN_STUCK: bool = true;
 
@@ -1048,6 +1069,39 @@ fn descend(
     };
     match follow_until(steps, motion, &path, executed, touching)? {
         // Stopped by what it is to take, or by what that lies on: the gripper closes there.
+        Err(Failure::HandBlocked) => Ok(Ok(())),
+        other => Ok(other),
+    }
+}
+
+/// The gripper, closed, moved straight by `offset` (in the world) along [`line`], unchecked
+/// (it presses on what it touches), until `done` holds; stopped by what it presses on, it
+/// stays there.
+fn slide(
+    steps: &mut Stepper<'_, '_>,
+    hand: usize,
+    offset: Vector,
+    executed: &mut Vec<ArmConfig>,
+    done: &dyn Fn(&Env) -> bool,
+) -> Attempt<()> {
+    let path = steps
+        .env
+        .world()
+        .zip(steps.env.robot())
+        .and_then(|(world, robot)| {
+            let (_, _, arm) = arm_of(steps.env, hand)?;
+            let in_base = robot.base_pose(world).rotation.inverse() * offset;
+            line(arm.as_ref(), in_base, LINE_STEP)
+        });
+    let Some(path) = path else {
+        return Ok(Ok(()));
+    };
+    let motion = Motion {
+        hand,
+        gripper: CLOSED,
+        check: Check::Touching,
+    };
+    match follow_until(steps, motion, &path, executed, done)? {
         Err(Failure::HandBlocked) => Ok(Ok(())),
         other => Ok(other),
     }

@@ -48,6 +48,7 @@ mod posed_hands;
 mod primitive;
 mod symbolic;
 mod task;
+mod tools;
 mod tuning;
 
 pub use action_space::{PrimitiveSet, PrimitiveSpace};

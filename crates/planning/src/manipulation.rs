@@ -7,7 +7,7 @@
 //! a hand holds.
 
 use crate::execute::{RunError, Watcher};
-use crate::physical::{Attempt, Stepper, attempt, call_rng};
+use crate::physical::{Attempt, Stepper, attempt, base_config, call_rng};
 use crate::primitive::{Call, Failure, Primitive};
 use crate::symbolic::put;
 use crate::tuning::Tuning;
@@ -159,6 +159,29 @@ pub(crate) trait Manipulator: Hands {
         reached: &mut Self::Reached,
     ) -> Attempt<()>;
 
+    /// The hand, and what it holds, moved straight by `offset` (in the world, m) with its
+    /// grip closed, a little at a time, until `done` holds or the offset is covered. Stopped
+    /// short by what it presses on, it stays there: the press of a tool onto a surface, the
+    /// rub of a wipe.
+    fn slide(
+        &self,
+        steps: &mut Stepper<'_, '_>,
+        hand: Self::Hand,
+        offset: Vector,
+        reached: &mut Self::Reached,
+        done: &dyn Fn(&Env) -> bool,
+    ) -> Attempt<()>;
+
+    /// Still steps with the grip closed, until `done` holds or `n` have passed: what the hand
+    /// holds kept under a running tap.
+    fn hold_still(
+        &self,
+        steps: &mut Stepper<'_, '_>,
+        hand: Self::Hand,
+        n: u32,
+        done: &dyn Fn(&Env) -> bool,
+    ) -> Attempt<()>;
+
     /// Whether a grasp whose hand holds the object counts though the hand found no way back
     /// (an arm carries it where it is, and the next drive's tuck finds a way).
     const CARRIES_WHEN_STUCK: bool;
@@ -268,6 +291,24 @@ pub(crate) trait AnyManipulator: Hands {
         tuning: &Tuning,
         watcher: Option<&mut dyn Watcher>,
     ) -> Attempt<()>;
+
+    /// SOAK with physics ([`crate::tools`]).
+    fn soak(
+        &self,
+        env: &mut Env,
+        call: &Call,
+        tuning: &Tuning,
+        watcher: Option<&mut dyn Watcher>,
+    ) -> Attempt<()>;
+
+    /// WIPE with physics ([`crate::tools`]).
+    fn wipe(
+        &self,
+        env: &mut Env,
+        call: &Call,
+        tuning: &Tuning,
+        watcher: Option<&mut dyn Watcher>,
+    ) -> Attempt<()>;
 }
 
 impl<M: Manipulator> AnyManipulator for M {
@@ -290,6 +331,26 @@ impl<M: Manipulator> AnyManipulator for M {
         watcher: Option<&mut dyn Watcher>,
     ) -> Attempt<()> {
         Ok(place_with(self, env, call, relation, tuning, watcher)?.map(|_| ()))
+    }
+
+    fn soak(
+        &self,
+        env: &mut Env,
+        call: &Call,
+        tuning: &Tuning,
+        watcher: Option<&mut dyn Watcher>,
+    ) -> Attempt<()> {
+        crate::tools::soak_with(self, env, call, tuning, watcher)
+    }
+
+    fn wipe(
+        &self,
+        env: &mut Env,
+        call: &Call,
+        tuning: &Tuning,
+        watcher: Option<&mut dyn Watcher>,
+    ) -> Attempt<()> {
+        crate::tools::wipe_with(self, env, call, tuning, watcher)
     }
 }
 
@@ -329,12 +390,41 @@ pub fn place(
     }
 }
 
-/// Whether, from where the episode's robot stands, a hand reaches `object` for a grasp, or,
-/// holding something and given a `placement` (a PLACE_* call), a place for it (see
-/// the manipulator's `reaches`); true with no episode.
+/// SOAK or WIPE with physics by the episode's robot's manipulator ([`crate::tools`]).
+pub fn use_tool(
+    env: &mut Env,
+    call: &Call,
+    tuning: &Tuning,
+    watcher: Option<&mut dyn Watcher>,
+) -> Attempt<()> {
+    let Some(hands) = env.robot().map(manipulator) else {
+        return Ok(Err(Failure::Unavailable("no episode")));
+    };
+    match call.primitive {
+        Primitive::Soak => hands.soak(env, call, tuning, watcher),
+        Primitive::Wipe => hands.wipe(env, call, tuning, watcher),
+        _ => Ok(Err(Failure::Unavailable("not a tool's primitive"))),
+    }
+}
+
+/// Whether, from where the episode's robot stands, a hand reaches `object`: given a
+/// `placement` (a PLACE_* call), a place for what it holds (see the manipulator's `reaches`);
+/// else as NAVIGATE_TO's test of places to stand asks, at the place it stands (a hand reaches
+/// the object for a grasp, or, holding something, a place on or in it). The same test on both
+/// sides: checked for a grasp after a drive chosen for a placement, an envelope sorted on
+/// another was "not in reach after 10 navigations, each of which arrived". True with no
+/// episode.
 pub fn reaches(env: &Env, object: ObjectId, placement: Option<&Call>, tuning: &Tuning) -> bool {
-    env.robot()
-        .is_none_or(|robot| manipulator(robot).reaches(env, object, placement, tuning))
+    env.robot().is_none_or(|robot| {
+        let hands = manipulator(robot);
+        if placement.is_some() {
+            return hands.reaches(env, object, placement, tuning);
+        }
+        match hands.reach_test(env, object, tuning) {
+            Some(stands) => stands(&base_config(env)),
+            None => hands.reaches(env, object, None, tuning),
+        }
+    })
 }
 
 /// How a recording names the forced grasp of a physical GRASP (see `physical.rs`'s

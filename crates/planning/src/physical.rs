@@ -196,6 +196,34 @@ impl Stepper<'_, '_> {
 
 /// The densified base path to where the robot will stand for `call.object`.
 fn plan_base(env: &Env, call: &Call, tuning: &Tuning) -> Result<Vec<BaseConfig>, Failure> {
+    let carrying = env
+        .robot()
+        .is_some_and(|r| (0..r.hands()).any(|h| r.held(h).is_some()));
+    match plan_base_with(env, call, tuning, Leaves::AsObstacles) {
+        Err(failure @ Failure::NoPath(_)) if !carrying => {
+            plan_base_with(env, call, tuning, Leaves::Pushed).map_err(|_| failure)
+        }
+        other => other,
+    }
+}
+
+/// What a base plan makes of the leaves of the home's open doors (see [`hinged_parts`]).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Leaves {
+    /// Obstacles: a leaf open against the wall stands beside the way.
+    AsObstacles,
+    /// Pushed aside like a closed one's: what an empty-handed robot with no other way does (a
+    /// bathroom's door opened against a shower closed the corner behind it).
+    Pushed,
+}
+
+/// [`plan_base`] with the open doors' `leaves` taken as said.
+fn plan_base_with(
+    env: &Env,
+    call: &Call,
+    tuning: &Tuning,
+    leaves: Leaves,
+) -> Result<Vec<BaseConfig>, Failure> {
     let (world, robot) = match (env.world(), env.robot()) {
         (Some(w), Some(r)) => (w, r),
         _ => return Err(Failure::Unavailable("no episode")),
@@ -218,7 +246,10 @@ fn plan_base(env: &Env, call: &Call, tuning: &Tuning) -> Result<Vec<BaseConfig>,
         .extend(pushed.into_iter().filter(movable));
     // Hinged and sliding parts — room doors, a cabinet's door left open — are pushed aside on
     // the way: the body is kinematic, a leaf yields on its hinge.
-    standing.filter.exclude_bodies.extend(hinged_parts(world));
+    standing
+        .filter
+        .exclude_bodies
+        .extend(hinged_parts(world, leaves));
     let reach = robot.spec().arm_reach;
     let start = standing.config;
     // The robot stands first where a hand reaches the object from.
@@ -336,14 +367,17 @@ fn straight(a: &BaseConfig, b: &BaseConfig, resolution: f32) -> Vec<BaseConfig> 
         .collect()
 }
 
-/// Every object's links — the leaves of doors, the doors, lids and drawers of furniture — but
-/// those of the home's open doors (`open_doors`): a leaf open against the wall stands beside
-/// the way, and what the robot carries must pass it.
-fn hinged_parts(world: &World) -> Vec<BodyRef> {
+/// Every object's links — the leaves of doors, the doors, lids and drawers of furniture — but,
+/// with [`Leaves::AsObstacles`], those of the home's open doors (`open_doors`): a leaf open
+/// against the wall stands beside the way, and what the robot carries must pass it.
+fn hinged_parts(world: &World, leaves: Leaves) -> Vec<BodyRef> {
+    let obstacle = |id: ObjectId, category: &str| {
+        leaves == Leaves::AsObstacles && category == DOOR_SYNSET && world.state(id, Predicate::Open)
+    };
     world
         .bodies()
         .objects()
-        .filter(|(id, o)| !(o.category == DOOR_SYNSET && world.state(*id, Predicate::Open)))
+        .filter(|(id, o)| !obstacle(*id, &o.category))
         .flat_map(|(id, o)| (0..o.links.len()).map(move |l| BodyRef::link(id, l)))
         .collect()
 }

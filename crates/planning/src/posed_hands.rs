@@ -32,13 +32,14 @@ use crate::execute::RunError;
 use crate::execute::Watcher;
 use crate::manipulation::{
     Grip, Hands, Manipulator, StandTest, grasp_point, grasp_with, holds, on_or_in_goals, on_top,
-    place_with, placement_goals, rng_seed,
+    place_with, placement_goals, rng_seed, vertical_axis,
 };
 use crate::physical::{Attempt, Stepper, attempt, base_config, call_rng, force_grasp};
 use crate::primitive::{Call, Failure};
 use crate::symbolic::check;
 use crate::tuning::Tuning;
 use behavior_core::rng::{SimRng, uniform};
+use behavior_core::wrap_angle;
 use behavior_env::Env;
 use behavior_motion::BaseConfig;
 use behavior_motion::shapes_in;
@@ -521,7 +522,8 @@ pub(crate) fn reach_test<'e>(
 const OPEN_ABOVE: f32 = 0.3;
 
 /// Whether a hand can come to `point` from the shoulder's side or from above: nothing fixed
-/// (furniture, walls) lies across the floor from it toward the shoulder, or above it. The
+/// (furniture, walls) lies across the floor from it toward the shoulder, or above it and
+/// between the shoulder and the point above it. The
 /// robot's parts and `besides` aside; what moves would be pushed. (The hand flies free, with
 /// no arm: what matters is whether the point is walled in on the robot's side.)
 fn open_to(
@@ -537,16 +539,22 @@ fn open_to(
         fixed_only: true,
         ..QueryFilter::excluding(&ignored)
     };
-    let clear = |direction: Vector, length: f32| {
+    let clear = |from: Vector, direction: Vector, length: f32| {
         length <= 0.0
             || matches!(
-                world.query().cast_ray(point, direction, length, &filter),
+                world.query().cast_ray(from, direction, length, &filter),
                 Ok(None)
             )
     };
     let across = (shoulder - point).with_z(0.0);
     let level = across.length();
-    (level > 0.0 && clear(across / level, level)) || clear(Vector::Z, OPEN_ABOVE)
+    // From above only where the shoulder sees the point above: a modem on a table beyond a
+    // wall is open above, and a robot stood behind the wall and planned its hand through it.
+    let above = point + Vector::Z * OPEN_ABOVE;
+    let over = above - shoulder;
+    (level > 0.0 && clear(point, across / level, level))
+        || (clear(point, Vector::Z, OPEN_ABOVE)
+            && clear(shoulder, over.normalize_or_zero(), over.length()))
 }
 
 /// How far the body must go down (up, if negative) for a shoulder at `shoulder` to reach
@@ -731,6 +739,46 @@ fn approach_goals(
             }
         }
     }
+    goals.extend(cornered_goals(world, call.object, facing, tuning));
+    goals
+}
+
+/// Headings the fingers may point, all round, for an object in a corner.
+const CORNER_HEADINGS: usize = 12;
+
+/// Poses over the object for when none of the usual ones is free — a rag pushed into the
+/// corner of a shelf, where fingers pointing away from the body meet the shelf's side: palm
+/// down at [`Tuning::approach_height`] over the middle of the top of its box and over a point
+/// [`Tuning::grasp_inset`] in from each side, the fingers pointing every
+/// [`CORNER_HEADINGS`]th of a turn (those nearest the body's heading first). Drawing no random
+/// numbers, they leave the usual goals as they were.
+fn cornered_goals(world: &World, object: ObjectId, facing: f32, tuning: &Tuning) -> Vec<Pose> {
+    let pose = world.bodies().pose(object);
+    let local = world.bodies().local_aabb(object);
+    let middle = local.center();
+    let vertical = vertical_axis(pose.rotation);
+    let top = world.bodies().aabb(object).maxs.z + tuning.approach_height;
+    let mut points = vec![middle];
+    for axis in (0..3).filter(|&a| a != vertical) {
+        let room = (0.5 * (local.maxs[axis] - local.mins[axis]) - tuning.grasp_inset).max(0.0);
+        for way in [-1.0, 1.0] {
+            let mut p = middle;
+            p[axis] += way * room;
+            points.push(p);
+        }
+    }
+    let mut turns: Vec<f32> = (0..CORNER_HEADINGS)
+        .map(|k| 2.0 * PI * k as f32 / CORNER_HEADINGS as f32)
+        .collect();
+    turns.sort_by(|a, b| wrap_angle(*a).abs().total_cmp(&wrap_angle(*b).abs()));
+    let mut goals = Vec::new();
+    for turn in turns {
+        let rotation = Rotation::from_rotation_z(facing + turn);
+        for p in &points {
+            let at = pose.transform_point(*p).with_z(top);
+            goals.push(Pose::from_parts(at - rotation * GRASP_POINT, rotation));
+        }
+    }
     goals
 }
 
@@ -838,6 +886,39 @@ fn descend(
         };
         attempt!(steps.act(&action));
         executed.push(palm(steps.env, side));
+    }
+    Ok(Ok(()))
+}
+
+/// How far the hand's target moves between checks of a slide, m.
+const SLIDE_STEP: f32 = 0.01;
+
+/// The hand's target moved straight by `offset` in the world, [`SLIDE_STEP`] at a time, each
+/// taken in at most [`Tuning::steps_per_waypoint`] steps, until `done` holds. Where the palm
+/// is held back (a tool pressed on a table), the target runs on ahead of it and the palm
+/// presses after it: what a wipe wants.
+fn slide(
+    steps: &mut Stepper<'_, '_>,
+    side: Side,
+    offset: Vector,
+    executed: &mut Vec<Pose>,
+    done: &dyn Fn(&Env) -> bool,
+) -> Attempt<()> {
+    let start = target_in_world(steps.env, side);
+    let n = (offset.length() / SLIDE_STEP).ceil().max(1.0) as u32;
+    for k in 1..=n {
+        let mut goal = start;
+        goal.translation += offset * (k as f32 / n as f32);
+        for _ in 0..steps.tuning.steps_per_waypoint {
+            if done(steps.env) {
+                return Ok(Ok(()));
+            }
+            let Some(action) = hand_action(steps.env, side, &goal) else {
+                break;
+            };
+            attempt!(steps.act(&action));
+            executed.push(palm(steps.env, side));
+        }
     }
     Ok(Ok(()))
 }
@@ -1058,6 +1139,29 @@ impl Manipulator for PosedHands {
         reached: &mut Reached,
     ) -> Attempt<()> {
         retreat(steps, side, reached)
+    }
+
+    fn slide(
+        &self,
+        steps: &mut Stepper<'_, '_>,
+        side: Side,
+        offset: Vector,
+        reached: &mut Reached,
+        done: &dyn Fn(&Env) -> bool,
+    ) -> Attempt<()> {
+        slide(steps, side, offset, &mut reached.path.after, done)
+    }
+
+    /// The still action keeps each hand's target where it is, and the palm holds by the
+    /// assisted grasp.
+    fn hold_still(
+        &self,
+        steps: &mut Stepper<'_, '_>,
+        _: Side,
+        n: u32,
+        done: &dyn Fn(&Env) -> bool,
+    ) -> Attempt<()> {
+        steps.wait_until(n, done)
     }
 
     /// A palm that finds no way back is stuck where it is, whatever it holds.

@@ -209,6 +209,10 @@ pub enum Failure {
     /// The robot refused a move.
     #[error("{0}")]
     Robot(#[from] behavior_robots::MagicError),
+    /// The primitive did all its motions but the world's rule it relies on did not act: no
+    /// drop reached the tool held under the tap, the dirt stayed where the tool went.
+    #[error("no effect: {0}")]
+    NoEffect(&'static str),
     /// This primitive is not available in this mode or for this robot yet.
     #[error("not available: {0}")]
     Unavailable(&'static str),

@@ -96,6 +96,8 @@ pub struct Solution {
 
 /// Navigations to one object before it is given up as out of reach (the 2.0.x primitives').
 const NAVIGATE_ATTEMPTS: usize = 10;
+/// Places a physical WIPE is done from at most, while each takes some of the dirt.
+const WIPE_STANDS: usize = 4;
 /// Physical navigations in a row that may fail, nothing else run between them, before the
 /// robot counts as stuck where it stands and the next ones are not tried (a robot holding a
 /// book found no way to the shelf or the floor 60 times in a row).
@@ -403,7 +405,10 @@ impl<'a> Solver<'a> {
             ms: outcome.seconds * 1000.0,
             steps: self.env.steps() - before,
         };
-        let manipulates = primitive == Primitive::Grasp || primitive.relation().is_some();
+        let manipulates = matches!(
+            primitive,
+            Primitive::Grasp | Primitive::Soak | Primitive::Wipe
+        ) || primitive.relation().is_some();
         if self.mode == Mode::Physical && manipulates && !executed.ok {
             self.stand_again = true;
         }
@@ -668,8 +673,30 @@ impl<'a> Solver<'a> {
         if dirt == Predicate::Stained && !self.world().state(tool, Predicate::Soaked) {
             self.soak(hand)?;
         }
-        self.approach(y)?;
-        self.call(Primitive::Wipe, y, hand)
+        // A physical wipe takes the dirt its hand reaches from where the robot stands; what
+        // is big (a car's roof) is wiped from one stand after another while each takes some.
+        let mut stands = 0;
+        loop {
+            self.approach(y)?;
+            let before = self.dirt_left(y);
+            let wiped = self.call(Primitive::Wipe, y, hand);
+            stands += 1;
+            let progress = self.dirt_left(y) < before;
+            match wiped {
+                Err(_) if self.mode == Mode::Physical && progress && stands < WIPE_STANDS => {
+                    self.stand_again = true;
+                }
+                done => return done,
+            }
+        }
+    }
+
+    /// The dust and stain particles left on `y`.
+    fn dirt_left(&self, y: ObjectId) -> usize {
+        [Predicate::Dusty, Predicate::Stained]
+            .iter()
+            .map(|&k| self.world().particle_positions(y, k).len())
+            .sum()
     }
 }
 

@@ -56,6 +56,7 @@ mod place;
 mod states;
 mod tidy;
 mod verify;
+mod way_out;
 
 pub use error::{
     Literals, LoadError, NamedLiteral, RuledOut, SampleError, Unmet, Unreachable, Unsatisfied,

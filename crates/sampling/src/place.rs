@@ -5,8 +5,10 @@
 use crate::error::{Literals, SampleError, Unsatisfied};
 use crate::instantiate::Attempt;
 use crate::order::{Step, placement_order, target};
+use crate::way_out::has_way_out;
 use behavior_bddl::Predicate;
 use behavior_bddl::activity::Literal;
+use behavior_core::AGENT_SYNSET;
 use behavior_sim::{ObjectId, PlacementError, Relation, World};
 use rand_chacha::ChaCha8Rng;
 
@@ -52,8 +54,24 @@ pub(crate) fn place_by(
         .collect();
     order_relations(world, &mut relations);
     let object = bindings[step.subject.0 as usize];
-    world.place_turning(object, &relations, rng).map(|_| ())
+    world.place_turning(object, &relations, rng)?;
+    if world.bodies().object(object).category != AGENT_SYNSET {
+        return Ok(());
+    }
+    // The agent is placed again until a way leads out of its room from where it stands; if
+    // none of [`AGENT_PLACES`] does, it keeps the last place (a room all pockets, where the
+    // episode's base planner reports it boxed in).
+    for _ in 1..AGENT_PLACES {
+        if has_way_out(world, object) {
+            break;
+        }
+        world.place_turning(object, &relations, rng)?;
+    }
+    Ok(())
 }
+
+/// How many places the agent is given at most, the first included, for one with a way out.
+const AGENT_PLACES: usize = 20;
 
 /// The placement a literal asks for: a positive `ontop`, `inside`, `under`, `nextto`, `touching`
 /// or `onfloor`.

@@ -25,6 +25,7 @@ use crate::core::Core;
 use crate::kinematics::{RelationMemo, Relations};
 use crate::object::ObjectId;
 use crate::room::Room;
+use behavior_core::FLOOR_SYNSET;
 use behavior_core::rng::{SimRng, uniform};
 use rand_chacha::rand_core::Rng;
 use rapier3d::math::{Pose, Rotation, Vector};
@@ -205,6 +206,17 @@ impl World {
     }
 }
 
+/// How long a thing placed on a floor must be to be left square to the walls, m: the width of
+/// a way between furniture.
+const SQUARE_LENGTH: f32 = 1.0;
+
+/// The turn that takes a box heading `now` (rad) to the quarter turn nearest `now + drawn`: a
+/// random heading, square to the (axis-aligned) walls.
+fn square_turn(now: f32, drawn: f32) -> f32 {
+    let quarter = std::f32::consts::FRAC_PI_2;
+    ((now + drawn) / quarter).round() * quarter - now
+}
+
 /// Which way a placed object faces.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Heading {
@@ -254,9 +266,14 @@ impl<'a> Placer<'a> {
         let original = self.bodies.pose(object);
         let mut reason = PlacementFailure::NothingAsked;
         if !relations.is_empty() {
+            let square = self.squared_on_floor(object, relations);
             for _ in 0..PLACEMENT_ATTEMPTS {
                 if heading == Heading::Random {
-                    let yaw = Rotation::from_rotation_z(uniform(rng, 0.0, std::f32::consts::TAU));
+                    let drawn = uniform(rng, 0.0, std::f32::consts::TAU);
+                    let yaw = Rotation::from_rotation_z(match square {
+                        Some(now) => square_turn(now, drawn),
+                        None => drawn,
+                    });
                     let turned = Pose::from_parts(original.translation, yaw * original.rotation);
                     // A finite pose turned by a finite angle: the teleport cannot fail.
                     let _ = self.bodies.set_pose(object, turned);
@@ -278,6 +295,34 @@ impl<'a> Placer<'a> {
             attempts: PLACEMENT_ATTEMPTS,
             reason,
         })
+    }
+
+    /// For an object as long as a way is wide placed on a floor (a car, a pool, a sheet of
+    /// plywood), the heading of its box now: such things are left square to the walls, as
+    /// people park a car or lean a board, and one turned across a garage at random closed the
+    /// way to its shelves. `None` for everything else, which turns freely.
+    fn squared_on_floor(
+        &self,
+        object: ObjectId,
+        relations: &[(Relation, ObjectId)],
+    ) -> Option<f32> {
+        let &(_, support) = relations.first()?;
+        if self.bodies.object(support).category != FLOOR_SYNSET {
+            return None;
+        }
+        let rotation = self.bodies.pose(object).rotation;
+        let local = self.bodies.local_aabb(object);
+        let size = local.maxs - local.mins;
+        // The box's axes that stay level after its resting orientation, with their lengths.
+        let level: Vec<(Vector, f32)> = [Vector::X, Vector::Y, Vector::Z]
+            .into_iter()
+            .zip(size.to_array())
+            .map(|(axis, length)| (rotation * axis, length))
+            .filter(|(world_axis, _)| world_axis.z.abs() < 0.5)
+            .collect();
+        let longest = level.iter().map(|&(_, l)| l).fold(0.0, f32::max);
+        let &(axis, _) = level.first()?;
+        (longest >= SQUARE_LENGTH).then(|| axis.y.atan2(axis.x))
     }
 
     fn try_place(

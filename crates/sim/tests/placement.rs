@@ -173,3 +173,54 @@ fn a_sliced_apple_is_placed_inside_a_bin_as_one_piece() {
     );
     assert!(!world.relations().ontop(a, table) && !world.relations().ontop(b, table));
 }
+
+/// The heading of an object's x axis about the vertical, rad.
+fn heading(world: &World, id: behavior_sim::ObjectId) -> f32 {
+    let x = world.bodies().pose(id).rotation * rapier3d::math::Vector::X;
+    x.y.atan2(x.x)
+}
+
+/// A box `length` m long, 0.4 m wide and 0.3 m high, parked off the floor.
+fn long_box(world: &mut World, name: &str, length: f32) -> behavior_sim::ObjectId {
+    let spec = behavior_sim::ObjectSpec::new(
+        name,
+        "carton.n.02",
+        vec![behavior_sim::Part::new(cuboid(0.5 * length, 0.2, 0.15))],
+    )
+    .at(v(0.0, 0.0, 5.0));
+    world.add(spec).unwrap()
+}
+
+#[test]
+fn what_is_as_long_as_a_way_is_wide_is_set_on_a_floor_square_to_the_walls() {
+    let quarter = std::f32::consts::FRAC_PI_2;
+    let off_square = |a: f32| {
+        let r = a.rem_euclid(quarter);
+        r.min(quarter - r)
+    };
+    let mut turned = 0;
+    for seed in 0..8 {
+        let mut world = World::default();
+        let (_, living) = two_room_floor(&mut world);
+        let car = long_box(&mut world, "car_1", 1.8);
+        let shoe = long_box(&mut world, "shoe_1", 0.6);
+        let mut rng = seeded(seed);
+        let on = [(Relation::OnFloor, living)];
+        world.place_turning(car, &on, &mut rng).unwrap();
+        world.place_turning(shoe, &on, &mut rng).unwrap();
+        assert!(
+            off_square(heading(&world, car)) < 1e-3,
+            "seed {seed}: the long box heads {} rad",
+            heading(&world, car)
+        );
+        if off_square(heading(&world, shoe)) > 0.05 {
+            turned += 1;
+        }
+    }
+    // What is shorter than a way is wide still turns at random.
+    assert!(
+        turned >= 4,
+        "the short box stood square in {} of 8 homes",
+        8 - turned
+    );
+}

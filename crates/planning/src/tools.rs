@@ -1,0 +1,330 @@
+//! SOAK and WIPE with physics, the same for every manipulator: the world's own rules do the
+//! work, the primitive only brings the tool where they act. A soakable thing becomes soaked when
+//! a drop of a running source touches it, so SOAK holds the tool under the outlet until one
+//! has; a cleaning tool touching a dirty object takes the particles within its box (stains only
+//! when soaked), so WIPE presses the tool onto the surface where the particles lie and rubs it
+//! about, spot after spot, until the object is clean. Each reports what it did not manage
+//! ([`Failure::NoEffect`]) rather than setting the state.
+
+use crate::execute::Watcher;
+use crate::manipulation::{Grip, Manipulator};
+use crate::physical::{Attempt, Stepper, attempt, call_rng};
+use crate::primitive::{Call, Failure};
+use crate::symbolic::check;
+use crate::tuning::Tuning;
+use behavior_core::Predicate;
+use behavior_env::Env;
+use behavior_sim::{OUTLET_OFFSET, ObjectId, PointKind, World};
+use rapier3d::math::{Pose, Rotation, Vector};
+use std::f32::consts::FRAC_PI_2;
+
+/// Gaps tried between the tool's top and where the drops start, m.
+const UNDER_TAP: [f32; 3] = [0.03, 0.06, 0.1];
+/// Still steps the tool is held under the tap before it is moved under the drops: five drops'
+/// worth.
+const SOAK_STEPS: u32 = 20;
+/// Moves under the drops at most.
+const SOAK_CORRECTIONS: usize = 4;
+/// How high above a dirty spot the tool is brought before it is pressed down, m.
+const HOVER: f32 = 0.02;
+/// How far the tool is raised off what it touched before the hand comes back, m.
+const LIFT: f32 = 0.05;
+/// How far down the tool is pressed at most, m.
+const PRESS: f32 = 0.06;
+/// The rub about a spot: offsets of the tool's centre, m, gone through in order.
+const RUB: [(f32, f32); 5] = [
+    (0.06, 0.0),
+    (-0.06, 0.06),
+    (-0.06, -0.06),
+    (0.06, -0.06),
+    (0.0, 0.03),
+];
+/// How far past a tool's side the drops fall, m: within a drop's radius and the world's
+/// touching distance of it.
+const GRAZE: f32 = 0.006;
+/// How far in from a tool's side the point put under a tap or over a spot lies, m.
+const TAP_INSET: f32 = 0.02;
+/// Dirty spots nearest the hand that a wipe tries to bring the tool over, each time.
+const SPOT_CHOICES: usize = 5;
+/// Spots wiped at most per WIPE.
+const SPOTS: usize = 8;
+
+/// SOAK with physics: what hand `call.hand` holds brought under `call.object`'s outlet and held
+/// there until a drop soaks it, then brought back.
+pub(crate) fn soak_with<M: Manipulator>(
+    hands: &M,
+    env: &mut Env,
+    call: &Call,
+    tuning: &Tuning,
+    watcher: Option<&mut dyn Watcher>,
+) -> Attempt<()> {
+    let hand = match checked(hands, env, call) {
+        Ok(hand) => hand,
+        Err(failure) => return Ok(Err(failure)),
+    };
+    let (goals, drops_from) = match under_tap(env, call) {
+        Ok(found) => found,
+        Err(failure) => return Ok(Err(failure)),
+    };
+    let mut rng = call_rng(env, call);
+    let mut steps = Stepper {
+        env,
+        tuning,
+        watcher,
+    };
+    let tool = held(steps.env, call);
+    let soaked = move |env: &Env| {
+        tool.zip(env.world())
+            .is_some_and(|(t, w)| w.state(t, Predicate::Soaked))
+    };
+    let mut reached = attempt!(hands.reach(&mut steps, hand, &goals, Grip::Closed, &mut rng));
+    // The hand stops a few centimetres off its goal: where the drops miss, the tool is moved
+    // under them by what they missed it by, and held again.
+    for _ in 0..SOAK_CORRECTIONS {
+        attempt!(hands.hold_still(&mut steps, hand, SOAK_STEPS, &soaked));
+        let miss = tool
+            .zip(steps.env.world())
+            .map(|(t, w)| missed_by(w, t, drops_from));
+        match miss {
+            Some(by) if !soaked(steps.env) && by.length() > 1e-3 => {
+                attempt!(hands.slide(&mut steps, hand, by, &mut reached, &soaked));
+            }
+            _ => break,
+        }
+    }
+    // Up off the basin's rim or the tap it may have been moved against, then back.
+    attempt!(hands.slide(&mut steps, hand, Vector::Z * LIFT, &mut reached, &|_| false));
+    attempt!(hands.come_back(&mut steps, hand, Grip::Closed, &mut reached));
+    if soaked(steps.env) {
+        Ok(Ok(()))
+    } else {
+        Ok(Err(Failure::NoEffect(
+            "no drop reached what the hand holds",
+        )))
+    }
+}
+
+/// WIPE with physics: the tool hand `call.hand` holds pressed onto `call.object` where its
+/// dirt lies and rubbed about, spot after spot (the nearest left first), until the object is
+/// clean of what the tool takes, or [`SPOTS`] have been wiped.
+pub(crate) fn wipe_with<M: Manipulator>(
+    hands: &M,
+    env: &mut Env,
+    call: &Call,
+    tuning: &Tuning,
+    mut watcher: Option<&mut dyn Watcher>,
+) -> Attempt<()> {
+    let hand = match checked(hands, env, call) {
+        Ok(hand) => hand,
+        Err(failure) => return Ok(Err(failure)),
+    };
+    let mut rng = call_rng(env, call);
+    let object = call.object;
+    let Some(tool) = held(env, call) else {
+        return Ok(Err(Failure::HandEmpty));
+    };
+    let clean = move |env: &Env| env.world().is_none_or(|w| !dirty(w, tool, object));
+    let mut last = Failure::NoEffect("the dirt stayed where the tool went");
+    for _ in 0..SPOTS {
+        if clean(env) {
+            return Ok(Ok(()));
+        }
+        let goals = match spot_goals(env, call, tool) {
+            Some(goals) => goals,
+            None => break,
+        };
+        let mut steps = Stepper {
+            env,
+            tuning,
+            watcher: crate::execute::again(&mut watcher),
+        };
+        let mut reached = match hands.reach(&mut steps, hand, &goals, Grip::Closed, &mut rng)? {
+            Ok(reached) => reached,
+            Err(failure) => {
+                last = failure;
+                break;
+            }
+        };
+        let touching = move |env: &Env| {
+            env.world()
+                .is_some_and(|w| w.relations().touching(tool, object))
+        };
+        attempt!(hands.slide(
+            &mut steps,
+            hand,
+            -Vector::Z * PRESS,
+            &mut reached,
+            &touching
+        ));
+        for (dx, dy) in RUB {
+            let by = Vector::new(dx, dy, -0.005);
+            attempt!(hands.slide(&mut steps, hand, by, &mut reached, &clean));
+        }
+        attempt!(hands.slide(&mut steps, hand, Vector::Z * LIFT, &mut reached, &|_| false));
+        attempt!(hands.come_back(&mut steps, hand, Grip::Closed, &mut reached));
+    }
+    if clean(env) {
+        Ok(Ok(()))
+    } else {
+        Ok(Err(last))
+    }
+}
+
+/// The hand a call uses, after the primitive's own checks (but reach: the hand goes there).
+fn checked<M: Manipulator>(hands: &M, env: &Env, call: &Call) -> Result<M::Hand, Failure> {
+    let (Some(world), Some(robot)) = (env.world(), env.robot()) else {
+        return Err(Failure::Unavailable("no episode"));
+    };
+    match check(world, robot, call) {
+        Ok(()) | Err(Failure::Unreachable) => hands.hand(env, call),
+        Err(failure) => Err(failure),
+    }
+}
+
+/// What hand `call.hand` holds.
+fn held(env: &Env, call: &Call) -> Option<ObjectId> {
+    env.robot().and_then(|r| r.held(call.hand))
+}
+
+/// Whether `object` still has dirt that `tool` takes: dust, and stains if it is soaked.
+fn dirty(world: &World, tool: ObjectId, object: ObjectId) -> bool {
+    world.state(object, Predicate::Dusty)
+        || (world.state(tool, Predicate::Soaked) && world.state(object, Predicate::Stained))
+}
+
+/// Poses of the hand that put what it holds [`UNDER_TAP`] below where `call.object`'s drops
+/// start, on its side away from the palm (a palm holding a sponge from above catches the drops
+/// itself): first with the drops falling [`GRAZE`] past its far side, which they touch on the
+/// way down, then onto its top [`TAP_INSET`] in from that side; the tool as it is held and
+/// turned about the vertical by quarter turns (one of them keeps it off the tap).
+fn under_tap(env: &Env, call: &Call) -> Result<(Vec<Pose>, Vector), Failure> {
+    let (Some(world), Some(robot)) = (env.world(), env.robot()) else {
+        return Err(Failure::Unavailable("no episode"));
+    };
+    let source = world.bodies().object(call.object);
+    let outlet = source
+        .point(PointKind::WaterOutlet)
+        .ok_or(Failure::Unable {
+            what: "has no outlet",
+        })?;
+    let drops_from =
+        world.bodies().pose(call.object).transform_point(outlet) - Vector::Z * OUTLET_OFFSET;
+    let tool = robot.held(call.hand).ok_or(Failure::HandEmpty)?;
+    let holder = robot
+        .hand_object(call.hand)
+        .ok_or(Failure::NoHand(call.hand))?;
+    let palm = world.bodies().pose(holder).translation;
+    let b = world.bodies().aabb(tool);
+    let top = b.center().with_z(b.maxs.z);
+    let half = 0.5 * (b.maxs - b.mins);
+    let mut goals = Vec::new();
+    for k in 0..4 {
+        let turn = Rotation::from_rotation_z(FRAC_PI_2 * k as f32);
+        let turned = about(top, turn, top);
+        // The box turned by quarter turns swaps its sides on the floor.
+        let (hx, hy) = if k % 2 == 0 {
+            (half.x, half.y)
+        } else {
+            (half.y, half.x)
+        };
+        let away = (top - turned.transform_point(palm)).with_z(0.0);
+        let way = if away.length() > 1e-3 {
+            away.normalize()
+        } else {
+            Vector::X
+        };
+        let side = way.x.abs() * hx + way.y.abs() * hy;
+        for far in [side + GRAZE, (side - TAP_INSET).max(0.0)].map(|d| top + way * d) {
+            for gap in UNDER_TAP {
+                let by = Pose::from_translation(drops_from - Vector::Z * gap - far);
+                goals.extend(holder_goal(world, robot, call.hand, tool, by * turned));
+            }
+        }
+    }
+    Ok((goals, drops_from))
+}
+
+/// How far across the floor `tool`'s box, [`TAP_INSET`] in from its sides, lies from the
+/// column the drops fall down from `drops_from`: the move that puts it under them.
+fn missed_by(world: &World, tool: ObjectId, drops_from: Vector) -> Vector {
+    let b = world.bodies().aabb(tool);
+    let within = |v: f32, lo: f32, hi: f32| {
+        let (lo, hi) = (lo + TAP_INSET, hi - TAP_INSET);
+        if lo > hi {
+            0.5 * (lo + hi)
+        } else {
+            v.clamp(lo, hi)
+        }
+    };
+    let nearest = Vector::new(
+        within(drops_from.x, b.mins.x, b.maxs.x),
+        within(drops_from.y, b.mins.y, b.maxs.y),
+        drops_from.z,
+    );
+    (drops_from - nearest).with_z(0.0)
+}
+
+/// Poses of the hand that put `tool` [`HOVER`] above one of the dirty spots of `call.object`
+/// nearest the hand ([`SPOT_CHOICES`] of them), the spot under the middle of the tool's bottom
+/// or under one of its sides (a spot by a tub's wall is wiped by the tool's edge), the tool as
+/// held and turned by quarter turns; `None` where no dirt is left that the tool takes.
+fn spot_goals(env: &Env, call: &Call, tool: ObjectId) -> Option<Vec<Pose>> {
+    let (world, robot) = (env.world()?, env.robot()?);
+    let kinds: &[Predicate] = if world.state(tool, Predicate::Soaked) {
+        &[Predicate::Dusty, Predicate::Stained]
+    } else {
+        &[Predicate::Dusty]
+    };
+    let holder = robot.hand_object(call.hand)?;
+    let hand_at = world.bodies().pose(holder).translation;
+    let mut spots: Vec<Vector> = kinds
+        .iter()
+        .filter(|&&k| world.state(call.object, k))
+        .flat_map(|&k| world.particle_positions(call.object, k))
+        .collect();
+    if spots.is_empty() {
+        return None;
+    }
+    spots.sort_by(|a, b| (*a - hand_at).length().total_cmp(&(*b - hand_at).length()));
+    let b = world.bodies().aabb(tool);
+    let bottom = b.center().with_z(b.mins.z);
+    let half = 0.5 * (b.maxs - b.mins);
+    let mut goals = Vec::new();
+    for spot in spots.into_iter().take(SPOT_CHOICES) {
+        for k in 0..4 {
+            let turn = Rotation::from_rotation_z(FRAC_PI_2 * k as f32);
+            let (hx, hy) = if k % 2 == 0 {
+                (half.x, half.y)
+            } else {
+                (half.y, half.x)
+            };
+            let (sx, sy) = ((hx - TAP_INSET).max(0.0), (hy - TAP_INSET).max(0.0));
+            for (dx, dy) in [(0.0, 0.0), (sx, 0.0), (-sx, 0.0), (0.0, sy), (0.0, -sy)] {
+                let at = spot + Vector::new(dx, dy, HOVER);
+                let moved = about(bottom, turn, at);
+                goals.extend(holder_goal(world, robot, call.hand, tool, moved));
+            }
+        }
+    }
+    Some(goals)
+}
+
+/// The motion that turns a thing by `turn` about the vertical through its point `point` and
+/// brings that point to `to`.
+fn about(point: Vector, turn: Rotation, to: Vector) -> Pose {
+    Pose::from_translation(to) * Pose::from_rotation(turn) * Pose::from_translation(-point)
+}
+
+/// The pose of hand `hand`'s holding part that moves `tool` (held as it is now) by `moved`.
+fn holder_goal(
+    world: &World,
+    robot: &behavior_robots::Robot,
+    hand: usize,
+    tool: ObjectId,
+    moved: Pose,
+) -> Option<Pose> {
+    let holder = robot.hand_object(hand)?;
+    let grip = world.bodies().pose(holder).inverse() * world.bodies().pose(tool);
+    let goal = moved * world.bodies().pose(tool);
+    Some(goal * grip.inverse())
+}

@@ -4,6 +4,7 @@
     behavior solve-all --mode physical --robot behavior --json > OUT.json
     python3 bench/solve_all_table.py tsv OUT.json > OUT.tsv
     python3 bench/solve_all_table.py compare BEFORE.tsv AFTER.tsv
+    python3 bench/solve_all_table.py markdown OUT.json   # the guide's per-activity table
 
 A line: activity, scene, seed, success, final Q, steps, wall seconds, and for an unsolved run
 its first failed primitive and why (the task planner goes on after a failure, so the first one
@@ -35,6 +36,26 @@ def tsv(path):
     print("\t".join(COLUMNS))
     for row in rows(report):
         print("\t".join(row))
+
+
+def markdown(path):
+    """The guide's per-activity table: one row per activity, its last run (the first solved,
+    with --seeds K), and for an unsolved one what the planner gave up on and why."""
+    report = json.load(open(path))
+    last = {}
+    for run in report["runs"]:
+        last[run["activity"]] = run
+    print("| activity | seed | solved | Q | wall s | what stopped it |")
+    print("|---|---|---|---|---|---|")
+    for name, run in last.items():
+        why = ""
+        if not run["success"]:
+            given = run["given_up"]
+            why = f"{given[0]['literal']}: {given[0]['reason']}" if given else run["stopped"]
+            why = why.replace("|", "/")
+        mark = "yes" if run["success"] else "no"
+        print(f"| {name.removesuffix('_0')} | {run['seed']} | {mark} | {run['q_final']:.2f} | "
+              f"{run['wall_s']:.1f} | {why} |")
 
 
 def read(path):
@@ -70,6 +91,8 @@ def compare(before_path, after_path):
 if __name__ == "__main__":
     if sys.argv[1:2] == ["tsv"]:
         tsv(sys.argv[2])
+    elif sys.argv[1:2] == ["markdown"]:
+        markdown(sys.argv[2])
     elif sys.argv[1:2] == ["compare"]:
         compare(sys.argv[2], sys.argv[3])
     else:

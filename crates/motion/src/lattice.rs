@@ -18,7 +18,7 @@ use behavior_core::rng::seeded;
 use pathfinding::directed::astar::astar;
 use pathfinding::directed::dijkstra::dijkstra_all;
 use std::cell::{Cell, RefCell};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::f32::consts::PI;
 
 /// The grid's spacing on the floor, m: two of the space's 0.05 m steps.
@@ -283,6 +283,76 @@ pub fn lattice_plan(
             cell: LATTICE_CELL,
             expansions: lattice.expanded.get(),
         })
+    }
+}
+
+/// The floor the base can drive to from a start: the lattice's cells joined to the cells about
+/// the start by cells where the base fits at some heading (as the search's guide is joined to
+/// the goal). A place to stand outside them lies in a pocket no lattice path leads into.
+pub struct Reachable {
+    start: BaseConfig,
+    cells: HashSet<(i32, i32)>,
+}
+
+impl Reachable {
+    /// Whether the base's cell at `c`, or one within the search's goal radius of it (the last
+    /// node a lattice path drives into `c` from), is reachable.
+    pub fn contains(&self, c: &BaseConfig) -> bool {
+        let r = (GOAL_RADIUS / LATTICE_CELL).ceil() as i32;
+        let (i, j) = (
+            ((c.x - self.start.x) / LATTICE_CELL).round() as i32,
+            ((c.y - self.start.y) / LATTICE_CELL).round() as i32,
+        );
+        (i - r..=i + r).any(|a| {
+            (j - r..=j + r).any(|b| {
+                let at = (
+                    self.start.x + a as f32 * LATTICE_CELL,
+                    self.start.y + b as f32 * LATTICE_CELL,
+                );
+                (at.0 - c.x).hypot(at.1 - c.y) <= GOAL_RADIUS && self.cells.contains(&(a, b))
+            })
+        })
+    }
+}
+
+/// The cells of `space`'s lattice anchored at `start` (within its bounds) that the base reaches
+/// from the cells about the start, each where it fits at some heading.
+pub fn reachable_from(space: &BaseSpace<'_>, start: &BaseConfig) -> Reachable {
+    let lattice = Lattice {
+        space,
+        start: *start,
+        goal: *start,
+        free: RefCell::new(HashMap::new()),
+        budget: 0,
+        to_goal: HashMap::new(),
+        expanded: Cell::new(0),
+    };
+    let (min, max) = space.bounds();
+    let (lo, hi) = (
+        lattice.cell_of(min[0], min[1]),
+        lattice.cell_of(max[0], max[1]),
+    );
+    let within = |(i, j): (i32, i32)| (lo.0..=hi.0).contains(&i) && (lo.1..=hi.1).contains(&j);
+    let near = -START_REACH..=START_REACH;
+    let mut cells = HashSet::new();
+    let mut frontier: Vec<(i32, i32)> = near
+        .clone()
+        .flat_map(|i| near.clone().map(move |j| (i, j)))
+        .filter(|&c| lattice.fits(c.0, c.1))
+        .collect();
+    cells.extend(frontier.iter().copied());
+    while let Some((i, j)) = frontier.pop() {
+        for (di, dj) in (0..LATTICE_HEADINGS).map(ahead) {
+            let next = (i + di, j + dj);
+            if within(next) && !cells.contains(&next) && lattice.fits(next.0, next.1) {
+                cells.insert(next);
+                frontier.push(next);
+            }
+        }
+    }
+    Reachable {
+        start: *start,
+        cells,
     }
 }
 

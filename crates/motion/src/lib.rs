@@ -73,6 +73,6 @@ pub use arm::{ArmBody, ArmSpace, any_config, closest_turn};
 pub use base::{BaseConfig, BaseSpace, Footprint, home_extent, stands_inside};
 pub use error::PlanError;
 pub use hand::{HAND_RESOLUTION, HandBody, HandConfig, HandSpace};
-pub use lattice::lattice_plan;
+pub use lattice::{Reachable, lattice_plan, reachable_from};
 pub use navigate::{Standing, floor_gap, inflated, shapes_in};
 pub use rrt::{Path, PlanParams, Planned, Space, plan, smooth, steps_along, valid};

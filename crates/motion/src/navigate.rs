@@ -140,7 +140,20 @@ impl Standing {
     /// A place to stand facing `object`: at each of `STAND_DISTANCES` from its centre in turn,
     /// `STAND_HEADINGS` random headings, the first that is clear and sees it.
     pub fn near(&self, world: &World, object: ObjectId, rng: &mut SimRng) -> Option<BaseConfig> {
-        self.search(world, object, rng, |c| self.sees(world, c, object))
+        self.near_where(world, object, &|_| true, rng)
+    }
+
+    /// As [`Standing::near`], but only places that `accept` takes (checked last).
+    pub fn near_where(
+        &self,
+        world: &World,
+        object: ObjectId,
+        accept: &dyn Fn(&BaseConfig) -> bool,
+        rng: &mut SimRng,
+    ) -> Option<BaseConfig> {
+        self.search(world, object, rng, |c| {
+            self.sees(world, c, object) && accept(c)
+        })
     }
 
     /// As [`Standing::near`], but the first clear place within `reach` of the object's box

@@ -7,7 +7,7 @@
 //! a hand holds.
 
 use crate::execute::{RunError, Watcher};
-use crate::physical::{Attempt, Stepper, attempt, base_config, call_rng};
+use crate::physical::{Attempt, Stepper, attempt, call_rng};
 use crate::primitive::{Call, Failure, Primitive};
 use crate::symbolic::put;
 use crate::tuning::Tuning;
@@ -407,24 +407,12 @@ pub fn use_tool(
     }
 }
 
-/// Whether, from where the episode's robot stands, a hand reaches `object`: given a
-/// `placement` (a PLACE_* call), a place for what it holds (see the manipulator's `reaches`);
-/// else as NAVIGATE_TO's test of places to stand asks, at the place it stands (a hand reaches
-/// the object for a grasp, or, holding something, a place on or in it). The same test on both
-/// sides: checked for a grasp after a drive chosen for a placement, an envelope sorted on
-/// another was "not in reach after 10 navigations, each of which arrived". True with no
-/// episode.
+/// Whether, from where the episode's robot stands, a hand reaches `object` for a grasp, or,
+/// holding something and given a `placement` (a PLACE_* call), a place for it (see
+/// the manipulator's `reaches`); true with no episode.
 pub fn reaches(env: &Env, object: ObjectId, placement: Option<&Call>, tuning: &Tuning) -> bool {
-    env.robot().is_none_or(|robot| {
-        let hands = manipulator(robot);
-        if placement.is_some() {
-            return hands.reaches(env, object, placement, tuning);
-        }
-        match hands.reach_test(env, object, tuning) {
-            Some(stands) => stands(&base_config(env)),
-            None => hands.reaches(env, object, None, tuning),
-        }
-    })
+    env.robot()
+        .is_none_or(|robot| manipulator(robot).reaches(env, object, placement, tuning))
 }
 
 /// How a recording names the forced grasp of a physical GRASP (see `physical.rs`'s

@@ -12,15 +12,16 @@ use crate::manipulation::manipulator;
 use crate::primitive::{Call, Failure};
 use crate::symbolic::{call_seed, limited_links, open_all_the_way, stand_for};
 use crate::tuning::Tuning;
+use behavior_bddl::GroundGoal;
 use behavior_core::rng::{SimRng, seeded};
 use behavior_core::wrap_angle;
 use behavior_core::{DOOR_SYNSET, Predicate};
 use behavior_env::Env;
 use behavior_motion::PlanError;
 use behavior_motion::Standing;
-use behavior_motion::lattice_plan;
 use behavior_motion::{BaseConfig, BaseSpace, home_extent};
 use behavior_motion::{PlanParams, Space, plan, steps_along};
+use behavior_motion::{Reachable, lattice_plan, reachable_from};
 use behavior_robots::{BaseDrive, BaseMove, Robot};
 use behavior_sim::{BodyRef, ObjectId, World};
 use std::f32::consts::PI;
@@ -249,7 +250,7 @@ fn plan_base_with(
     standing
         .filter
         .exclude_bodies
-        .extend(hinged_parts(world, leaves));
+        .extend(hinged_parts(world, leaves, &opened_by_goal(env)));
     let reach = robot.spec().arm_reach;
     let start = standing.config;
     // The robot stands first where a hand reaches the object from.
@@ -265,10 +266,15 @@ fn plan_base_with(
         ..tuning.budget
     };
     // A clear place to stand may lie in a pocket no way leads into (between a cabinet and a
-    // corner), which the lattice tells at once: then another one.
+    // corner), which the lattice tells at once: then another one, among the places the base
+    // reaches from where it starts (flooded once the lattice has said so; a bedroom's stands
+    // by a present on the floor lay in three pockets between the bed, the present and a wall).
+    let mut reachable: Option<Reachable> = None;
     for k in 0..tuning.stand_plans {
         let mut rng = seeded(seed.wrapping_add(k));
-        let Some(goal) = stand_for(world, &standing, call.object, reach, arm, &mut rng) else {
+        let only = |c: &BaseConfig| reachable.as_ref().is_none_or(|r| r.contains(c));
+        let found = stand_for(world, &standing, call.object, reach, arm, &only, &mut rng);
+        let Some(goal) = found else {
             break;
         };
         let space = home_space(world, &standing, &start, &goal);
@@ -289,7 +295,12 @@ fn plan_base_with(
                 return Ok(dense);
             }
             Err(e) if ends_navigation(&e, &params) => return Err(e.into()),
-            Err(other) => last = other.into(),
+            Err(other) => {
+                if reachable.is_none() && matches!(other, PlanError::NoLatticePath { .. }) {
+                    reachable = Some(reachable_from(&space, &from));
+                }
+                last = other.into();
+            }
         }
     }
     Err(last)
@@ -369,16 +380,34 @@ fn straight(a: &BaseConfig, b: &BaseConfig, resolution: f32) -> Vec<BaseConfig> 
 
 /// Every object's links — the leaves of doors, the doors, lids and drawers of furniture — but,
 /// with [`Leaves::AsObstacles`], those of the home's open doors (`open_doors`): a leaf open
-/// against the wall stands beside the way, and what the robot carries must pass it.
-fn hinged_parts(world: &World, leaves: Leaves) -> Vec<BodyRef> {
+/// against the wall stands beside the way, and what the robot carries must pass it; and never
+/// those of an open one of `goal_opens`, whose openness is part of the goal (a present's lid
+/// opened, then shut by the robot driving past it to the next present). A closed one is
+/// pushed as any: a door to be locked stands in the way to the next.
+fn hinged_parts(world: &World, leaves: Leaves, goal_opens: &[ObjectId]) -> Vec<BodyRef> {
     let obstacle = |id: ObjectId, category: &str| {
-        leaves == Leaves::AsObstacles && category == DOOR_SYNSET && world.state(id, Predicate::Open)
+        let open = world.state(id, Predicate::Open);
+        let open_door = category == DOOR_SYNSET && open;
+        (leaves == Leaves::AsObstacles && open_door) || (open && goal_opens.contains(&id))
     };
     world
         .bodies()
         .objects()
         .filter(|(id, o)| !obstacle(*id, &o.category))
         .flat_map(|(id, o)| (0..o.links.len()).map(move |l| BodyRef::link(id, l)))
+        .collect()
+}
+
+/// The objects whose openness the activity's goal speaks of (bound to the episode's world).
+fn opened_by_goal(env: &Env) -> Vec<ObjectId> {
+    let Some(bindings) = env.bindings() else {
+        return Vec::new();
+    };
+    let goal = GroundGoal::new(&env.config().activity);
+    goal.atoms
+        .iter()
+        .filter(|a| a.predicate == Predicate::Open)
+        .filter_map(|a| bindings.get(a.subject.0 as usize).copied().flatten())
         .collect()
 }
 

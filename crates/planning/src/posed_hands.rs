@@ -523,7 +523,7 @@ const OPEN_ABOVE: f32 = 0.3;
 
 /// Whether a hand can come to `point` from the shoulder's side or from above: nothing fixed
 /// (furniture, walls) lies across the floor from it toward the shoulder, or above it and
-/// between the shoulder and the point above it. The
+/// between it and the shoulder at the shoulder's height. The
 /// robot's parts and `besides` aside; what moves would be pushed. (The hand flies free, with
 /// no arm: what matters is whether the point is walled in on the robot's side.)
 fn open_to(
@@ -548,13 +548,13 @@ fn open_to(
     };
     let across = (shoulder - point).with_z(0.0);
     let level = across.length();
-    // From above only where the shoulder sees the point above: a modem on a table beyond a
-    // wall is open above, and a robot stood behind the wall and planned its hand through it.
-    let above = point + Vector::Z * OPEN_ABOVE;
-    let over = above - shoulder;
+    // From above only where nothing stands between, at the shoulder's height, the shoulder
+    // and the point: a modem on a table beyond a wall is open above, and a robot stood behind
+    // the wall and planned its hand through it. (Aimed at the point above instead, the ray met
+    // the rim of the ashcan a hand was to put something in.)
     (level > 0.0 && clear(point, across / level, level))
         || (clear(point, Vector::Z, OPEN_ABOVE)
-            && clear(shoulder, over.normalize_or_zero(), over.length()))
+            && (level == 0.0 || clear(shoulder, -across / level, level)))
 }
 
 /// How far the body must go down (up, if negative) for a shoulder at `shoulder` to reach

@@ -435,8 +435,16 @@ fn navigate(
     rng: &mut SimRng,
 ) -> Result<(), Failure> {
     let standing = Standing::of(world, robot);
-    let config = stand_for(world, &standing, object, REACH_DISTANCE, None, rng)
-        .ok_or(Failure::NoPlaceToStand)?;
+    let config = stand_for(
+        world,
+        &standing,
+        object,
+        REACH_DISTANCE,
+        None,
+        &|_| true,
+        rng,
+    )
+    .ok_or(Failure::NoPlaceToStand)?;
     let z = robot.base_pose(world).translation.z;
     let pose = Pose::from_parts(
         Vector::new(config.x, config.y, z),
@@ -448,26 +456,29 @@ fn navigate(
 /// Where NAVIGATE_TO stands for `object`: facing it and seeing it within `reach` of it (the
 /// mode's reach), else clear within that reach, else seeing it from farther; for a floor, a
 /// clear place in its room. Given an `arm` test (physical Fetch: its arm reaches the object
-/// from there), the places within reach that pass it come first.
+/// from there), the places within reach that pass it come first. Only places that `only`
+/// accepts are taken at all (physical mode: those a base path can reach).
 pub(crate) fn stand_for(
     world: &World,
     standing: &Standing,
     object: ObjectId,
     reach: f32,
     arm: Option<&dyn Fn(&BaseConfig) -> bool>,
+    only: &dyn Fn(&BaseConfig) -> bool,
     rng: &mut SimRng,
 ) -> Option<BaseConfig> {
     if world.bodies().object(object).category == FLOOR_SYNSET {
-        return stand_in_room(world, standing, object, rng);
+        return stand_in_room(world, standing, object, only, rng);
     }
     let within = |accept: &dyn Fn(&BaseConfig) -> bool, rng: &mut SimRng| {
+        let accept = |c: &BaseConfig| only(c) && accept(c);
         standing
-            .near_within(world, object, reach, accept, rng)
-            .or_else(|| standing.within(world, object, reach, accept, rng))
+            .near_within(world, object, reach, &accept, rng)
+            .or_else(|| standing.within(world, object, reach, &accept, rng))
     };
     arm.and_then(|arm| within(arm, rng))
         .or_else(|| within(&|_| true, rng))
-        .or_else(|| standing.near(world, object, rng))
+        .or_else(|| standing.near_where(world, object, only, rng))
 }
 
 /// A clear place in the room whose floor is `floor`, facing a random way.
@@ -475,6 +486,7 @@ fn stand_in_room(
     world: &World,
     standing: &Standing,
     floor: ObjectId,
+    only: &dyn Fn(&BaseConfig) -> bool,
     rng: &mut SimRng,
 ) -> Option<BaseConfig> {
     let room = world.rooms().iter().find(|r| r.floor == Some(floor))?;
@@ -488,7 +500,7 @@ fn stand_in_room(
             y,
             uniform(rng, -std::f32::consts::PI, std::f32::consts::PI),
         );
-        (room.contains(x, y) && standing.clear_at(world, &c)).then_some(c)
+        (room.contains(x, y) && standing.clear_at(world, &c) && only(&c)).then_some(c)
     })
 }
 

@@ -7,13 +7,14 @@
 //! ([`Failure::NoEffect`]) rather than setting the state.
 
 use crate::execute::Watcher;
-use crate::manipulation::{Grip, Manipulator};
+use crate::manipulation::{Grip, Manipulator, manipulator};
 use crate::physical::{Attempt, Stepper, attempt, call_rng};
 use crate::primitive::{Call, Failure};
 use crate::symbolic::check;
 use crate::tuning::Tuning;
 use behavior_core::Predicate;
 use behavior_env::Env;
+use behavior_robots::Robot;
 use behavior_sim::{OUTLET_OFFSET, ObjectId, PointKind, World};
 use rapier3d::math::{Pose, Rotation, Vector};
 use std::f32::consts::FRAC_PI_2;
@@ -195,8 +196,9 @@ fn dirty(world: &World, tool: ObjectId, object: ObjectId) -> bool {
 /// Poses of the hand that put what it holds [`UNDER_TAP`] below where `call.object`'s drops
 /// start, on its side away from the palm (a palm holding a sponge from above catches the drops
 /// itself): first with the drops falling [`GRAZE`] past its far side, which they touch on the
-/// way down, then onto its top [`TAP_INSET`] in from that side; the tool as it is held and
-/// turned about the vertical by quarter turns (one of them keeps it off the tap).
+/// way down, then onto its top [`TAP_INSET`] in from that side; the tool held as the hand can
+/// set it down ([`Held::poses`]) and turned about the vertical by quarter turns (one of them
+/// keeps it off the tap). With where the drops start.
 fn under_tap(env: &Env, call: &Call) -> Result<(Vec<Pose>, Vector), Failure> {
     let (Some(world), Some(robot)) = (env.world(), env.robot()) else {
         return Err(Failure::Unavailable("no episode"));
@@ -209,35 +211,26 @@ fn under_tap(env: &Env, call: &Call) -> Result<(Vec<Pose>, Vector), Failure> {
         })?;
     let drops_from =
         world.bodies().pose(call.object).transform_point(outlet) - Vector::Z * OUTLET_OFFSET;
-    let tool = robot.held(call.hand).ok_or(Failure::HandEmpty)?;
-    let holder = robot
-        .hand_object(call.hand)
-        .ok_or(Failure::NoHand(call.hand))?;
-    let palm = world.bodies().pose(holder).translation;
-    let b = world.bodies().aabb(tool);
-    let top = b.center().with_z(b.maxs.z);
-    let half = 0.5 * (b.maxs - b.mins);
+    let held = Held::of(world, robot, call)?;
     let mut goals = Vec::new();
-    for k in 0..4 {
-        let turn = Rotation::from_rotation_z(FRAC_PI_2 * k as f32);
-        let turned = about(top, turn, top);
-        // The box turned by quarter turns swaps its sides on the floor.
-        let (hx, hy) = if k % 2 == 0 {
-            (half.x, half.y)
-        } else {
-            (half.y, half.x)
-        };
-        let away = (top - turned.transform_point(palm)).with_z(0.0);
+    for (pose, turn) in held.turned() {
+        let (lo, hi) = held.boxed(&pose);
+        let top = (0.5 * (lo + hi)).with_z(hi.z);
+        // Turned about the vertical through the middle of its top, which stays put.
+        let turned = about(top, turn, top) * pose;
+        let (lo, hi) = held.boxed(&turned);
+        let half = 0.5 * (hi - lo);
+        let away = (top - held.palm(&turned)).with_z(0.0);
         let way = if away.length() > 1e-3 {
             away.normalize()
         } else {
             Vector::X
         };
-        let side = way.x.abs() * hx + way.y.abs() * hy;
+        let side = way.x.abs() * half.x + way.y.abs() * half.y;
         for far in [side + GRAZE, (side - TAP_INSET).max(0.0)].map(|d| top + way * d) {
             for gap in UNDER_TAP {
                 let by = Pose::from_translation(drops_from - Vector::Z * gap - far);
-                goals.extend(holder_goal(world, robot, call.hand, tool, by * turned));
+                goals.push(held.holder_at(&(by * turned)));
             }
         }
     }
@@ -266,8 +259,9 @@ fn missed_by(world: &World, tool: ObjectId, drops_from: Vector) -> Vector {
 
 /// Poses of the hand that put `tool` [`HOVER`] above one of the dirty spots of `call.object`
 /// nearest the hand ([`SPOT_CHOICES`] of them), the spot under the middle of the tool's bottom
-/// or under one of its sides (a spot by a tub's wall is wiped by the tool's edge), the tool as
-/// held and turned by quarter turns; `None` where no dirt is left that the tool takes.
+/// or under one of its sides (a spot by a tub's wall is wiped by the tool's edge), the tool
+/// held as the hand can set it down and turned by quarter turns; `None` where no dirt is left
+/// that the tool takes.
 fn spot_goals(env: &Env, call: &Call, tool: ObjectId) -> Option<Vec<Pose>> {
     let (world, robot) = (env.world()?, env.robot()?);
     let kinds: &[Predicate] = if world.state(tool, Predicate::Soaked) {
@@ -275,8 +269,8 @@ fn spot_goals(env: &Env, call: &Call, tool: ObjectId) -> Option<Vec<Pose>> {
     } else {
         &[Predicate::Dusty]
     };
-    let holder = robot.hand_object(call.hand)?;
-    let hand_at = world.bodies().pose(holder).translation;
+    let held = Held::of(world, robot, call).ok()?;
+    let hand_at = held.palm(&world.bodies().pose(tool));
     let mut spots: Vec<Vector> = kinds
         .iter()
         .filter(|&&k| world.state(call.object, k))
@@ -286,23 +280,19 @@ fn spot_goals(env: &Env, call: &Call, tool: ObjectId) -> Option<Vec<Pose>> {
         return None;
     }
     spots.sort_by(|a, b| (*a - hand_at).length().total_cmp(&(*b - hand_at).length()));
-    let b = world.bodies().aabb(tool);
-    let bottom = b.center().with_z(b.mins.z);
-    let half = 0.5 * (b.maxs - b.mins);
     let mut goals = Vec::new();
     for spot in spots.into_iter().take(SPOT_CHOICES) {
-        for k in 0..4 {
-            let turn = Rotation::from_rotation_z(FRAC_PI_2 * k as f32);
-            let (hx, hy) = if k % 2 == 0 {
-                (half.x, half.y)
-            } else {
-                (half.y, half.x)
-            };
-            let (sx, sy) = ((hx - TAP_INSET).max(0.0), (hy - TAP_INSET).max(0.0));
+        for (pose, turn) in held.turned() {
+            let (lo, hi) = held.boxed(&pose);
+            let bottom = (0.5 * (lo + hi)).with_z(lo.z);
+            let turned = about(bottom, turn, bottom) * pose;
+            let (lo, hi) = held.boxed(&turned);
+            let half = 0.5 * (hi - lo);
+            let (sx, sy) = ((half.x - TAP_INSET).max(0.0), (half.y - TAP_INSET).max(0.0));
             for (dx, dy) in [(0.0, 0.0), (sx, 0.0), (-sx, 0.0), (0.0, sy), (0.0, -sy)] {
-                let at = spot + Vector::new(dx, dy, HOVER);
-                let moved = about(bottom, turn, at);
-                goals.extend(holder_goal(world, robot, call.hand, tool, moved));
+                let to = spot + Vector::new(dx, dy, HOVER);
+                let by = Pose::from_translation(to - bottom);
+                goals.push(held.holder_at(&(by * turned)));
             }
         }
     }
@@ -315,16 +305,70 @@ fn about(point: Vector, turn: Rotation, to: Vector) -> Pose {
     Pose::from_translation(to) * Pose::from_rotation(turn) * Pose::from_translation(-point)
 }
 
-/// The pose of hand `hand`'s holding part that moves `tool` (held as it is now) by `moved`.
-fn holder_goal(
-    world: &World,
-    robot: &behavior_robots::Robot,
-    hand: usize,
-    tool: ObjectId,
-    moved: Pose,
-) -> Option<Pose> {
-    let holder = robot.hand_object(hand)?;
-    let grip = world.bodies().pose(holder).inverse() * world.bodies().pose(tool);
-    let goal = moved * world.bodies().pose(tool);
-    Some(goal * grip.inverse())
+/// What a hand holds, for putting it somewhere: its shape's box, how the hand grips it, and
+/// the poses it can be brought to as held (the manipulator's `set_down_turns`: a palm keeps
+/// it as it is, a gripper holds it hanging below, pointing down).
+struct Held {
+    /// Its box in its own frame.
+    local: (Vector, Vector),
+    /// Its pose in the holding part's frame.
+    grip: Pose,
+    /// The poses it may be held at, before any turn about the vertical.
+    poses: Vec<Pose>,
+}
+
+impl Held {
+    fn of(world: &World, robot: &Robot, call: &Call) -> Result<Held, Failure> {
+        let tool = robot.held(call.hand).ok_or(Failure::HandEmpty)?;
+        let holder = robot
+            .hand_object(call.hand)
+            .ok_or(Failure::NoHand(call.hand))?;
+        let now = world.bodies().pose(tool);
+        let grip = world.bodies().pose(holder).inverse() * now;
+        let b = world.bodies().local_aabb(tool);
+        let poses = manipulator(robot)
+            .set_down_turns(world, robot, call, &grip)
+            .into_iter()
+            .map(|turned| turned.unwrap_or(now))
+            .collect();
+        Ok(Held {
+            local: (b.mins, b.maxs),
+            grip,
+            poses,
+        })
+    }
+
+    /// Each pose it may be held at with each quarter turn about the vertical.
+    fn turned(&self) -> impl Iterator<Item = (Pose, Rotation)> + '_ {
+        self.poses.iter().flat_map(|&pose| {
+            (0..4).map(move |k| (pose, Rotation::from_rotation_z(FRAC_PI_2 * k as f32)))
+        })
+    }
+
+    /// Its box in the world at `pose`: lowest and highest corners.
+    fn boxed(&self, pose: &Pose) -> (Vector, Vector) {
+        let (a, b) = self.local;
+        let corners = (0..8).map(|k| {
+            let pick = |bit: usize, lo: f32, hi: f32| if k & bit == 0 { lo } else { hi };
+            pose.transform_point(Vector::new(
+                pick(1, a.x, b.x),
+                pick(2, a.y, b.y),
+                pick(4, a.z, b.z),
+            ))
+        });
+        corners.fold(
+            (Vector::splat(f32::MAX), Vector::splat(f32::MIN)),
+            |(lo, hi), c| (lo.min(c), hi.max(c)),
+        )
+    }
+
+    /// The holding part's pose that holds it at `pose`.
+    fn holder_at(&self, pose: &Pose) -> Pose {
+        *pose * self.grip.inverse()
+    }
+
+    /// Where the holding part is when it is held at `pose`.
+    fn palm(&self, pose: &Pose) -> Vector {
+        self.holder_at(pose).translation
+    }
 }

@@ -196,8 +196,8 @@ fn solve_physically(
 
 #[test]
 fn laying_tile_floors_is_solved_physically_on_one_of_six_seeds_and_replays_bit_for_bit() {
-    // Tiles carried to the bathroom floor (seeds 1, 2 and 4 solved).
-    let seeds = [1, 2, 4, 0, 3, 5];
+    // Tiles carried to the bathroom floor (every seed of 0–5 solved).
+    let seeds = [0, 1, 2, 3, 4, 5];
     solves_at_least(
         1,
         seeds,
@@ -209,8 +209,8 @@ fn laying_tile_floors_is_solved_physically_on_one_of_six_seeds_and_replays_bit_f
 
 #[test]
 fn re_shelving_library_books_is_solved_physically_on_one_of_six_seeds_and_replays_bit_for_bit() {
-    // Books carried from the tables onto a shelf (seeds 0, 1, 3 and 5 solved).
-    let seeds = [0, 1, 3, 5, 2, 4];
+    // Books carried from the tables onto a shelf (seeds 0, 1, 3 and 4 solved).
+    let seeds = [0, 1, 3, 4, 2, 5];
     let activity = "re-shelving_library_books";
     solves_at_least(1, seeds, activity, "place_ontop", RobotKind::Behavior);
 }
@@ -256,8 +256,8 @@ fn fetch_throws_away_leftovers_physically_on_one_of_six_seeds_and_replays_bit_fo
 fn fetch_carries_plywood_upright_through_doors_on_one_of_six_seeds_and_replays_bit_for_bit() {
     // Sheets of plywood 0.9 m across taken by their edge off the floor (the base standing clear
     // of the sheet, not over it), carried upright beside the base through doorways 0.75 m wide,
-    // and laid on the kitchen floor (seeds 1 and 5 solved).
-    let seeds = [1, 5, 0, 2, 3, 4];
+    // and laid on the kitchen floor (seeds 1, 3 and 5 solved).
+    let seeds = [1, 3, 5, 0, 2, 4];
     solves_at_least(
         1,
         seeds,

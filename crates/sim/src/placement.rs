@@ -196,6 +196,8 @@ impl World {
 
     /// Places `object` so that every one of `relations` holds at once, each attempt at a random
     /// heading (see [`World::place_jointly`]): how the activity sampler places, as iGibson's does.
+    /// A thing at least 1 m long set on a floor is turned by a random quarter turn instead, so
+    /// that it stands square to the walls (a car across a garage closed the way to its shelves).
     pub fn place_turning(
         &mut self,
         object: ObjectId,

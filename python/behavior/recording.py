@@ -22,17 +22,21 @@ def export_lerobot(
     dataset: "str | os.PathLike",
     recordings: "list[str | os.PathLike]",
     image_size: "int | None" = 128,
+    format: str = "lerobot-v3",
 ) -> dict:
-    """Writes ``recordings`` (one episode each, all of one robot) as a LeRobot dataset (format
-    v2.1) in the new folder ``dataset``, as ``behavior demos export --lerobot`` does: each
+    """Writes ``recordings`` (one episode each, all of one robot) as a LeRobot dataset in the
+    new folder ``dataset``, in ``format``: ``"lerobot-v3"`` (LeRobot 0.4's layout, many
+    episodes to a file) or ``"lerobot-v2.1"`` (an episode to a file), as ``behavior demos export
+    --lerobot`` does: each
     recording is re-simulated, so the dataset holds what the agent observed at every step
     (proprioception, ``task_obs`` and, unless ``image_size`` is ``None``, the robot's camera
     re-rendered at ``image_size`` pixels, 16–1024). A recording that does not re-simulate bit
     for bit, or is cut, is refused, and nothing is left under ``dataset``.
 
-    Returns ``dataset``, ``format``, ``episodes``, ``frames``, ``teleoperated``, ``images`` and
-    ``recordings`` (each file with its frames). Raises ``FileExistsError`` when ``dataset`` is
+    Returns ``dataset``, ``format``, ``episodes``, ``frames``, ``teleoperated``, ``planned``
+    (episodes whose recordings say the planner acted), ``images`` and ``recordings`` (each file
+    with its frames). Raises ``FileExistsError`` when ``dataset`` is
     there and not empty, ``ValueError`` for a recording that cannot be exported, ``OSError`` for
     files that cannot be read or written."""
     paths = [os.fspath(r) for r in recordings]
-    return json.loads(_core.export_lerobot(os.fspath(dataset), paths, image_size))
+    return json.loads(_core.export_lerobot(os.fspath(dataset), paths, image_size, format))

@@ -5,8 +5,8 @@
 
 use crate::build::catalog;
 use behavior_env::Env;
-use behavior_env::record::lerobot::{ExportError, ExportOptions, export};
-use behavior_env::record::{ReadError, RecordError, read, replay_with};
+use behavior_env::record::lerobot::{ExportError, ExportOptions, Format, export};
+use behavior_env::record::{ReadError, RecordError, RecordingSetup, read, replay_with};
 use behavior_planning::RecordedCall;
 use pyo3::exceptions::{PyFileExistsError, PyOSError, PyValueError};
 use pyo3::prelude::*;
@@ -20,7 +20,7 @@ pub fn start(path: &Path, env: &mut Env, activity: &str, checkpoint_every: u32) 
         .source(activity)
         .map_err(|e| PyValueError::new_err(e.to_string()))?
         .text;
-    env.record_to(path, &definition, checkpoint_every)
+    env.record_to(path, RecordingSetup::new(&definition, checkpoint_every))
         .map_err(record_error)
 }
 
@@ -75,21 +75,30 @@ pub fn replay(py: Python<'_>, path: PathBuf, verify: bool) -> PyResult<String> {
     })
 }
 
-/// Writes `recordings` as a LeRobot v2.1 dataset in the folder `dataset`, with the robot's camera
-/// re-rendered at `image_size` pixels (none: no images), as `behavior demos export --lerobot`
-/// does; returns its summary as JSON.
+/// Writes `recordings` as a LeRobot dataset in the folder `dataset`, in `format`
+/// (`lerobot-v3` or `lerobot-v2.1`), with the robot's camera re-rendered at `image_size` pixels
+/// (none: no images), as `behavior demos export --lerobot` does; returns its summary as JSON.
 #[pyfunction]
-#[pyo3(signature = (dataset, recordings, image_size))]
+#[pyo3(signature = (dataset, recordings, image_size, format))]
 pub fn export_lerobot(
     py: Python<'_>,
     dataset: PathBuf,
     recordings: Vec<PathBuf>,
     image_size: Option<u32>,
+    format: &str,
 ) -> PyResult<String> {
+    let format = Format::from_name(format).ok_or_else(|| {
+        let names: Vec<&str> = Format::ALL.iter().map(|f| f.name()).collect();
+        PyValueError::new_err(format!(
+            "format must be one of {}, not {format:?}",
+            names.join(", ")
+        ))
+    })?;
     py.detach(|| -> PyResult<String> {
         let catalog = catalog().map_err(|e| PyValueError::new_err(e.to_string()))?;
         let options = ExportOptions {
             image_side: image_size,
+            format,
         };
         let summary = export::<RecordedCall>(catalog.knowledge(), &recordings, &dataset, &options)
             .map_err(export_error)?;

@@ -6,7 +6,6 @@
 mod bddl;
 mod bench_env;
 mod bench_plan;
-#[cfg(feature = "lerobot")]
 mod demos;
 mod episode;
 mod facts;
@@ -84,8 +83,8 @@ enum Command {
     /// checklist, Q and the metrics at every step.
     #[cfg(feature = "web")]
     View(serve::ViewArgs),
-    /// Demonstration datasets: recordings exported for imitation learning.
-    #[cfg(feature = "lerobot")]
+    /// Demonstration datasets: the planner's demonstrations generated, recordings exported for
+    /// imitation learning.
     #[command(subcommand)]
     Demos(demos::DemosCommand),
     /// Benchmarks of the whole system.
@@ -129,7 +128,6 @@ fn main() -> ExitCode {
         Command::Serve(args) => serve::serve(args, cli.data_dir.as_deref()),
         #[cfg(feature = "web")]
         Command::View(args) => serve::view(args, cli.data_dir.as_deref()),
-        #[cfg(feature = "lerobot")]
         Command::Demos(command) => demos::run(command, cli.data_dir.as_deref()),
         Command::Bench(BenchCommand::Env(args)) => bench_env::run(args, cli.data_dir.as_deref()),
         Command::Bench(BenchCommand::Plan(args)) => bench_plan::run(args, cli.data_dir.as_deref()),

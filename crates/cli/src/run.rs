@@ -5,7 +5,7 @@ use crate::plot::plot_episode;
 use crate::prelude::Prelude;
 use crate::video::{Video, VideoArgs};
 use anyhow::{Context, Result};
-use behavior_env::record::CHECKPOINT_EVERY;
+use behavior_env::record::{CHECKPOINT_EVERY, RecordingSetup};
 use behavior_env::{Agent, EpisodeMetrics};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
@@ -67,7 +67,10 @@ pub fn run(args: RunArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         config.max_steps = args.steps.max(1);
     })?;
     if let Some(path) = &args.record {
-        env.record_to(path, &source.text, args.checkpoint_every)?;
+        env.record_to(
+            path,
+            RecordingSetup::new(&source.text, args.checkpoint_every),
+        )?;
     }
     let mut video = args.video.start(&env, &prelude.knowledge().taxonomy)?;
     let bar = progress(args.steps, args.json);

@@ -7,7 +7,7 @@ use crate::sample::all_covering;
 use crate::scene::with_clutter;
 use crate::video::{Video, VideoArgs};
 use anyhow::{Context, Result, bail};
-use behavior_env::record::CHECKPOINT_EVERY;
+use behavior_env::record::{CHECKPOINT_EVERY, Provenance, RecordingSetup};
 use behavior_env::{Env, EnvConfig, EpisodeMetrics};
 use behavior_planning::{
     Executed, GivenUp, Limits, Mode, PrimitiveSet, PrimitiveSpace, RunError, Solution, Solver,
@@ -96,7 +96,8 @@ pub fn solve(args: SolveArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
     })?;
     let mut env = built.env;
     if let Some(path) = &args.record {
-        env.record_to(path, &built.source.text, CHECKPOINT_EVERY)?;
+        let setup = RecordingSetup::new(&built.source.text, CHECKPOINT_EVERY).by(planner(mode));
+        env.record_to(path, setup)?;
     }
     let mut video = args.video.start(&env, &prelude.knowledge().taxonomy)?;
     let limits = Limits {
@@ -378,4 +379,12 @@ fn print_all(all: &AllReport) {
         "the action mask of every primitive on every object at the start: {:.2} ms median, {:.1} ms at most",
         all.median_mask_ms, all.max_mask_ms
     );
+}
+
+/// What a recording of the planner's own plan, in `mode`, says of who acted.
+pub fn planner(mode: Mode) -> Provenance {
+    Provenance::Planner {
+        mode: mode.name().to_string(),
+        plan: "planner".to_string(),
+    }
 }

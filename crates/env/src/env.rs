@@ -5,7 +5,7 @@ use crate::edit::{Edit, WorldEdit};
 use crate::episode::{CheckpointError, Episode, Start, embody};
 use crate::metrics::{EpisodeMetrics, Series, Tracker};
 use crate::observation::{Obs, Sensor, SensorInput, task_obs};
-use crate::record::{RecordError, Recorder};
+use crate::record::{RecordError, Recorder, RecordingSetup};
 use crate::score::{Score, Scorer};
 use crate::sensors::{CameraSensor, LidarSensor, categories};
 use crate::timing::{StepTimings, Timed};
@@ -528,24 +528,23 @@ impl Env {
 
     /// Starts recording the episode just reset to `path` (an MCAP file; see [`crate::record`]):
     /// from now on every step and every edit ([`Env::apply`]) is written as it happens, until
-    /// [`Env::finish_recording`] or the next reset closes the file. `definition` is the
-    /// activity's BDDL text (a replay needs no other file); a full state is saved every
-    /// `checkpoint_every` steps. A recording already running is closed first.
+    /// [`Env::finish_recording`] or the next reset closes the file. `setup` holds the
+    /// activity's BDDL text (a replay needs no other file), how often a full state is saved and
+    /// who chooses the actions. A recording already running is closed first.
     pub fn record_to(
         &mut self,
         path: &std::path::Path,
-        definition: &str,
-        checkpoint_every: u32,
+        setup: RecordingSetup<'_>,
     ) -> Result<(), RecordError> {
         self.finish_recording()?;
-        self.recorder = Some(Recorder::create(path, self, definition, checkpoint_every)?);
+        self.recorder = Some(Recorder::create(path, self, setup)?);
         Ok(())
     }
 
     /// Closes the recording, if one is running, with MCAP's summary and index.
     pub fn finish_recording(&mut self) -> Result<(), RecordError> {
         match self.recorder.take() {
-            Some(recorder) => recorder.finish(),
+            Some(recorder) => recorder.finish(self),
             None => Ok(()),
         }
     }

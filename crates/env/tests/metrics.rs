@@ -2,6 +2,7 @@
 
 mod common;
 
+use behavior_env::record::RecordingSetup;
 use behavior_env::{Agent, Env};
 use behavior_robots::ActionSpace;
 
@@ -105,7 +106,8 @@ fn an_agent_is_normalized_by_a_recorded_demonstration() {
     let path = dir.path().join("demo.mcap");
     let mut env = common::env("bringing_in_wood");
     env.reset(6).unwrap();
-    env.record_to(&path, "(text)", 30).unwrap();
+    env.record_to(&path, RecordingSetup::new("(text)", 30))
+        .unwrap();
     let mut agent = Agent::named("random", 6).unwrap();
     let mut action = Vec::new();
     for _ in 0..60 {

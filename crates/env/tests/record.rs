@@ -4,7 +4,7 @@
 
 mod common;
 
-use behavior_env::record::{read, replay, resume, state_digest};
+use behavior_env::record::{RecordingSetup, read, replay, resume, state_digest};
 use behavior_env::{Agent, Env};
 use std::path::PathBuf;
 
@@ -31,7 +31,8 @@ fn record_with(
 ) -> Env {
     let mut env = Env::new(config);
     env.reset(5).unwrap();
-    env.record_to(path, "(definition text)", every).unwrap();
+    env.record_to(path, RecordingSetup::new("(definition text)", every))
+        .unwrap();
     let mut agent = Agent::named("random", 5).unwrap();
     let mut action = Vec::new();
     for _ in 0..steps {
@@ -59,6 +60,55 @@ fn a_recorded_episode_replays_bit_for_bit() {
     // The recording's last checkpoint is the digest of the original run's state.
     let (world, robot) = (env.world().unwrap(), env.robot().unwrap());
     assert_eq!(recording.checkpoints[3].1, state_digest(world, robot, 90));
+}
+
+#[test]
+fn the_last_step_is_checkpointed_and_the_poses_of_what_moved_rebuild_every_pose() {
+    let (_path_dir, path) = temp("last.mcap");
+    let env = record(&path, 70, 30);
+    let recording = read(&path).unwrap();
+    let steps: Vec<u32> = recording.checkpoints.iter().map(|(s, _)| *s).collect();
+    assert_eq!(steps, [0, 30, 60, 70], "the closing step checkpointed too");
+    let (world, robot) = (env.world().unwrap(), env.robot().unwrap());
+    assert_eq!(recording.checkpoints[3].1, state_digest(world, robot, 70));
+    let config = recording
+        .config(common::activity("bringing_in_wood"), common::taxonomy())
+        .unwrap();
+    let report = replay(&recording, config).unwrap();
+    assert!(report.identical && report.checkpoints == 4, "{report:?}");
+
+    // Every object's pose after the last step, rebuilt from the poses of what moved.
+    let last = recording.frames.last().unwrap().poses.clone().unwrap();
+    let now: Vec<[f32; 7]> = world
+        .bodies()
+        .objects()
+        .map(|(id, _)| {
+            let p = world.bodies().pose(id);
+            let (t, r) = (p.translation, p.rotation);
+            [t.x, t.y, t.z, r.x, r.y, r.z, r.w]
+        })
+        .collect();
+    assert_eq!(last.len(), recording.header.objects.len());
+    assert!(
+        last.iter()
+            .zip(&now)
+            .all(|(a, b)| a.map(f32::to_bits) == b.map(f32::to_bits))
+    );
+    // The file holds far fewer poses than objects × steps: most of a home does not move.
+    let bytes = std::fs::read(&path).unwrap();
+    let mut written = 0;
+    for message in mcap::MessageStream::new(&bytes).unwrap() {
+        let message = message.unwrap();
+        if message.channel.topic == "/poses" {
+            let value: serde_json::Value = serde_json::from_slice(&message.data).unwrap();
+            written += value["poses"].as_array().unwrap().len();
+        }
+    }
+    let objects = recording.header.objects.len();
+    assert!(
+        written < objects * 71 / 4,
+        "{written} poses written for {objects} objects over 71 states"
+    );
 }
 
 #[test]
@@ -234,7 +284,8 @@ fn the_episode_records_its_own_edits_and_a_replay_of_their_type_does_them_again(
     let (_dir, path) = temp("edited.mcap");
     let mut env = common::env("bringing_in_wood");
     env.reset(5).unwrap();
-    env.record_to(&path, "(definition text)", 10).unwrap();
+    env.record_to(&path, RecordingSetup::new("(definition text)", 10))
+        .unwrap();
     let plank = env
         .world()
         .unwrap()

@@ -7,7 +7,7 @@
 mod common;
 
 use behavior_env::Env;
-use behavior_env::record::{read, replay_with};
+use behavior_env::record::{RecordingSetup, read, replay_with};
 use behavior_motion::{HandConfig, HandSpace, Space};
 use behavior_planning::{
     Call, Failure, Mode, Primitive, RecordedCall, Tuning, grasp, hand_body, hand_grasp, hand_place,
@@ -210,7 +210,7 @@ fn a_recorded_physical_grasp_and_placement_replay_bit_for_bit() {
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("hand.mcap");
     let mut env = episode(RobotKind::Behavior);
-    env.record_to(&path, "", 10).unwrap();
+    env.record_to(&path, RecordingSetup::new("", 10)).unwrap();
     let book = object(&env, "book.n.02_1");
     let under = support(&env, book);
     for (primitive, target) in [

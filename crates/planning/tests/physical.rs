@@ -7,7 +7,7 @@ mod common;
 
 use behavior_core::Predicate;
 use behavior_env::Env;
-use behavior_env::record::{read, replay_with};
+use behavior_env::record::{RecordingSetup, read, replay_with};
 use behavior_motion::{BaseConfig, BaseSpace, Space, Standing};
 use behavior_planning::{
     Call, Mode, Primitive, RecordedCall, Tuning, base_config, drive_to, reaches, within_reach,
@@ -80,7 +80,7 @@ fn a_recorded_drive_replays_bit_for_bit() {
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("drive.mcap");
     let mut env = episode("bringing_in_wood", RobotKind::Behavior, 1);
-    env.record_to(&path, "", 10).unwrap();
+    env.record_to(&path, RecordingSetup::new("", 10)).unwrap();
     let call = Call {
         primitive: Primitive::NavigateTo,
         object: object(&env, "plywood.n.01_2"),

@@ -5,7 +5,7 @@
 #[path = "../../env/tests/common/mod.rs"]
 mod common;
 
-use behavior_env::record::{read, replay, replay_with};
+use behavior_env::record::{RecordingSetup, read, replay, replay_with};
 use behavior_planning::{Limits, Mode, RecordedCall, Solution, Solver};
 use behavior_robots::RobotKind;
 
@@ -53,7 +53,7 @@ fn a_recorded_solution_replays_bit_for_bit() {
     let activity = "putting_leftovers_away";
     let mut env = common::env(activity);
     env.reset(2).unwrap();
-    env.record_to(&path, "", 5).unwrap();
+    env.record_to(&path, RecordingSetup::new("", 5)).unwrap();
     let solution = solve_in(&mut env, Mode::Symbolic).unwrap();
     env.finish_recording().unwrap();
     assert!(solution.success, "{:?}", solution.given_up);
@@ -151,7 +151,7 @@ fn solve_physically(
     };
     let mut env = behavior_env::Env::new(config());
     env.reset(seed).unwrap();
-    env.record_to(&path, "", 50).unwrap();
+    env.record_to(&path, RecordingSetup::new("", 50)).unwrap();
     let solution = solve_in(&mut env, Mode::Physical).unwrap();
     env.finish_recording().unwrap();
     if !solution.success {

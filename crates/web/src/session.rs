@@ -15,6 +15,7 @@ use crate::teleop::Drive;
 use crate::xr::{Targets, XrInput, XrRig};
 use axum::body::Bytes;
 use behavior_env::Env;
+use behavior_env::record::{Provenance, RecordingSetup};
 use behavior_robots::ACTION_DIM;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -280,7 +281,9 @@ impl Running {
         if self.recording.is_none() {
             let path = fresh_path(&self.session.record_dir, &self.file_stem())?;
             let s = &mut self.session;
-            s.env.record_to(&path, &s.definition, s.checkpoint_every)?;
+            let setup =
+                RecordingSetup::new(&s.definition, s.checkpoint_every).by(Provenance::Person);
+            s.env.record_to(&path, setup)?;
             self.recording = Some(path);
         }
         self.session.env.record_device(&self.control)?;

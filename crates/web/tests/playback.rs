@@ -5,7 +5,7 @@
 mod common;
 mod support;
 
-use behavior_env::record::read;
+use behavior_env::record::{RecordingSetup, read};
 use behavior_robots::ACTION_DIM;
 use behavior_web::Playback;
 use support::{Socket, bind_local, next_frame, next_of, send, shutdown};
@@ -19,7 +19,7 @@ const STEPS: u32 = 40;
 fn record(path: &std::path::Path) -> Vec<[f32; 3]> {
     let mut env = common::env(ACTIVITY);
     env.reset(5).unwrap();
-    env.record_to(path, "", 10).unwrap();
+    env.record_to(path, RecordingSetup::new("", 10)).unwrap();
     let body = env.robot().unwrap().objects()[0];
     let position = |env: &behavior_env::Env| {
         let t = env.world().unwrap().bodies().pose(body).translation;

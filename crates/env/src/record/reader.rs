@@ -80,6 +80,9 @@ struct ActionMsg {
 #[derive(Deserialize)]
 struct PosesMsg {
     step: u32,
+    /// Whose poses follow (format 2); absent, every object's in order (format 1).
+    #[serde(default)]
+    objects: Option<Vec<usize>>,
     poses: Vec<[f32; 7]>,
 }
 
@@ -175,6 +178,8 @@ struct Reading {
     edits: Vec<(u32, serde_json::Value)>,
     devices: Vec<(u32, serde_json::Value)>,
     damage: Option<String>,
+    /// Every object's pose as of the last `/poses`.
+    poses: Vec<[f32; 7]>,
 }
 
 impl Reading {
@@ -188,12 +193,14 @@ impl Reading {
         match topic {
             "/header" => {
                 let header: Header = serde_json::from_slice(data).map_err(bad)?;
-                if header.format_version != FORMAT_VERSION {
+                if !(1..=FORMAT_VERSION).contains(&header.format_version) {
                     return Err(format!(
-                        "format version {} (this build reads {FORMAT_VERSION})",
+                        "format version {} (this build reads 1 to {FORMAT_VERSION})",
                         header.format_version
                     ));
                 }
+                // Until the first poses, each object at the origin, unturned.
+                self.poses = vec![[0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0]; header.objects.len()];
                 self.header = Some(header);
             }
             "/action" => {
@@ -209,8 +216,26 @@ impl Reading {
             }
             "/poses" => {
                 let m: PosesMsg = serde_json::from_slice(data).map_err(bad)?;
+                match m.objects {
+                    None => self.poses = m.poses,
+                    Some(objects) => {
+                        if objects.len() != m.poses.len() {
+                            return Err(format!(
+                                "{} objects for {} poses",
+                                objects.len(),
+                                m.poses.len()
+                            ));
+                        }
+                        for (i, pose) in objects.into_iter().zip(m.poses) {
+                            let Some(slot) = self.poses.get_mut(i) else {
+                                return Err(format!("the pose of object {i}, past the header's"));
+                            };
+                            *slot = pose;
+                        }
+                    }
+                }
                 if let Some(f) = self.frames.last_mut().filter(|f| f.step == m.step) {
-                    f.poses = Some(m.poses);
+                    f.poses = Some(self.poses.clone());
                 }
             }
             "/score" => {

@@ -1,6 +1,6 @@
 //! Writing a recording as the episode runs (see the module docs for the layout).
 
-use super::{CHUNK_BYTES, FORMAT_VERSION, Header, STATE_ENCODING, state_digest};
+use super::{CHUNK_BYTES, FORMAT_VERSION, Header, RecordingSetup, STATE_ENCODING, state_digest};
 use crate::env::Env;
 use crate::metrics::ACTION_HZ;
 use mcap::records::MessageHeader;
@@ -58,17 +58,23 @@ pub(crate) struct Recorder {
     channels: [u16; 8],
     sequence: u32,
     checkpoint_every: u32,
+    /// The poses last written, in the header's object order (empty before the first).
+    poses: Vec<[f32; 7]>,
+    /// The step of the last checkpoint written.
+    checkpointed: u32,
+    /// Whether the world was edited since the last poses were written.
+    edited: bool,
 }
 
 impl Recorder {
     /// Starts a recording of the episode `env` has just reset: writes the header, the starting
-    /// poses and the first checkpoint. `definition` is the activity's BDDL text.
+    /// poses and the first checkpoint, as `setup` asks.
     pub(crate) fn create(
         path: &Path,
         env: &Env,
-        definition: &str,
-        checkpoint_every: u32,
+        setup: RecordingSetup<'_>,
     ) -> Result<Recorder, RecordError> {
+        let checkpoint_every = setup.checkpoint_every.max(1);
         let (Some(start), Some(world)) = (env.start(), env.world()) else {
             return Err(RecordError::NoEpisode);
         };
@@ -104,7 +110,7 @@ impl Recorder {
             format_version: FORMAT_VERSION,
             crate_version: env!("CARGO_PKG_VERSION").to_string(),
             activity: config.activity.name.clone(),
-            definition: definition.to_string(),
+            definition: setup.definition.to_string(),
             scene: start.instance.scene.name.clone(),
             seed: start.seed,
             robot: config.robot.name().to_string(),
@@ -112,20 +118,24 @@ impl Recorder {
             physics_hz: config.physics.count() * ACTION_HZ,
             action_hz: ACTION_HZ,
             max_steps: config.max_steps,
-            checkpoint_every: checkpoint_every.max(1),
+            checkpoint_every,
             instance: start.instance.clone(),
             objects: world
                 .bodies()
                 .objects()
                 .map(|(_, o)| o.name.clone())
                 .collect(),
+            provenance: setup.provenance,
         };
         let mut recorder = Recorder {
             writer,
             path: path.to_path_buf(),
             channels,
             sequence: 0,
-            checkpoint_every: checkpoint_every.max(1),
+            checkpoint_every,
+            poses: Vec::new(),
+            checkpointed: 0,
+            edited: false,
         };
         recorder.write(0, 0, &header)?;
         recorder.write_state(env)?;
@@ -148,6 +158,7 @@ impl Recorder {
         edit: &impl Serialize,
     ) -> Result<(), RecordError> {
         let step = env.steps();
+        self.edited = true;
         self.write(5, step, &json!({ "step": step, "edit": edit }))
     }
 
@@ -163,8 +174,14 @@ impl Recorder {
         self.write(6, step, &json!({ "step": step, "device": device }))
     }
 
-    /// Closes the file with MCAP's summary and index.
-    pub(crate) fn finish(mut self) -> Result<(), RecordError> {
+    /// Closes the file with MCAP's summary and index, after a last checkpoint of the state
+    /// `env` ends in where the last step had none (and no edit followed it, which a replay does
+    /// only after comparing): a replay then checks the episode to its end.
+    pub(crate) fn finish(mut self, env: &Env) -> Result<(), RecordError> {
+        let step = env.steps();
+        if step != self.checkpointed && !self.edited {
+            self.write_checkpoint(env)?;
+        }
         let path = self.path.clone();
         self.writer
             .finish()
@@ -174,8 +191,7 @@ impl Recorder {
 
     /// Poses and score after a step (or the reset), and a checkpoint when one is due.
     fn write_state(&mut self, env: &Env) -> Result<(), RecordError> {
-        let (Some(world), Some(robot), Some(score)) = (env.world(), env.robot(), env.score())
-        else {
+        let (Some(world), Some(score)) = (env.world(), env.score()) else {
             return Err(RecordError::NoEpisode);
         };
         let step = env.steps();
@@ -188,7 +204,21 @@ impl Recorder {
                 [t.x, t.y, t.z, r.x, r.y, r.z, r.w]
             })
             .collect();
-        self.write(2, step, &json!({ "step": step, "poses": poses }))?;
+        // Only what moved since the last poses (bit for bit), all of them the first time: most
+        // of a home sleeps, and every pose at every step made a demonstration 80 MB.
+        let bits = |p: &[f32; 7]| p.map(f32::to_bits);
+        let moved: Vec<usize> = if self.poses.len() == poses.len() {
+            (0..poses.len())
+                .filter(|&i| bits(&poses[i]) != bits(&self.poses[i]))
+                .collect()
+        } else {
+            (0..poses.len()).collect()
+        };
+        let changed: Vec<[f32; 7]> = moved.iter().map(|&i| poses[i]).collect();
+        let message = json!({ "step": step, "objects": moved, "poses": changed });
+        self.write(2, step, &message)?;
+        self.poses = poses;
+        self.edited = false;
         let score = json!({
             "step": step,
             "q": score.q,
@@ -197,17 +227,27 @@ impl Recorder {
         });
         self.write(3, step, &score)?;
         if step.is_multiple_of(self.checkpoint_every) {
-            let digest = state_digest(world, robot, step);
-            self.write(4, step, &json!({ "step": step, "digest": digest }))?;
-            if let Some(checkpoint) = env.checkpoint() {
-                self.write_bytes(STATE, step, &checkpoint.to_bytes())?;
-            }
-            self.writer.flush().map_err(|source| RecordError::Mcap {
-                path: self.path.clone(),
-                source,
-            })?;
+            self.write_checkpoint(env)?;
         }
         Ok(())
+    }
+
+    /// The digest and full state of the step `env` stands at; the file flushed.
+    fn write_checkpoint(&mut self, env: &Env) -> Result<(), RecordError> {
+        let (Some(world), Some(robot)) = (env.world(), env.robot()) else {
+            return Err(RecordError::NoEpisode);
+        };
+        let step = env.steps();
+        let digest = state_digest(world, robot, step);
+        self.write(4, step, &json!({ "step": step, "digest": digest }))?;
+        if let Some(checkpoint) = env.checkpoint() {
+            self.write_bytes(STATE, step, &checkpoint.to_bytes())?;
+        }
+        self.checkpointed = step;
+        self.writer.flush().map_err(|source| RecordError::Mcap {
+            path: self.path.clone(),
+            source,
+        })
     }
 
     fn write(
@@ -250,7 +290,10 @@ fn schema_of(topic: &str) -> String {
         "/action" => json!({ "type": "object", "properties": {
             "step": step, "values": { "type": "array", "items": number } } }),
         "/poses" => json!({ "type": "object", "properties": {
-            "step": step, "poses": { "type": "array", "items": {
+            "step": step,
+            "objects": { "type": "array", "items": { "type": "integer", "minimum": 0 },
+                "description": "the header's indices of the objects whose poses follow: those that moved since the last /poses (all at the first)" },
+            "poses": { "type": "array", "items": {
                 "type": "array", "items": number, "minItems": 7, "maxItems": 7,
                 "description": "x, y, z (m), qx, qy, qz, qw" } } } }),
         "/score" => json!({ "type": "object", "properties": {

@@ -1,14 +1,21 @@
-//! A LeRobot dataset, format v2.1 (reference: primitives-and-formats §2): one Parquet file of
-//! frames per episode (`data/chunk-CCC/episode_EEEEEE.parquet`, snappy as LeRobot writes them)
-//! and the metadata LeRobot's loader reads offline (`meta/info.json`, `tasks.jsonl`,
-//! `episodes.jsonl`, `episodes_stats.jsonl`). Images are PNG bytes inside the Parquet (feature
-//! dtype `image`: the struct `{bytes, path}` that Hugging Face `datasets` writes), so the
-//! dataset needs no video codec. v2.1 rather than v3.0 because it keeps an episode to a file;
-//! LeRobot converts it (`lerobot.scripts.convert_dataset_v21_to_v30`).
+//! A LeRobot dataset in either of the two layouts LeRobot reads (reference:
+//! primitives-and-formats §2), its frames as Parquet (snappy, as LeRobot writes them):
+//!
+//! - **v3.0**, what LeRobot 0.4 and the BEHAVIOR Challenge's demonstrations use: episodes one
+//!   after another in `data/chunk-CCC/file-FFF.parquet` (a new file past 100 MB), one row per
+//!   episode in `meta/episodes/chunk-000/file-000.parquet` (where its frames lie, its statistics,
+//!   and — a column of our own that LeRobot keeps — its provenance), `meta/tasks.parquet`,
+//!   `meta/stats.json` and `meta/info.json` ([`super::v30`]);
+//! - **v2.1**: one file per episode (`data/chunk-CCC/episode_EEEEEE.parquet`) and JSON-lines
+//!   metadata (`meta/tasks.jsonl`, `episodes.jsonl`, `episodes_stats.jsonl`), as LeRobot 0.3 and
+//!   the datasets made with it.
+//!
+//! Images are PNG bytes inside the Parquet (feature dtype `image`: the struct `{bytes, path}`
+//! that Hugging Face `datasets` writes), so the dataset needs no video codec.
 //!
 //! This module only writes what it is given; `mod.rs` re-simulates the recordings.
 
-use super::ExportError;
+use super::{ExportError, Format, stats, v30};
 use arrow_array::builder::{BinaryBuilder, FixedSizeListBuilder, Float32Builder, StringBuilder};
 use arrow_array::{
     Array, ArrayRef, BooleanArray, Float32Array, Int64Array, RecordBatch, StructArray,
@@ -18,6 +25,7 @@ use parquet::arrow::ArrowWriter;
 use parquet::basic::Compression;
 use parquet::file::properties::WriterProperties;
 use serde_json::{Value, json};
+use stats::ImageStats;
 use std::fs::File;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -27,8 +35,11 @@ type Result<T> = std::result::Result<T, ExportError>;
 
 /// Frames per second: the action rate of every recording.
 pub(super) const FPS: u32 = 30;
-/// Episodes per `data/chunk-CCC` folder, as LeRobot's default.
-const CHUNK_SIZE: usize = 1000;
+/// Episodes per `data/chunk-CCC` folder (v2.1), files per chunk folder (v3.0): LeRobot's default.
+pub(super) const CHUNK_SIZE: usize = 1000;
+/// A v3.0 data file takes episodes until it holds this many megabytes (uncompressed, as
+/// LeRobot measures them): LeRobot's default.
+pub(super) const DATA_FILE_MB: usize = 100;
 
 /// One episode's frames: frame k is the observation before the episode's k-th action, the
 /// action, and what followed it.
@@ -48,7 +59,8 @@ pub(super) struct Episode {
     pub reward: Vec<f32>,
     /// Whether the goal held after the step.
     pub success: Vec<bool>,
-    /// Where it came from, kept in `episodes.jsonl` (LeRobot keeps unknown keys).
+    /// Where it came from and who acted, kept with the episode's metadata (LeRobot keeps
+    /// unknown keys and columns).
     pub provenance: Value,
 }
 
@@ -65,30 +77,51 @@ pub struct Shapes {
     pub image: Option<u32>,
 }
 
+/// What the metadata says of one episode written.
+pub(super) struct Written {
+    /// Its index in the dataset.
+    pub index: usize,
+    /// Its task.
+    pub task: String,
+    /// Its frames.
+    pub length: usize,
+    /// The dataset's index of its first frame.
+    pub from: usize,
+    /// Its features' statistics.
+    pub stats: serde_json::Map<String, Value>,
+    /// Where it came from.
+    pub provenance: Value,
+    /// v3.0: the chunk and file its frames are in.
+    pub file: (usize, usize),
+}
+
 /// A dataset being written into a folder of its own.
 pub(super) struct Dataset {
     dir: PathBuf,
+    format: Format,
     robot: String,
     shapes: Shapes,
     tasks: Vec<String>,
-    episodes: Vec<Value>,
-    stats: Vec<Value>,
+    episodes: Vec<Written>,
     frames: usize,
+    /// v3.0: the data file being filled, and its megabytes so far.
+    data: Option<(ParquetFile, f64)>,
 }
 
 impl Dataset {
     /// Starts a dataset in `dir` (which must not exist yet).
-    pub fn create(dir: &Path, robot: &str, shapes: Shapes) -> Result<Dataset> {
+    pub fn create(dir: &Path, format: Format, robot: &str, shapes: Shapes) -> Result<Dataset> {
         let meta = dir.join("meta");
         std::fs::create_dir_all(&meta).map_err(write_error(&meta))?;
         Ok(Dataset {
             dir: dir.to_path_buf(),
+            format,
             robot: robot.to_string(),
             shapes,
             tasks: Vec::new(),
             episodes: Vec::new(),
-            stats: Vec::new(),
             frames: 0,
+            data: None,
         })
     }
 
@@ -102,9 +135,8 @@ impl Dataset {
         self.shapes
     }
 
-    /// Writes one episode's Parquet file.
+    /// Writes one episode's frames.
     pub fn add(&mut self, episode: &Episode) -> Result<()> {
-        let n = episode.action.len();
         let index = self.episodes.len();
         let task_index = match self.tasks.iter().position(|t| *t == episode.task) {
             Some(i) => i,
@@ -114,50 +146,182 @@ impl Dataset {
             }
         };
         let columns = Columns::of(episode, self.shapes, index, task_index, self.frames)?;
-        let path = self.dir.join(format!(
-            "data/chunk-{:03}/episode_{index:06}.parquet",
-            index / CHUNK_SIZE
-        ));
-        columns.write(&path)?;
-        self.stats
-            .push(json!({"episode_index": index, "stats": columns.stats}));
-        let mut entry = json!({"episode_index": index, "tasks": [episode.task], "length": n});
-        entry["provenance"] = episode.provenance.clone();
-        self.episodes.push(entry);
-        self.frames += n;
+        let file = match self.format {
+            Format::V21 => {
+                let path = self.dir.join(format!(
+                    "data/chunk-{:03}/episode_{index:06}.parquet",
+                    index / CHUNK_SIZE
+                ));
+                let mut out = ParquetFile::create(&path, columns.schema.clone(), None)?;
+                out.append(columns.batch(&path)?)?;
+                out.close()?;
+                (index / CHUNK_SIZE, 0)
+            }
+            Format::V30 => self.append_v30(&columns)?,
+        };
+        self.episodes.push(Written {
+            index,
+            task: episode.task.clone(),
+            length: episode.action.len(),
+            from: self.frames,
+            stats: columns.stats,
+            provenance: episode.provenance.clone(),
+            file,
+        });
+        self.frames += episode.action.len();
         Ok(())
     }
 
+    /// Appends an episode's frames to the v3.0 data file being filled, or to a new one when
+    /// that one is full; returns the (chunk, file) they went to.
+    fn append_v30(&mut self, columns: &Columns) -> Result<(usize, usize)> {
+        let files = self
+            .episodes
+            .last()
+            .map_or(0, |e| e.file.0 * CHUNK_SIZE + e.file.1 + 1);
+        let full = self
+            .data
+            .as_ref()
+            .is_none_or(|(_, mb)| *mb >= DATA_FILE_MB as f64);
+        if full {
+            if let Some((file, _)) = self.data.take() {
+                file.close()?;
+            }
+            let path = self
+                .dir
+                .join(v30::data_path(files / CHUNK_SIZE, files % CHUNK_SIZE));
+            self.data = Some((
+                ParquetFile::create(&path, columns.schema.clone(), None)?,
+                0.0,
+            ));
+        }
+        let (file, mb) = self.data.as_mut().expect("a data file is open");
+        let batch = columns.batch(&file.path)?;
+        *mb += batch.get_array_memory_size() as f64 / (1024.0 * 1024.0);
+        file.append(batch)?;
+        let number = if full { files } else { files - 1 };
+        Ok((number / CHUNK_SIZE, number % CHUNK_SIZE))
+    }
+
     /// Writes the metadata; returns the episodes and frames written.
-    pub fn finish(self) -> Result<(usize, usize)> {
+    pub fn finish(mut self) -> Result<(usize, usize)> {
+        if let Some((file, _)) = self.data.take() {
+            file.close()?;
+        }
         let meta = self.dir.join("meta");
-        let info = json!({
-            "codebase_version": "v2.1",
+        let mut info = json!({
             "robot_type": self.robot,
             "fps": FPS,
             "total_episodes": self.episodes.len(),
             "total_frames": self.frames,
             "total_tasks": self.tasks.len(),
-            "total_videos": 0,
-            "total_chunks": self.episodes.len().div_ceil(CHUNK_SIZE),
             "chunks_size": CHUNK_SIZE,
-            "data_path": "data/chunk-{episode_chunk:03d}/episode_{episode_index:06d}.parquet",
             "video_path": null,
             "splits": {"train": format!("0:{}", self.episodes.len())},
             "features": features(self.shapes),
         });
+        match self.format {
+            Format::V21 => {
+                info["codebase_version"] = json!("v2.1");
+                info["total_videos"] = json!(0);
+                info["total_chunks"] = json!(self.episodes.len().div_ceil(CHUNK_SIZE));
+                info["data_path"] =
+                    json!("data/chunk-{episode_chunk:03d}/episode_{episode_index:06d}.parquet");
+                self.write_jsonl_meta(&meta)?;
+            }
+            Format::V30 => {
+                info["codebase_version"] = json!("v3.0");
+                info["data_files_size_in_mb"] = json!(DATA_FILE_MB);
+                info["video_files_size_in_mb"] = json!(v30::VIDEO_FILE_MB);
+                info["data_path"] = json!(v30::DATA_PATH);
+                v30::write_meta(&self.dir, &self.tasks, &self.episodes)?;
+            }
+        }
         let info_path = meta.join("info.json");
         let text = serde_json::to_string_pretty(&info).expect("JSON values serialize");
         std::fs::write(&info_path, text).map_err(write_error(&info_path))?;
+        Ok((self.episodes.len(), self.frames))
+    }
+
+    /// v2.1's metadata: the tasks, the episodes and their statistics, a JSON line each.
+    fn write_jsonl_meta(&self, meta: &Path) -> Result<()> {
         let tasks = self
             .tasks
             .iter()
             .enumerate()
             .map(|(i, t)| json!({"task_index": i, "task": t}));
         write_lines(&meta.join("tasks.jsonl"), tasks)?;
-        write_lines(&meta.join("episodes.jsonl"), self.episodes.iter().cloned())?;
-        write_lines(&meta.join("episodes_stats.jsonl"), self.stats.into_iter())?;
-        Ok((self.episodes.len(), self.frames))
+        let episodes = self.episodes.iter().map(|e| {
+            json!({"episode_index": e.index, "tasks": [e.task], "length": e.length,
+                "provenance": e.provenance})
+        });
+        write_lines(&meta.join("episodes.jsonl"), episodes)?;
+        let stats = self
+            .episodes
+            .iter()
+            .map(|e| json!({"episode_index": e.index, "stats": e.stats}));
+        write_lines(&meta.join("episodes_stats.jsonl"), stats)
+    }
+}
+
+/// A Parquet file being written, snappy-compressed as LeRobot writes them.
+pub(super) struct ParquetFile {
+    path: PathBuf,
+    writer: ArrowWriter<File>,
+}
+
+impl ParquetFile {
+    /// Creates the file (and its folder), with `metadata` among its key-value metadata.
+    pub fn create(
+        path: &Path,
+        schema: Arc<Schema>,
+        metadata: Option<(&str, String)>,
+    ) -> Result<ParquetFile> {
+        if let Some(dir) = path.parent() {
+            std::fs::create_dir_all(dir).map_err(write_error(dir))?;
+        }
+        let file = File::create(path).map_err(write_error(path))?;
+        // The Arrow schema's metadata is what arrow-rs keeps among the file's key-value
+        // metadata, where pyarrow and pandas read it.
+        let schema = match metadata {
+            Some((key, value)) => Arc::new(Schema::new_with_metadata(
+                schema.fields().clone(),
+                std::collections::HashMap::from([(key.to_string(), value)]),
+            )),
+            None => schema,
+        };
+        let props = WriterProperties::builder()
+            .set_compression(Compression::SNAPPY)
+            .build();
+        let writer = ArrowWriter::try_new(file, schema, Some(props))
+            .map_err(|source| parquet_error(path, source))?;
+        Ok(ParquetFile {
+            path: path.to_path_buf(),
+            writer,
+        })
+    }
+
+    /// Appends rows.
+    pub fn append(&mut self, batch: RecordBatch) -> Result<()> {
+        self.writer
+            .write(&batch)
+            .map_err(|source| parquet_error(&self.path, source))
+    }
+
+    /// Writes the footer.
+    pub fn close(self) -> Result<()> {
+        self.writer
+            .close()
+            .map(|_| ())
+            .map_err(|source| parquet_error(&self.path, source))
+    }
+}
+
+/// A Parquet failure at `path`.
+fn parquet_error(path: &Path, source: parquet::errors::ParquetError) -> ExportError {
+    ExportError::Parquet {
+        path: path.to_path_buf(),
+        source,
     }
 }
 
@@ -227,7 +391,7 @@ impl Columns {
             let (field, array) = fixed_list(name, rows, size);
             c.stats.insert(
                 name.into(),
-                stats(rows.iter().map(|r| r.iter().map(|&v| f64::from(v)))),
+                stats::of_rows(rows.iter().map(|r| r.iter().map(|&v| f64::from(v)))),
             );
             fields.push(field);
             c.arrays.push(array);
@@ -254,7 +418,7 @@ impl Columns {
             }
             c.stats.insert(
                 name.into(),
-                stats(values.iter().map(|&v| std::iter::once(v))),
+                stats::of_rows(values.iter().map(|&v| std::iter::once(v))),
             );
             fields.push(Field::new(name, dtype, false));
             c.arrays.push(array);
@@ -263,25 +427,10 @@ impl Columns {
         Ok(c)
     }
 
-    fn write(&self, path: &Path) -> Result<()> {
-        if let Some(dir) = path.parent() {
-            std::fs::create_dir_all(dir).map_err(write_error(dir))?;
-        }
-        let parquet = |source| ExportError::Parquet {
-            path: path.to_path_buf(),
-            source,
-        };
-        let batch = RecordBatch::try_new(self.schema.clone(), self.arrays.clone())
-            .map_err(|e| parquet(e.into()))?;
-        let file = File::create(path).map_err(write_error(path))?;
-        let props = WriterProperties::builder()
-            .set_compression(Compression::SNAPPY)
-            .build();
-        let mut writer =
-            ArrowWriter::try_new(file, self.schema.clone(), Some(props)).map_err(parquet)?;
-        writer.write(&batch).map_err(parquet)?;
-        writer.close().map_err(parquet)?;
-        Ok(())
+    /// The columns as one batch of rows (for the file at `path`, named in an error).
+    fn batch(&self, path: &Path) -> Result<RecordBatch> {
+        RecordBatch::try_new(self.schema.clone(), self.arrays.clone())
+            .map_err(|e| parquet_error(path, e.into()))
     }
 }
 
@@ -349,11 +498,11 @@ fn fixed_list(name: &str, rows: &[Vec<f32>], size: usize) -> (Field, ArrayRef) {
 }
 
 /// The image column: PNG bytes in `{bytes, path}` structs (Hugging Face's `Image` feature), and
-/// the per-channel statistics on a 0–1 scale, shaped (3, 1, 1) as LeRobot keeps them.
+/// its statistics ([`ImageStats`]).
 fn images(frames: &[Vec<u8>], side: u32) -> Result<(Field, ArrayRef, Value)> {
     let mut bytes = BinaryBuilder::new();
     let mut paths = StringBuilder::new();
-    let mut channels = Accumulator::new(3);
+    let mut channels = ImageStats::new();
     for rgb in frames {
         let wrong =
             || ExportError::Shape(format!("an image of {} bytes, not {side}²×3", rgb.len()));
@@ -364,9 +513,7 @@ fn images(frames: &[Vec<u8>], side: u32) -> Result<(Field, ArrayRef, Value)> {
             .map_err(|_| wrong())?;
         bytes.append_value(&png);
         paths.append_null();
-        for pixel in rgb.chunks_exact(3) {
-            channels.add(pixel.iter().map(|&v| f64::from(v) / 255.0));
-        }
+        channels.add(rgb);
     }
     let fields = Fields::from(vec![
         Field::new("bytes", DataType::Binary, true),
@@ -379,71 +526,7 @@ fn images(frames: &[Vec<u8>], side: u32) -> Result<(Field, ArrayRef, Value)> {
     )
     .map_err(|e| ExportError::Shape(e.to_string()))?;
     let field = Field::new(IMAGE, DataType::Struct(fields), false);
-    let mut stats = channels.finish();
-    // Counted in frames, not pixels, as LeRobot counts them.
-    for key in ["min", "max", "mean", "std"] {
-        let values: Vec<Value> = stats[key]
-            .as_array()
-            .map(|v| v.iter().map(|c| json!([[c]])).collect())
-            .unwrap_or_default();
-        stats[key] = Value::Array(values);
-    }
-    stats["count"] = json!([frames.len()]);
-    Ok((field, Arc::new(array), stats))
-}
-
-/// Statistics per dimension of rows of numbers: `{min, max, mean, std, count}`.
-fn stats<R: Iterator<Item = f64>>(rows: impl Iterator<Item = R>) -> Value {
-    let mut accumulator: Option<Accumulator> = None;
-    for row in rows {
-        let row: Vec<f64> = row.collect();
-        accumulator
-            .get_or_insert_with(|| Accumulator::new(row.len()))
-            .add(row.into_iter());
-    }
-    accumulator.map_or_else(|| json!({"count": [0]}), Accumulator::finish)
-}
-
-struct Accumulator {
-    min: Vec<f64>,
-    max: Vec<f64>,
-    sum: Vec<f64>,
-    squares: Vec<f64>,
-    count: usize,
-}
-
-impl Accumulator {
-    fn new(dims: usize) -> Accumulator {
-        Accumulator {
-            min: vec![f64::INFINITY; dims],
-            max: vec![f64::NEG_INFINITY; dims],
-            sum: vec![0.0; dims],
-            squares: vec![0.0; dims],
-            count: 0,
-        }
-    }
-
-    fn add(&mut self, row: impl Iterator<Item = f64>) {
-        for (d, v) in row.enumerate().take(self.sum.len()) {
-            self.min[d] = self.min[d].min(v);
-            self.max[d] = self.max[d].max(v);
-            self.sum[d] += v;
-            self.squares[d] += v * v;
-        }
-        self.count += 1;
-    }
-
-    fn finish(self) -> Value {
-        let n = self.count.max(1) as f64;
-        let mean: Vec<f64> = self.sum.iter().map(|s| s / n).collect();
-        let std: Vec<f64> = self
-            .squares
-            .iter()
-            .zip(&mean)
-            .map(|(q, m)| (q / n - m * m).max(0.0).sqrt())
-            .collect();
-        json!({"min": self.min, "max": self.max, "mean": mean, "std": std, "count": [self.count]})
-    }
+    Ok((field, Arc::new(array), channels.finish()))
 }
 
 /// An I/O failure at `path`, as an [`ExportError::Write`].

@@ -1,4 +1,5 @@
-//! Recordings as a LeRobot dataset (format v2.1), for imitation learning: [`export`].
+//! Recordings as a LeRobot dataset (format v3.0 or v2.1, [`Format`]), for imitation learning:
+//! [`export`].
 //!
 //! Each recording is re-simulated (the episode begun again, every recorded action and edit done
 //! again, as [`super::replay_with`] does), so the dataset carries what the agent observed at
@@ -12,10 +13,12 @@
 //! (`behavior.recording.export_lerobot`) both call [`export`].
 
 mod dataset;
+mod stats;
+mod v30;
 
 pub use dataset::Shapes;
 
-use super::{ReadError, Recording, ReplayError, read, redo, state_digest};
+use super::{Provenance, ReadError, Recording, ReplayError, read, redo, state_digest};
 use crate::edit::WorldEdit;
 use crate::env::Env;
 use crate::episode::Start;
@@ -33,18 +36,54 @@ pub const MIN_IMAGE_SIDE: u32 = 16;
 /// … and this many at most.
 pub const MAX_IMAGE_SIDE: u32 = 1024;
 
+/// Which of LeRobot's dataset layouts to write.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Format {
+    /// v3.0: many episodes to a file, the episodes' metadata as Parquet; what LeRobot 0.4 reads
+    /// and the BEHAVIOR Challenge's demonstrations use.
+    #[default]
+    V30,
+    /// v2.1: an episode to a file, JSON-lines metadata; what LeRobot 0.3 reads.
+    V21,
+}
+
+impl Format {
+    /// Every format, by the names [`Format::from_name`] takes.
+    pub const ALL: [Format; 2] = [Format::V30, Format::V21];
+
+    /// The format's name: `lerobot-v3` or `lerobot-v2.1`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Format::V30 => "lerobot-v3",
+            Format::V21 => "lerobot-v2.1",
+        }
+    }
+
+    /// The format named `name` (`lerobot-v3.0` is taken for `lerobot-v3` too).
+    pub fn from_name(name: &str) -> Option<Format> {
+        match name {
+            "lerobot-v3" | "lerobot-v3.0" => Some(Format::V30),
+            "lerobot-v2.1" => Some(Format::V21),
+            _ => None,
+        }
+    }
+}
+
 /// How to export.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ExportOptions {
     /// The side of the robot's camera images (`observation.images.eye`), pixels; `None` leaves
     /// the images out.
     pub image_side: Option<u32>,
+    /// The dataset's layout.
+    pub format: Format,
 }
 
 impl Default for ExportOptions {
     fn default() -> Self {
         ExportOptions {
             image_side: Some(behavior_render::EYE_SIZE),
+            format: Format::default(),
         }
     }
 }
@@ -62,6 +101,8 @@ pub struct ExportSummary {
     pub frames: usize,
     /// Episodes whose recordings hold a person's device reports.
     pub teleoperated: usize,
+    /// Episodes whose recordings say the planner chose their actions.
+    pub planned: usize,
     /// Whether the camera images were written.
     pub images: bool,
     /// Each recording and its frames, in the dataset's order.
@@ -143,7 +184,7 @@ pub enum ExportError {
     },
 }
 
-/// Writes `recordings` (one episode each, all of one robot) as a LeRobot v2.1 dataset in the
+/// Writes `recordings` (one episode each, all of one robot) as a LeRobot dataset in the
 /// folder `dataset`, which must not exist or be empty. `E` reads the recordings' edits of the
 /// world (the planner's primitives: `behavior_planning::RecordedCall`); `knowledge` parses
 /// each recording's definition.
@@ -197,10 +238,11 @@ fn write<E: WorldEdit>(
     let mut dataset: Option<Dataset> = None;
     let mut summary = ExportSummary {
         dataset: dir.to_path_buf(),
-        format: "lerobot v2.1",
+        format: options.format.name(),
         episodes: 0,
         frames: 0,
         teleoperated: 0,
+        planned: 0,
         images: options.image_side.is_some(),
         recordings: Vec::new(),
     };
@@ -219,7 +261,7 @@ fn write<E: WorldEdit>(
         let robot = &recording.header.robot;
         let dataset = match &mut dataset {
             Some(d) => d,
-            None => dataset.insert(Dataset::create(dir, robot, shapes)?),
+            None => dataset.insert(Dataset::create(dir, options.format, robot, shapes)?),
         };
         if dataset.shapes() != shapes || dataset.robot() != robot {
             let described =
@@ -232,6 +274,10 @@ fn write<E: WorldEdit>(
         }
         dataset.add(&episode)?;
         summary.teleoperated += usize::from(!recording.devices.is_empty());
+        summary.planned += usize::from(matches!(
+            recording.header.provenance,
+            Provenance::Planner { .. }
+        ));
         summary
             .recordings
             .push((file.clone(), episode.action.len()));
@@ -272,7 +318,8 @@ fn resimulate<E: WorldEdit>(
     let mut episode = Episode {
         task: task_text(&h.activity),
         provenance: json!({"recording": file.display().to_string(), "activity": h.activity,
-            "scene": h.scene, "seed": h.seed, "teleoperated": recording.device_steps()}),
+            "scene": h.scene, "seed": h.seed, "by": h.provenance,
+            "teleoperated": recording.device_steps()}),
         ..Episode::default()
     };
     let mut q = env.score().map_or(0.0, |s| s.q);
@@ -359,28 +406,27 @@ fn check(recording: &Recording, env: &Env) -> Result<(), ReplayError> {
 
 /// The dataset's README: where its episodes came from, and whether people made them.
 fn write_card(dir: &Path, summary: &ExportSummary) -> Result<(), ExportError> {
-    let (episodes, teleoperated) = (summary.episodes, summary.teleoperated);
-    let who = if teleoperated == 0 {
-        "None of them was teleoperated: they are agents' or the planner's episodes, NOT human \
-         demonstrations."
-            .to_string()
-    } else {
-        format!(
-            "{teleoperated} of them were teleoperated (their recordings hold device reports); the \
-             other {} are agents' or the planner's episodes, not human demonstrations.",
-            episodes - teleoperated
-        )
-    };
+    let (episodes, teleoperated, planned) =
+        (summary.episodes, summary.teleoperated, summary.planned);
+    let other = episodes - teleoperated - planned;
+    let who = format!(
+        "{teleoperated} of them were teleoperated by a person (their recordings hold device \
+         reports); {planned} were made by the task planner, NOT by people; {other} are agents' \
+         or of unstated provenance."
+    );
     let list: String = summary
         .recordings
         .iter()
         .enumerate()
         .map(|(i, (r, _))| format!("- episode {i}: `{}`\n", r.display()))
         .collect();
+    let (version, meta) = match summary.format {
+        "lerobot-v2.1" => ("v2.1", "`meta/episodes.jsonl`"),
+        _ => ("v3.0", "the `provenance` column of `meta/episodes/`"),
+    };
     let text = format!(
-        "# BEHAVIOR episodes (LeRobot v2.1)\n\nExported from {episodes} recording(s), each \
-         re-simulated. {who} Each episode's `provenance` in `meta/episodes.jsonl` says \
-         which.\n\n{list}"
+        "# BEHAVIOR episodes (LeRobot {version})\n\nExported from {episodes} recording(s), each \
+         re-simulated. {who} Each episode's `provenance` in {meta} says which.\n\n{list}"
     );
     let path = dir.join("README.md");
     std::fs::write(&path, text).map_err(write_error(&path))

@@ -2,16 +2,18 @@
 //! the best human demonstration's value (paper §5), with the demonstrations' statistics.
 //!
 //! Every recording is re-simulated (it must replay identically: otherwise its metrics would not
-//! be the recorded episode's) and measured by the same metric code an episode runs. A reference
-//! recording counts as a person's only by being given as one: each is shown with whether it
-//! was teleoperated (its `/device` reports) so that no one mistakes an agent's or a script's
-//! episode for human data.
+//! be the recorded episode's) and measured by the same metric code an episode runs. Each
+//! reference is shown with who acted — a person (its header says so, or it holds `/device`
+//! reports), the planner (its header says so: `demos generate`'s demonstrations), or unstated —
+//! so that no one mistakes the planner's or an agent's episodes for human data. A folder made
+//! by `demos generate` stands for its demonstrations.
 
+use crate::demos::recordings_in;
 use crate::prelude::Prelude;
 use crate::replay::resimulate;
 use anyhow::{Result, bail};
 use behavior_env::metrics::{EpisodeMetrics, HumanReference, HumanStatistics, Normalized};
-use behavior_env::record::read;
+use behavior_env::record::{Provenance, read};
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -21,9 +23,10 @@ pub struct MetricsArgs {
     /// Recordings of the episodes to measure (`behavior run --record`, `behavior serve`).
     #[arg(required = true, value_name = "RECORDING.mcap")]
     recordings: Vec<PathBuf>,
-    /// Recordings of human demonstrations: each metric is also given as a fraction of the best
-    /// of them on the same instance (home and seed), else on the same activity.
-    #[arg(long, num_args = 1.., value_name = "HUMAN.mcap")]
+    /// Recordings of demonstrations (a person's, or a folder of the planner's from `demos
+    /// generate`): each metric is also given as a fraction of the best of them on the same
+    /// instance (home and seed), else on the same activity.
+    #[arg(long, num_args = 1.., value_name = "DEMO.mcap|DIR")]
     reference: Vec<PathBuf>,
     #[arg(long)]
     json: bool,
@@ -38,7 +41,27 @@ struct Measured {
     instance: String,
     /// Teleoperated steps by device (`xr`, `keys`); empty for an agent's or a script's episode.
     teleoperated: BTreeMap<String, usize>,
+    /// Who acted, as the recording's header says.
+    provenance: Provenance,
     metrics: EpisodeMetrics,
+}
+
+impl Measured {
+    /// Who acted, in words.
+    fn who(&self) -> String {
+        match &self.provenance {
+            Provenance::Planner { mode, .. } => {
+                format!("the task planner's ({mode} primitives), NOT a person's")
+            }
+            Provenance::Person => "a person's (teleoperated)".to_string(),
+            Provenance::Unstated if !self.teleoperated.is_empty() => {
+                "a person's (teleoperated)".to_string()
+            }
+            Provenance::Unstated => {
+                "NOT teleoperated: an agent's or a script's episode, not a person's".to_string()
+            }
+        }
+    }
 }
 
 /// An episode against the people.
@@ -65,8 +88,7 @@ struct MetricsOutput {
 
 pub fn run(args: MetricsArgs, data_dir: Option<&Path>) -> Result<()> {
     let prelude = Prelude::load(data_dir)?;
-    let references = args
-        .reference
+    let references = recordings_in(&args.reference)?
         .iter()
         .map(|file| measure(file, &prelude))
         .collect::<Result<Vec<_>>>()?;
@@ -128,6 +150,7 @@ fn measure(file: &Path, prelude: &Prelude) -> Result<Measured> {
         activity: h.activity.clone(),
         instance: format!("{} seed {}", h.scene, h.seed),
         teleoperated: recording.device_steps(),
+        provenance: recording.header.provenance.clone(),
         metrics,
     })
 }
@@ -139,23 +162,23 @@ fn print(out: &MetricsOutput) {
             .iter()
             .filter(|r| !r.teleoperated.is_empty())
             .count();
+        let planned = out
+            .references
+            .iter()
+            .filter(|r| matches!(r.provenance, Provenance::Planner { .. }))
+            .count();
         println!(
-            "human reference: {} recording(s), {teleoperated} of them teleoperated",
+            "reference: {} recording(s), {teleoperated} of them teleoperated, {planned} the planner's",
             out.references.len()
         );
         for r in &out.references {
-            let who = if r.teleoperated.is_empty() {
-                "NOT teleoperated: an agent's or a script's episode, not a person's"
-            } else {
-                "teleoperated"
-            };
             println!(
                 "  {} ({}, {}): {} steps, {}",
                 r.file.display(),
                 r.activity,
                 r.instance,
                 r.metrics.steps,
-                who
+                r.who()
             );
         }
     }
@@ -206,14 +229,14 @@ fn print_episode(e: &Compared) {
     for (name, value, unit, ratio) in rows {
         let ratio = match (e.reference, ratio) {
             (None, _) => String::new(),
-            (Some(_), Some(r)) => format!("  {r:.2} × the best person's"),
-            (Some(_), None) => "  (the best person's is 0)".to_string(),
+            (Some(_), Some(r)) => format!("  {r:.2} × the best reference's"),
+            (Some(_), None) => "  (the best reference's is 0)".to_string(),
         };
         println!("  {name:<26}{value:>10.3} {unit:<2}{ratio}");
     }
     match (e.reference, e.humans) {
         (Some(scope), Some(h)) => println!(
-            "  against the best person on the same {scope}; {} demonstration(s) of the activity \
+            "  against the best reference on the same {scope}; {} demonstration(s) of the activity \
              ({} successful), mean {:.0} steps: an episode limit of {} steps",
             h.demonstrations, h.successes, h.mean_steps, h.step_limit
         ),

@@ -1,5 +1,6 @@
 //! `behavior metrics` as a user runs it: episodes recorded by `behavior run`, measured again
-//! from their recordings, and compared with a reference episode.
+//! from their recordings, and compared with a reference episode or a folder of the planner's
+//! demonstrations.
 
 mod support;
 
@@ -72,5 +73,41 @@ fn a_damaged_recording_is_refused_with_where_and_why() {
     assert!(
         error.contains("cut.mcap") && error.contains("damaged or cut after step"),
         "{error}"
+    );
+}
+
+#[test]
+fn a_folder_of_the_planners_demonstrations_is_a_reference_shown_as_the_planners() {
+    let dir = scratch("metrics-demos");
+    let _ = std::fs::remove_dir_all(&dir);
+    let dir_s = dir.to_str().unwrap();
+    behavior_ok(&[
+        "demos",
+        "generate",
+        "--out",
+        dir_s,
+        "--activities",
+        "installing_a_fax_machine",
+        "--per-activity",
+        "1",
+        "--tries",
+        "3",
+    ]);
+    let manifest: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("demos.json")).unwrap()).unwrap();
+    let demo = dir.join(manifest["demos"][0]["file"].as_str().unwrap());
+    let demo_s = demo.to_str().unwrap();
+    let out = json_of(&["metrics", demo_s, "--reference", dir_s, "--json"]);
+    let reference = &out["references"][0];
+    assert_eq!(reference["provenance"]["kind"], "planner");
+    assert_eq!(reference["provenance"]["mode"], "physical");
+    let episode = &out["episodes"][0];
+    assert_eq!(episode["reference"], "instance");
+    assert_eq!(episode["normalized"]["simulated_time"], 1.0, "itself");
+    let text = behavior_ok(&["metrics", demo_s, "--reference", dir_s]);
+    let text = String::from_utf8_lossy(&text.stdout);
+    assert!(
+        text.contains("1 the planner's") && text.contains("NOT a person's"),
+        "{text}"
     );
 }

@@ -2,9 +2,9 @@
 //! LeRobot dataset for imitation learning, by `behavior_env::record::lerobot::export` (which
 //! Python calls too).
 
-use super::generate::{MANIFEST, Manifest};
+use super::recordings_in;
 use crate::prelude::Prelude;
-use anyhow::{Context, Result};
+use anyhow::Result;
 use behavior_env::record::lerobot::{ExportOptions, Format, export};
 use behavior_planning::RecordedCall;
 use std::path::{Path, PathBuf};
@@ -40,7 +40,7 @@ pub fn run(args: ExportArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
         format: args.format,
     };
     // The planner's primitives are the recorded edits of the world.
-    let recordings = expand(&args.recordings)?;
+    let recordings = recordings_in(&args.recordings)?;
     let summary =
         export::<RecordedCall>(prelude.knowledge(), &recordings, &args.lerobot, &options)?;
     for (file, frames) in &summary.recordings {
@@ -69,28 +69,4 @@ fn format_named(name: &str) -> Result<Format, String> {
         let names: Vec<&str> = Format::ALL.iter().map(|f| f.name()).collect();
         format!("one of {}", names.join(", "))
     })
-}
-
-/// The recordings named: files as they are, a folder of generated demonstrations as the files
-/// its manifest lists.
-fn expand(paths: &[PathBuf]) -> Result<Vec<PathBuf>> {
-    let mut files = Vec::new();
-    for path in paths {
-        if !path.is_dir() {
-            files.push(path.clone());
-            continue;
-        }
-        let manifest = path.join(MANIFEST);
-        let text = std::fs::read_to_string(&manifest).with_context(|| {
-            format!(
-                "{} is a folder without a {MANIFEST} (made by `behavior demos generate`): name \
-                 its recordings instead",
-                path.display()
-            )
-        })?;
-        let demos: Manifest = serde_json::from_str(&text)
-            .with_context(|| format!("{} is not a demonstrations manifest", manifest.display()))?;
-        files.extend(demos.demos.iter().map(|d| path.join(&d.file)));
-    }
-    Ok(files)
 }

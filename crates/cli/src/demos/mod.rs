@@ -7,8 +7,9 @@ mod card;
 mod export;
 mod generate;
 
-use anyhow::Result;
-use std::path::Path;
+use anyhow::{Context, Result};
+use generate::{MANIFEST, Manifest};
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 #[derive(clap::Subcommand)]
@@ -30,4 +31,28 @@ pub fn run(command: DemosCommand, data_dir: Option<&Path>) -> Result<ExitCode> {
         #[cfg(feature = "lerobot")]
         DemosCommand::Export(args) => export::run(args, data_dir),
     }
+}
+
+/// The recordings named: files as they are, a folder made by `demos generate` as the files its
+/// manifest lists, in its order.
+pub(crate) fn recordings_in(paths: &[PathBuf]) -> Result<Vec<PathBuf>> {
+    let mut files = Vec::new();
+    for path in paths {
+        if !path.is_dir() {
+            files.push(path.clone());
+            continue;
+        }
+        let manifest = path.join(MANIFEST);
+        let text = std::fs::read_to_string(&manifest).with_context(|| {
+            format!(
+                "{} is a folder without a {MANIFEST} (made by `behavior demos generate`): name \
+                 its recordings instead",
+                path.display()
+            )
+        })?;
+        let demos: Manifest = serde_json::from_str(&text)
+            .with_context(|| format!("{} is not a demonstrations manifest", manifest.display()))?;
+        files.extend(demos.demos.iter().map(|d| path.join(&d.file)));
+    }
+    Ok(files)
 }

@@ -14,6 +14,14 @@ Success Score Top 5, and the means of Simulated Time, Kinematic and Logical Disa
 Distance Navigated and Displacement of Hands; also per split). The summary is the Rust
 ``aggregate``'s.
 
+With ``--reference`` (recordings of demonstrations, or a folder made by ``behavior demos
+generate``), each episode's efficiency metrics are also given relative to the best reference on
+the same activity and instance (home and seed), else on the activity (``reference``:
+``"instance"`` or ``"activity"``; ``relative``), the summary adds their means (``Relative``)
+beside the absolute ones, and lists every reference with who made it (``References``:
+``provenance``, the recording header's — a person, the planner, or unstated): the planner's
+demonstrations are no human data.
+
 ``python -m behavior.evaluate --model runs/ppo/ap_nophys_fullobs/storing_food/0/model.zip``
 evaluates a baseline trained by ``behavior.baselines`` (its settings read from the
 ``result.json`` beside it); ``--policy random`` a uniformly random agent (among the feasible
@@ -22,6 +30,8 @@ primitives, with primitives).
 
 import argparse
 import json
+import os
+import re
 import sys
 from dataclasses import dataclass
 from pathlib import Path
@@ -133,6 +143,61 @@ def run_episode(env, policy: Policy, seed: int) -> dict:
     return env.unwrapped.metrics()
 
 
+def _activity_key(name: str) -> str:
+    """An activity's name without its problem's instance number (``storing_food_0``)."""
+    return re.sub(r"_\d+$", "", name)
+
+
+def _instance(home: str, seed: int) -> str:
+    return f"{home} seed {seed}"
+
+
+def load_references(paths: Sequence["str | os.PathLike"]) -> List[dict]:
+    """The reference recordings named (files, or folders made by ``behavior demos generate``:
+    the demonstrations their ``demos.json`` lists), each re-simulated: ``file``, ``activity``,
+    ``instance``, ``provenance`` and ``metrics``. One that does not replay identically is refused
+    (``ValueError``): its metrics would not be the recorded episode's."""
+    files = []
+    for path in map(Path, paths):
+        if path.is_dir():
+            manifest = path / "demos.json"
+            if not manifest.is_file():
+                raise ValueError(f"{path} is a folder without demos.json (made by `behavior demos "
+                                 f"generate`): name its recordings instead")
+            files += [path / d["file"] for d in json.loads(manifest.read_text())["demos"]]
+        else:
+            files.append(path)
+    references = []
+    for file in files:
+        r = json.loads(_core.replay(os.fspath(file), True))
+        if r["damage"] or not r["identical"] or r["metrics"] is None:
+            raise ValueError(f"{file} does not replay identically (damage: {r['damage']}, first "
+                             f"difference: {r['first_difference']}): not a reference")
+        references.append({"file": str(file), "activity": _activity_key(r["activity"]),
+                           "instance": _instance(r["scene"], r["seed"]),
+                           "provenance": r["provenance"], "metrics": r["metrics"]})
+    return references
+
+
+def add_relative(per_episode: List[dict], references: List[dict]) -> dict:
+    """Gives each episode its ``reference`` and ``relative`` metrics (the Rust
+    ``HumanReference``'s); returns their means under the summary's names."""
+    pairs = json.loads(_core.relative_metrics(
+        [(r["activity"], r["instance"], json.dumps(r["metrics"])) for r in references],
+        [(_activity_key(m["task"]), _instance(m["home"], m["seed"]), json.dumps(m))
+         for m in per_episode]))
+    for m, pair in zip(per_episode, pairs):
+        m.update(pair)
+    means = {}
+    for key, name in SUMMARY_NAMES.items():
+        if key in ("episodes", "success_score", "success_score_top5"):
+            continue
+        values = [m["relative"][key] for m in per_episode
+                  if m["relative"] and m["relative"].get(key) is not None]
+        means[name] = float(np.mean(values)) if values else None
+    return means
+
+
 def summary(per_episode: List[dict]) -> dict:
     """The protocol's summary of episodes (each with its ``task``), with the original's names."""
     ours = json.loads(_core.aggregate([(m["task"], json.dumps(m)) for m in per_episode]))
@@ -161,9 +226,11 @@ class Setup:
 
 
 def evaluate(activities: Sequence[str], policy: Policy, setup: Setup,
-             instance_ids: Sequence[int] = INSTANCE_IDS, log=print) -> Dict[str, object]:
+             instance_ids: Sequence[int] = INSTANCE_IDS, log=print,
+             references: Optional[List[dict]] = None) -> Dict[str, object]:
     """Every activity's protocol episodes: ``per_episode`` (a list of metrics dicts, labelled)
-    and ``aggregated`` (the summary, overall and per split)."""
+    and ``aggregated`` (the summary, overall and per split); with ``references``
+    (``load_references``), each episode's metrics relative to them as well."""
     per_episode = []
     for activity in activities:
         envs = {}
@@ -172,7 +239,8 @@ def evaluate(activities: Sequence[str], policy: Policy, setup: Setup,
                 envs[episode.home] = setup.make(episode)
             metrics = run_episode(envs[episode.home], policy, episode.seed)
             per_episode.append({"task": activity, "instance_id": episode.instance_id,
-                                "home": episode.home, "split": episode.split, **metrics})
+                                "home": episode.home, "seed": episode.seed,
+                                "split": episode.split, **metrics})
             log(f"{activity} instance {episode.instance_id} ({episode.split}, {episode.home}): "
                 f"Q {metrics['q_final']:.3f}")
         for env in envs.values():
@@ -181,6 +249,10 @@ def evaluate(activities: Sequence[str], policy: Policy, setup: Setup,
     splits = sorted({m["split"] for m in per_episode})
     aggregated["By Split"] = {s: summary([m for m in per_episode if m["split"] == s])
                               for s in splits}
+    if references:
+        aggregated["Relative"] = add_relative(per_episode, references)
+        aggregated["References"] = [{k: r[k] for k in ("file", "activity", "instance",
+                                                        "provenance")} for r in references]
     return {"per_episode": per_episode, "aggregated": aggregated}
 
 
@@ -200,6 +272,9 @@ def main(argv=None) -> int:
                    help="instance ids, 0-29")
     p.add_argument("--seed", type=int, default=0, help="the random agent's seed")
     p.add_argument("--out", type=Path, default=Path("runs/evaluation"))
+    p.add_argument("--reference", nargs="+", default=[], metavar="DEMO.mcap|DIR",
+                   help="demonstrations to measure efficiency against (a folder made by "
+                        "`behavior demos generate` stands for its demonstrations)")
     args = p.parse_args(argv)
     setup = Setup(row=args.row, robot=args.robot, horizon=args.horizon)
     activities = args.activities or list(ACTIVITIES)
@@ -217,14 +292,21 @@ def main(argv=None) -> int:
         policy = random_policy(args.seed)
     for i in args.instances:
         split_of(i)
-    result = evaluate(activities, policy, setup, args.instances)
+    try:
+        references = load_references(args.reference)
+    except (ValueError, OSError) as e:
+        p.error(f"--reference: {e}")
+    result = evaluate(activities, policy, setup, args.instances, references=references)
     args.out.mkdir(parents=True, exist_ok=True)
     per_episode = {str(i): m for i, m in enumerate(result["per_episode"])}
     (args.out / "per_episode_metrics.json").write_text(json.dumps(per_episode, indent=2) + "\n")
     (args.out / "aggregated_metrics.json").write_text(
         json.dumps(result["aggregated"], indent=2) + "\n")
-    print(json.dumps({k: v for k, v in result["aggregated"].items() if k != "By Split"},
-                     indent=2))
+    print(json.dumps({k: v for k, v in result["aggregated"].items()
+                      if k not in ("By Split", "References")}, indent=2))
+    for r in result["aggregated"].get("References", []):
+        print(f"reference {r['file']} ({r['activity']}, {r['instance']}): "
+              f"by {r['provenance'].get('kind', 'unstated')}")
     print(f"written: {args.out / 'per_episode_metrics.json'}, aggregated_metrics.json")
     return 0
 

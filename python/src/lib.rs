@@ -57,6 +57,38 @@ fn aggregate(episodes: Vec<(String, String)>) -> PyResult<String> {
         .map_err(|e| PyRuntimeError::new_err(e.to_string()))
 }
 
+/// Each episode's efficiency metrics relative to the best reference on its activity and
+/// instance, else on its activity (`behavior_env::metrics::HumanReference`). `references` and
+/// `episodes` are `(activity, instance, metrics JSON)`; returns a JSON list, one
+/// `{"reference": "instance"|"activity"|null, "relative": {…}|null}` per episode.
+#[pyfunction]
+fn relative_metrics(
+    references: Vec<(String, String, String)>,
+    episodes: Vec<(String, String, String)>,
+) -> PyResult<String> {
+    let metrics = |what: &str, i: usize, json: &str| {
+        serde_json::from_str::<EpisodeMetrics>(json)
+            .map_err(|e| PyValueError::new_err(format!("{what} {i}'s metrics: {e}")))
+    };
+    let mut best = behavior_env::metrics::HumanReference::new();
+    for (i, (activity, instance, json)) in references.iter().enumerate() {
+        best.add(activity, instance, &metrics("reference", i, json)?);
+    }
+    let mut out = Vec::new();
+    for (i, (activity, instance, json)) in episodes.iter().enumerate() {
+        let episode = metrics("episode", i, json)?;
+        let (reference, relative) = match best.normalize(activity, instance, &episode) {
+            Some(n) => (Some("instance"), Some(n)),
+            None => match best.normalize_by_activity(activity, &episode) {
+                Some(n) => (Some("activity"), Some(n)),
+                None => (None, None),
+            },
+        };
+        out.push(serde_json::json!({"reference": reference, "relative": relative}));
+    }
+    Ok(serde_json::Value::Array(out).to_string())
+}
+
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<env::PyEnv>()?;
@@ -65,6 +97,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(activities, m)?)?;
     m.add_function(wrap_pyfunction!(covering_homes, m)?)?;
     m.add_function(wrap_pyfunction!(aggregate, m)?)?;
+    m.add_function(wrap_pyfunction!(relative_metrics, m)?)?;
     m.add_function(wrap_pyfunction!(record::replay, m)?)?;
     m.add_function(wrap_pyfunction!(record::export_lerobot, m)?)?;
     m.add_function(wrap_pyfunction!(bddl::bddl_check, m)?)?;

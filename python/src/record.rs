@@ -35,7 +35,8 @@ pub fn record_error(e: RecordError) -> PyErr {
 /// Reads a recording and, with `verify`, re-simulates it: a JSON object with the header's
 /// `activity`, `scene`, `seed`, `robot`, `action_space`, the `frames` (steps) and `checkpoints`
 /// read (replayed, with `verify`), `q` after each step, `identical` and `first_difference`
-/// (with `verify`), `q_final`, and `damage` (where reading stopped in a cut or damaged file).
+/// (with `verify`), `q_final`, `damage` (where reading stopped in a cut or damaged file), the
+/// header's `provenance` (who acted) and, with `verify`, the episode's `metrics` at the end.
 #[pyfunction]
 pub fn replay(py: Python<'_>, path: PathBuf, verify: bool) -> PyResult<String> {
     py.detach(|| -> PyResult<String> {
@@ -54,6 +55,8 @@ pub fn replay(py: Python<'_>, path: PathBuf, verify: bool) -> PyResult<String> {
             "identical": null,
             "first_difference": null,
             "damage": recording.damage,
+            "provenance": h.provenance,
+            "metrics": null,
         });
         if verify {
             let catalog = catalog().map_err(|e| PyValueError::new_err(e.to_string()))?;
@@ -70,6 +73,7 @@ pub fn replay(py: Python<'_>, path: PathBuf, verify: bool) -> PyResult<String> {
             out["identical"] = json!(report.identical);
             out["first_difference"] = json!(report.first_difference);
             out["q_final"] = json!(report.q_final);
+            out["metrics"] = json!(report.metrics);
         }
         Ok(out.to_string())
     })

@@ -44,6 +44,47 @@ def test_a_random_agent_is_evaluated_and_summarized(tmp_path):
     assert aggregated["By Split"]["seen"]["Success Score"] == pytest.approx(qs[0])
 
 
+def test_efficiency_is_also_given_relative_to_demonstrations_with_their_provenance(tmp_path):
+    # A folder as `behavior demos generate` leaves one: a recording and its manifest.
+    demos = tmp_path / "demos"
+    (demos / "episodes").mkdir(parents=True)
+    recording = demos / "episodes" / "first.mcap"
+    env = behavior.BehaviorEnv(ACTIVITY, seed=0)
+    env.reset(seed=0)
+    env.record(recording)
+    rng = np.random.default_rng(3)
+    for _ in range(20):
+        env.step(rng.uniform(-1, 1, env.action_space.shape).astype(np.float32))
+    env.stop_recording()
+    home = behavior.covering_homes(ACTIVITY)[0]
+    manifest = {"robot": "behavior", "demos": [{"file": "episodes/first.mcap"}]}
+    (demos / "demos.json").write_text(json.dumps(manifest))
+
+    out = tmp_path / "eval"
+    assert protocol.main(["--policy", "random", "--activities", ACTIVITY, "--instances", "0",
+                          "10", "--horizon", "6", "--out", str(out),
+                          "--reference", str(demos)]) == 0
+    per_episode = json.loads((out / "per_episode_metrics.json").read_text())
+    aggregated = json.loads((out / "aggregated_metrics.json").read_text())
+    # Instance 0 is seed 0 in the first home, as the reference: compared on its instance.
+    assert per_episode["0"]["reference"] == "instance"
+    assert per_episode["1"]["reference"] == "activity", "seed 10 was not demonstrated"
+    ratio = per_episode["0"]["relative"]["simulated_time"]
+    assert ratio == pytest.approx(per_episode["0"]["sim_time_s"] * 30 / 20), "steps over 20"
+    relative = aggregated["Relative"]
+    assert relative["Simulated Time"] == pytest.approx(np.mean(
+        [per_episode[k]["relative"]["simulated_time"] for k in "01"]))
+    assert aggregated["Simulated Time"] == pytest.approx(np.mean(
+        [per_episode[k]["sim_time_s"] for k in "01"])), "the absolute means stay"
+    [reference] = aggregated["References"]
+    assert reference["instance"] == f"{home} seed 0"
+    assert reference["provenance"] == {"kind": "unstated"}, "a script's episode, said so"
+
+    with pytest.raises(SystemExit):
+        protocol.main(["--policy", "random", "--activities", ACTIVITY, "--reference",
+                       str(tmp_path)])
+
+
 def test_a_model_without_its_settings_is_refused(tmp_path, capsys):
     with pytest.raises(SystemExit):
         protocol.main(["--model", str(tmp_path / "model.zip")])

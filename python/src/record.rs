@@ -92,10 +92,9 @@ pub fn export_lerobot(
     format: &str,
 ) -> PyResult<String> {
     let format = Format::from_name(format).ok_or_else(|| {
-        let names: Vec<&str> = Format::ALL.iter().map(|f| f.name()).collect();
         PyValueError::new_err(format!(
             "format must be one of {}, not {format:?}",
-            names.join(", ")
+            Format::names()
         ))
     })?;
     py.detach(|| -> PyResult<String> {

@@ -319,18 +319,31 @@ fn first_sampled(
     mode: Mode,
 ) -> Result<Option<Env>> {
     for home in homes {
-        let home = with_clutter(home, library, true)?;
-        let mut config = EnvConfig::new(activity.clone(), taxonomy.clone(), vec![home]);
-        config.robot = crate::episode::robot_kind(robot)?;
-        config.action_space = mode.action_space(config.robot);
-        config.max_steps = SOLVE_MAX_STEPS;
-        let mut env = Env::new(config);
+        let mut env = solve_env(activity, home, library, robot, taxonomy, mode)?;
         // Sampling fails now and then (0.3 % of attempts): the next seed, then the next home.
         if (0..SEEDS).any(|seed| env.reset(seed).is_ok()) {
             return Ok(Some(env));
         }
     }
     Ok(None)
+}
+
+/// An episode for the planner in `home` (with its clutter), `robot` acting in `mode`'s action
+/// space, with [`SOLVE_MAX_STEPS`]; not reset yet.
+pub fn solve_env(
+    activity: &Arc<behavior_bddl::Activity>,
+    home: behavior_assets::Scene,
+    library: &behavior_assets::Library,
+    robot: &str,
+    taxonomy: &Arc<behavior_bddl::Taxonomy>,
+    mode: Mode,
+) -> Result<Env> {
+    let home = with_clutter(home, library, true)?;
+    let mut config = EnvConfig::new(activity.clone(), taxonomy.clone(), vec![home]);
+    config.robot = crate::episode::robot_kind(robot)?;
+    config.action_space = mode.action_space(config.robot);
+    config.max_steps = SOLVE_MAX_STEPS;
+    Ok(Env::new(config))
 }
 
 fn print_all(all: &AllReport) {

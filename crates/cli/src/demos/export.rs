@@ -65,8 +65,5 @@ pub fn run(args: ExportArgs, data_dir: Option<&Path>) -> Result<ExitCode> {
 
 /// The `--format` named.
 fn format_named(name: &str) -> Result<Format, String> {
-    Format::from_name(name).ok_or_else(|| {
-        let names: Vec<&str> = Format::ALL.iter().map(|f| f.name()).collect();
-        format!("one of {}", names.join(", "))
-    })
+    Format::from_name(name).ok_or_else(|| format!("one of {}", Format::names()))
 }

@@ -14,14 +14,13 @@
 use super::card;
 use crate::prelude::{Prelude, counting_bar};
 use crate::sample::all_covering;
-use crate::scene::with_clutter;
-use crate::solve::{SOLVE_MAX_STEPS, planner};
+use crate::solve::{planner, solve_env};
 use anyhow::{Context, Result, bail};
 use behavior_assets::Scene;
 use behavior_bddl::Activity;
+use behavior_env::Env;
 use behavior_env::record::{RecordingSetup, read, replay_with};
-use behavior_env::{Env, EnvConfig};
-use behavior_planning::{Limits, Mode, RecordedCall, RunError, Solver, Watcher};
+use behavior_planning::{Limits, Mode, RecordedCall, RunError, Solution, Solver, Watcher};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -243,7 +242,16 @@ fn try_one(ctx: &Tries<'_>, home: &Scene, seed: u64) -> Result<(Try, Option<Demo
         kept: false,
         outcome: String::new(),
     };
-    let mut env = physical_env(ctx, home)?;
+    let taxonomy = Arc::new(ctx.prelude.knowledge().taxonomy.clone());
+    let library = ctx.prelude.library();
+    let mut env = solve_env(
+        ctx.activity,
+        home.clone(),
+        &library,
+        ctx.robot,
+        &taxonomy,
+        Mode::Physical,
+    )?;
     if let Err(e) = env.reset(seed) {
         attempt.outcome = format!("not sampled: {e}");
         return Ok((attempt, None));
@@ -268,30 +276,14 @@ fn try_one(ctx: &Tries<'_>, home: &Scene, seed: u64) -> Result<(Try, Option<Demo
     .solve();
     let solve_s = began.elapsed().as_secs_f64();
     env.finish_recording()?;
-    let solution = match solution {
-        Ok(s) => s,
-        Err(e) => {
-            let _ = std::fs::remove_file(&partial);
-            attempt.outcome = format!("the episode failed: {e}");
-            return Ok((attempt, None));
-        }
-    };
-    if !solution.success {
-        let _ = std::fs::remove_file(&partial);
-        let failed = solution.primitives.iter().find(|p| p.reason.is_some());
-        attempt.outcome = match failed {
-            Some(p) => format!(
-                "not solved: {} {}: {}",
-                p.name,
-                p.object,
-                p.reason.as_deref().unwrap_or_default()
-            ),
-            None => format!("not solved: {}", solution.stopped),
-        };
-        return Ok((attempt, None));
-    }
-    let checkpoints = match verify(ctx, &partial) {
-        Ok(n) => n,
+    let kept = solution
+        .map_err(|e| format!("the episode failed: {e}"))
+        .and_then(|solution| match solution.success {
+            true => verify(ctx, &partial).map(|checkpoints| (solution, checkpoints)),
+            false => Err(not_solved(&solution)),
+        });
+    let (solution, checkpoints) = match kept {
+        Ok(kept) => kept,
         Err(why) => {
             let _ = std::fs::remove_file(&partial);
             attempt.outcome = why;
@@ -326,15 +318,17 @@ fn try_one(ctx: &Tries<'_>, home: &Scene, seed: u64) -> Result<(Try, Option<Demo
     Ok((attempt, Some(demo)))
 }
 
-/// A physical episode of the activity in `home` (with its clutter), as `solve-all` makes one.
-fn physical_env(ctx: &Tries<'_>, home: &Scene) -> Result<Env> {
-    let home = with_clutter(home.clone(), &ctx.prelude.library(), true)?;
-    let taxonomy = Arc::new(ctx.prelude.knowledge().taxonomy.clone());
-    let mut config = EnvConfig::new(ctx.activity.clone(), taxonomy, vec![home]);
-    config.robot = crate::episode::robot_kind(ctx.robot)?;
-    config.action_space = Mode::Physical.action_space(config.robot);
-    config.max_steps = SOLVE_MAX_STEPS;
-    Ok(Env::new(config))
+/// Why an unsolved try is not kept: its first failed primitive and why, else why it stopped.
+fn not_solved(solution: &Solution) -> String {
+    match solution.primitives.iter().find(|p| p.reason.is_some()) {
+        Some(p) => format!(
+            "not solved: {} {}: {}",
+            p.name,
+            p.object,
+            p.reason.as_deref().unwrap_or_default()
+        ),
+        None => format!("not solved: {}", solution.stopped),
+    }
 }
 
 /// The recording at `path` replayed from its own header: the checkpoints compared, or why it

@@ -59,6 +59,12 @@ impl Format {
         }
     }
 
+    /// Every format's name, for a message: `lerobot-v3, lerobot-v2.1`.
+    pub fn names() -> String {
+        let names: Vec<&str> = Format::ALL.iter().map(|f| f.name()).collect();
+        names.join(", ")
+    }
+
     /// The format named `name` (`lerobot-v3.0` is taken for `lerobot-v3` too).
     pub fn from_name(name: &str) -> Option<Format> {
         match name {

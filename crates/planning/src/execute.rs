@@ -134,21 +134,33 @@ pub fn run_with(
         (Mode::Physical, Primitive::NavigateTo) => {
             physical::drive_to(env, &call, tuning, again(&mut watcher))?.map(|_| ())
         }
-        // Switches are kinematic in the original's motion-planning mode too.
-        (Mode::Symbolic, _)
-        | (
-            Mode::Physical,
-            Primitive::Open | Primitive::Close | Primitive::ToggleOn | Primitive::ToggleOff,
-        ) => apply(env, &call)?,
+        // Doors and lids are set kinematically, as in the original's motion-planning mode.
+        (Mode::Symbolic, _) | (Mode::Physical, Primitive::Open | Primitive::Close) => {
+            apply(env, &call)?
+        }
+        // A switch is pressed by hand; where the hand finds no way to its button (a tap's
+        // button between the tap and the wall), or pressed without effect, it is set as the
+        // original's motion-planning mode sets every switch, recorded as an edit.
+        (Mode::Physical, Primitive::ToggleOn | Primitive::ToggleOff) => {
+            match manipulation::press(env, &call, tuning, again(&mut watcher))? {
+                Err(
+                    Failure::NoHandPose
+                    | Failure::NoPath(_)
+                    | Failure::HandBlocked
+                    | Failure::NoEffect(_),
+                ) if !env.is_over() => apply(env, &call)?,
+                pressed => pressed,
+            }
+        }
         (Mode::Physical, Primitive::Grasp) => {
             manipulation::grasp(env, &call, tuning, again(&mut watcher))?
         }
-        (Mode::Physical, Primitive::Soak | Primitive::Wipe) => {
+        (Mode::Physical, Primitive::Soak | Primitive::Wipe | Primitive::Slice) => {
             manipulation::use_tool(env, &call, tuning, again(&mut watcher))?
         }
         (Mode::Physical, p) => match p.relation() {
             Some(r) => manipulation::place(env, &call, r, tuning, again(&mut watcher))?,
-            None => Err(Failure::Unavailable("physical slice is not built yet")),
+            None => Err(Failure::Unavailable("no physical form of this primitive")),
         },
     };
     let seconds = began.elapsed().as_secs_f64();

@@ -248,6 +248,21 @@ impl Manipulator for JointedArm {
         precondition(env, call).map(|()| call.hand)
     }
 
+    /// The fingertips at `at`, the gripper pointing straight down, then pitched toward
+    /// `facing` as for a grasp, then level toward it.
+    fn press_goals(&self, env: &Env, hand: usize, at: Vector, facing: f32) -> Vec<Pose> {
+        let Some((_, _, arm)) = arm_of(env, hand) else {
+            return Vec::new();
+        };
+        let pitches = [FRAC_PI_2].into_iter().chain(PITCHES).chain([0.0]);
+        pitches
+            .map(|pitch| {
+                let rotation = pointing(facing, pitch);
+                Pose::from_parts(at - rotation * Vector::X * arm.tip(), rotation)
+            })
+            .collect()
+    }
+
     fn grasp_goals(
         &self,
         env: &Env,

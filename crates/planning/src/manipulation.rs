@@ -94,6 +94,11 @@ pub(crate) trait Manipulator: Hands {
     /// The primitive's preconditions, and the hand `call` moves.
     fn hand(&self, env: &Env, call: &Call) -> Result<Self::Hand, Failure>;
 
+    /// Poses of the hand's holding part (in the world) that put the point it presses with (a
+    /// palm's grasp point, a gripper's fingertips) at `at`, pointing down or toward `facing`
+    /// (a heading across the floor), best first: how a switch's button is pressed.
+    fn press_goals(&self, env: &Env, hand: Self::Hand, at: Vector, facing: f32) -> Vec<Pose>;
+
     /// Poses of the hand (in the world) over `call.object` for a grasp, best first.
     fn grasp_goals(
         &self,
@@ -292,8 +297,8 @@ pub(crate) trait AnyManipulator: Hands {
         watcher: Option<&mut dyn Watcher>,
     ) -> Attempt<()>;
 
-    /// SOAK with physics ([`crate::tools`]).
-    fn soak(
+    /// TOGGLE_ON or TOGGLE_OFF with physics ([`crate::tools`]): the switch pressed by hand.
+    fn press(
         &self,
         env: &mut Env,
         call: &Call,
@@ -301,8 +306,8 @@ pub(crate) trait AnyManipulator: Hands {
         watcher: Option<&mut dyn Watcher>,
     ) -> Attempt<()>;
 
-    /// WIPE with physics ([`crate::tools`]).
-    fn wipe(
+    /// SOAK, WIPE or SLICE with physics ([`crate::tools`]), by `call.primitive`.
+    fn use_tool(
         &self,
         env: &mut Env,
         call: &Call,
@@ -333,24 +338,29 @@ impl<M: Manipulator> AnyManipulator for M {
         Ok(place_with(self, env, call, relation, tuning, watcher)?.map(|_| ()))
     }
 
-    fn soak(
+    fn press(
         &self,
         env: &mut Env,
         call: &Call,
         tuning: &Tuning,
         watcher: Option<&mut dyn Watcher>,
     ) -> Attempt<()> {
-        crate::tools::soak_with(self, env, call, tuning, watcher)
+        crate::tools::toggle_with(self, env, call, tuning, watcher)
     }
 
-    fn wipe(
+    fn use_tool(
         &self,
         env: &mut Env,
         call: &Call,
         tuning: &Tuning,
         watcher: Option<&mut dyn Watcher>,
     ) -> Attempt<()> {
-        crate::tools::wipe_with(self, env, call, tuning, watcher)
+        match call.primitive {
+            Primitive::Soak => crate::tools::soak_with(self, env, call, tuning, watcher),
+            Primitive::Wipe => crate::tools::wipe_with(self, env, call, tuning, watcher),
+            Primitive::Slice => crate::tools::slice_with(self, env, call, tuning, watcher),
+            _ => Ok(Err(Failure::Unavailable("not a tool's primitive"))),
+        }
     }
 }
 
@@ -390,20 +400,31 @@ pub fn place(
     }
 }
 
-/// SOAK or WIPE with physics by the episode's robot's manipulator ([`crate::tools`]).
+/// TOGGLE_ON or TOGGLE_OFF with physics by the episode's robot's manipulator: its hand brought
+/// to the switch's button and held there (`tools.rs`), without the kinematic fallback that
+/// [`crate::run`] has.
+pub fn press(
+    env: &mut Env,
+    call: &Call,
+    tuning: &Tuning,
+    watcher: Option<&mut dyn Watcher>,
+) -> Attempt<()> {
+    match env.robot().map(manipulator) {
+        Some(hands) => hands.press(env, call, tuning, watcher),
+        None => Ok(Err(Failure::Unavailable("no episode"))),
+    }
+}
+
+/// SOAK, WIPE or SLICE with physics by the episode's robot's manipulator (`tools.rs`).
 pub fn use_tool(
     env: &mut Env,
     call: &Call,
     tuning: &Tuning,
     watcher: Option<&mut dyn Watcher>,
 ) -> Attempt<()> {
-    let Some(hands) = env.robot().map(manipulator) else {
-        return Ok(Err(Failure::Unavailable("no episode")));
-    };
-    match call.primitive {
-        Primitive::Soak => hands.soak(env, call, tuning, watcher),
-        Primitive::Wipe => hands.wipe(env, call, tuning, watcher),
-        _ => Ok(Err(Failure::Unavailable("not a tool's primitive"))),
+    match env.robot().map(manipulator) {
+        Some(hands) => hands.use_tool(env, call, tuning, watcher),
+        None => Ok(Err(Failure::Unavailable("no episode"))),
     }
 }
 

@@ -86,6 +86,8 @@ const RAISES: usize = 7;
 /// The point of the hand put over the object: under the fingers' roots on the palm's inner
 /// face, where closing fingers wrap (see `behavior-robots`' hand frame).
 const GRASP_POINT: Vector = Vector::new(0.04, 0.0, -0.015);
+/// The fingers' headings tried for a press, from the way the press faces, rad.
+const PRESS_TURNS: [f32; 5] = [0.0, PI / 4.0, -PI / 4.0, PI / 2.0, -PI / 2.0];
 /// A hand target this close to a configuration counts as there, m or rad.
 const TARGET_TOLERANCE: f32 = 1e-4;
 /// A palm this close to its target has arrived, m.
@@ -1054,6 +1056,18 @@ impl Manipulator for PosedHands {
 
     fn hand(&self, env: &Env, call: &Call) -> Result<Side, Failure> {
         hand_side(env, call)
+    }
+
+    /// Palm down, its grasp point at `at`, the fingers toward `facing` and at eighth turns
+    /// either side of it.
+    fn press_goals(&self, _: &Env, _: Side, at: Vector, facing: f32) -> Vec<Pose> {
+        PRESS_TURNS
+            .iter()
+            .map(|&turn| {
+                let rotation = Rotation::from_rotation_z(facing + turn);
+                Pose::from_parts(at - rotation * GRASP_POINT, rotation)
+            })
+            .collect()
     }
 
     fn grasp_goals(

@@ -455,7 +455,7 @@ fn navigate(
 
 /// Where NAVIGATE_TO stands for `object`: facing it and seeing it within `reach` of it (the
 /// mode's reach), else clear within that reach, else seeing it from farther; for a floor, a
-/// clear place in its room. Given an `arm` test (physical Fetch: its arm reaches the object
+/// clear place in its room. Given an `arm` test (physical mode: a hand reaches the object
 /// from there), the places within reach that pass it come first. Only places that `only`
 /// accepts are taken at all (physical mode: those a base path can reach).
 pub(crate) fn stand_for(

@@ -305,7 +305,7 @@ impl<'a> Solver<'a> {
                 self.process(x, Ability::HeatSource, literal)
             }
             (Predicate::Frozen, None, true) => self.process(x, Ability::ColdSource, literal),
-            (Predicate::Frozen, None, false) => self.wait_until(literal),
+            (Predicate::Frozen, None, false) => self.thaw(x, literal),
             (Predicate::Soaked, None, true) => {
                 self.hold(x, CARRY)?;
                 self.soak(CARRY)
@@ -359,9 +359,31 @@ impl<'a> Solver<'a> {
         }
     }
 
+    /// The hand that presses a switch for a recipe that asked for `asked`: that one if it is
+    /// empty, else an empty one (a hand holding a towel to soak pressed the tap with it, and
+    /// the towel met the tap), else that one.
+    fn pressing_hand(&self, asked: usize) -> usize {
+        let asked = if asked == CARRY {
+            self.carry_hand()
+        } else {
+            asked
+        };
+        let Some(robot) = self.env.robot() else {
+            return asked;
+        };
+        if robot.held(asked).is_none() {
+            return asked;
+        }
+        (0..robot.hands())
+            .find(|&h| robot.held(h).is_none())
+            .unwrap_or(asked)
+    }
+
     /// Runs one primitive; its failure is the recipe's.
     fn call(&mut self, primitive: Primitive, object: ObjectId, hand: usize) -> Result<(), Reason> {
-        let hand = if primitive.uses_hand() && hand == CARRY {
+        let hand = if matches!(primitive, Primitive::ToggleOn | Primitive::ToggleOff) {
+            self.pressing_hand(hand)
+        } else if primitive.uses_hand() && hand == CARRY {
             self.carry_hand()
         } else {
             hand
@@ -581,6 +603,15 @@ impl<'a> Solver<'a> {
             self.approach(y)?;
             self.call(Primitive::Open, y, CARRY)?;
         }
+        // With physics a hand reaches a dish in a cabinet only through the cabinet's open door
+        // (the symbolic primitives, as the original's, ask only of `y` itself).
+        let shut_round = container_where(self.world(), y, |c| self.to_open(c));
+        if let Some(c) = shut_round
+            .filter(|_| self.mode == Mode::Physical && primitive != Primitive::PlaceOnFloor)
+        {
+            self.approach(c)?;
+            self.call(Primitive::Open, c, CARRY)?;
+        }
         if primitive == Primitive::PlaceOnFloor {
             self.call(Primitive::NavigateTo, y, CARRY)?;
         } else {
@@ -618,6 +649,23 @@ impl<'a> Solver<'a> {
         }
         if on && !self.world().state(source, Predicate::ToggledOn) {
             self.call(Primitive::ToggleOn, source, CARRY)?;
+        }
+        self.wait_until(literal)
+    }
+
+    /// Thawing: `x` taken out of the cold it lies in or on (a refrigerator, where waiting
+    /// never thaws it) and put down in the room, then time let pass.
+    fn thaw(&mut self, x: ObjectId, literal: Literal) -> Result<(), Reason> {
+        let world = self.world();
+        let cold = world.bodies().objects().any(|(c, o)| {
+            c != x
+                && o.is_present()
+                && o.has(Ability::ColdSource)
+                && (world.relations().inside(x, c) || world.relations().ontop(x, c))
+        });
+        if cold {
+            self.hold(x, CARRY)?;
+            self.put_down(CARRY)?;
         }
         self.wait_until(literal)
     }

@@ -1,15 +1,19 @@
-//! SOAK and WIPE with physics, the same for every manipulator: the world's own rules do the
-//! work, the primitive only brings the tool where they act. A soakable thing becomes soaked when
-//! a drop of a running source touches it, so SOAK holds the tool under the outlet until one
+//! SOAK, WIPE and SLICE with physics, and the switches pressed by hand, the same for every
+//! manipulator: the world's own rules do the work, the primitive only brings the tool (or the
+//! hand) where they act. A soakable thing becomes soaked
+//! when a drop of a running source touches it, so SOAK holds the tool under the outlet until one
 //! has; a cleaning tool touching a dirty object takes the particles within its box (stains only
 //! when soaked), so WIPE presses the tool onto the surface where the particles lie and rubs it
-//! about, spot after spot, until the object is clean. Each reports what it did not manage
-//! ([`Failure::NoEffect`]) rather than setting the state.
+//! about, spot after spot, until the object is clean; a slicer pressing a sliceable object with
+//! more than 10 N near its cutting edge cuts it in two, so SLICE brings the knife's edge over the
+//! object's top and pushes it down through it; a hand held within 0.1 m of a switch's button
+//! for 5 steps flips it, so TOGGLE_ON and TOGGLE_OFF bring the hand there and hold it. Each
+//! reports what it did not manage ([`Failure::NoEffect`]) rather than setting the state.
 
 use crate::execute::Watcher;
 use crate::manipulation::{Grip, Manipulator, manipulator};
 use crate::physical::{Attempt, Stepper, attempt, call_rng};
-use crate::primitive::{Call, Failure};
+use crate::primitive::{Call, Failure, Primitive};
 use crate::symbolic::check;
 use crate::tuning::Tuning;
 use behavior_core::Predicate;
@@ -45,6 +49,25 @@ const RUB: [(f32, f32); 5] = [
 const GRAZE: f32 = 0.006;
 /// How far in from a tool's side the point put under a tap or over a spot lies, m.
 const TAP_INSET: f32 = 0.02;
+/// How high above the object's top the knife's edge is brought before it is pushed down, m.
+const OVER_CUT: f32 = 0.03;
+/// How far below the object's bottom the push aims, m: the knife stops on what the object
+/// lies on, pressing, unless the object is cut first.
+const THROUGH: f32 = 0.03;
+/// Still steps the knife keeps pressing where the push stopped, until the object is cut.
+const CUT_STEPS: u32 = 30;
+/// Where the hand's pressing point is put for a button: out from it toward the robot and up,
+/// m — over a button on top, then before one on the front of furniture (the fingers, ahead
+/// of that point, come within the world's 0.1 m of it).
+const PRESS_FROM: [(f32, f32); 5] = [
+    (0.0, 0.05),
+    (0.1, 0.04),
+    (0.08, 0.0),
+    (0.12, 0.0),
+    (0.03, 0.03),
+];
+/// Still steps the hand is held at the button at most: three times the world's five.
+const PRESS_STEPS: u32 = 15;
 /// Dirty spots nearest the hand that a wipe tries to bring the tool over, each time.
 const SPOT_CHOICES: usize = 5;
 /// Spots wiped at most per WIPE.
@@ -169,6 +192,149 @@ pub(crate) fn wipe_with<M: Manipulator>(
     } else {
         Ok(Err(last))
     }
+}
+
+/// SLICE with physics: the knife hand `call.hand` holds brought with its cutting edge
+/// [`OVER_CUT`] above the middle of `call.object`'s top, pushed down through it to
+/// [`THROUGH`] below its bottom, kept pressing for up to [`CUT_STEPS`] where it stopped, then
+/// lifted and brought back. The world's slicing rule decides whether the object is cut.
+pub(crate) fn slice_with<M: Manipulator>(
+    hands: &M,
+    env: &mut Env,
+    call: &Call,
+    tuning: &Tuning,
+    watcher: Option<&mut dyn Watcher>,
+) -> Attempt<()> {
+    let hand = match checked(hands, env, call) {
+        Ok(hand) => hand,
+        Err(failure) => return Ok(Err(failure)),
+    };
+    let (goals, depth) = match edge_goals(env, call) {
+        Ok(found) => found,
+        Err(failure) => return Ok(Err(failure)),
+    };
+    let object = call.object;
+    let sliced = move |env: &Env| {
+        env.world()
+            .is_some_and(|w| w.state(object, Predicate::Sliced))
+    };
+    let mut rng = call_rng(env, call);
+    let mut steps = Stepper {
+        env,
+        tuning,
+        watcher,
+    };
+    let mut reached = attempt!(hands.reach(&mut steps, hand, &goals, Grip::Closed, &mut rng));
+    attempt!(hands.slide(&mut steps, hand, -Vector::Z * depth, &mut reached, &sliced));
+    attempt!(hands.hold_still(&mut steps, hand, CUT_STEPS, &sliced));
+    attempt!(
+        hands.slide(&mut steps, hand, Vector::Z * depth, &mut reached, &|_| {
+            false
+        })
+    );
+    attempt!(hands.come_back(&mut steps, hand, Grip::Closed, &mut reached));
+    if sliced(steps.env) {
+        Ok(Ok(()))
+    } else {
+        Ok(Err(Failure::NoEffect("the knife did not cut through it")))
+    }
+}
+
+/// Poses of the hand that put the cutting edge of the knife it holds (its slicing point, else
+/// the middle of its box's bottom) [`OVER_CUT`] above the middle of `call.object`'s top, the
+/// knife held as the hand can set it down and turned by quarter turns about the edge; with the
+/// push down from there that ends [`THROUGH`] below the object's bottom.
+fn edge_goals(env: &Env, call: &Call) -> Result<(Vec<Pose>, f32), Failure> {
+    let (Some(world), Some(robot)) = (env.world(), env.robot()) else {
+        return Err(Failure::Unavailable("no episode"));
+    };
+    let knife = robot.held(call.hand).ok_or(Failure::HandEmpty)?;
+    let held = Held::of(world, robot, call)?;
+    let (lo, hi) = held.local;
+    let edge = world
+        .bodies()
+        .object(knife)
+        .point(PointKind::SlicingEdge)
+        .unwrap_or((0.5 * (lo + hi)).with_z(lo.z));
+    let b = world.bodies().aabb(call.object);
+    let over = b.center().with_z(b.maxs.z + OVER_CUT);
+    let depth = over.z - (b.mins.z - THROUGH);
+    let mut goals = Vec::new();
+    for (pose, turn) in held.turned() {
+        let at = pose.transform_point(edge);
+        let turned = about(at, turn, over) * pose;
+        goals.push(held.holder_at(&turned));
+    }
+    Ok((goals, depth))
+}
+
+/// TOGGLE_ON or TOGGLE_OFF with physics: hand `call.hand` brought to `call.object`'s button
+/// (its toggle point; else the middle of its top) from one of [`PRESS_FROM`], held there until
+/// the switch flips or [`PRESS_STEPS`] have passed, and brought back. The world's toggle rule
+/// decides.
+pub(crate) fn toggle_with<M: Manipulator>(
+    hands: &M,
+    env: &mut Env,
+    call: &Call,
+    tuning: &Tuning,
+    watcher: Option<&mut dyn Watcher>,
+) -> Attempt<()> {
+    let hand = match checked(hands, env, call) {
+        Ok(hand) => hand,
+        Err(failure) => return Ok(Err(failure)),
+    };
+    let Some(goals) = press_goals(hands, env, hand, call) else {
+        return Ok(Err(Failure::Unavailable("no episode")));
+    };
+    let (object, on) = (call.object, call.primitive == Primitive::ToggleOn);
+    let switched = move |env: &Env| {
+        env.world()
+            .is_some_and(|w| w.state(object, Predicate::ToggledOn) == on)
+    };
+    let grip = Grip::holding(held(env, call).is_some());
+    let mut rng = call_rng(env, call);
+    let mut steps = Stepper {
+        env,
+        tuning,
+        watcher,
+    };
+    let mut reached = attempt!(hands.reach(&mut steps, hand, &goals, grip, &mut rng));
+    attempt!(hands.hold_still(&mut steps, hand, PRESS_STEPS, &switched));
+    attempt!(hands.come_back(&mut steps, hand, grip, &mut reached));
+    if switched(steps.env) {
+        Ok(Ok(()))
+    } else {
+        Ok(Err(Failure::NoEffect(
+            "the hand at the button did not switch it",
+        )))
+    }
+}
+
+/// The hand's goals for pressing `call.object`'s button: from each of [`PRESS_FROM`], out
+/// being the way across the floor from the button to the robot's base.
+fn press_goals<M: Manipulator>(
+    hands: &M,
+    env: &Env,
+    hand: M::Hand,
+    call: &Call,
+) -> Option<Vec<Pose>> {
+    let (world, robot) = (env.world()?, env.robot()?);
+    let object = world.bodies().object(call.object);
+    let b = world.bodies().aabb(call.object);
+    let button = object
+        .point(PointKind::ToggleButton)
+        .map(|p| world.bodies().pose(call.object).transform_point(p))
+        .unwrap_or(b.center().with_z(b.maxs.z));
+    let base = robot.base_pose(world).translation;
+    let out = (base - button).with_z(0.0).normalize_or_zero();
+    // The press faces the way into the button.
+    let facing = (-out.y).atan2(-out.x);
+    let mut goals = Vec::new();
+    for (away, up) in PRESS_FROM {
+        let at = button + out * away + Vector::Z * up;
+        goals.extend(hands.press_goals(env, hand, at, facing));
+    }
+    Some(goals)
 }
 
 /// The hand a call uses, after the primitive's own checks (but reach: the hand goes there).

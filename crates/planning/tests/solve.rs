@@ -4,6 +4,7 @@
 
 #[path = "../../env/tests/common/mod.rs"]
 mod common;
+mod support;
 
 use behavior_env::record::{RecordingSetup, read, replay, replay_with};
 use behavior_planning::{Limits, Mode, RecordedCall, Solution, Solver};
@@ -96,99 +97,21 @@ fn solving_before_a_reset_is_an_error() {
     );
 }
 
-/// Solves `activity` with `robot` and physical primitives on at least `k` of `seeds`, in the
-/// episode `behavior solve` makes — the first covering home with its clutter, every navigation
-/// driven, every grasp and placement planned and executed with physics — and checks of each
-/// seed solved that `placement` was done physically and that its recording replays bit for bit.
-/// Physics makes runs chaotic (which seeds are solved changes with any change to the planner or
-/// the homes: README, "Physical mode"), so a test states on how many of several seeds its
-/// activity is solved, not that one lucky seed is. The seeds are tried in the order given (those
-/// solved at the last measurement first, so that a passing test takes no longer than it must)
-/// until `k` are solved or too few are left; the message lists every seed's outcome.
+/// Checks that `activity` is solved physically by `robot` on at least `k` of `seeds` in the
+/// episode `behavior solve` makes (the first covering home with its clutter, every navigation
+/// driven, every grasp and placement planned and executed with physics), `placement` done
+/// physically on each, and that each solved seed's recording replays bit for bit (see
+/// `support::solves_at_least`).
 fn solves_at_least(k: usize, seeds: [u64; 6], activity: &str, placement: &str, robot: RobotKind) {
-    let mut outcomes = Vec::new();
-    let mut solved = 0;
-    for (tried, seed) in seeds.into_iter().enumerate() {
-        if solved + (seeds.len() - tried) < k {
-            break;
-        }
-        let outcome = solve_physically(activity, seed, placement, robot);
-        solved += usize::from(outcome.is_ok());
-        outcomes.push((seed, outcome));
-        if solved == k {
-            return;
-        }
-    }
-    panic!(
-        "{activity} ({}) solved on fewer than {k} of seeds {seeds:?}: {outcomes:#?}",
-        robot.name()
-    );
-}
-
-/// One physical solve of [`solves_at_least`]: `Err` says why it is not solved (a solution that
-/// is solved but does not replay, or whose placement was not physical, fails the test).
-fn solve_physically(
-    activity: &str,
-    seed: u64,
-    placement: &str,
-    robot: RobotKind,
-) -> Result<(), String> {
-    let dir = std::env::temp_dir().join(format!(
-        "behavior-{activity}-{}-{seed}-{}",
-        robot.name(),
-        std::process::id()
-    ));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join("solution.mcap");
     let config = || {
         let a = common::activity(activity);
         let home = common::home(&a, true);
-        let mut c = behavior_env::EnvConfig::new(a, common::taxonomy(), vec![home]);
-        c.max_steps = 20_000; // as `behavior solve`'s
-        c.robot = robot;
-        c.action_space = Mode::Physical.action_space(robot);
-        c
+        let c = behavior_env::EnvConfig::new(a, common::taxonomy(), vec![home]);
+        support::physical(c, robot)
     };
-    let mut env = behavior_env::Env::new(config());
-    env.reset(seed).unwrap();
-    env.record_to(&path, RecordingSetup::new("", 50)).unwrap();
-    let solution = solve_in(&mut env, Mode::Physical).unwrap();
-    env.finish_recording().unwrap();
-    if !solution.success {
-        std::fs::remove_dir_all(&dir).unwrap();
-        return Err(format!(
-            "Q = {}, given up: {:?}",
-            solution.q_final, solution.given_up
-        ));
-    }
-    let physical = |name: &str| solution.primitives.iter().any(|p| p.ok && p.name == name);
-    assert!(physical("grasp") && physical(placement) && physical("navigate_to"));
-    let recording = read(&path).unwrap();
-    // Forced grasps, hands put back where they were pinned, the home's doors opened before the
-    // first drive, and switches (kinematic in the original's motion-planning mode too) are the
-    // only edits; the rest is actions.
-    let edited = [
-        behavior_planning::FORCED_GRASP,
-        behavior_planning::HAND_RESET,
-        behavior_planning::DOORS_OPENED,
-        "open",
-        "close",
-        "toggle_on",
-        "toggle_off",
-    ];
-    for (step, edit) in &recording.edits {
-        let name = edit["primitive"].as_str().unwrap_or_default();
-        assert!(edited.contains(&name), "{activity}: step {step}: {edit}");
-    }
-    let report = replay_with::<RecordedCall>(&recording, config()).unwrap();
-    assert!(
-        report.identical,
-        "{activity}: differs from step {:?}",
-        report.first_difference
-    );
-    assert_eq!(report.q_final, 1.0);
-    std::fs::remove_dir_all(&dir).unwrap();
-    Ok(())
+    let done = ["grasp", placement, "navigate_to"];
+    let name = format!("{activity} ({})", robot.name());
+    support::solves_at_least(k, &seeds, &name, &config, &done);
 }
 
 // Each physical test tries Table 1's seeds 0–5 (`bench/table1`), those solved at the last

@@ -227,8 +227,17 @@ impl Reading {
                             ));
                         }
                         for (i, pose) in objects.into_iter().zip(m.poses) {
+                            // Objects appear during an episode (a sliced one's halves), one
+                            // after the last known, when all poses are written again.
+                            if i == self.poses.len() {
+                                self.poses.push(pose);
+                                continue;
+                            }
                             let Some(slot) = self.poses.get_mut(i) else {
-                                return Err(format!("the pose of object {i}, past the header's"));
+                                return Err(format!(
+                                    "the pose of object {i}, past the {} known",
+                                    self.poses.len()
+                                ));
                             };
                             *slot = pose;
                         }

@@ -62,3 +62,8 @@ pub fn config(name: &str) -> EnvConfig {
 pub fn env(name: &str) -> Env {
     Env::new(config(name))
 }
+
+/// The official activities' names.
+pub fn official_activities() -> Vec<String> {
+    data().activities().unwrap()
+}

@@ -2,8 +2,10 @@
 //! each robot in a small real scene (our own activities, `activities/`): the tool taken and the
 //! robot brought to the target by the physical primitives, a call the primitive refuses
 //! (nothing moves), then the primitive doing what the world's own rule asks (the lemon cut in
-//! two, the towel soaked, dust taken off the table, the printer switched on). Physics makes runs chaotic, so each robot is given a few seeds: on one of them
-//! the primitive must succeed.
+//! two, the towel soaked, dust taken off the table, the printer switched on). Physics makes
+//! runs chaotic, so each robot is given a few seeds: on one of them the primitive must succeed.
+//! The toggle is called through `press`, which has no kinematic fallback: a switch that flips
+//! was pressed by the hand.
 
 #[path = "../../env/tests/common/mod.rs"]
 mod common;
@@ -69,7 +71,7 @@ fn holds(env: &Env, x: ObjectId) -> bool {
     env.robot().unwrap().held(0) == Some(x)
 }
 
-/// Runs `case` for `robot` on each seed until the primitive changes the state; panics, with
+/// Runs `case` for `robot` on each seed until the primitive has its effect; panics, with
 /// every seed's outcome, where it never does. A seed whose preparation (drive, grasp, drive)
 /// fails moves on to the next; the refusal is checked on every seed prepared.
 fn check(case: &Case, robot: RobotKind) {

@@ -372,6 +372,17 @@ pub(crate) fn manipulator(robot: &Robot) -> &'static dyn AnyManipulator {
     }
 }
 
+/// `act` by the episode's robot's manipulator; with no episode, a failure.
+fn by_robot(
+    env: &mut Env,
+    act: impl FnOnce(&'static dyn AnyManipulator, &mut Env) -> Attempt<()>,
+) -> Attempt<()> {
+    match env.robot().map(manipulator) {
+        Some(hands) => act(hands, env),
+        None => Ok(Err(Failure::Unavailable("no episode"))),
+    }
+}
+
 /// GRASP with physics by the episode's robot's manipulator (see `posed_hands.rs` and
 /// `jointed_arm.rs` for how each moves).
 pub fn grasp(
@@ -380,10 +391,7 @@ pub fn grasp(
     tuning: &Tuning,
     watcher: Option<&mut dyn Watcher>,
 ) -> Attempt<()> {
-    match env.robot().map(manipulator) {
-        Some(hands) => hands.grasp(env, call, tuning, watcher),
-        None => Ok(Err(Failure::Unavailable("no episode"))),
-    }
+    by_robot(env, |hands, env| hands.grasp(env, call, tuning, watcher))
 }
 
 /// PLACE_* with physics by the episode's robot's manipulator.
@@ -394,10 +402,9 @@ pub fn place(
     tuning: &Tuning,
     watcher: Option<&mut dyn Watcher>,
 ) -> Attempt<()> {
-    match env.robot().map(manipulator) {
-        Some(hands) => hands.place(env, call, relation, tuning, watcher),
-        None => Ok(Err(Failure::Unavailable("no episode"))),
-    }
+    by_robot(env, |hands, env| {
+        hands.place(env, call, relation, tuning, watcher)
+    })
 }
 
 /// TOGGLE_ON or TOGGLE_OFF with physics by the episode's robot's manipulator: its hand brought
@@ -409,10 +416,7 @@ pub fn press(
     tuning: &Tuning,
     watcher: Option<&mut dyn Watcher>,
 ) -> Attempt<()> {
-    match env.robot().map(manipulator) {
-        Some(hands) => hands.press(env, call, tuning, watcher),
-        None => Ok(Err(Failure::Unavailable("no episode"))),
-    }
+    by_robot(env, |hands, env| hands.press(env, call, tuning, watcher))
 }
 
 /// SOAK, WIPE or SLICE with physics by the episode's robot's manipulator (`tools.rs`).
@@ -422,10 +426,7 @@ pub fn use_tool(
     tuning: &Tuning,
     watcher: Option<&mut dyn Watcher>,
 ) -> Attempt<()> {
-    match env.robot().map(manipulator) {
-        Some(hands) => hands.use_tool(env, call, tuning, watcher),
-        None => Ok(Err(Failure::Unavailable("no episode"))),
-    }
+    by_robot(env, |hands, env| hands.use_tool(env, call, tuning, watcher))
 }
 
 /// Whether, from where the episode's robot stands, a hand reaches `object` for a grasp, or,

@@ -122,6 +122,12 @@ pub(crate) fn open_doors_in(world: &mut World, bindings: &[Option<ObjectId>]) ->
 /// A physical primitive's outcome: the run's error outside, the primitive's failure inside.
 pub(crate) type Attempt<T> = Result<Result<T, Failure>, RunError>;
 
+/// A primitive's failure found before any step (a check, no goal to go to) as its outcome, for
+/// [`attempt!`].
+pub(crate) fn at_once<T>(result: Result<T, Failure>) -> Attempt<T> {
+    Ok(result)
+}
+
 /// Unwraps a step's outcome: a failed primitive returns its failure, a failed run its error.
 macro_rules! attempt {
     ($e:expr) => {

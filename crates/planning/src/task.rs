@@ -605,9 +605,9 @@ impl<'a> Solver<'a> {
         }
         // With physics a hand reaches a dish in a cabinet only through the cabinet's open door
         // (the symbolic primitives, as the original's, ask only of `y` itself).
-        let shut_round = container_where(self.world(), y, |c| self.to_open(c));
-        if let Some(c) = shut_round
-            .filter(|_| self.mode == Mode::Physical && primitive != Primitive::PlaceOnFloor)
+        if self.mode == Mode::Physical
+            && primitive != Primitive::PlaceOnFloor
+            && let Some(c) = container_where(self.world(), y, |c| self.to_open(c))
         {
             self.approach(c)?;
             self.call(Primitive::Open, c, CARRY)?;

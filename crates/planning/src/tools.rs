@@ -12,7 +12,7 @@
 
 use crate::execute::Watcher;
 use crate::manipulation::{Grip, Manipulator, manipulator};
-use crate::physical::{Attempt, Stepper, attempt, call_rng};
+use crate::physical::{Attempt, Stepper, at_once, attempt, call_rng};
 use crate::primitive::{Call, Failure, Primitive};
 use crate::symbolic::check;
 use crate::tuning::Tuning;
@@ -82,14 +82,8 @@ pub(crate) fn soak_with<M: Manipulator>(
     tuning: &Tuning,
     watcher: Option<&mut dyn Watcher>,
 ) -> Attempt<()> {
-    let hand = match checked(hands, env, call) {
-        Ok(hand) => hand,
-        Err(failure) => return Ok(Err(failure)),
-    };
-    let (goals, drops_from) = match under_tap(env, call) {
-        Ok(found) => found,
-        Err(failure) => return Ok(Err(failure)),
-    };
+    let hand = attempt!(at_once(checked(hands, env, call)));
+    let (goals, drops_from) = attempt!(at_once(under_tap(env, call)));
     let mut rng = call_rng(env, call);
     let mut steps = Stepper {
         env,
@@ -138,10 +132,7 @@ pub(crate) fn wipe_with<M: Manipulator>(
     tuning: &Tuning,
     mut watcher: Option<&mut dyn Watcher>,
 ) -> Attempt<()> {
-    let hand = match checked(hands, env, call) {
-        Ok(hand) => hand,
-        Err(failure) => return Ok(Err(failure)),
-    };
+    let hand = attempt!(at_once(checked(hands, env, call)));
     let mut rng = call_rng(env, call);
     let object = call.object;
     let Some(tool) = held(env, call) else {
@@ -205,14 +196,8 @@ pub(crate) fn slice_with<M: Manipulator>(
     tuning: &Tuning,
     watcher: Option<&mut dyn Watcher>,
 ) -> Attempt<()> {
-    let hand = match checked(hands, env, call) {
-        Ok(hand) => hand,
-        Err(failure) => return Ok(Err(failure)),
-    };
-    let (goals, depth) = match edge_goals(env, call) {
-        Ok(found) => found,
-        Err(failure) => return Ok(Err(failure)),
-    };
+    let hand = attempt!(at_once(checked(hands, env, call)));
+    let (goals, depth) = attempt!(at_once(edge_goals(env, call)));
     let object = call.object;
     let sliced = move |env: &Env| {
         env.world()
@@ -279,10 +264,7 @@ pub(crate) fn toggle_with<M: Manipulator>(
     tuning: &Tuning,
     watcher: Option<&mut dyn Watcher>,
 ) -> Attempt<()> {
-    let hand = match checked(hands, env, call) {
-        Ok(hand) => hand,
-        Err(failure) => return Ok(Err(failure)),
-    };
+    let hand = attempt!(at_once(checked(hands, env, call)));
     let Some(goals) = press_goals(hands, env, hand, call) else {
         return Ok(Err(Failure::Unavailable("no episode")));
     };

@@ -37,6 +37,7 @@ use crate::manipulation::{
 use crate::physical::{Attempt, Stepper, attempt, base_config, call_rng, force_grasp};
 use crate::primitive::{Call, Failure};
 use crate::symbolic::check;
+use crate::tools::{slicing_points, wiping_points};
 use crate::tuning::Tuning;
 use behavior_core::rng::{SimRng, uniform};
 use behavior_core::wrap_angle;
@@ -501,7 +502,14 @@ pub(crate) fn reach_test<'e>(
     let shoulder_of = |side: Side| (side, to_base.transform_point(robot.shoulder(world, side)));
     let all = sides(env);
     let holding = all.iter().rposition(|&side| robot.holding(side).is_some());
-    let goals = holding.map_or_else(Vec::new, |hand| on_or_in_goals(env, object, hand, tuning));
+    let goals = holding.map_or_else(Vec::new, |hand| {
+        let tool = tool_goals(env, world, &robot, all[hand], object);
+        if tool.is_empty() {
+            on_or_in_goals(env, object, hand, tuning)
+        } else {
+            tool
+        }
+    });
     // Holding something with no place for it there, the object's box in reach is what counts.
     let shoulders: Vec<(Side, Vector)> = match holding {
         Some(hand) if !goals.is_empty() => vec![shoulder_of(all[hand])],
@@ -518,6 +526,41 @@ pub(crate) fn reach_test<'e>(
             }
         })
     })
+}
+
+/// Where the hand on `side` must reach to use what it holds on `object`: over its dirt to wipe
+/// it ([`wiping_points`]), over its top to slice it ([`slicing_points`]); none where it holds
+/// nothing that acts on `object` (then it carries it there to put it down, say).
+fn tool_goals(
+    env: &Env,
+    world: &World,
+    robot: &PosedRobot<'_>,
+    side: Side,
+    object: ObjectId,
+) -> Vec<Pose> {
+    let Some(tool) = robot.holding(side) else {
+        return Vec::new();
+    };
+    let wiping = wiping_points(world, tool, object);
+    if wiping.is_empty() {
+        slicing_points(env, object, side.index())
+    } else {
+        wiping.into_iter().map(Pose::from_translation).collect()
+    }
+}
+
+/// For a robot whose hand holds a tool that acts on `object` ([`tool_goals`]), whether that
+/// hand reaches where it must from where the robot stands; `None` where no hand holds such a
+/// tool.
+fn tool_in_reach(env: &Env, object: ObjectId, tuning: &Tuning) -> Option<bool> {
+    let (world, robot) = posed(env)?;
+    let mut acting = sides(env).iter().filter_map(|&side| {
+        let goals = tool_goals(env, world, &robot, side, object);
+        (!goals.is_empty()).then_some((side, goals))
+    });
+    let (side, goals) = acting.next()?;
+    let shoulder = robot.shoulder(world, side);
+    Some(places_from(world, &robot, side, &goals, shoulder, tuning))
 }
 
 /// How far up a point must be clear to count as open from above, m.
@@ -635,15 +678,61 @@ fn plan_hand(
         .map(|g| HandConfig::of(&g))
         .find(|g| body.reaches(g) && body.clear(world, g))
         .ok_or(Failure::NoHandPose)?;
-    let space = HandSpace::new(world, body, &start, &goal);
+    // A hand that starts touching something (resting on a towel; against a refrigerator's side
+    // where the robot stood close) first moves straight to the nearest free pose, then plans
+    // from there: the planner refuses a start in collision.
+    let mut dense = vec![start];
+    let from = match hand_way_out(world, &body, &start) {
+        Some(out) if out != start => {
+            dense.extend(straight(&start, &out));
+            out
+        }
+        _ => start,
+    };
+    let space = HandSpace::new(world, body, &from, &goal);
     let params = PlanParams {
         seed,
         ..tuning.budget
     };
-    let planned = plan(&space, &start, &goal, &params)?;
-    let mut dense = vec![start];
+    let planned = plan(&space, &from, &goal, &params)?;
     dense.extend(steps_along(&space, &planned.path));
     Ok(dense)
+}
+
+/// How far a hand that starts in contact looks for a free place, m, by steps of 1 cm.
+const HAND_WAY_OUT: f32 = 0.15;
+
+/// `start` if it is free; else the nearest free configuration within [`HAND_WAY_OUT`] of it
+/// along one of the 26 directions of a cube's faces, edges and corners (up first: a hand
+/// resting on a towel is free a centimetre up), its turn kept; `None` where none is (the
+/// planner then says the start collides).
+fn hand_way_out(world: &World, body: &HandBody, start: &HandConfig) -> Option<HandConfig> {
+    let free = |c: &HandConfig| body.reaches(c) && body.clear(world, c);
+    if free(start) {
+        return Some(*start);
+    }
+    let steps = (HAND_WAY_OUT / 0.01).round() as usize;
+    (1..=steps).find_map(|k| {
+        way_out_directions().find_map(|way| {
+            let mut c = *start;
+            c.position += way * (0.01 * k as f32);
+            free(&c).then_some(c)
+        })
+    })
+}
+
+/// The 26 unit directions to a cube's faces, edges and corners from its centre, those that
+/// rise first, in a fixed order.
+fn way_out_directions() -> impl Iterator<Item = Vector> {
+    let unit = [0.0, 1.0, -1.0];
+    [1.0, 0.0, -1.0].into_iter().flat_map(move |z| {
+        unit.into_iter().flat_map(move |x| {
+            unit.into_iter()
+                .map(move |y| Vector::new(x, y, z))
+                .filter(|v| *v != Vector::ZERO)
+                .map(|v| v.normalize())
+        })
+    })
 }
 
 /// A planned hand path to `goal` that ends with a straight move onto it: down from above
@@ -1196,7 +1285,8 @@ impl Hands for PosedHands {
     ) -> bool {
         match (placement, env.world(), env.robot()) {
             (Some(call), ..) => placement_in_reach(env, call, tuning),
-            (None, Some(world), Some(robot)) => hand_reaches(world, robot, object, tuning),
+            (None, Some(world), Some(robot)) => tool_in_reach(env, object, tuning)
+                .unwrap_or_else(|| hand_reaches(world, robot, object, tuning)),
             _ => true,
         }
     }
@@ -1217,5 +1307,89 @@ impl Hands for PosedHands {
     /// A palm sets down what it holds as it holds it.
     fn set_down_turns(&self, _: &World, _: &Robot, _: &Call, _: &Pose) -> Vec<Option<Pose>> {
         vec![None]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use behavior_sim::{ObjectSpec, Part, Primitive};
+
+    /// A fixed table top 1 m square whose top lies at 0.76 m, and a hand: a 10 cm cube.
+    fn table_and_hand() -> (World, HandBody) {
+        let mut world = World::default();
+        let top = Part::new(Primitive::Box {
+            half_extents: Vector::new(0.5, 0.5, 0.01),
+        });
+        let mut spec = ObjectSpec::new("table_1", "table.n.02", vec![top]).fixed();
+        spec.pose = Pose::from_translation(Vector::new(0.0, 0.0, 0.75));
+        world.add(spec).unwrap();
+        let palm = Primitive::Box {
+            half_extents: Vector::splat(0.05),
+        };
+        let hand = HandBody {
+            shapes: vec![(palm, Pose::IDENTITY)],
+            filter: QueryFilter::default(),
+            shoulder: Vector::new(-0.4, 0.0, 1.0),
+            reach: 1.2,
+        };
+        (world, hand)
+    }
+
+    #[test]
+    fn a_hand_pressed_into_a_table_is_moved_straight_up_out_of_it() {
+        let (world, hand) = table_and_hand();
+        let start = HandConfig::of(&Pose::from_translation(Vector::new(0.1, 0.2, 0.78)));
+        assert!(
+            !hand.clear(&world, &start),
+            "the start must collide for the test to mean anything"
+        );
+        let out = hand_way_out(&world, &hand, &start).expect("a free pose within 15 cm");
+        assert!(
+            hand.clear(&world, &out),
+            "the way out is not free: {:?}",
+            out.position
+        );
+        let moved = out.position - start.position;
+        // The palm's bottom must rise above 0.76 m: 3 cm at least, the nearest being 4 cm up.
+        assert!(
+            moved.x.abs() < 1e-6 && moved.y.abs() < 1e-6 && (0.03..0.045).contains(&moved.z),
+            "moved by {moved:?}, not straight up by the least that frees it"
+        );
+        assert_eq!(out.angles, start.angles, "the hand's turn is kept");
+    }
+
+    #[test]
+    fn a_free_hand_stays_and_a_buried_one_finds_no_way_out() {
+        let (world, hand) = table_and_hand();
+        let free = HandConfig::of(&Pose::from_translation(Vector::new(0.1, 0.2, 0.9)));
+        assert_eq!(hand_way_out(&world, &hand, &free), Some(free));
+        // Deep in a 1 m block, every direction meets the block for more than 15 cm.
+        let mut world = World::default();
+        let block = Part::new(Primitive::Box {
+            half_extents: Vector::splat(0.5),
+        });
+        let mut spec = ObjectSpec::new("cabinet_1", "cabinet.n.01", vec![block]).fixed();
+        spec.pose = Pose::from_translation(Vector::new(0.2, 0.0, 0.8));
+        world.add(spec).unwrap();
+        let buried = HandConfig::of(&Pose::from_translation(Vector::new(0.2, 0.0, 0.8)));
+        assert_eq!(hand_way_out(&world, &hand, &buried), None);
+    }
+
+    #[test]
+    fn the_ways_out_are_26_distinct_unit_directions_straight_up_first() {
+        let ways: Vec<Vector> = way_out_directions().collect();
+        assert_eq!(ways.len(), 26);
+        assert_eq!(ways[0], Vector::Z);
+        for (k, a) in ways.iter().enumerate() {
+            assert!(
+                (a.length() - 1.0).abs() < 1e-6,
+                "{a:?} is not a unit vector"
+            );
+            assert!(
+                ways[k + 1..].iter().all(|b| (*a - *b).length() > 0.1),
+                "{a:?} appears twice"
+            );
+        }
     }
 }

@@ -16,7 +16,8 @@ use crate::physical::{Attempt, Stepper, at_once, attempt, call_rng};
 use crate::primitive::{Call, Failure, Primitive};
 use crate::symbolic::check;
 use crate::tuning::Tuning;
-use behavior_core::Predicate;
+use behavior_core::rng::SimRng;
+use behavior_core::{Ability, Predicate};
 use behavior_env::Env;
 use behavior_robots::Robot;
 use behavior_sim::{OUTLET_OFFSET, ObjectId, PointKind, World};
@@ -68,8 +69,11 @@ const PRESS_FROM: [(f32, f32); 5] = [
 ];
 /// Still steps the hand is held at the button at most: three times the world's five.
 const PRESS_STEPS: u32 = 15;
-/// Dirty spots nearest the hand that a wipe tries to bring the tool over, each time.
-const SPOT_CHOICES: usize = 5;
+/// Dirty spots nearest the hand that a wipe tries to bring the tool over, each time: the five
+/// nearest left a shelf's dust undone where its nearest lay behind the shelf's boards.
+const SPOT_CHOICES: usize = 20;
+/// Dirty spots a reach test looks at, spread over the object's dirt: where a hand can wipe.
+const SPOTS_TESTED: usize = 16;
 /// Spots wiped at most per WIPE.
 const SPOTS: usize = 8;
 
@@ -209,20 +213,34 @@ pub(crate) fn slice_with<M: Manipulator>(
         tuning,
         watcher,
     };
-    let mut reached = attempt!(hands.reach(&mut steps, hand, &goals, Grip::Closed, &mut rng));
-    attempt!(hands.slide(&mut steps, hand, -Vector::Z * depth, &mut reached, &sliced));
-    attempt!(hands.hold_still(&mut steps, hand, CUT_STEPS, &sliced));
-    attempt!(
-        hands.slide(&mut steps, hand, Vector::Z * depth, &mut reached, &|_| {
-            false
-        })
-    );
-    attempt!(hands.come_back(&mut steps, hand, Grip::Closed, &mut reached));
-    if sliced(steps.env) {
-        Ok(Ok(()))
-    } else {
-        Ok(Err(Failure::NoEffect("the knife did not cut through it")))
+    let cut = cut_through(hands, &mut steps, hand, &goals, depth, &sliced, &mut rng)?;
+    // The object's state is what the primitive is for: a knife that cut it on the way and
+    // then found no way on (making_tea's lemon, cut as the hand went down into the
+    // refrigerator, then "no free hand pose") has done it.
+    match (sliced(steps.env), cut) {
+        (true, _) => Ok(Ok(())),
+        (false, Err(failure)) => Ok(Err(failure)),
+        (false, Ok(())) => Ok(Err(Failure::NoEffect("the knife did not cut through it"))),
     }
+}
+
+/// SLICE's moves: the knife to one of `goals`, pushed `depth` down, held there while it has
+/// not cut, lifted and brought back.
+fn cut_through<M: Manipulator>(
+    hands: &M,
+    steps: &mut Stepper<'_, '_>,
+    hand: M::Hand,
+    goals: &[Pose],
+    depth: f32,
+    sliced: &dyn Fn(&Env) -> bool,
+    rng: &mut SimRng,
+) -> Attempt<()> {
+    let mut reached = attempt!(hands.reach(steps, hand, goals, Grip::Closed, rng));
+    attempt!(hands.slide(steps, hand, -Vector::Z * depth, &mut reached, sliced));
+    attempt!(hands.hold_still(steps, hand, CUT_STEPS, sliced));
+    attempt!(hands.slide(steps, hand, Vector::Z * depth, &mut reached, &|_| false));
+    attempt!(hands.come_back(steps, hand, Grip::Closed, &mut reached));
+    Ok(Ok(()))
 }
 
 /// Poses of the hand that put the cutting edge of the knife it holds (its slicing point, else
@@ -282,13 +300,17 @@ pub(crate) fn toggle_with<M: Manipulator>(
     };
     let mut reached = attempt!(hands.reach(&mut steps, hand, &goals, grip, &mut rng));
     attempt!(hands.hold_still(&mut steps, hand, PRESS_STEPS, &switched));
-    attempt!(hands.come_back(&mut steps, hand, grip, &mut reached));
-    if switched(steps.env) {
-        Ok(Ok(()))
-    } else {
-        Ok(Err(Failure::NoEffect(
+    // The switch's state is what the primitive is for: a hand that switched it and then found
+    // no free way back has done it (four sinks in solve-all were switched on so, then reported
+    // failed, and the setter's fallback refused: "already on"); the next motion plans from
+    // where the hand is.
+    let back = hands.come_back(&mut steps, hand, grip, &mut reached)?;
+    match (switched(steps.env), back) {
+        (true, _) => Ok(Ok(())),
+        (false, Err(failure)) => Ok(Err(failure)),
+        (false, Ok(())) => Ok(Err(Failure::NoEffect(
             "the hand at the button did not switch it",
-        )))
+        ))),
     }
 }
 
@@ -333,6 +355,58 @@ fn checked<M: Manipulator>(hands: &M, env: &Env, call: &Call) -> Result<M::Hand,
 /// What hand `call.hand` holds.
 fn held(env: &Env, call: &Call) -> Option<ObjectId> {
     env.robot().and_then(|r| r.held(call.hand))
+}
+
+/// Where the particles of dirt that `tool` takes from `object` lie: its dust, and its stains
+/// if the tool is soaked.
+fn dirt_spots(world: &World, tool: ObjectId, object: ObjectId) -> Vec<Vector> {
+    let kinds: &[Predicate] = if world.state(tool, Predicate::Soaked) {
+        &[Predicate::Dusty, Predicate::Stained]
+    } else {
+        &[Predicate::Dusty]
+    };
+    kinds
+        .iter()
+        .filter(|&&k| world.state(object, k))
+        .flat_map(|&k| world.particle_positions(object, k))
+        .collect()
+}
+
+/// Points [`HOVER`] over up to [`SPOTS_TESTED`] of the particles of dirt that `tool` takes from
+/// `object`, spread over them: where a hand that holds the tool must reach to wipe. A place
+/// to stand that reaches the nearest corner of a bathtub's box leaves the stains on its
+/// bottom, a metre on, out of reach; empty where there is no such dirt (the tool is carried
+/// there to be put down, say).
+pub(crate) fn wiping_points(world: &World, tool: ObjectId, object: ObjectId) -> Vec<Vector> {
+    let spots = dirt_spots(world, tool, object);
+    let every = spots.len().div_ceil(SPOTS_TESTED).max(1);
+    spots
+        .into_iter()
+        .step_by(every)
+        .map(|p| p + Vector::Z * HOVER)
+        .collect()
+}
+
+/// Where hand `hand` must be to slice `object` with the knife it holds ([`edge_goals`]): none
+/// where it holds no slicer or `object` is not there to be sliced.
+pub(crate) fn slicing_points(env: &Env, object: ObjectId, hand: usize) -> Vec<Pose> {
+    let (Some(world), Some(robot)) = (env.world(), env.robot()) else {
+        return Vec::new();
+    };
+    let slices = robot.held(hand).is_some_and(|knife| {
+        world.bodies().object(knife).has(Ability::Slicer)
+            && world.bodies().object(object).has(Ability::Sliceable)
+            && !world.state(object, Predicate::Sliced)
+    });
+    let call = Call {
+        primitive: Primitive::Slice,
+        object,
+        hand,
+    };
+    match slices.then(|| edge_goals(env, &call)) {
+        Some(Ok((goals, _))) => goals,
+        _ => Vec::new(),
+    }
 }
 
 /// Whether `object` still has dirt that `tool` takes: dust, and stains if it is soaked.
@@ -385,10 +459,14 @@ fn under_tap(env: &Env, call: &Call) -> Result<(Vec<Pose>, Vector), Failure> {
     Ok((goals, drops_from))
 }
 
-/// How far across the floor `tool`'s box, [`TAP_INSET`] in from its sides, lies from the
-/// column the drops fall down from `drops_from`: the move that puts it under them.
+/// How far across the floor `tool`'s top, [`TAP_INSET`] in from its sides, lies from the
+/// column the drops fall down from `drops_from`: the move that puts it under them. Taken in
+/// the tool's own frame: a rag turned 45° leaves the corners of its box in the world empty,
+/// and drops aimed there fall past it.
 fn missed_by(world: &World, tool: ObjectId, drops_from: Vector) -> Vector {
-    let b = world.bodies().aabb(tool);
+    let b = world.bodies().local_aabb(tool);
+    let pose = world.bodies().pose(tool);
+    let local = pose.inverse_transform_point(drops_from);
     let within = |v: f32, lo: f32, hi: f32| {
         let (lo, hi) = (lo + TAP_INSET, hi - TAP_INSET);
         if lo > hi {
@@ -398,11 +476,11 @@ fn missed_by(world: &World, tool: ObjectId, drops_from: Vector) -> Vector {
         }
     };
     let nearest = Vector::new(
-        within(drops_from.x, b.mins.x, b.maxs.x),
-        within(drops_from.y, b.mins.y, b.maxs.y),
-        drops_from.z,
+        within(local.x, b.mins.x, b.maxs.x),
+        within(local.y, b.mins.y, b.maxs.y),
+        b.maxs.z,
     );
-    (drops_from - nearest).with_z(0.0)
+    (drops_from - pose.transform_point(nearest)).with_z(0.0)
 }
 
 /// Poses of the hand that put `tool` [`HOVER`] above one of the dirty spots of `call.object`
@@ -412,18 +490,9 @@ fn missed_by(world: &World, tool: ObjectId, drops_from: Vector) -> Vector {
 /// that the tool takes.
 fn spot_goals(env: &Env, call: &Call, tool: ObjectId) -> Option<Vec<Pose>> {
     let (world, robot) = (env.world()?, env.robot()?);
-    let kinds: &[Predicate] = if world.state(tool, Predicate::Soaked) {
-        &[Predicate::Dusty, Predicate::Stained]
-    } else {
-        &[Predicate::Dusty]
-    };
     let held = Held::of(world, robot, call).ok()?;
     let hand_at = held.palm(&world.bodies().pose(tool));
-    let mut spots: Vec<Vector> = kinds
-        .iter()
-        .filter(|&&k| world.state(call.object, k))
-        .flat_map(|&k| world.particle_positions(call.object, k))
-        .collect();
+    let mut spots = dirt_spots(world, tool, call.object);
     if spots.is_empty() {
         return None;
     }
@@ -518,5 +587,45 @@ impl Held {
     /// Where the holding part is when it is held at `pose`.
     fn palm(&self, pose: &Pose) -> Vector {
         self.holder_at(pose).translation
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use behavior_sim::{ObjectSpec, Part, Primitive};
+
+    #[test]
+    fn a_turned_rag_is_moved_under_the_drops_by_its_own_box() {
+        // A rag 10 cm square turned 45°: the corners of its box in the world hold no rag.
+        let mut world = World::default();
+        let cloth = Part::new(Primitive::Box {
+            half_extents: Vector::new(0.05, 0.05, 0.0075),
+        });
+        let mut spec = ObjectSpec::new("rag_1", "rag.n.01", vec![cloth]);
+        spec.pose = Pose::from_parts(
+            Vector::new(0.0, 0.0, 1.0),
+            Rotation::from_rotation_z(FRAC_PI_2 / 2.0),
+        );
+        let rag = world.add(spec).unwrap();
+        // Over a corner of the world box, 2 cm in from its sides: 6.4 cm from the rag's middle
+        // along its diagonal, beyond its 5 cm half side.
+        let drops_from = Vector::new(0.045, 0.045, 1.2);
+        let miss = missed_by(&world, rag, drops_from);
+        assert!(
+            miss.length() > 0.02,
+            "the drops would fall past the rag: moved by only {miss:?}"
+        );
+        // Moved by the miss, the column of drops falls on the rag, TAP_INSET in from its sides.
+        let pose = world.bodies().pose(rag);
+        let under = pose.inverse_transform_point(drops_from - miss);
+        let on = |v: f32| v.abs() <= 0.05 - TAP_INSET + 1e-4;
+        assert!(
+            on(under.x) && on(under.y),
+            "the drops fall at {under:?} in the rag's frame"
+        );
+        // A column over the rag already needs no move.
+        let over = Vector::new(0.0, 0.01, 1.2);
+        assert!(missed_by(&world, rag, over).length() < 1e-6);
     }
 }

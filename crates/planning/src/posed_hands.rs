@@ -699,8 +699,10 @@ fn plan_hand(
     Ok(dense)
 }
 
-/// How far a hand that starts in contact looks for a free place, m, by steps of 1 cm.
+/// How far a hand that starts in contact looks for a free place, m, by [`WAY_OUT_STEP`]s.
 const HAND_WAY_OUT: f32 = 0.15;
+/// The step of that search, m.
+const WAY_OUT_STEP: f32 = 0.01;
 
 /// `start` if it is free; else the nearest free configuration within [`HAND_WAY_OUT`] of it
 /// along one of the 26 directions of a cube's faces, edges and corners (up first: a hand
@@ -711,11 +713,11 @@ fn hand_way_out(world: &World, body: &HandBody, start: &HandConfig) -> Option<Ha
     if free(start) {
         return Some(*start);
     }
-    let steps = (HAND_WAY_OUT / 0.01).round() as usize;
+    let steps = (HAND_WAY_OUT / WAY_OUT_STEP).round() as usize;
     (1..=steps).find_map(|k| {
         way_out_directions().find_map(|way| {
             let mut c = *start;
-            c.position += way * (0.01 * k as f32);
+            c.position += way * (WAY_OUT_STEP * k as f32);
             free(&c).then_some(c)
         })
     })

@@ -318,10 +318,8 @@ impl<'a> Solver<'a> {
                 self.hold(knife, self.tool_hand())?;
                 // A knife does not reach through a shut door (making_tea's lemon lay in the
                 // refrigerator); the symbolic check asks only for reach, as the original's.
-                let shut = container_where(self.world(), x, |c| self.to_open(c));
-                if let Some(c) = shut.filter(|_| self.mode == Mode::Physical) {
-                    self.approach(c)?;
-                    self.call(Primitive::Open, c, CARRY)?;
+                if self.mode == Mode::Physical {
+                    self.open_around(x, CARRY)?;
                 }
                 self.approach(x)?;
                 self.call(Primitive::Slice, x, self.tool_hand())
@@ -541,12 +539,19 @@ impl<'a> Solver<'a> {
         if self.env.robot().and_then(|r| r.held(hand)).is_some() {
             self.put_down(hand)?;
         }
+        self.open_around(x, hand)?;
+        self.approach(x)?;
+        self.call(Primitive::Grasp, x, hand)
+    }
+
+    /// Opens, with `hand`, the container `x` lies in where it must be opened before a hand
+    /// reaches in ([`Self::to_open`]).
+    fn open_around(&mut self, x: ObjectId, hand: usize) -> Result<(), Reason> {
         if let Some(c) = container_where(self.world(), x, |c| self.to_open(c)) {
             self.approach(c)?;
             self.call(Primitive::Open, c, hand)?;
         }
-        self.approach(x)?;
-        self.call(Primitive::Grasp, x, hand)
+        Ok(())
     }
 
     /// Whether the openable `c` must be opened before a hand takes from it or puts into it:

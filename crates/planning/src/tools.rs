@@ -214,13 +214,26 @@ pub(crate) fn slice_with<M: Manipulator>(
         watcher,
     };
     let cut = cut_through(hands, &mut steps, hand, &goals, depth, &sliced, &mut rng)?;
-    // The object's state is what the primitive is for: a knife that cut it on the way and
-    // then found no way on (making_tea's lemon, cut as the hand went down into the
-    // refrigerator, then "no free hand pose") has done it.
-    match (sliced(steps.env), cut) {
-        (true, _) => Ok(Ok(())),
-        (false, Err(failure)) => Ok(Err(failure)),
-        (false, Ok(())) => Ok(Err(Failure::NoEffect("the knife did not cut through it"))),
+    // A knife that cut on the way and then found no way on (making_tea's lemon, cut as the
+    // hand went down into the refrigerator, then "no free hand pose") has done it.
+    Ok(judged(
+        sliced(steps.env),
+        cut,
+        "the knife did not cut through it",
+    ))
+}
+
+/// A primitive's outcome by the state it is for: done where the state was reached, whatever
+/// stopped the moves after; else the moves' failure, or `no_effect` where they all ran.
+fn judged(
+    reached: bool,
+    moves: Result<(), Failure>,
+    no_effect: &'static str,
+) -> Result<(), Failure> {
+    match (reached, moves) {
+        (true, _) => Ok(()),
+        (false, Err(failure)) => Err(failure),
+        (false, Ok(())) => Err(Failure::NoEffect(no_effect)),
     }
 }
 
@@ -300,18 +313,15 @@ pub(crate) fn toggle_with<M: Manipulator>(
     };
     let mut reached = attempt!(hands.reach(&mut steps, hand, &goals, grip, &mut rng));
     attempt!(hands.hold_still(&mut steps, hand, PRESS_STEPS, &switched));
-    // The switch's state is what the primitive is for: a hand that switched it and then found
-    // no free way back has done it (four sinks in solve-all were switched on so, then reported
-    // failed, and the setter's fallback refused: "already on"); the next motion plans from
-    // where the hand is.
+    // A hand that switched it and then found no free way back has done it (four sinks in
+    // solve-all were switched on so, then reported failed, and the setter's fallback refused:
+    // "already on"); the next motion plans from where the hand is.
     let back = hands.come_back(&mut steps, hand, grip, &mut reached)?;
-    match (switched(steps.env), back) {
-        (true, _) => Ok(Ok(())),
-        (false, Err(failure)) => Ok(Err(failure)),
-        (false, Ok(())) => Ok(Err(Failure::NoEffect(
-            "the hand at the button did not switch it",
-        ))),
-    }
+    Ok(judged(
+        switched(steps.env),
+        back,
+        "the hand at the button did not switch it",
+    ))
 }
 
 /// The hand's goals for pressing `call.object`'s button: from each of [`PRESS_FROM`], out

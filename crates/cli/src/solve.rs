@@ -178,8 +178,10 @@ fn report(env: &Env, robot: &str, mode: Mode, solution: Solution, wall_s: f64) -
 }
 
 fn print_executed(e: &Executed) {
+    // A physical OPEN, CLOSE or toggle the hand could not do, set kinematically instead.
+    let set = if e.set { ", set" } else { "" };
     let head = format!(
-        "  {} {} (hand {}, {} steps)",
+        "  {} {} (hand {}, {} steps{set})",
         e.name, e.object, e.hand, e.steps
     );
     match &e.reason {

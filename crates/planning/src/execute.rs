@@ -107,6 +107,9 @@ pub struct Outcome {
     pub seconds: f64,
     /// The last step it took (a wait takes [`WAIT_STEPS`], any other one).
     pub step: Step,
+    /// Whether a physical OPEN, CLOSE or toggle fell back to the kinematic setter (the hand
+    /// could not do it; recorded as an edit).
+    pub set: bool,
 }
 
 /// Runs one primitive in `mode` and the steps after it, each shown to `watcher` if given, with
@@ -129,18 +132,27 @@ pub fn run_with(
     mut watcher: Option<&mut dyn Watcher>,
 ) -> Result<Outcome, RunError> {
     let began = std::time::Instant::now();
+    let mut set = false;
     let result = match (mode, call.primitive) {
         (_, Primitive::Wait) => Ok(()),
         (Mode::Physical, Primitive::NavigateTo) => {
             physical::drive_to(env, &call, tuning, again(&mut watcher))?.map(|_| ())
         }
-        // Doors and lids are set kinematically, as in the original's motion-planning mode.
-        (Mode::Symbolic, _) | (Mode::Physical, Primitive::Open | Primitive::Close) => {
-            apply(env, &call)?
+        (Mode::Symbolic, _) => apply(env, &call)?,
+        // A door, lid or drawer is taken by hand and swung (`doors.rs`); a switch is pressed by
+        // hand (`tools.rs`). Where the hand cannot — no pose before the leaf or no way to the
+        // button (a tap's button between the tap and the wall), a full hand, a movable box's
+        // lid, a leaf that jams on its neighbour, a press without effect — the state is set as
+        // the original's motion-planning mode sets every door and switch, recorded as an edit.
+        (Mode::Physical, Primitive::Open | Primitive::Close) => {
+            match manipulation::swing(env, &call, tuning, again(&mut watcher))? {
+                Err(_) if !env.is_over() => {
+                    set = true;
+                    apply(env, &call)?
+                }
+                swung => swung,
+            }
         }
-        // A switch is pressed by hand; where the hand finds no way to its button (a tap's
-        // button between the tap and the wall), or pressed without effect, it is set as the
-        // original's motion-planning mode sets every switch, recorded as an edit.
         (Mode::Physical, Primitive::ToggleOn | Primitive::ToggleOff) => {
             match manipulation::press(env, &call, tuning, again(&mut watcher))? {
                 Err(
@@ -148,7 +160,10 @@ pub fn run_with(
                     | Failure::NoPath(_)
                     | Failure::HandBlocked
                     | Failure::NoEffect(_),
-                ) if !env.is_over() => apply(env, &call)?,
+                ) if !env.is_over() => {
+                    set = true;
+                    apply(env, &call)?
+                }
                 pressed => pressed,
             }
         }
@@ -176,6 +191,7 @@ pub fn run_with(
             result,
             seconds,
             step: ended(env)?,
+            set,
         });
     }
     let still = env
@@ -198,6 +214,7 @@ pub fn run_with(
         result,
         seconds,
         step,
+        set,
     })
 }
 

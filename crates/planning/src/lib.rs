@@ -39,6 +39,7 @@
 //! ```
 
 mod action_space;
+mod doors;
 mod edits;
 mod execute;
 mod jointed_arm;
@@ -54,7 +55,7 @@ mod tuning;
 pub use action_space::{PrimitiveSet, PrimitiveSpace};
 pub use edits::{EditError, RecordedCall};
 pub use execute::{ARM_REACH, Mode, Outcome, RunError, Watcher, run, run_with};
-pub use manipulation::{FORCED_GRASP, grasp, place, press, reaches, use_tool};
+pub use manipulation::{FORCED_GRASP, grasp, place, press, reaches, swing, use_tool};
 pub use physical::{BasePath, DOORS_OPENED, base_config, drive_to};
 pub use posed_hands::{
     HAND_RESET, HandPath, approach_plan, grasp as hand_grasp, hand_body, place as hand_place,

@@ -191,6 +191,12 @@ pub(crate) trait Manipulator: Hands {
     /// (an arm carries it where it is, and the next drive's tuck finds a way).
     const CARRIES_WHEN_STUCK: bool;
 
+    /// Whether the hand can hold a door, lid or drawer on its hinge while it swings it
+    /// (`doors.rs`): a hand that yields (a posed palm's force-limited servo) can; an arm whose
+    /// links are moved kinematically holds the leaf with unbounded force, and the least
+    /// mismatch between its path and the leaf's arc breaks the grasp's 350 N at once.
+    const SWINGS_LEAVES: bool;
+
     /// The paths of a grasp or placement once done.
     fn path(&self, reached: Self::Reached) -> Self::Path;
 }
@@ -314,6 +320,18 @@ pub(crate) trait AnyManipulator: Hands {
         tuning: &Tuning,
         watcher: Option<&mut dyn Watcher>,
     ) -> Attempt<()>;
+
+    /// OPEN or CLOSE with physics ([`crate::doors`]): the leaves taken by hand and swung.
+    fn swing(
+        &self,
+        env: &mut Env,
+        call: &Call,
+        tuning: &Tuning,
+        watcher: Option<&mut dyn Watcher>,
+    ) -> Attempt<()>;
+
+    /// Whether its hands swing doors ([`Manipulator::SWINGS_LEAVES`]).
+    fn swings_leaves(&self) -> bool;
 }
 
 impl<M: Manipulator> AnyManipulator for M {
@@ -361,6 +379,20 @@ impl<M: Manipulator> AnyManipulator for M {
             Primitive::Slice => crate::tools::slice_with(self, env, call, tuning, watcher),
             _ => Ok(Err(Failure::Unavailable("not a tool's primitive"))),
         }
+    }
+
+    fn swing(
+        &self,
+        env: &mut Env,
+        call: &Call,
+        tuning: &Tuning,
+        watcher: Option<&mut dyn Watcher>,
+    ) -> Attempt<()> {
+        crate::doors::swing_with(self, env, call, tuning, watcher)
+    }
+
+    fn swings_leaves(&self) -> bool {
+        M::SWINGS_LEAVES
     }
 }
 
@@ -419,6 +451,18 @@ pub fn press(
     by_robot(env, |hands, env| hands.press(env, call, tuning, watcher))
 }
 
+/// OPEN or CLOSE with physics by the episode's robot's manipulator: its hand takes each door,
+/// lid or drawer and swings it (`doors.rs`), without the kinematic fallback that [`crate::run`]
+/// has.
+pub fn swing(
+    env: &mut Env,
+    call: &Call,
+    tuning: &Tuning,
+    watcher: Option<&mut dyn Watcher>,
+) -> Attempt<()> {
+    by_robot(env, |hands, env| hands.swing(env, call, tuning, watcher))
+}
+
 /// SOAK, WIPE or SLICE with physics by the episode's robot's manipulator (`tools.rs`).
 pub fn use_tool(
     env: &mut Env,
@@ -427,6 +471,12 @@ pub fn use_tool(
     watcher: Option<&mut dyn Watcher>,
 ) -> Attempt<()> {
     by_robot(env, |hands, env| hands.use_tool(env, call, tuning, watcher))
+}
+
+/// Whether the episode's robot opens and shuts doors by hand with physics (`doors.rs`); false
+/// with no episode.
+pub(crate) fn swings_leaves(env: &Env) -> bool {
+    env.robot().is_some_and(|r| manipulator(r).swings_leaves())
 }
 
 /// Whether, from where the episode's robot stands, a hand reaches `object` for a grasp, or,

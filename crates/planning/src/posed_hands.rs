@@ -1272,6 +1272,9 @@ impl Manipulator for PosedHands {
     /// A palm that finds no way back is stuck where it is, whatever it holds.
     const CARRIES_WHEN_STUCK: bool = false;
 
+    /// A palm's servo yields: the door turns about it as it is pulled along the door's arc.
+    const SWINGS_LEAVES: bool = true;
+
     fn path(&self, reached: Reached) -> HandPath {
         reached.path
     }

@@ -252,7 +252,7 @@ fn set(
 
 /// How far along its range a door or lid must be to count as opened all the way by OPEN
 /// (a door pushed back a little by what the robot did since still counts).
-const WIDE_OPEN: f32 = 0.9;
+pub(crate) const WIDE_OPEN: f32 = 0.65;
 
 /// The object's jointed parts with limits and their ranges, of `kind` if given: the hinged
 /// doors and lids OPEN swings all the way, or every part of a room's door.
@@ -293,7 +293,12 @@ pub(crate) fn wide_open(world: &World, object: ObjectId) -> bool {
 /// The movable things that one of the object's drawers (`link`) holds up — its normal at a
 /// contact within 45° of up, as `ontop`'s support ([`SUPPORT_COS`]) — the robot's parts
 /// (`robot`) aside.
-fn resting_in(world: &World, object: ObjectId, link: usize, robot: &[ObjectId]) -> Vec<ObjectId> {
+pub(crate) fn resting_in(
+    world: &World,
+    object: ObjectId,
+    link: usize,
+    robot: &[ObjectId],
+) -> Vec<ObjectId> {
     let drawer = BodyRef {
         object,
         link: Some(link),

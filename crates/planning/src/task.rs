@@ -14,7 +14,7 @@
 
 use crate::execute::Watcher;
 use crate::execute::{Mode, RunError, run_with};
-use crate::manipulation::reaches;
+use crate::manipulation::{reaches, swings_leaves};
 use crate::primitive::{Call, Failure, Primitive};
 use crate::symbolic::{container_where, wide_open, within};
 use crate::tuning::Tuning;
@@ -68,6 +68,9 @@ pub struct Executed {
     pub ms: f64,
     /// The episode's steps it took (one for a symbolic primitive: the still step after it).
     pub steps: u32,
+    /// Whether a physical OPEN, CLOSE or toggle was done by the kinematic setter because the
+    /// hand could not ([`crate::Outcome::set`]).
+    pub set: bool,
 }
 
 /// A literal the planner gave up on, and why.
@@ -364,9 +367,10 @@ impl<'a> Solver<'a> {
         }
     }
 
-    /// The hand that presses a switch for a recipe that asked for `asked`: that one if it is
-    /// empty, else an empty one (a hand holding a towel to soak pressed the tap with it, and
-    /// the towel met the tap), else that one.
+    /// The hand that presses a switch or swings a door for a recipe that asked for `asked`:
+    /// that one if it is empty, else an empty one (a hand holding a towel to soak pressed the
+    /// tap with it, and the towel met the tap; a hand holding a plate cannot take a door's
+    /// edge), else that one.
     fn pressing_hand(&self, asked: usize) -> usize {
         let asked = if asked == CARRY {
             self.carry_hand()
@@ -386,7 +390,13 @@ impl<'a> Solver<'a> {
 
     /// Runs one primitive; its failure is the recipe's.
     fn call(&mut self, primitive: Primitive, object: ObjectId, hand: usize) -> Result<(), Reason> {
-        let hand = if matches!(primitive, Primitive::ToggleOn | Primitive::ToggleOff) {
+        let by_hand = [
+            Primitive::ToggleOn,
+            Primitive::ToggleOff,
+            Primitive::Open,
+            Primitive::Close,
+        ];
+        let hand = if by_hand.contains(&primitive) {
             self.pressing_hand(hand)
         } else if primitive.uses_hand() && hand == CARRY {
             self.carry_hand()
@@ -431,6 +441,7 @@ impl<'a> Solver<'a> {
             reason: outcome.result.as_ref().err().map(Failure::to_string),
             ms: outcome.seconds * 1000.0,
             steps: self.env.steps() - before,
+            set: outcome.set,
         };
         let manipulates = matches!(
             primitive,
@@ -607,23 +618,21 @@ impl<'a> Solver<'a> {
             Predicate::OnFloor => Primitive::PlaceOnFloor,
             other => return Err(format!("{} is not a placement", other.name())),
         };
+        // A robot that swings doors by hand opens the furniture `x` goes into (or into whose
+        // shelves) before it takes `x`: a hand holding a plate while the other swung a cabinet's
+        // door open had the door strike the plate from its grasp. A door that is set (a movable
+        // box's lid, any door of a robot whose arm cannot swing it) is opened as before, once
+        // `x` is held: opened first, Fetch drove ten times to a file cabinet whose drawer the
+        // setter had opened before it took the document, and found no stand to put it in from.
+        let carried = self.env.robot().and_then(|r| r.held(self.carry_hand())) == Some(x);
+        let fixed = |o: ObjectId| self.world().bodies().object(o).is_fixed();
+        let swung = fixed(y) || container_where(self.world(), y, fixed).is_some();
+        let by_hand = self.mode == Mode::Physical && swings_leaves(self.env);
+        if by_hand && swung && !carried {
+            self.open_for(primitive, y)?;
+        }
         self.hold(x, CARRY)?;
-        if primitive == Primitive::PlaceInside
-            && self.world().bodies().object(y).has(Ability::Openable)
-            && self.to_open(y)
-        {
-            self.approach(y)?;
-            self.call(Primitive::Open, y, CARRY)?;
-        }
-        // With physics a hand reaches a dish in a cabinet only through the cabinet's open door
-        // (the symbolic primitives, as the original's, ask only of `y` itself).
-        if self.mode == Mode::Physical
-            && primitive != Primitive::PlaceOnFloor
-            && let Some(c) = container_where(self.world(), y, |c| self.to_open(c))
-        {
-            self.approach(c)?;
-            self.call(Primitive::Open, c, CARRY)?;
-        }
+        self.open_for(primitive, y)?;
         if primitive == Primitive::PlaceOnFloor {
             self.call(Primitive::NavigateTo, y, CARRY)?;
         } else {
@@ -635,6 +644,28 @@ impl<'a> Solver<'a> {
             self.approach_for(y, Some(call))?;
         }
         self.call(primitive, y, CARRY)
+    }
+
+    /// Opens what a placement by `primitive` into or onto `y` needs open: `y` itself for
+    /// PLACE_INSIDE, and with physics the container `y` lies in (a hand reaches a dish in a
+    /// cabinet only through the cabinet's open door; the symbolic primitives, as the
+    /// original's, ask only of `y` itself).
+    fn open_for(&mut self, primitive: Primitive, y: ObjectId) -> Result<(), Reason> {
+        if primitive == Primitive::PlaceInside
+            && self.world().bodies().object(y).has(Ability::Openable)
+            && self.to_open(y)
+        {
+            self.approach(y)?;
+            self.call(Primitive::Open, y, CARRY)?;
+        }
+        if self.mode == Mode::Physical
+            && primitive != Primitive::PlaceOnFloor
+            && let Some(c) = container_where(self.world(), y, |c| self.to_open(c))
+        {
+            self.approach(c)?;
+            self.call(Primitive::Open, c, CARRY)?;
+        }
+        Ok(())
     }
 
     /// Cooking or freezing: `x` taken to a source of `ability`, put on or in it as the source

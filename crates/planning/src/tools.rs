@@ -225,7 +225,7 @@ pub(crate) fn slice_with<M: Manipulator>(
 
 /// A primitive's outcome by the state it is for: done where the state was reached, whatever
 /// stopped the moves after; else the moves' failure, or `no_effect` where they all ran.
-fn judged(
+pub(crate) fn judged(
     reached: bool,
     moves: Result<(), Failure>,
     no_effect: &'static str,
@@ -352,7 +352,11 @@ fn press_goals<M: Manipulator>(
 }
 
 /// The hand a call uses, after the primitive's own checks (but reach: the hand goes there).
-fn checked<M: Manipulator>(hands: &M, env: &Env, call: &Call) -> Result<M::Hand, Failure> {
+pub(crate) fn checked<M: Manipulator>(
+    hands: &M,
+    env: &Env,
+    call: &Call,
+) -> Result<M::Hand, Failure> {
     let (Some(world), Some(robot)) = (env.world(), env.robot()) else {
         return Err(Failure::Unavailable("no episode"));
     };

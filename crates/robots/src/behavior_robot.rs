@@ -328,6 +328,10 @@ impl Embodiment for BehaviorRobot {
         self.holding(side(hand).ok()?).map(|b| b.object)
     }
 
+    fn grasp_attachment(&self, hand: usize) -> Option<AttachmentId> {
+        self.grasps[side(hand).ok()?.index()].map(|g| g.attachment)
+    }
+
     fn grasp_rules(&self) -> &GraspRules {
         &self.rules
     }
@@ -663,27 +667,32 @@ impl BehaviorRobot {
     }
 
     /// Holds `object` where it is, if the hand touches it (the original's forced assisted
-    /// grasp, which also asks for contact).
+    /// grasp, which also asks for contact): the body it touches, a door or drawer of fixed
+    /// furniture point to point, anything else as the rules hold the whole object.
     fn grasp_touching_in(
         &mut self,
         world: &mut World,
         side: Side,
         object: ObjectId,
     ) -> Result<(), MagicError> {
-        let kind = self.may_hold(world, side, object)?;
         let hand = self.parts.hand(side);
-        let contacts = world.contacts().of(BodyRef::from(hand))?;
-        if !contacts
+        let touched = world
+            .contacts()
+            .of(BodyRef::from(hand))?
             .iter()
-            .any(|c| c.other.is_some_and(|b| b.object == object))
-        {
-            return Err(MagicError::NotTouching(object));
-        }
+            .filter_map(|c| c.other.filter(|b| b.object == object))
+            .min()
+            .ok_or(MagicError::NotTouching(object))?;
+        let body = match touched.link {
+            Some(_) if world.bodies().object(object).is_fixed() => touched,
+            _ => BodyRef::from(object),
+        };
+        let kind = self.may_hold_body(world, side, body)?;
         let at = world
             .bodies()
             .pose(hand)
             .transform_point(crate::hand::PALM_CENTRE);
-        self.attach(world, side, object, kind, at)
+        self.attach_body(world, side, body, kind, at)
     }
 
     /// How the hand may hold `object`: it is empty, and the rules allow it.
@@ -693,13 +702,23 @@ impl BehaviorRobot {
         side: Side,
         object: ObjectId,
     ) -> Result<AttachmentKind, MagicError> {
+        self.may_hold_body(world, side, BodyRef::from(object))
+    }
+
+    /// How the hand may hold `body` (an object or one of its links): it is empty, and the
+    /// rules allow it.
+    fn may_hold_body(
+        &self,
+        world: &World,
+        side: Side,
+        body: BodyRef,
+    ) -> Result<AttachmentKind, MagicError> {
         if let Some(grasp) = self.grasps[side.index()] {
             return Err(MagicError::HandFull(grasp.body.object));
         }
         let other = self.holding(side.other()).map(|b| b.object);
         let own = self.parts.all();
-        self.rules
-            .kind_for(world, BodyRef::from(object), &own, other)
+        self.rules.kind_for(world, body, &own, other)
     }
 
     /// Attaches `object` to the hand at `at` as the assisted grasp does, and closes it.
@@ -711,8 +730,19 @@ impl BehaviorRobot {
         kind: AttachmentKind,
         at: Vector,
     ) -> Result<(), MagicError> {
+        self.attach_body(world, side, BodyRef::from(object), kind, at)
+    }
+
+    /// Attaches `body` to the hand at `at` as the assisted grasp does, and closes it.
+    fn attach_body(
+        &mut self,
+        world: &mut World,
+        side: Side,
+        body: BodyRef,
+        kind: AttachmentKind,
+        at: Vector,
+    ) -> Result<(), MagicError> {
         let i = side.index();
-        let body = BodyRef::from(object);
         let hand = self.parts.hand(side);
         let attachment = self.at_once().attach(world, hand, body, at, kind)?;
         self.targets.triggers[i] = 1.0;

@@ -13,7 +13,7 @@ use crate::magic::MagicError;
 use crate::posed_hand::PosedHand;
 use crate::relative;
 use crate::robot::RobotKind;
-use behavior_sim::{ObjectId, Primitive, StepHooks, World};
+use behavior_sim::{AttachmentId, ObjectId, Primitive, StepHooks, World};
 use rapier3d::math::Pose;
 use std::sync::Arc;
 
@@ -194,6 +194,10 @@ pub trait Embodiment: StepHooks {
 
     /// The object hand `hand` holds.
     fn held(&self, hand: usize) -> Option<ObjectId>;
+
+    /// The attachment by which hand `hand` holds what it holds (see
+    /// [`behavior_sim::Attachments::anchors`]: where a hand holding a door pulls it).
+    fn grasp_attachment(&self, hand: usize) -> Option<AttachmentId>;
 
     /// What its assisted grasp may take, and how.
     fn grasp_rules(&self) -> &GraspRules;

@@ -22,7 +22,8 @@ use crate::proprioception::LocalPose;
 use crate::robot::{RobotError, RobotKind, pose_ok};
 use behavior_core::wrap_angle;
 use behavior_sim::{
-    BodyRef, JointState, ObjectId, Primitive, STEP_SECONDS, StepHooks, World, WorldError,
+    AttachmentId, BodyRef, JointState, ObjectId, Primitive, STEP_SECONDS, StepHooks, World,
+    WorldError,
 };
 use rapier3d::glamx::EulerRot;
 use rapier3d::math::{Pose, Rotation, Vector};
@@ -500,6 +501,10 @@ impl Embodiment for Fetch {
 
     fn held(&self, hand: usize) -> Option<ObjectId> {
         self.holding().filter(|_| hand == 0).map(|b| b.object)
+    }
+
+    fn grasp_attachment(&self, hand: usize) -> Option<AttachmentId> {
+        self.gripper.attachment().filter(|_| hand == 0)
     }
 
     fn grasp_rules(&self) -> &GraspRules {

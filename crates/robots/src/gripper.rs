@@ -101,6 +101,11 @@ impl ParallelGripper {
         self.held.map(|g| g.body)
     }
 
+    /// The attachment by which it holds, if it holds something.
+    pub(crate) fn attachment(&self) -> Option<AttachmentId> {
+        self.held.map(|g| g.attachment)
+    }
+
     /// Where the palm was before a teleport of the robot.
     pub(crate) fn palm_pose(&self, world: &World) -> Pose {
         world.bodies().pose(self.palm)

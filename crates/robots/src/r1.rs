@@ -30,7 +30,7 @@ use crate::r1_body::{
 };
 use crate::r1_kinematics::head_camera;
 use crate::robot::{RobotError, RobotKind, pose_ok};
-use behavior_sim::{ObjectId, Primitive, STEP_SECONDS, StepHooks, World};
+use behavior_sim::{AttachmentId, ObjectId, Primitive, STEP_SECONDS, StepHooks, World};
 use rapier3d::glamx::EulerRot;
 use rapier3d::math::{Pose, Rotation, Vector};
 use std::sync::{Arc, LazyLock};
@@ -343,6 +343,11 @@ impl Embodiment for R1 {
     fn held(&self, hand: usize) -> Option<ObjectId> {
         let side = R1::side(hand).ok()?;
         self.grippers[side.index()].holding().map(|b| b.object)
+    }
+
+    fn grasp_attachment(&self, hand: usize) -> Option<AttachmentId> {
+        let side = R1::side(hand).ok()?;
+        self.grippers[side.index()].attachment()
     }
 
     fn grasp_rules(&self) -> &GraspRules {

@@ -222,6 +222,23 @@ impl<'w> Attachments<'w> {
             broken: record.joint.is_none(),
         })
     }
+
+    /// Where an attachment's two anchor points are now in the world, the holder's first, or
+    /// `None` if it was detached: the point a hand pulls a door by, to move it along the
+    /// door's arc.
+    pub fn anchors(&self, id: AttachmentId) -> Option<[Vector; 2]> {
+        let record = self.set.records.get(&id)?;
+        let at = |body: BodyRef, local: Vector| {
+            self.bodies
+                .body_pose(body)
+                .ok()
+                .map(|p| p.transform_point(local))
+        };
+        Some([
+            at(record.spec.holder, record.local[0])?,
+            at(record.spec.held, record.local[1])?,
+        ])
+    }
 }
 
 impl Record {

@@ -226,12 +226,24 @@ impl Bodies {
     /// The box around an object's body colliders (its links' excluded) in its own frame: its
     /// size as built, whatever way it is turned.
     pub fn local_aabb(&self, id: ObjectId) -> Aabb {
-        let object = self.object(id);
-        let mut boxes = object
+        self.box_of(id, self.object(id).body)
+    }
+
+    /// The box around one link's colliders in the object's frame with every joint at zero (the
+    /// frame its parts are given in; [`Bodies::link_pose`] maps it to the world): a door's
+    /// extent, to find its edge away from the hinge.
+    pub fn link_local_aabb(&self, id: ObjectId, link: usize) -> Aabb {
+        self.box_of(id, self.object(id).links[link].body)
+    }
+
+    /// The box around the object's colliders on `body`, in that body's frame.
+    fn box_of(&self, id: ObjectId, body: RigidBodyHandle) -> Aabb {
+        let mut boxes = self
+            .object(id)
             .colliders
             .iter()
             .map(|&c| &self.physics.colliders[c])
-            .filter(|c| c.parent() == Some(object.body))
+            .filter(|c| c.parent() == Some(body))
             .map(|c| {
                 let at = c.position_wrt_parent().copied().unwrap_or(Pose::IDENTITY);
                 c.shape().compute_aabb(&at)

@@ -6,12 +6,18 @@ use super::geometry::{span, tub, v};
 use behavior_sim::{Form, JointKind, JointSpec, LinkSpec};
 use rapier3d::math::Vector;
 
-/// A door covering the front of `min..max`, hinged on its left edge (opens outward, to −y),
-/// drawn as `form`.
+/// The gap a door leaves at its free edge, m: a door as wide as its carcass, its free edge flush
+/// with a neighbour that stands out past it (a cabinet deeper than the fridge beside it),
+/// scrapes the neighbour's corner as it starts to swing and jams there, where a hand pulls it.
+const DOOR_GAP: f32 = 0.005;
+
+/// A door covering the front of `min..max` but a [`DOOR_GAP`] at its free edge, hinged on its
+/// left edge (opens outward, to −y), drawn as `form`.
 pub(super) fn side_door(form: Form, min: Vector, max: Vector, t: f32, density: f32) -> LinkSpec {
+    let edge = max.x - DOOR_GAP;
     LinkSpec {
         name: "door".into(),
-        parts: vec![span(v(min.x, min.y - t, min.z), v(max.x, min.y, max.z)).with_form(form)],
+        parts: vec![span(v(min.x, min.y - t, min.z), v(edge, min.y, max.z)).with_form(form)],
         parent: None,
         joint: JointSpec::opening(
             JointKind::Revolute,
@@ -24,12 +30,13 @@ pub(super) fn side_door(form: Form, min: Vector, max: Vector, t: f32, density: f
     }
 }
 
-/// A door covering the front of `min..max`, hinged at its bottom edge (ovens, dishwashers),
-/// drawn as `form`.
+/// A door covering the front of `min..max` but a [`DOOR_GAP`] at its free (top) edge, hinged
+/// at its bottom edge (ovens, dishwashers), drawn as `form`.
 pub(super) fn drop_door(form: Form, min: Vector, max: Vector, t: f32, density: f32) -> LinkSpec {
+    let edge = max.z - DOOR_GAP;
     LinkSpec {
         name: "door".into(),
-        parts: vec![span(v(min.x, min.y - t, min.z), v(max.x, min.y, max.z)).with_form(form)],
+        parts: vec![span(v(min.x, min.y - t, min.z), v(max.x, min.y, edge)).with_form(form)],
         parent: None,
         joint: JointSpec::opening(
             JointKind::Revolute,

@@ -4,7 +4,7 @@
 //! moves), then the door taken by the hand and swung wide open, and swung shut again. The
 //! calls go through `swing`, which has no kinematic fallback: a door that ends open was opened
 //! by the hand. Physics makes runs chaotic, and in some homes furniture stands in the door's
-//! swing (the first covering home's refrigerator opens 4° before a cabinet stops it), so each
+//! swing (the first covering home's refrigerator opens 4° before a cabinet stops it), so the
 //! robot is given the named homes that cover the activity in turn, a few seeds each: in one of
 //! them the hand must open and close it. Fetch and the R1, whose arms are moved kinematically,
 //! cannot hold a door on its hinge: `swing` says so and moves nothing, and `run` sets the door

@@ -145,27 +145,21 @@ pub fn run_with(
         // lid, a leaf that jams on its neighbour, a press without effect — the state is set as
         // the original's motion-planning mode sets every door and switch, recorded as an edit.
         (Mode::Physical, Primitive::Open | Primitive::Close) => {
-            match manipulation::swing(env, &call, tuning, again(&mut watcher))? {
-                Err(_) if !env.is_over() => {
-                    set = true;
-                    apply(env, &call)?
-                }
-                swung => swung,
-            }
+            let swung = manipulation::swing(env, &call, tuning, again(&mut watcher))?;
+            or_set(env, &call, swung, |_| true, &mut set)?
         }
         (Mode::Physical, Primitive::ToggleOn | Primitive::ToggleOff) => {
-            match manipulation::press(env, &call, tuning, again(&mut watcher))? {
-                Err(
+            let pressed = manipulation::press(env, &call, tuning, again(&mut watcher))?;
+            let unpressable = |f: &Failure| {
+                matches!(
+                    f,
                     Failure::NoHandPose
-                    | Failure::NoPath(_)
-                    | Failure::HandBlocked
-                    | Failure::NoEffect(_),
-                ) if !env.is_over() => {
-                    set = true;
-                    apply(env, &call)?
-                }
-                pressed => pressed,
-            }
+                        | Failure::NoPath(_)
+                        | Failure::HandBlocked
+                        | Failure::NoEffect(_)
+                )
+            };
+            or_set(env, &call, pressed, unpressable, &mut set)?
         }
         (Mode::Physical, Primitive::Grasp) => {
             manipulation::grasp(env, &call, tuning, again(&mut watcher))?
@@ -216,6 +210,24 @@ pub fn run_with(
         step,
         set,
     })
+}
+
+/// What the hand did (`by_hand`), or, where it failed in a way `falls_back` accepts and the
+/// episode goes on, the setter's outcome instead, with `set` raised.
+fn or_set(
+    env: &mut Env,
+    call: &Call,
+    by_hand: Result<(), Failure>,
+    falls_back: impl Fn(&Failure) -> bool,
+    set: &mut bool,
+) -> Result<Result<(), Failure>, RunError> {
+    match by_hand {
+        Err(f) if falls_back(&f) && !env.is_over() => {
+            *set = true;
+            Ok(apply(env, call)?)
+        }
+        done => Ok(done),
+    }
 }
 
 /// The step that ended the episode, as it stands after it: terminated if the goal holds,

@@ -371,7 +371,7 @@ impl<'a> Solver<'a> {
     /// that one if it is empty, else an empty one (a hand holding a towel to soak pressed the
     /// tap with it, and the towel met the tap; a hand holding a plate cannot take a door's
     /// edge), else that one.
-    fn pressing_hand(&self, asked: usize) -> usize {
+    fn empty_hand_for(&self, asked: usize) -> usize {
         let asked = if asked == CARRY {
             self.carry_hand()
         } else {
@@ -397,7 +397,7 @@ impl<'a> Solver<'a> {
             Primitive::Close,
         ];
         let hand = if by_hand.contains(&primitive) {
-            self.pressing_hand(hand)
+            self.empty_hand_for(hand)
         } else if primitive.uses_hand() && hand == CARRY {
             self.carry_hand()
         } else {

@@ -655,7 +655,7 @@ impl BehaviorRobot {
         side: Side,
         object: ObjectId,
     ) -> Result<(), MagicError> {
-        let kind = self.may_hold(world, side, object)?;
+        let kind = self.may_hold(world, side, BodyRef::from(object))?;
         let palm = world.bodies().pose(self.parts.hand(side));
         // The palm faces its −z: the object's box goes just below it, touching.
         let aabb = world.bodies().aabb(object);
@@ -663,7 +663,7 @@ impl BehaviorRobot {
         let below = palm.rotation * rapier3d::math::Vector::NEG_Z;
         let reach = (below * half).abs().element_sum() + 0.01;
         centre_on(world, object, palm.translation + below * reach)?;
-        self.attach(world, side, object, kind, palm.translation)
+        self.attach(world, side, BodyRef::from(object), kind, palm.translation)
     }
 
     /// Holds `object` where it is, if the hand touches it (the original's forced assisted
@@ -687,27 +687,17 @@ impl BehaviorRobot {
             Some(_) if world.bodies().object(object).is_fixed() => touched,
             _ => BodyRef::from(object),
         };
-        let kind = self.may_hold_body(world, side, body)?;
+        let kind = self.may_hold(world, side, body)?;
         let at = world
             .bodies()
             .pose(hand)
             .transform_point(crate::hand::PALM_CENTRE);
-        self.attach_body(world, side, body, kind, at)
-    }
-
-    /// How the hand may hold `object`: it is empty, and the rules allow it.
-    fn may_hold(
-        &self,
-        world: &World,
-        side: Side,
-        object: ObjectId,
-    ) -> Result<AttachmentKind, MagicError> {
-        self.may_hold_body(world, side, BodyRef::from(object))
+        self.attach(world, side, body, kind, at)
     }
 
     /// How the hand may hold `body` (an object or one of its links): it is empty, and the
     /// rules allow it.
-    fn may_hold_body(
+    fn may_hold(
         &self,
         world: &World,
         side: Side,
@@ -721,20 +711,8 @@ impl BehaviorRobot {
         self.rules.kind_for(world, body, &own, other)
     }
 
-    /// Attaches `object` to the hand at `at` as the assisted grasp does, and closes it.
-    fn attach(
-        &mut self,
-        world: &mut World,
-        side: Side,
-        object: ObjectId,
-        kind: AttachmentKind,
-        at: Vector,
-    ) -> Result<(), MagicError> {
-        self.attach_body(world, side, BodyRef::from(object), kind, at)
-    }
-
     /// Attaches `body` to the hand at `at` as the assisted grasp does, and closes it.
-    fn attach_body(
+    fn attach(
         &mut self,
         world: &mut World,
         side: Side,

@@ -172,6 +172,23 @@ class BehaviorEnv(gymnasium.Env):
         obs, info = self._env.restore(checkpoint)
         return self._observed(obs), info
 
+    def checkpoint_from_recording(self, path, step: int):
+        """The episode recorded in ``path`` (a recording of this activity, robot and home: a
+        demonstration) as it stood after its step ``step``, as a checkpoint to ``restore``: the
+        start states of Table 1's oracle rows. The recording is re-simulated from its last
+        saved state before the step, bit for bit at every checkpoint on the way; one of another
+        activity, robot, home, action space or physics rate raises ``ValueError`` saying which,
+        a step past its end too."""
+        if step < 0:
+            raise ValueError(f"step must be a non-negative integer, not {step}")
+        return self._env.checkpoint_from_recording(os.fspath(path), step)
+
+    @property
+    def goal_literals(self) -> int:
+        """How many literals the goal's first option has (a smallest option): ΔQ times this
+        counts goal literals reached, one each."""
+        return self._env.goal_literals
+
     def record(self, path, checkpoint_every: int = 30):
         """Records the episode from now on to ``path`` (MCAP: ``behavior.replay`` and
         ``behavior replay --verify`` re-simulate it), with a state digest every
@@ -221,6 +238,13 @@ class BehaviorEnv(gymnasium.Env):
         if not self._primitives:
             raise ValueError("action masks are for action_space='primitives'")
         return self._env.action_mask()
+
+    def primitive_actions(self) -> list:
+        """What each primitive action does, in action order: ``(primitive, object)`` names,
+        e.g. ``("navigate_to", "printer_1")``. The objects are this episode's."""
+        if not self._primitives:
+            raise ValueError("primitive actions are for action_space='primitives'")
+        return list(self._env.primitive_actions())
 
     def _primitive_index(self, action: Any) -> int:
         value = np.asarray(action)

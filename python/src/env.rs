@@ -179,6 +179,16 @@ impl PyEnv {
         Ok(self.lock()?.primitives.as_ref().map_or(0, Primitives::len))
     }
 
+    /// What each primitive action does, in action order: `(primitive, object)` names (empty
+    /// without primitives).
+    fn primitive_actions(&self) -> PyResult<Vec<(&'static str, String)>> {
+        let guard = self.lock()?;
+        Ok(guard
+            .primitives
+            .as_ref()
+            .map_or_else(Vec::new, |p| p.meanings(&guard.env)))
+    }
+
     /// Whether each primitive action's preconditions hold now (for MaskablePPO).
     fn action_mask<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let guard = self.lock()?;
@@ -261,6 +271,31 @@ impl PyEnv {
         let dict = info_dict(py, episode.env.steps(), &score)?;
         episode.add_mask(py, &dict)?;
         Ok((obs_dict(py, obs)?, dict))
+    }
+
+    /// The episode recorded in `path` (by this activity, robot and home) as it stood after its
+    /// step `step`, as a checkpoint of this environment to `restore`: a start state taken from
+    /// a demonstration. Re-simulated from the recording's last saved state before the step,
+    /// bit for bit at every checkpoint on the way.
+    fn checkpoint_from_recording(
+        &self,
+        py: Python<'_>,
+        path: PathBuf,
+        step: u32,
+    ) -> PyResult<PyCheckpoint> {
+        let config = self.lock()?.env.config().clone();
+        let checkpoint = py.detach(|| record::checkpoint_at(&path, step, &config, &self.scene))?;
+        Ok(PyCheckpoint {
+            checkpoint,
+            owner: self.identity(),
+        })
+    }
+
+    /// How many literals the goal's first option has (a smallest option): ΔQ times this
+    /// counts goal literals reached, one each.
+    #[getter]
+    fn goal_literals(&self) -> PyResult<usize> {
+        Ok(self.lock()?.env.goal_literals())
     }
 
     /// Records the episode from now on to `path` (MCAP; `behavior.replay` and `behavior replay`

@@ -62,6 +62,20 @@ impl Primitives {
         self.space.as_ref().map_or(0, PrimitiveSpace::len)
     }
 
+    /// What each action does: its primitive's name and its object's, in action order.
+    pub fn meanings(&self, env: &Env) -> Vec<(&'static str, String)> {
+        let (Some(space), Some(world)) = (self.space.as_ref(), env.world()) else {
+            return Vec::new();
+        };
+        (0..space.len())
+            .filter_map(|a| space.decode(a))
+            .map(|call| {
+                let object = world.bodies().object(call.object).name.clone();
+                (call.primitive.name(), object)
+            })
+            .collect()
+    }
+
     /// Whether each action's preconditions hold now.
     pub fn mask(&self, env: &Env) -> Vec<bool> {
         self.space.as_ref().map_or_else(Vec::new, |s| s.mask(env))

@@ -1,12 +1,14 @@
 //! Recording episodes from Python and replaying recordings, as `behavior run --record` and
 //! `behavior replay --verify` do: an episode's actions (continuous, or those its primitives
 //! took, with the symbolic primitives' edits of the world) to MCAP, with state digests at
-//! checkpoints; a replay re-simulates it and compares every checkpoint bit for bit.
+//! checkpoints; a replay re-simulates it and compares every checkpoint bit for bit. A
+//! recording's episode at any of its steps becomes a checkpoint of a Python environment (the
+//! start states of Table 1's oracle rows).
 
 use crate::build::catalog;
-use behavior_env::Env;
 use behavior_env::record::lerobot::{ExportError, ExportOptions, Format, export};
-use behavior_env::record::{ReadError, RecordError, RecordingSetup, read, replay_with};
+use behavior_env::record::{ReadError, RecordError, RecordingSetup, read, replay_with, state_at};
+use behavior_env::{Checkpoint, Env, EnvConfig};
 use behavior_planning::RecordedCall;
 use pyo3::exceptions::{PyFileExistsError, PyOSError, PyValueError};
 use pyo3::prelude::*;
@@ -107,6 +109,58 @@ pub fn export_lerobot(
             .map_err(export_error)?;
         Ok(serde_json::to_string(&summary).expect("the summary serializes"))
     })
+}
+
+/// The episode recorded in `path` as it stood after its step `step`, as a checkpoint for an
+/// environment built as `config` (the same activity, robot, home, action space and physics, or
+/// a `ValueError` naming what differs): the recording is resumed at its last saved state
+/// before the step and its actions (and the planner's edits) taken again up to it, checked bit
+/// for bit at every checkpoint on the way.
+pub fn checkpoint_at(
+    path: &Path,
+    step: u32,
+    config: &EnvConfig,
+    scene: &str,
+) -> PyResult<Checkpoint> {
+    let recording = read(path).map_err(read_error)?;
+    let catalog = catalog().map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let invalid = |what: String| PyValueError::new_err(format!("{}: {what}", path.display()));
+    let recorded =
+        (recording.config_from(catalog.knowledge())).map_err(|e| invalid(e.to_string()))?;
+    let h = &recording.header;
+    let differences = [
+        (
+            "activity",
+            recorded.activity.name.clone(),
+            config.activity.name.clone(),
+        ),
+        (
+            "robot",
+            format!("{:?}", recorded.robot),
+            format!("{:?}", config.robot),
+        ),
+        ("home", h.scene.clone(), scene.to_string()),
+        (
+            "action space",
+            format!("{:?}", recorded.action_space),
+            format!("{:?}", config.action_space),
+        ),
+        (
+            "physics",
+            format!("{:?}", recorded.physics),
+            format!("{:?}", config.physics),
+        ),
+    ];
+    if let Some((what, theirs, ours)) = differences.iter().find(|(_, a, b)| a != b) {
+        return Err(invalid(format!(
+            "the recording's {what} is {theirs}, this environment's {ours}"
+        )));
+    }
+    // Recorded primitives' edits are done again by the planner's code that did them.
+    let env =
+        state_at::<RecordedCall>(&recording, recorded, step).map_err(|e| invalid(e.to_string()))?;
+    env.checkpoint()
+        .ok_or_else(|| invalid(format!("no episode at step {step}")))
 }
 
 /// An export that failed: `FileExistsError` for a dataset folder in the way, `OSError` for

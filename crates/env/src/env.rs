@@ -428,6 +428,13 @@ impl Env {
         self.current().map(|e| &e.score)
     }
 
+    /// How many literals the goal's first option has (a smallest option,
+    /// `behavior_bddl::options::options`' first): a reward of ΔQ times this counts goal literals,
+    /// one each, where Q's best option is that size.
+    pub fn goal_literals(&self) -> usize {
+        self.scorer.first_option_len()
+    }
+
     /// Whether the episode ended (terminated or truncated).
     pub fn is_over(&self) -> bool {
         self.current().is_some_and(|e| e.over)

@@ -80,6 +80,11 @@ impl Scorer {
         }
     }
 
+    /// How many literals the first option has.
+    pub(crate) fn first_option_len(&self) -> usize {
+        self.first_option.len()
+    }
+
     /// The fraction of the first option's literals that hold (1 for an empty option).
     pub(crate) fn first_option(&self, oracle: &impl PredicateOracle) -> f64 {
         if self.first_option.is_empty() {

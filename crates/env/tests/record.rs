@@ -251,6 +251,45 @@ fn a_recording_resumed_at_a_checkpoint_continues_as_recorded() {
     assert_eq!(resimulated.steps(), 40);
 }
 
+#[test]
+fn a_recording_is_taken_to_any_step_between_its_checkpoints() {
+    use behavior_env::NoEdits;
+    use behavior_env::record::{ReplayError, state_at};
+    let (_path_dir, path) = temp("any-step.mcap");
+    let env = record(&path, 60, 20);
+    let recording = read(&path).unwrap();
+    let config = || {
+        recording
+            .config(common::activity("bringing_in_wood"), common::taxonomy())
+            .unwrap()
+    };
+    let digest = |env: &Env| state_digest(env.world().unwrap(), env.robot().unwrap(), env.steps());
+    // Step 33 by the saved state of step 20 and 13 actions, against the episode begun again
+    // and every action taken from the reset (no saved state used).
+    let at = state_at::<NoEdits>(&recording, config(), 33).unwrap();
+    assert_eq!(at.steps(), 33);
+    let mut straight = Env::new(config());
+    straight.reset(5).unwrap();
+    for frame in &recording.frames[..33] {
+        straight.step(&frame.action).unwrap();
+    }
+    assert_eq!(digest(&at), digest(&straight));
+    assert_eq!(at.score(), straight.score());
+    // It goes on as recorded to the end.
+    let mut at = at;
+    for frame in &recording.frames[33..] {
+        at.step(&frame.action).unwrap();
+    }
+    assert_eq!(digest(&at), digest(&env));
+    let start = state_at::<NoEdits>(&recording, config(), 0).unwrap();
+    assert_eq!(start.steps(), 0);
+    let past = state_at::<NoEdits>(&recording, config(), 61).err();
+    assert!(
+        matches!(past, Some(ReplayError::PastTheEnd { step: 61, last: 60 })),
+        "{past:?}"
+    );
+}
+
 /// An edit of the world for the tests: lifts the object of that name by `mm` millimetres.
 #[derive(serde::Serialize, serde::Deserialize)]
 struct Lift {
@@ -333,6 +372,16 @@ fn the_episode_records_its_own_edits_and_a_replay_of_their_type_does_them_again(
     };
     let report = replay_with::<Lift>(&recording, config()).unwrap();
     assert!(report.identical && report.checkpoints == 3, "{report:?}");
+    // Taken to a step after the edit, from the reset's saved state (the edit done again) or
+    // from step 10's (the edit already in it), the episode goes on to the recorded end.
+    for at in [8, 15] {
+        let mut resumed = behavior_env::record::state_at::<Lift>(&recording, config(), at).unwrap();
+        for frame in &recording.frames[at as usize..] {
+            resumed.step(&frame.action).unwrap();
+        }
+        let end = state_digest(resumed.world().unwrap(), resumed.robot().unwrap(), 20);
+        assert_eq!(end, recording.checkpoints[2].1, "taken to step {at}");
+    }
     // Without the edit's type, the replay stops at the edit and says why.
     let plain = replay(&recording, config());
     assert!(

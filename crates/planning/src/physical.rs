@@ -276,6 +276,7 @@ fn plan_base_with(
     // reaches from where it starts (flooded once the lattice has said so; a bedroom's stands
     // by a present on the floor lay in three pockets between the bed, the present and a wall).
     let mut reachable: Option<Reachable> = None;
+    let mut pocket_tried = false;
     for k in 0..tuning.stand_plans {
         let mut rng = seeded(seed.wrapping_add(k));
         let only = |c: &BaseConfig| reachable.as_ref().is_none_or(|r| r.contains(c));
@@ -292,7 +293,14 @@ fn plan_base_with(
         // Where RRT-Connect's samples miss the way (a door between rooms), the lattice finds it.
         let planned = match plan(&space, &from, &goal, &params) {
             Ok(planned) => Ok(planned.path),
-            Err(PlanError::NoPath { .. }) => lattice_plan(&space, &from, &goal, &params),
+            Err(PlanError::NoPath { .. }) => match lattice_plan(&space, &from, &goal, &params) {
+                Err(e @ PlanError::NoLatticePath { .. }) if !pocket_tried => {
+                    pocket_tried = true;
+                    let region = reachable.get_or_insert_with(|| reachable_from(&space, &from));
+                    out_of_pocket(&space, region, &from, &goal, &params).ok_or(e)
+                }
+                other => other,
+            },
             Err(other) => Err(other),
         };
         match planned {
@@ -310,6 +318,35 @@ fn plan_base_with(
         }
     }
     Err(last)
+}
+
+/// How many times the usual iterations of a base plan's runs a robot in a pocket gets to find
+/// its way out.
+const POCKET_BUDGET: u32 = 4;
+
+/// A way from `from` to `goal` for a robot standing in a pocket of the lattice (`region`, the
+/// cells the lattice reaches from it, holds no cell near the goal), by RRT-Connect with
+/// [`POCKET_BUDGET`] times the iterations (a narrow way takes more growing, not more fresh
+/// trees: four times the runs found none where four times the iterations did); `None` where
+/// the goal lies in the start's region (the lattice's failure stands) or none is found.
+/// RRT-Connect's paths turn at any heading, the lattice's at eight: the robot drove into the
+/// pocket along such a path (a stand by a window, 20° off the grid), and only such a path
+/// leads out.
+fn out_of_pocket(
+    space: &BaseSpace<'_>,
+    region: &Reachable,
+    from: &BaseConfig,
+    goal: &BaseConfig,
+    params: &PlanParams,
+) -> Option<Vec<BaseConfig>> {
+    if region.contains(goal) {
+        return None;
+    }
+    let wider = PlanParams {
+        iterations: params.iterations * POCKET_BUDGET,
+        ..*params
+    };
+    plan(space, from, goal, &wider).ok().map(|p| p.path)
 }
 
 /// Whether a base plan's failure ends NAVIGATE_TO rather than sending it to the next stand: a

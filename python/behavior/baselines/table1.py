@@ -34,32 +34,39 @@ def run_dir(out: Path, activity: str, seed: int) -> Path:
     return out / activity / str(seed)
 
 
-def train_one(args: argparse.Namespace, activity: str, seed: int) -> dict:
-    """One run in its own process (kept if done before)."""
-    folder = run_dir(args.out, activity, seed)
+def run_process(command: List[str], folder: Path) -> dict:
+    """Runs one training process writing its folder, unless its ``result.json`` is there from
+    before (so an interrupted table resumes); returns that result. The process's output goes
+    to ``log.txt`` in the folder."""
     done = folder / "result.json"
     if not done.exists():
-        command = [
-            sys.executable, "-m", f"behavior.baselines.{row(args.row).algorithm}", activity,
-            "--row", args.row, "--seed", str(seed), "--timesteps", str(args.timesteps),
-            "--robot", args.robot, "--out", str(folder), *args.extra,
-        ]
         folder.mkdir(parents=True, exist_ok=True)
         with open(folder / "log.txt", "w") as log:
             finished = subprocess.run(command, stdout=log, stderr=subprocess.STDOUT)
         if finished.returncode != 0:
             raise RuntimeError(f"{' '.join(command)} failed; see {folder / 'log.txt'}")
-    result = json.loads(done.read_text())
+    return json.loads(done.read_text())
+
+
+def train_one(args: argparse.Namespace, activity: str, seed: int) -> dict:
+    """One run in its own process (kept if done before)."""
+    folder = run_dir(args.out, activity, seed)
+    command = [
+        sys.executable, "-m", f"behavior.baselines.{row(args.row).algorithm}", activity,
+        "--row", args.row, "--seed", str(seed), "--timesteps", str(args.timesteps),
+        "--robot", args.robot, "--out", str(folder), *args.extra,
+    ]
+    result = run_process(command, folder)
     print(f"{activity} seed {seed}: Q {result['q']:.3f} ({result['wall_s']:.0f} s)", flush=True)
     return result
 
 
-def curve(folder: Path, timesteps: int) -> np.ndarray:
-    """The mean final Q of the training episodes ending in each of `CURVE_BINS` bins of steps
-    (NaN where none ended)."""
+def curve(folder: Path, timesteps: int, column: str = "q") -> np.ndarray:
+    """The mean of `column` (``q``: the final Q; ``success``: 1 or 0) over the training
+    episodes ending in each of `CURVE_BINS` bins of steps (NaN where none ended)."""
     edges = np.linspace(0, timesteps, CURVE_BINS + 1)
     with open(folder / "curve.csv") as f:
-        points = [(int(r["timesteps"]), float(r["q"])) for r in csv.DictReader(f)]
+        points = [(int(r["timesteps"]), float(r[column])) for r in csv.DictReader(f)]
     t = np.array([p[0] for p in points])
     q = np.array([p[1] for p in points])
     which = np.clip(np.searchsorted(edges, t, side="right") - 1, 0, CURVE_BINS - 1)

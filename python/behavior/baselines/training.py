@@ -144,14 +144,19 @@ def evaluate(model, config: TrainConfig, episodes: int, deterministic: bool) -> 
     return float(np.mean(qs)), float(np.mean(successes))
 
 
-def write_run(config: TrainConfig, model, curve: QCurve, wall_s: float, algorithm: str) -> dict:
-    """Saves the run's curve, model and result in `config.out`; returns the result."""
-    out = Path(config.out)
+def write_curve(out: Path, curve: QCurve) -> None:
+    """Writes `curve.csv` in the folder `out` (made if missing)."""
     out.mkdir(parents=True, exist_ok=True)
     with open(out / "curve.csv", "w", newline="") as f:
         writer = csv.writer(f)
         writer.writerow(["timesteps", "q", "success"])
         writer.writerows((t, f"{q:.6f}", int(s)) for t, q, s in curve.points)
+
+
+def write_run(config: TrainConfig, model, curve: QCurve, wall_s: float, algorithm: str) -> dict:
+    """Saves the run's curve, model and result in `config.out`; returns the result."""
+    out = Path(config.out)
+    write_curve(out, curve)
     model.save(out / "model.zip")
     q, success_rate = evaluate(model, config, EVALUATION_EPISODES, deterministic=False)
     q_likeliest, _ = evaluate(model, config, 1, deterministic=True)

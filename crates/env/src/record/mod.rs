@@ -28,7 +28,7 @@ mod writer;
 
 pub use digest::state_digest;
 pub use reader::{Frame, ReadError, Recording, read};
-pub use replay::{ReplayError, ReplayReport, redo, replay, replay_with, resume};
+pub use replay::{ReplayError, ReplayReport, redo, replay, replay_with, resume, state_at};
 pub use writer::RecordError;
 pub(crate) use writer::Recorder;
 

@@ -29,6 +29,14 @@ pub enum ReplayError {
     /// The recording has no checkpoint at the step asked to resume from.
     #[error("the recording has no checkpoint at step {0}")]
     NoCheckpoint(u32),
+    /// The step asked for is past the recording's last.
+    #[error("the recording ends at step {last}; it has no step {step}")]
+    PastTheEnd {
+        /// The step asked for.
+        step: u32,
+        /// The recording's last step.
+        last: u32,
+    },
     /// Re-simulated to a checkpoint, the state differs from the recording's.
     #[error("the state re-simulated to step {0} differs from the recording's checkpoint")]
     Differs(u32),
@@ -160,11 +168,7 @@ pub fn replay_with<E: WorldEdit>(
     config: EnvConfig,
 ) -> Result<ReplayReport, ReplayError> {
     let mut env = Env::new(config);
-    let start = Start {
-        seed: recording.header.seed,
-        instance: recording.header.instance.clone(),
-    };
-    env.reset_to(start)
+    env.reset_to(start_of(recording))
         .map_err(|source| ReplayError::Env { step: 0, source })?;
     let mut report = ReplayReport {
         identical: true,
@@ -231,31 +235,110 @@ pub fn redo<E: WorldEdit>(
 /// the checkpoint's digest bit for bit, and hands back the environment there, ready to
 /// continue (with the recorded actions it continues as recorded; with others it branches off).
 pub fn resume(recording: &Recording, config: EnvConfig, step: u32) -> Result<Env, ReplayError> {
-    let digest = recording
-        .checkpoints
-        .iter()
-        .find(|(s, _)| *s == step)
-        .map(|(_, d)| d)
-        .ok_or(ReplayError::NoCheckpoint(step))?;
-    let mut env = Env::new(config);
-    let start = Start {
-        seed: recording.header.seed,
-        instance: recording.header.instance.clone(),
-    };
-    match recording.states.iter().find(|(s, _)| *s == step) {
-        Some((_, bytes)) => env
-            .restore_bytes(start, bytes)
-            .map_err(|source| ReplayError::State { step, source })?,
-        None => resimulate(&mut env, recording, start, step)?,
+    if !recording.checkpoints.iter().any(|(s, _)| *s == step) {
+        return Err(ReplayError::NoCheckpoint(step));
     }
-    let same = match (env.world(), env.robot()) {
-        (Some(world), Some(robot)) => state_digest(world, robot, env.steps()) == *digest,
-        _ => false,
-    };
-    if !same || env.steps() != step {
-        return Err(ReplayError::Differs(step));
+    let mut env = Env::new(config);
+    match recording.states.iter().find(|(s, _)| *s == step) {
+        Some((_, bytes)) => load_state(&mut env, recording, step, bytes)?,
+        None => {
+            resimulate(&mut env, recording, start_of(recording), step)?;
+            if env.steps() != step {
+                return Err(ReplayError::Differs(step));
+            }
+            check_digest(&env, recording)?;
+        }
     }
     Ok(env)
+}
+
+/// The recorded episode as it stood after its step `step` (0: just after the reset), at any
+/// step, not only a checkpoint: resumed at the last full state saved at or before it (checked
+/// against its digest), then the recorded actions taken again up to `step`, every recorded
+/// edit between them done again as an `E` (the type that made them), and every checkpoint
+/// passed on the way compared bit for bit. What an experiment starting "k seconds before a
+/// demonstration's success" starts from.
+pub fn state_at<E: WorldEdit>(
+    recording: &Recording,
+    config: EnvConfig,
+    step: u32,
+) -> Result<Env, ReplayError> {
+    let last = recording.frames.last().map_or(0, |f| f.step);
+    if step > last {
+        return Err(ReplayError::PastTheEnd { step, last });
+    }
+    let mut env = Env::new(config);
+    let saved = (recording.states.iter())
+        .filter(|(s, _)| *s <= step)
+        .max_by_key(|(s, _)| *s);
+    let from = match saved {
+        Some((at, bytes)) => {
+            load_state(&mut env, recording, *at, bytes)?;
+            *at
+        }
+        None => {
+            env.reset_to(start_of(recording))
+                .map_err(|source| ReplayError::Env { step: 0, source })?;
+            check_digest(&env, recording)?;
+            0
+        }
+    };
+    // A state saved at a step precedes the edits made after that step.
+    let mut edits = (recording.edits.iter())
+        .filter(|(s, _)| *s >= from)
+        .peekable();
+    for frame in (recording.frames.iter()).filter(|f| f.step > from && f.step <= step) {
+        while let Some((at, edit)) = edits.next_if(|(s, _)| *s < frame.step) {
+            redo::<E>(&mut env, *at, edit)?;
+        }
+        env.step(&frame.action).map_err(|source| ReplayError::Env {
+            step: frame.step,
+            source,
+        })?;
+        check_digest(&env, recording)?;
+    }
+    Ok(env)
+}
+
+/// How the recorded episode began.
+fn start_of(recording: &Recording) -> Start {
+    Start {
+        seed: recording.header.seed,
+        instance: recording.header.instance.clone(),
+    }
+}
+
+/// Loads the full state saved at `step` into `env` and checks it against that step's digest.
+fn load_state(
+    env: &mut Env,
+    recording: &Recording,
+    step: u32,
+    bytes: &[u8],
+) -> Result<(), ReplayError> {
+    env.restore_bytes(start_of(recording), bytes)
+        .map_err(|source| ReplayError::State { step, source })?;
+    if env.steps() != step {
+        return Err(ReplayError::Differs(step));
+    }
+    check_digest(env, recording)
+}
+
+/// Compares the state `env` stands at with the recording's checkpoint at that step, where it
+/// has one.
+fn check_digest(env: &Env, recording: &Recording) -> Result<(), ReplayError> {
+    let step = env.steps();
+    let Some((_, digest)) = recording.checkpoints.iter().find(|(s, _)| *s == step) else {
+        return Ok(());
+    };
+    let same = match (env.world(), env.robot()) {
+        (Some(world), Some(robot)) => state_digest(world, robot, step) == *digest,
+        _ => false,
+    };
+    if same {
+        Ok(())
+    } else {
+        Err(ReplayError::Differs(step))
+    }
 }
 
 /// Begins the episode again and takes the recorded actions up to `step`.

@@ -23,7 +23,6 @@ from pathlib import Path
 from typing import List, Optional
 
 import gymnasium
-import numpy as np
 from gymnasium.wrappers import TimeLimit
 from stable_baselines3.common.logger import configure
 from stable_baselines3.common.monitor import Monitor
@@ -179,37 +178,17 @@ def evaluate(model, env: gymnasium.Env, episodes: int) -> dict:
     """The policy's success rate and mean final Q over `episodes` episodes, actions sampled
     from it as in training (from one start state a deterministic policy would repeat one
     episode)."""
-    qs, successes = [], []
-    for _ in range(episodes):
-        obs, info = env.reset()
-        done = False
-        while not done:
-            action, _ = model.predict(obs, deterministic=False)
-            obs, _, terminated, truncated, info = env.step(action)
-            done = terminated or truncated
-        qs.append(float(info["q"]))
-        successes.append(bool(info["success"]))
-    return {"success_rate": float(np.mean(successes)), "q": float(np.mean(qs))}
+    q, success_rate = training.run_episodes(model, env, episodes, deterministic=False)
+    return {"success_rate": success_rate, "q": q}
 
 
 def train(config: OracleConfig) -> dict:
     """Trains SAC from the demonstrations' start states, evaluates it, writes the run's folder;
     returns its result."""
-    from stable_baselines3 import SAC
-
     training.set_threads(config)
     starts = starts_for(config)
     images = config.observations == "images"
-    model = SAC(
-        "MultiInputPolicy",
-        DummyVecEnv([lambda: make_env(config, starts)]),
-        policy_kwargs=training.policy_kwargs(),
-        buffer_size=sac.BUFFER_IMAGES if images else sac.BUFFER_STATE,
-        seed=config.seed,
-        device="cpu",
-        verbose=0,
-        **sac.HYPERPARAMETERS,
-    )
+    model = sac.model(DummyVecEnv([lambda: make_env(config, starts)]), config.seed, images)
     out = Path(config.out)
     model.set_logger(configure(str(out), ["csv"]))
     curve = training.QCurve()

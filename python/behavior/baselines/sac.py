@@ -21,26 +21,31 @@ BUFFER_STATE = 200_000
 BUFFER_IMAGES = 10_000
 
 
+def model(env, seed: int, images: bool):
+    """SAC over `env` (a vectorized environment) with the original's network in front,
+    `HYPERPARAMETERS`, the replay buffer sized for what is observed, on the CPU."""
+    from stable_baselines3 import SAC
+
+    return SAC(
+        "MultiInputPolicy",
+        env,
+        policy_kwargs=training.policy_kwargs(),
+        buffer_size=BUFFER_IMAGES if images else BUFFER_STATE,
+        seed=seed,
+        device="cpu",
+        verbose=0,
+        **HYPERPARAMETERS,
+    )
+
+
 def train(config: training.TrainConfig) -> dict:
     """Trains SAC for the run; returns its result (also written to its folder)."""
     spec = row(config.row)
     if spec.action_space != "continuous":
         raise ValueError(f"SAC trains the continuous rows; {config.row} is primitives (use ppo)")
-    from stable_baselines3 import SAC
-
     training.set_threads(config)
     images = "rgb" in spec.observations or "depth" in spec.observations
-    model = SAC(
-        "MultiInputPolicy",
-        training.vector_env(config),
-        policy_kwargs=training.policy_kwargs(),
-        buffer_size=BUFFER_IMAGES if images else BUFFER_STATE,
-        seed=config.seed,
-        device="cpu",
-        verbose=0,
-        **HYPERPARAMETERS,
-    )
-    return training.learn(model, config, "sac")
+    return training.learn(model(training.vector_env(config), config.seed, images), config, "sac")
 
 
 def main(argv=None) -> int:

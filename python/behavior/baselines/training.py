@@ -127,20 +127,28 @@ def evaluate(model, config: TrainConfig, episodes: int, deterministic: bool) -> 
     training instance, sampling its actions or taking the likeliest (`deterministic`; the
     environment is deterministic too, so then one episode tells)."""
     env = make_env(config)
+    scored = run_episodes(model, env, episodes, deterministic, config.masked)
+    env.close()
+    return scored
+
+
+def run_episodes(model, env: gymnasium.Env, episodes: int, deterministic: bool,
+                 masked: bool = False) -> Tuple[float, float]:
+    """`episodes` whole episodes of `model`'s policy in `env`: their mean final Q and success
+    rate (with `masked`, the feasible actions' mask given to the policy)."""
     qs, successes = [], []
     for _ in range(episodes):
         obs, info = env.reset()
         done = False
         while not done:
             kwargs = {}
-            if config.masked:
+            if masked:
                 kwargs["action_masks"] = env.get_wrapper_attr("action_masks")()
             action, _ = model.predict(obs, deterministic=deterministic, **kwargs)
             obs, _, terminated, truncated, info = env.step(action)
             done = terminated or truncated
         qs.append(float(info["q"]))
         successes.append(bool(info["success"]))
-    env.close()
     return float(np.mean(qs)), float(np.mean(successes))
 
 

@@ -1,7 +1,7 @@
 //! Replay: the episode begun again from the header, every recorded action taken again, the
 //! state compared with the recording at every checkpoint.
 
-use super::reader::Recording;
+use super::reader::{Frame, Recording};
 use super::state_digest;
 use crate::config::{EnvConfig, Instances};
 use crate::edit::{NoEdits, WorldEdit};
@@ -193,13 +193,7 @@ pub fn replay_with<E: WorldEdit>(
     check(&env, &mut report);
     let mut edits = recording.edits.iter().peekable();
     for frame in &recording.frames {
-        while let Some((step, edit)) = edits.next_if(|(s, _)| *s < frame.step) {
-            redo::<E>(&mut env, *step, edit)?;
-        }
-        env.step(&frame.action).map_err(|source| ReplayError::Env {
-            step: frame.step,
-            source,
-        })?;
+        take_frame::<E>(&mut env, frame, &mut edits)?;
         report.frames += 1;
         check(&env, &mut report);
     }
@@ -288,16 +282,27 @@ pub fn state_at<E: WorldEdit>(
         .filter(|(s, _)| *s >= from)
         .peekable();
     for frame in (recording.frames.iter()).filter(|f| f.step > from && f.step <= step) {
-        while let Some((at, edit)) = edits.next_if(|(s, _)| *s < frame.step) {
-            redo::<E>(&mut env, *at, edit)?;
-        }
-        env.step(&frame.action).map_err(|source| ReplayError::Env {
-            step: frame.step,
-            source,
-        })?;
+        take_frame::<E>(&mut env, frame, &mut edits)?;
         check_digest(&env, recording)?;
     }
     Ok(env)
+}
+
+/// Takes a recorded frame again: the edits recorded before its step (those `edits` has left),
+/// then its action.
+fn take_frame<'r, E: WorldEdit>(
+    env: &mut Env,
+    frame: &Frame,
+    edits: &mut std::iter::Peekable<impl Iterator<Item = &'r (u32, serde_json::Value)>>,
+) -> Result<(), ReplayError> {
+    while let Some((at, edit)) = edits.next_if(|(s, _)| *s < frame.step) {
+        redo::<E>(env, *at, edit)?;
+    }
+    env.step(&frame.action).map_err(|source| ReplayError::Env {
+        step: frame.step,
+        source,
+    })?;
+    Ok(())
 }
 
 /// How the recorded episode began.

@@ -75,6 +75,9 @@ pub enum Shape {
     Sofa,
     /// A seat on four legs with a back (variant 0), with arms too (variant 1).
     Chair,
+    /// Built as a [`Shape::Chair`], but movable: a seat people carry from room to room (a
+    /// dining chair stays where it stands round its table).
+    Stool,
     /// A pedestal, a bowl and a cistern with its flush button.
     Toilet,
     /// A tub with thick walls and a tap at one end.
@@ -102,6 +105,7 @@ impl Shape {
             | Shape::Shelf
             | Shape::OpenContainer
             | Shape::Chair
+            | Shape::Stool
             | Shape::Ball
             | Shape::Cylinder
             | Shape::Slab
@@ -141,6 +145,7 @@ impl Shape {
                 | Shape::Rod
                 | Shape::OpenContainer
                 | Shape::LiddedContainer
+                | Shape::Stool
                 | Shape::Agent
         )
     }
@@ -235,7 +240,7 @@ impl Archetype {
             Shape::Cabinet => furniture::cabinet,
             Shape::Bed => furniture::bed,
             Shape::Sofa => furniture::sofa,
-            Shape::Chair => furniture::chair,
+            Shape::Chair | Shape::Stool => furniture::chair,
             Shape::Fridge => appliances::fridge,
             Shape::Oven => appliances::oven,
             Shape::Dishwasher => appliances::dishwasher,

@@ -371,9 +371,6 @@ impl Manipulator for JointedArm {
         hold(steps, hand, n, CLOSED, done)
     }
 
-    /// Held, an arm that finds no way back carries it where it is.
-    const CARRIES_WHEN_STUCK: bool = true;
-
     /// The arm's links are kinematic: pulling a fridge door along its arc, Fetch's grasp broke
     /// in the first step at 1.4–23 kN (10° and 2° moves) against the grasp's 350 N.
     const SWINGS_LEAVES: bool = false;

@@ -187,10 +187,6 @@ pub(crate) trait Manipulator: Hands {
         done: &dyn Fn(&Env) -> bool,
     ) -> Attempt<()>;
 
-    /// Whether a grasp whose hand holds the object counts though the hand found no way back
-    /// (an arm carries it where it is, and the next drive's tuck finds a way).
-    const CARRIES_WHEN_STUCK: bool;
-
     /// Whether the hand can hold a door, lid or drawer on its hinge while it swings it
     /// (`doors.rs`): a hand that yields (a posed palm's force-limited servo) can; an arm whose
     /// links are moved kinematically holds the leaf with unbounded force, and the least
@@ -230,7 +226,10 @@ pub(crate) fn grasp_with<M: Manipulator>(
     let back = hands.come_back(&mut steps, hand, Grip::holding(held), &mut reached)?;
     let holds = holds(steps.env, call);
     match back {
-        Err(failure) if !holds || !M::CARRIES_WHEN_STUCK => Ok(Err(failure)),
+        // A hand that holds it counts though it found no way back with it (a chicken taken out
+        // of a refrigerator): the next drive's tuck plans its way in, or, pinned, puts it back
+        // at its target. Reported as failed, the planner went on to place it all the same.
+        Err(failure) if !holds => Ok(Err(failure)),
         _ if !holds => Ok(Err(Failure::Missed)),
         _ => Ok(Ok(hands.path(reached))),
     }

@@ -50,7 +50,7 @@ use behavior_robots::{Embodiment, PosedHand, Robot, Side};
 use behavior_sim::{BodyRef, ObjectId, QueryFilter, Relation, World};
 use rapier3d::glamx::EulerRot;
 use rapier3d::math::{Pose, Rotation, Vector};
-use std::f32::consts::PI;
+use std::f32::consts::{FRAC_1_SQRT_2, PI};
 use std::sync::Arc;
 
 /// How a recording names a hand put back at its target (see `free_stranded`).
@@ -172,7 +172,10 @@ pub(crate) fn tuck(steps: &mut Stepper<'_, '_>) -> Attempt<()> {
         let Some((world, robot)) = posed(steps.env) else {
             return Ok(Ok(()));
         };
-        let tuck = robot.body_pose(world) * robot.hand(side).tucked();
+        let tuck = match robot.holding(side) {
+            Some(held) => carry_pose(world, &robot, side, held),
+            None => robot.body_pose(world) * robot.hand(side).tucked(),
+        };
         let (goal, here) = (HandConfig::of(&tuck), target_in_world(steps.env, side));
         if HandConfig::of(&here) == goal {
             continue;
@@ -193,6 +196,84 @@ pub(crate) fn tuck(steps: &mut Stepper<'_, '_>) -> Attempt<()> {
     }
     free_stranded(steps)?;
     Ok(Ok(()))
+}
+
+/// How high above the floor what a hand carries is held for a drive, m: its bottom above beds,
+/// tables and counters (0.6–0.9 m), so that only what stands taller — walls, wardrobes — is in
+/// its way. Carried at the tucked hand's height, a backpack hanging to 0.4 m met the bed the
+/// robot had come past empty-handed, and no way out of the bedroom was left for it.
+const CARRY_HEIGHT: f32 = 0.95;
+/// The most a tucked hand is raised to carry something high, m (a hand 0.6 m over its tuck is
+/// still within reach of the shoulder).
+const MAX_CARRY_RAISE: f32 = 0.6;
+/// How far to either side of the body's axis what a hand carries may reach before the hand
+/// turns it edge-on for a drive, m: the body's half width and a little.
+const CARRY_HALF_WIDTH: f32 = 0.3;
+
+/// Where the hand on `side`, holding `held`, is put for a drive: at its tucked place, raised so
+/// that what it holds, hanging below the palm as far as it does now, has its bottom at
+/// [`CARRY_HEIGHT`] (at most [`MAX_CARRY_RAISE`]);
+/// turned, where what it holds would reach more than [`CARRY_HALF_WIDTH`] to either side of the
+/// body, by the quarter turn (about the body's forward axis or about the vertical) that keeps
+/// it narrowest, as a person carries a board edge-on through a door. Held flat, a 0.9 m board
+/// was wider than the doorways, and no way out of the room was found.
+fn carry_pose(world: &World, robot: &PosedRobot<'_>, side: Side, held: ObjectId) -> Pose {
+    let body = robot.body_pose(world);
+    let tucked = robot.hand(side).tucked();
+    // What the hand holds, in the palm's frame: it turns and rises with the palm.
+    let grip = robot.hand_pose(world, side).inverse() * world.bodies().pose(held);
+    let b = world.bodies().local_aabb(held);
+    let corners: Vec<Vector> = (0..8)
+        .map(|k| {
+            Vector::new(
+                if k & 1 == 0 { b.mins.x } else { b.maxs.x },
+                if k & 2 == 0 { b.mins.y } else { b.maxs.y },
+                if k & 4 == 0 { b.mins.z } else { b.maxs.z },
+            )
+        })
+        .collect();
+    // The held object's corners in the body's frame, the palm at its tucked place turned so.
+    let placed = |turn: Rotation| -> Vec<Vector> {
+        let palm = Pose::from_parts(tucked.translation, turn * tucked.rotation);
+        corners
+            .iter()
+            .map(|&c| (palm * grip).transform_point(c))
+            .collect()
+    };
+    let width = |turn: Rotation| placed(turn).iter().fold(0.0f32, |m, c| m.max(c.y.abs()));
+    let quarter = PI / 2.0;
+    let turns = [
+        Rotation::IDENTITY,
+        Rotation::from_rotation_x(quarter),
+        Rotation::from_rotation_x(-quarter),
+        Rotation::from_rotation_z(quarter),
+        Rotation::from_rotation_z(-quarter),
+    ];
+    let turn = if width(turns[0]) <= CARRY_HALF_WIDTH {
+        turns[0]
+    } else {
+        // The narrowest; among equals (to the centimetre), the one that hangs highest.
+        let bottom = |turn: Rotation| placed(turn).iter().fold(f32::MAX, |m, c| m.min(c.z));
+        let key = |turn: Rotation| ((width(turn) * 100.0).round() as i32, -bottom(turn));
+        turns
+            .into_iter()
+            .min_by(|a, b| {
+                let (ka, kb) = (key(*a), key(*b));
+                ka.0.cmp(&kb.0).then(ka.1.total_cmp(&kb.1))
+            })
+            .unwrap_or(Rotation::IDENTITY)
+    };
+    // Raised by how far it hangs below the palm now. (Reckoned from its corners at the turned
+    // palm instead, the raise was higher for things held askew, and 5 of 14 activities measured
+    // side by side were lost.)
+    let hangs = robot.hand_pose(world, side).translation.z - world.bodies().aabb(held).mins.z;
+    let bottom = body.translation.z + tucked.translation.z - hangs;
+    let raise = (CARRY_HEIGHT - bottom).clamp(0.0, MAX_CARRY_RAISE);
+    let palm = Pose::from_parts(
+        tucked.translation + Vector::Z * raise,
+        turn * tucked.rotation,
+    );
+    body * palm
 }
 
 /// Puts back at its target, at once, each palm its servo left more than [`STRANDED`] behind
@@ -241,18 +322,15 @@ fn reach(
         return Ok(Err(Failure::NoHandPose));
     };
     attempt!(crouch(steps, depth));
-    let start = target_in_world(steps.env, side);
-    let mut planned = Err(Failure::NoHandPose);
-    for goal in chosen {
-        planned = match posed(steps.env) {
-            Some((world, robot)) => {
-                plan_with_approach(world, &robot, side, goal, steps.tuning, rng_seed(rng))
-            }
-            None => Err(Failure::Unavailable("no episode")),
-        };
-        if planned.is_ok() {
-            break;
-        }
+    let mut start = target_in_world(steps.env, side);
+    let mut planned = plan_to_any(steps.env, side, &chosen, steps.tuning, rng);
+    // A hand left far out by the last primitive (a drawer's handle it pulled, where it found
+    // no way back) plans from where it is, hemmed in by what it let go of: drawn in first, as
+    // before a drive, it plans again from beside the body.
+    if planned.is_err() && !tucked(steps.env, side) {
+        let _ = tuck(steps)?;
+        start = target_in_world(steps.env, side);
+        planned = plan_to_any(steps.env, side, &chosen, steps.tuning, rng);
     }
     let (planned, exit) = match planned {
         Ok(planned) => planned,
@@ -276,6 +354,39 @@ fn reach(
         return Ok(Err(failure));
     }
     Ok(Ok(reached))
+}
+
+/// A plan ([`plan_with_approach`]) to the first of `goals` one is found for.
+fn plan_to_any(
+    env: &Env,
+    side: Side,
+    goals: &[Pose],
+    tuning: &Tuning,
+    rng: &mut SimRng,
+) -> Result<(Vec<HandConfig>, Option<Vector>), Failure> {
+    let Some((world, robot)) = posed(env) else {
+        return Err(Failure::Unavailable("no episode"));
+    };
+    let mut planned = Err(Failure::NoHandPose);
+    for goal in goals {
+        planned = plan_with_approach(world, &robot, side, *goal, tuning, rng_seed(rng));
+        if planned.is_ok() {
+            break;
+        }
+    }
+    planned
+}
+
+/// How far from its tucked place a hand's target may be and count as tucked, m.
+const TUCKED_WITHIN: f32 = 0.1;
+
+/// Whether the hand on `side` is told to be where [`tuck`] puts it (within [`TUCKED_WITHIN`]).
+fn tucked(env: &Env, side: Side) -> bool {
+    posed(env).is_none_or(|(world, robot)| {
+        let tuck = robot.body_pose(world) * robot.hand(side).tucked();
+        let here = target_in_world(env, side);
+        (here.translation - tuck.translation).length() <= TUCKED_WITHIN
+    })
 }
 
 /// The hand back where it was told to be before the primitive, the body at its height (even
@@ -578,7 +689,9 @@ fn open_to(
     shoulder: Vector,
     besides: &[ObjectId],
 ) -> bool {
+    // What the hands hold moves with them (carried high for a drive, at the shoulder's height).
     let mut ignored = robot.objects();
+    ignored.extend(Side::BOTH.iter().filter_map(|&side| robot.holding(side)));
     ignored.extend_from_slice(besides);
     let filter = QueryFilter {
         fixed_only: true,
@@ -838,13 +951,28 @@ fn approach_goals(
 
 /// Headings the fingers may point, all round, for an object in a corner.
 const CORNER_HEADINGS: usize = 12;
+/// How far off the middle of an object's top a hand may be put over it where the middle's
+/// poses meet something beside it, m.
+const NUDGES: [f32; 2] = [0.025, 0.045];
+/// The eight ways across the top (along its two horizontal axes and between them) a hand is
+/// moved off the middle by each of [`NUDGES`].
+const NUDGE_WAYS: [(f32, f32); 8] = [
+    (1.0, 0.0),
+    (-1.0, 0.0),
+    (0.0, 1.0),
+    (0.0, -1.0),
+    (FRAC_1_SQRT_2, FRAC_1_SQRT_2),
+    (FRAC_1_SQRT_2, -FRAC_1_SQRT_2),
+    (-FRAC_1_SQRT_2, FRAC_1_SQRT_2),
+    (-FRAC_1_SQRT_2, -FRAC_1_SQRT_2),
+];
 
 /// Poses over the object for when none of the usual ones is free — a rag pushed into the
 /// corner of a shelf, where fingers pointing away from the body meet the shelf's side: palm
 /// down at [`Tuning::approach_height`] over the middle of the top of its box and over a point
-/// [`Tuning::grasp_inset`] in from each side, the fingers pointing every
-/// [`CORNER_HEADINGS`]th of a turn (those nearest the body's heading first). Drawing no random
-/// numbers, they leave the usual goals as they were.
+/// [`Tuning::grasp_inset`] in from each side, then over points [`NUDGES`] off the middle, the
+/// fingers pointing every [`CORNER_HEADINGS`]th of a turn (those nearest the body's heading
+/// first). Drawing no random numbers, they leave the usual goals as they were.
 fn cornered_goals(world: &World, object: ObjectId, facing: f32, tuning: &Tuning) -> Vec<Pose> {
     let pose = world.bodies().pose(object);
     let local = world.bodies().local_aabb(object);
@@ -852,11 +980,23 @@ fn cornered_goals(world: &World, object: ObjectId, facing: f32, tuning: &Tuning)
     let vertical = vertical_axis(pose.rotation);
     let top = world.bodies().aabb(object).maxs.z + tuning.approach_height;
     let mut points = vec![middle];
-    for axis in (0..3).filter(|&a| a != vertical) {
+    let across: Vec<usize> = (0..3).filter(|&a| a != vertical).collect();
+    for &axis in &across {
         let room = (0.5 * (local.maxs[axis] - local.mins[axis]) - tuning.grasp_inset).max(0.0);
         for way in [-1.0, 1.0] {
             let mut p = middle;
             p[axis] += way * room;
+            points.push(p);
+        }
+    }
+    // Off the middle by a few centimetres, whatever the object's size: a hand centred over a
+    // bag of chips against a cabinet's side, or a towel against a counter's front, met the
+    // side; moved away from it, its fingers still come down on the object.
+    for nudge in NUDGES {
+        for (a, b) in NUDGE_WAYS {
+            let mut p = middle;
+            p[across[0]] += a * nudge;
+            p[across[1]] += b * nudge;
             points.push(p);
         }
     }
@@ -1268,9 +1408,6 @@ impl Manipulator for PosedHands {
     ) -> Attempt<()> {
         steps.wait_until(n, done)
     }
-
-    /// A palm that finds no way back is stuck where it is, whatever it holds.
-    const CARRIES_WHEN_STUCK: bool = false;
 
     /// A palm's servo yields: the door turns about it as it is pulled along the door's arc.
     const SWINGS_LEAVES: bool = true;

@@ -5,7 +5,7 @@
 use crate::error::{Literals, SampleError, Unsatisfied};
 use crate::instantiate::Attempt;
 use crate::order::{Step, placement_order, target};
-use crate::way_out::has_way_out;
+use crate::way_out::{has_way_out, within_reach};
 use behavior_bddl::Predicate;
 use behavior_bddl::activity::Literal;
 use behavior_core::AGENT_SYNSET;
@@ -56,6 +56,15 @@ pub(crate) fn place_by(
     let object = bindings[step.subject.0 as usize];
     world.place_turning(object, &relations, rng)?;
     if world.bodies().object(object).category != AGENT_SYNSET {
+        // Something only on a floor is placed again until a person can come and reach it (see
+        // [`within_reach`]); if none of [`OBJECT_PLACES`] is, it keeps the last.
+        let floor_only = relations.iter().all(|&(r, _)| r == Relation::OnFloor);
+        for _ in 1..OBJECT_PLACES {
+            if !floor_only || within_reach(world, object) {
+                break;
+            }
+            world.place_turning(object, &relations, rng)?;
+        }
         return Ok(());
     }
     // The agent is placed again until a way leads out of its room from where it stands; if
@@ -72,6 +81,9 @@ pub(crate) fn place_by(
 
 /// How many places the agent is given at most, the first included, for one with a way out.
 const AGENT_PLACES: usize = 20;
+/// How many places an object only on a floor is given at most, the first included, for one a
+/// person reaches.
+const OBJECT_PLACES: usize = 20;
 
 /// The placement a literal asks for: a positive `ontop`, `inside`, `under`, `nextto`, `touching`
 /// or `onfloor`.

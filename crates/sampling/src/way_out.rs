@@ -8,6 +8,9 @@
 //! floors and the hinged parts a body pushes aside (doors, lids), and succeeds on reaching
 //! another room. A way the disc passes is one a robot as wide as the agent drives along with
 //! room to spare; a pocket the disc cannot leave, such a robot cannot either.
+//!
+//! The same flood, started from every clear cell within a person's reach of an object on the
+//! floor, tells whether anyone can come and pick that object up ([`within_reach`]).
 
 use behavior_core::{AGENT_SYNSET, FLOOR_SYNSET};
 use behavior_sim::{BodyRef, ObjectId, Primitive, QueryFilter, World};
@@ -31,56 +34,137 @@ const MOST_CELLS: usize = 16_000;
 pub(crate) fn has_way_out(world: &World, agent: ObjectId) -> bool {
     let b = world.bodies().aabb(agent);
     let centre = b.center();
-    let relations = world.relations();
-    let Some(room) = relations.room_at(centre.x, centre.y) else {
+    let Some(home) = room_of(world, centre.x, centre.y) else {
         return true;
     };
-    let home = (room.kind, room.instance);
     let radius = 0.5 * (b.maxs.x - b.mins.x).min(b.maxs.y - b.mins.y) + SPARE;
-    let disc = Primitive::Cylinder {
-        radius,
-        half_height: 0.5 * (BAND.1 - BAND.0),
-    };
-    let filter = passable(world, agent);
-    // A cell is clear where the disc stands indoors and touches nothing there.
-    let clear = |(i, j): (i32, i32)| {
-        let at = Vector::new(
-            centre.x + i as f32 * CELL,
-            centre.y + j as f32 * CELL,
-            0.5 * (BAND.0 + BAND.1),
-        );
-        relations.room_at(at.x, at.y).is_some()
-            && world
-                .query()
-                .overlaps(&disc, Pose::from_translation(at), &filter)
-                .is_ok_and(|hits| hits.is_empty())
-    };
-    let elsewhere = |(i, j): (i32, i32)| {
-        let (x, y) = (centre.x + i as f32 * CELL, centre.y + j as f32 * CELL);
-        relations
-            .room_at(x, y)
-            .is_some_and(|r| (r.kind, r.instance) != home)
-    };
-    let mut seen = HashSet::from([(0, 0)]);
-    let mut frontier = VecDeque::from([(0, 0)]);
-    while let Some((i, j)) = frontier.pop_front() {
-        if elsewhere((i, j)) || seen.len() >= MOST_CELLS {
-            return true;
-        }
-        for next in [(i + 1, j), (i - 1, j), (i, j + 1), (i, j - 1)] {
-            if seen.insert(next) && clear(next) {
-                frontier.push_back(next);
-            }
-        }
-    }
-    false
+    let flood = Flood::new(world, centre, radius, passable(world, agent));
+    flood.leaves(home, vec![(0, 0)])
 }
 
-/// What the disc may pass through: the agent itself, the other agents, the floors, and every
-/// hinged or sliding part (a room's door, a cabinet's), which a body pushes aside.
-fn passable(world: &World, agent: ObjectId) -> QueryFilter {
+/// How far across the floor from an object's box a person standing by it reaches, m: an arm's
+/// length to something on the floor, bending down.
+const REACH: f32 = 0.6;
+/// The agent stand-in's half width, m (`agent.n.01` is 0.5 m across).
+const AGENT_HALF_WIDTH: f32 = 0.25;
+
+/// Whether someone as wide as the agent can stand within [`REACH`] of `object` (resting on a
+/// floor) at a place from which a way leads out of its room: an object sampled `onfloor` lies
+/// where a person can come and pick it up, not in a gap between a bed and a wall that nobody
+/// fits into (where a package was sampled here, and no robot could come near it). An object
+/// outside every room: true.
+pub(crate) fn within_reach(world: &World, object: ObjectId) -> bool {
+    let b = world.bodies().aabb(object);
+    let centre = b.center();
+    let Some(home) = room_of(world, centre.x, centre.y) else {
+        return true;
+    };
+    let flood = Flood::new(
+        world,
+        centre,
+        AGENT_HALF_WIDTH + SPARE,
+        passable(world, object),
+    );
+    let (min, max) = ([b.mins.x, b.mins.y], [b.maxs.x, b.maxs.y]);
+    let span = ((0.5 * (max[0] - min[0]).max(max[1] - min[1]) + REACH) / CELL).ceil() as i32;
+    let near: Vec<(i32, i32)> = (-span..=span)
+        .flat_map(|i| (-span..=span).map(move |j| (i, j)))
+        .filter(|&cell| {
+            let (x, y) = flood.at(cell);
+            floor_gap(min, max, x, y) <= REACH && flood.clear(cell)
+        })
+        .collect();
+    flood.leaves(home, near)
+}
+
+/// How far (x, y) is from the rectangle `min`–`max` across the floor: 0 inside it.
+fn floor_gap(min: [f32; 2], max: [f32; 2], x: f32, y: f32) -> f32 {
+    let dx = (min[0] - x).max(x - max[0]).max(0.0);
+    let dy = (min[1] - y).max(y - max[1]).max(0.0);
+    dx.hypot(dy)
+}
+
+/// The room (type and instance) at (x, y), if any.
+fn room_of(world: &World, x: f32, y: f32) -> Option<(behavior_core::RoomType, u32)> {
+    world
+        .relations()
+        .room_at(x, y)
+        .map(|r| (r.kind, r.instance))
+}
+
+/// The floor on a grid of [`CELL`] round an origin, and an upright disc that stands in its
+/// cells where it clears everything but what `filter` ignores.
+struct Flood<'w> {
+    world: &'w World,
+    origin: Vector,
+    disc: Primitive,
+    filter: QueryFilter,
+}
+
+impl<'w> Flood<'w> {
+    fn new(world: &'w World, origin: Vector, radius: f32, filter: QueryFilter) -> Flood<'w> {
+        let disc = Primitive::Cylinder {
+            radius,
+            half_height: 0.5 * (BAND.1 - BAND.0),
+        };
+        Flood {
+            world,
+            origin,
+            disc,
+            filter,
+        }
+    }
+
+    /// The centre of a cell on the floor.
+    fn at(&self, (i, j): (i32, i32)) -> (f32, f32) {
+        (
+            self.origin.x + i as f32 * CELL,
+            self.origin.y + j as f32 * CELL,
+        )
+    }
+
+    /// Whether the disc stands indoors in the cell and touches nothing there.
+    fn clear(&self, cell: (i32, i32)) -> bool {
+        let (x, y) = self.at(cell);
+        let at = Vector::new(x, y, 0.5 * (BAND.0 + BAND.1));
+        self.world.relations().room_at(x, y).is_some()
+            && self
+                .world
+                .query()
+                .overlaps(&self.disc, Pose::from_translation(at), &self.filter)
+                .is_ok_and(|hits| hits.is_empty())
+    }
+
+    /// Whether the disc, starting from any of `from` (cells taken as clear), gets out of the
+    /// room `home` through clear cells (or floods [`MOST_CELLS`] without finding a way: a room's
+    /// worth is no pocket).
+    fn leaves(&self, home: (behavior_core::RoomType, u32), from: Vec<(i32, i32)>) -> bool {
+        let elsewhere = |cell: (i32, i32)| {
+            let (x, y) = self.at(cell);
+            room_of(self.world, x, y).is_some_and(|r| r != home)
+        };
+        let mut seen: HashSet<(i32, i32)> = from.iter().copied().collect();
+        let mut frontier: VecDeque<(i32, i32)> = from.into();
+        while let Some((i, j)) = frontier.pop_front() {
+            if elsewhere((i, j)) || seen.len() >= MOST_CELLS {
+                return true;
+            }
+            for next in [(i + 1, j), (i - 1, j), (i, j + 1), (i, j - 1)] {
+                if seen.insert(next) && self.clear(next) {
+                    frontier.push_back(next);
+                }
+            }
+        }
+        false
+    }
+}
+
+/// What the disc may pass through: `own` (the agent itself, or the object reached for), the
+/// agents, the floors, and every hinged or sliding part (a room's door, a cabinet's), which a
+/// body pushes aside.
+fn passable(world: &World, own: ObjectId) -> QueryFilter {
     let objects = world.bodies().objects();
-    let mut ignored = vec![agent];
+    let mut ignored = vec![own];
     let mut links = Vec::new();
     for (id, o) in objects {
         if o.category == FLOOR_SYNSET || o.category == AGENT_SYNSET {
@@ -133,6 +217,34 @@ mod tests {
         spec.pose = Pose::from_translation(Vector::new(x, y, 0.76));
         let agent = world.add(spec).unwrap();
         (world, agent)
+    }
+
+    /// A box 0.2 m across on the floor at (x, y), 0.1 m high.
+    fn package(world: &mut World, x: f32, y: f32) -> ObjectId {
+        let part = Part::new(Primitive::Box {
+            half_extents: Vector::new(0.1, 0.1, 0.05),
+        });
+        let mut spec = ObjectSpec::new("package_1", "package.n.02", vec![part]);
+        spec.pose = Pose::from_translation(Vector::new(x, y, 0.05));
+        world.add(spec).unwrap()
+    }
+
+    #[test]
+    fn an_object_in_a_gap_nobody_fits_into_is_out_of_reach() {
+        // A bed 2 m long along the room's middle, 0.3 m from the wall at y 4: a package in the
+        // gap, 1 m in from the bed's end, is farther than an arm's length from anywhere a
+        // person stands; at the gap's mouth, or out in the room, it is not.
+        let (mut world, _) = home(3.0, 0.5);
+        wall(&mut world, "bed_1", [0.0, 2.2], [2.0, 3.7]);
+        let deep = package(&mut world, 1.0, 3.85);
+        assert!(!within_reach(&world, deep));
+        let (mut world, _) = home(3.0, 0.5);
+        wall(&mut world, "bed_1", [0.0, 2.2], [2.0, 3.7]);
+        let mouth = package(&mut world, 1.8, 3.85);
+        assert!(within_reach(&world, mouth));
+        let (mut world, _) = home(3.0, 0.5);
+        let open = package(&mut world, 1.0, 1.0);
+        assert!(within_reach(&world, open));
     }
 
     #[test]

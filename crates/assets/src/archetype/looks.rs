@@ -128,7 +128,7 @@ fn box_form(shape: Shape, index: usize, half: Vector) -> Form {
         Shape::Sofa => Form::Soft,
         // The bed's parts: base, mattress, headboard.
         Shape::Bed if index == 1 => Form::Bedding,
-        Shape::Table | Shape::Chair if post => Form::Turned,
+        Shape::Table | Shape::Chair | Shape::Stool if post => Form::Turned,
         _ => Form::Rounded,
     }
 }

@@ -212,11 +212,11 @@ const CARRY_HALF_WIDTH: f32 = 0.3;
 
 /// Where the hand on `side`, holding `held`, is put for a drive: at its tucked place, raised so
 /// that what it holds, hanging below the palm as far as it does now, has its bottom at
-/// [`CARRY_HEIGHT`] (at most [`MAX_CARRY_RAISE`]);
-/// turned, where what it holds would reach more than [`CARRY_HALF_WIDTH`] to either side of the
-/// body, by the quarter turn (about the body's forward axis or about the vertical) that keeps
-/// it narrowest, as a person carries a board edge-on through a door. Held flat, a 0.9 m board
-/// was wider than the doorways, and no way out of the room was found.
+/// [`CARRY_HEIGHT`] (at most [`MAX_CARRY_RAISE`]); turned, where what it holds would reach more
+/// than [`CARRY_HALF_WIDTH`] to either side of the body, by the quarter turn (about the body's
+/// forward axis or about the vertical) that keeps it narrowest, as a person carries a board
+/// edge-on through a door. Held flat, a 0.9 m board was wider than the doorways, and no way
+/// out of the room was found.
 fn carry_pose(world: &World, robot: &PosedRobot<'_>, side: Side, held: ObjectId) -> Pose {
     let body = robot.body_pose(world);
     let tucked = robot.hand(side).tucked();

@@ -50,3 +50,11 @@ pub fn wrap_angle(a: f32) -> f32 {
     let w = (a + PI).rem_euclid(2.0 * PI) - PI;
     if w <= -PI { w + 2.0 * PI } else { w }
 }
+
+/// How far (x, y) is from the rectangle `min`–`max` across the floor: 0 inside it. The planners
+/// ask it of stands, the sampler of where a person stands by an object on the floor.
+pub fn floor_gap(min: [f32; 2], max: [f32; 2], x: f32, y: f32) -> f32 {
+    let dx = (min[0] - x).max(x - max[0]).max(0.0);
+    let dy = (min[1] - y).max(y - max[1]).max(0.0);
+    dx.hypot(dy)
+}

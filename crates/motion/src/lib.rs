@@ -71,8 +71,9 @@ mod rrt;
 
 pub use arm::{ArmBody, ArmSpace, any_config, closest_turn};
 pub use base::{BaseConfig, BaseSpace, Footprint, home_extent, stands_inside};
+pub use behavior_core::floor_gap;
 pub use error::PlanError;
 pub use hand::{HAND_RESOLUTION, HandBody, HandConfig, HandSpace};
 pub use lattice::{Reachable, lattice_plan, reachable_from};
-pub use navigate::{Standing, floor_gap, inflated, shapes_in};
+pub use navigate::{Standing, inflated, shapes_in};
 pub use rrt::{Path, PlanParams, Planned, Space, plan, smooth, steps_along, valid};

@@ -2,8 +2,8 @@
 //! `envs/behavior_mp_env.py`) — and the robot's footprint, read from the world.
 
 use crate::base::{BaseConfig, Footprint, KEEL, stands_inside};
-use behavior_core::FLOOR_SYNSET;
 use behavior_core::rng::{SimRng, uniform};
+use behavior_core::{FLOOR_SYNSET, floor_gap};
 use behavior_robots::Robot;
 use behavior_sim::{BodyRef, ObjectId, Primitive, QueryFilter, Solid, World};
 use rapier3d::math::{Pose, Vector};
@@ -231,13 +231,6 @@ fn box_within(world: &World, object: ObjectId, reach: f32) -> impl Fn(&BaseConfi
     let b = world.bodies().aabb(object);
     let (min, max) = ([b.mins.x, b.mins.y], [b.maxs.x, b.maxs.y]);
     move |c| floor_gap(min, max, c.x, c.y) <= reach
-}
-
-/// How far (x, y) is from the rectangle `min`–`max` across the floor: 0 inside it.
-pub fn floor_gap(min: [f32; 2], max: [f32; 2], x: f32, y: f32) -> f32 {
-    let dx = (min[0] - x).max(x - max[0]).max(0.0);
-    let dy = (min[1] - y).max(y - max[1]).max(0.0);
-    dx.hypot(dy)
 }
 
 /// `shape` grown by `margin` on every side (a convex hull, each point pushed out from its

@@ -12,7 +12,7 @@
 //! The same flood, started from every clear cell within a person's reach of an object on the
 //! floor, tells whether anyone can come and pick that object up ([`within_reach`]).
 
-use behavior_core::{AGENT_SYNSET, FLOOR_SYNSET};
+use behavior_core::{AGENT_SYNSET, FLOOR_SYNSET, floor_gap};
 use behavior_sim::{BodyRef, ObjectId, Primitive, QueryFilter, World};
 use rapier3d::math::{Pose, Vector};
 use std::collections::{HashSet, VecDeque};
@@ -75,13 +75,6 @@ pub(crate) fn within_reach(world: &World, object: ObjectId) -> bool {
         })
         .collect();
     flood.leaves(home, near)
-}
-
-/// How far (x, y) is from the rectangle `min`–`max` across the floor: 0 inside it.
-fn floor_gap(min: [f32; 2], max: [f32; 2], x: f32, y: f32) -> f32 {
-    let dx = (min[0] - x).max(x - max[0]).max(0.0);
-    let dy = (min[1] - y).max(y - max[1]).max(0.0);
-    dx.hypot(dy)
 }
 
 /// The room (type and instance) at (x, y), if any.
